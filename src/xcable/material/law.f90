@@ -1,0 +1,235 @@
+!> Tension-strain laws T = f(eps) of the cable material (paper eq. 17).
+!>
+!> A law is an abstract type with deferred tension f, stiffness f' and
+!> stiffness slope f''; the strain energy per unstretched length W(eps) =
+!> integral of f from 0 to eps is used by the energy ledger. Concrete laws:
+!> `tanh_law` (the nylon double-braid fit of Tjavaras et al. 1998) and
+!> `linear_law` (T = EA eps, for closed-form checks).
+module xcable_material_law
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_input
+   implicit none
+   private
+   public :: material_law, tanh_law, linear_law, new_law
+   public :: paper_tanh_coefficients
+
+   !> Coefficients p1..p5 of eq. 17 for the paper's nylon line (N, -, -, N, N).
+   real(dp), parameter :: paper_tanh_coefficients(5) = &
+      [2.703e5_dp, 10.2_dp, -2.128_dp, 2.627e5_dp, 135.5_dp]
+
+   !> A tension-strain law.
+   type, abstract :: material_law
+      !> Largest strain for which the law is documented (static states above it are refused).
+      real(dp) :: strain_max = 0.35_dp
+   contains
+      !> Tension f(eps), N.
+      procedure(law_function), deferred :: tension
+      !> Axial stiffness f'(eps), N.
+      procedure(law_function), deferred :: stiffness
+      !> Slope of the stiffness f''(eps), N.
+      procedure(law_function), deferred :: stiffness_slope
+      !> Strain energy per unstretched length, J/m.
+      procedure(law_function), deferred :: strain_energy
+      !> Short name of the law.
+      procedure(law_name), deferred :: name
+      !> Strain at a given tension (inverse of f).
+      procedure :: strain_at
+   end type material_law
+
+   abstract interface
+      !> A scalar function of the strain.
+      elemental function law_function(self, eps) result(val)
+         import :: material_law, dp
+         !> The law.
+         class(material_law), intent(in) :: self
+         !> Strain.
+         real(dp), intent(in) :: eps
+         real(dp) :: val
+      end function law_function
+      !> Name of a law.
+      pure function law_name(self) result(name)
+         import :: material_law
+         !> The law.
+         class(material_law), intent(in) :: self
+         character(:), allocatable :: name
+      end function law_name
+   end interface
+
+   !> T = p1 tanh(p2 eps + p3) + p4 + p5 eps (eq. 17).
+   type, extends(material_law) :: tanh_law
+      !> Coefficients p1..p5.
+      real(dp) :: p(5) = paper_tanh_coefficients
+   contains
+      procedure :: tension => tanh_tension
+      procedure :: stiffness => tanh_stiffness
+      procedure :: stiffness_slope => tanh_stiffness_slope
+      procedure :: strain_energy => tanh_strain_energy
+      procedure :: name => tanh_name
+   end type tanh_law
+
+   !> T = EA eps.
+   type, extends(material_law) :: linear_law
+      !> Axial stiffness EA, N.
+      real(dp) :: ea = 1.0_dp
+   contains
+      procedure :: tension => linear_tension
+      procedure :: stiffness => linear_stiffness
+      procedure :: stiffness_slope => linear_stiffness_slope
+      procedure :: strain_energy => linear_strain_energy
+      procedure :: name => linear_name
+   end type linear_law
+
+contains
+
+   !> Build a law from its name and parameters.
+   subroutine new_law(law, name, p, ea, strain_max, error)
+      !> The law built.
+      class(material_law), allocatable, intent(out) :: law
+      !> 'tanh' or 'linear'.
+      character(*), intent(in) :: name
+      !> Coefficients of the tanh law.
+      real(dp), intent(in) :: p(5)
+      !> EA of the linear law, N.
+      real(dp), intent(in) :: ea
+      !> Largest documented strain.
+      real(dp), intent(in) :: strain_max
+      !> Error if the name is unknown.
+      type(error_type), allocatable, intent(out) :: error
+      select case (name)
+      case ('tanh')
+         allocate (law, source=tanh_law(p=p, strain_max=strain_max))
+      case ('linear')
+         allocate (law, source=linear_law(ea=ea, strain_max=strain_max))
+      case default
+         call fatal_error(error, "unknown material law '"//name//"'; allowed: 'tanh', 'linear'", stat_input)
+      end select
+   end subroutine new_law
+
+   !> Strain at which the law gives the tension t (f is strictly increasing).
+   !> Safeguarded Newton inside an expanding bracket.
+   function strain_at(self, t) result(eps)
+      !> The law.
+      class(material_law), intent(in) :: self
+      !> Tension, N.
+      real(dp), intent(in) :: t
+      real(dp) :: eps
+      real(dp) :: lo, hi, step, f, df
+      integer :: it
+      lo = -0.1_dp
+      hi = 0.1_dp
+      step = 0.2_dp
+      do it = 1, 200
+         if (self%tension(lo) <= t) exit
+         lo = lo - step
+         step = 2*step
+      end do
+      step = 0.2_dp
+      do it = 1, 200
+         if (self%tension(hi) >= t) exit
+         hi = hi + step
+         step = 2*step
+      end do
+      eps = 0.5_dp*(lo + hi)
+      do it = 1, 200
+         f = self%tension(eps) - t
+         if (f > 0) then
+            hi = eps
+         else
+            lo = eps
+         end if
+         df = self%stiffness(eps)
+         eps = eps - f/df
+         if (eps <= lo .or. eps >= hi) eps = 0.5_dp*(lo + hi)
+         if (hi - lo < 1.0e-15_dp*max(1.0_dp, abs(eps)) .or. abs(f) < 1.0e-12_dp*max(1.0_dp, abs(t))) exit
+      end do
+   end function strain_at
+
+   elemental function tanh_tension(self, eps) result(val)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = self%p(1)*tanh(self%p(2)*eps + self%p(3)) + self%p(4) + self%p(5)*eps
+   end function tanh_tension
+
+   elemental function tanh_stiffness(self, eps) result(val)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = self%p(1)*self%p(2)/cosh(self%p(2)*eps + self%p(3))**2 + self%p(5)
+   end function tanh_stiffness
+
+   elemental function tanh_stiffness_slope(self, eps) result(val)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val, x
+      x = self%p(2)*eps + self%p(3)
+      val = -2*self%p(1)*self%p(2)**2*tanh(x)/cosh(x)**2
+   end function tanh_stiffness_slope
+
+   elemental function tanh_strain_energy(self, eps) result(val)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = self%p(1)/self%p(2)*(log_cosh(self%p(2)*eps + self%p(3)) - log_cosh(self%p(3))) &
+            + self%p(4)*eps + 0.5_dp*self%p(5)*eps**2
+   end function tanh_strain_energy
+
+   !> log(cosh(x)) without overflow.
+   elemental function log_cosh(x) result(val)
+      real(dp), intent(in) :: x
+      real(dp) :: val
+      val = abs(x) + log1p_exp(-2*abs(x)) - log(2.0_dp)
+   end function log_cosh
+
+   !> log(1 + exp(y)) for y <= 0.
+   elemental function log1p_exp(y) result(val)
+      real(dp), intent(in) :: y
+      real(dp) :: val, e
+      e = exp(y)
+      if (e < 1.0e-8_dp) then
+         val = e - 0.5_dp*e*e
+      else
+         val = log(1.0_dp + e)
+      end if
+   end function log1p_exp
+
+   pure function tanh_name(self) result(name)
+      class(tanh_law), intent(in) :: self
+      character(:), allocatable :: name
+      name = 'tanh'
+   end function tanh_name
+
+   elemental function linear_tension(self, eps) result(val)
+      class(linear_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = self%ea*eps
+   end function linear_tension
+
+   elemental function linear_stiffness(self, eps) result(val)
+      class(linear_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = self%ea + 0*eps
+   end function linear_stiffness
+
+   elemental function linear_stiffness_slope(self, eps) result(val)
+      class(linear_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = 0*self%ea*eps
+   end function linear_stiffness_slope
+
+   elemental function linear_strain_energy(self, eps) result(val)
+      class(linear_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp) :: val
+      val = 0.5_dp*self%ea*eps**2
+   end function linear_strain_energy
+
+   pure function linear_name(self) result(name)
+      class(linear_law), intent(in) :: self
+      character(:), allocatable :: name
+      name = 'linear'
+   end function linear_name
+end module xcable_material_law

@@ -1,0 +1,217 @@
+!> Banded linear systems through LAPACK (dgbsv, dgbtrf, dgbtrs).
+!>
+!> The matrix is kept in LAPACK band storage for factorisation:
+!> A(i, j) is stored in ab(kl + ku + 1 + i - j, j) for
+!> max(1, j - ku) <= i <= min(n, j + kl); the first kl rows of ab are
+!> workspace for the fill-in of partial pivoting.
+module xcable_solver_banded
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_numerics
+   use xcable_strings, only: str
+   implicit none
+   private
+   public :: band_matrix, solve_banded
+
+   interface
+      !> LAPACK: solve a banded system (LU with partial pivoting).
+      pure subroutine dgbsv(n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+         import :: dp
+         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+         real(dp), intent(inout) :: ab(ldab, *), b(ldb, *)
+         integer, intent(out) :: ipiv(*), info
+      end subroutine dgbsv
+      !> LAPACK: LU factorisation of a banded matrix.
+      pure subroutine dgbtrf(m, n, kl, ku, ab, ldab, ipiv, info)
+         import :: dp
+         integer, intent(in) :: m, n, kl, ku, ldab
+         real(dp), intent(inout) :: ab(ldab, *)
+         integer, intent(out) :: ipiv(*), info
+      end subroutine dgbtrf
+      !> LAPACK: solve with a banded LU factorisation.
+      pure subroutine dgbtrs(trans, n, kl, ku, nrhs, ab, ldab, ipiv, b, ldb, info)
+         import :: dp
+         character, intent(in) :: trans
+         integer, intent(in) :: n, kl, ku, nrhs, ldab, ldb
+         real(dp), intent(in) :: ab(ldab, *)
+         integer, intent(in) :: ipiv(*)
+         real(dp), intent(inout) :: b(ldb, *)
+         integer, intent(out) :: info
+      end subroutine dgbtrs
+   end interface
+
+   !> A square banded matrix in LAPACK factorisation storage, with its pivots.
+   type :: band_matrix
+      !> Order of the matrix.
+      integer :: n = 0
+      !> Number of sub-diagonals.
+      integer :: kl = 0
+      !> Number of super-diagonals.
+      integer :: ku = 0
+      !> Leading dimension of ab, 2 kl + ku + 1.
+      integer :: ldab = 0
+      !> Band storage (ldab, n).
+      real(dp), allocatable :: ab(:, :)
+      !> Row interchanges of the LU factorisation.
+      integer, allocatable :: ipiv(:)
+      !> True once factorised (ab then holds the LU factors).
+      logical :: factorised = .false.
+   contains
+      !> Allocate for order n with kl sub- and ku super-diagonals.
+      procedure :: init => band_init
+      !> Set every entry to zero.
+      procedure :: clear => band_clear
+      !> Row of ab that holds A(i, j).
+      procedure :: row => band_row
+      !> Factorise in place (dgbtrf).
+      procedure :: factor => band_factor
+      !> Solve with the factors (dgbtrs), overwriting b.
+      procedure :: solve => band_solve
+      !> Multiply the (unfactorised) matrix by a vector.
+      procedure :: matvec => band_matvec
+   end type band_matrix
+
+contains
+
+   !> Allocate for order n with kl sub- and ku super-diagonals.
+   subroutine band_init(self, n, kl, ku)
+      !> Matrix.
+      class(band_matrix), intent(inout) :: self
+      !> Order.
+      integer, intent(in) :: n
+      !> Sub-diagonals.
+      integer, intent(in) :: kl
+      !> Super-diagonals.
+      integer, intent(in) :: ku
+      self%n = n
+      self%kl = kl
+      self%ku = ku
+      self%ldab = 2*kl + ku + 1
+      if (allocated(self%ab)) deallocate (self%ab)
+      if (allocated(self%ipiv)) deallocate (self%ipiv)
+      allocate (self%ab(self%ldab, n), self%ipiv(n))
+      self%ab = 0
+      self%ipiv = 0
+      self%factorised = .false.
+   end subroutine band_init
+
+   !> Set every entry to zero.
+   pure subroutine band_clear(self)
+      !> Matrix.
+      class(band_matrix), intent(inout) :: self
+      self%ab = 0
+      self%factorised = .false.
+   end subroutine band_clear
+
+   !> Row of ab that holds A(i, j).
+   elemental integer function band_row(self, i, j) result(r)
+      !> Matrix.
+      class(band_matrix), intent(in) :: self
+      !> Row of A.
+      integer, intent(in) :: i
+      !> Column of A.
+      integer, intent(in) :: j
+      r = self%kl + self%ku + 1 + i - j
+   end function band_row
+
+   !> Factorise in place with dgbtrf.
+   subroutine band_factor(self, error)
+      !> Matrix; holds the LU factors on return.
+      class(band_matrix), intent(inout) :: self
+      !> Error if the matrix is singular.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: info
+      call dgbtrf(self%n, self%n, self%kl, self%ku, self%ab, self%ldab, self%ipiv, info)
+      if (info /= 0) then
+         call fatal_error(error, info_message('dgbtrf', info), stat_numerics)
+         return
+      end if
+      self%factorised = .true.
+   end subroutine band_factor
+
+   !> Solve A x = b with the factors; b is overwritten by x.
+   subroutine band_solve(self, b, error)
+      !> Factorised matrix.
+      class(band_matrix), intent(in) :: self
+      !> Right-hand side on entry, solution on return.
+      real(dp), intent(inout) :: b(:)
+      !> Error on a size mismatch or unfactorised matrix.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: info
+      if (.not. self%factorised) then
+         call fatal_error(error, 'band_solve: matrix is not factorised', stat_numerics)
+         return
+      end if
+      if (size(b) /= self%n) then
+         call fatal_error(error, 'band_solve: right-hand side has size '//str(size(b))// &
+                          ', matrix has order '//str(self%n), stat_numerics)
+         return
+      end if
+      call dgbtrs('N', self%n, self%kl, self%ku, 1, self%ab, self%ldab, self%ipiv, b, self%n, info)
+      if (info /= 0) call fatal_error(error, info_message('dgbtrs', info), stat_numerics)
+   end subroutine band_solve
+
+   !> y = A x for the unfactorised matrix.
+   pure subroutine band_matvec(self, x, y)
+      !> Matrix (not factorised).
+      class(band_matrix), intent(in) :: self
+      !> Vector.
+      real(dp), intent(in) :: x(:)
+      !> Product.
+      real(dp), intent(out) :: y(:)
+      integer :: i, j
+      y = 0
+      do j = 1, self%n
+         do i = max(1, j - self%ku), min(self%n, j + self%kl)
+            y(i) = y(i) + self%ab(self%kl + self%ku + 1 + i - j, j)*x(j)
+         end do
+      end do
+   end subroutine band_matvec
+
+   !> Solve A x = b once with dgbsv; ab (ldab, n) holds A in factorisation
+   !> storage with ldab = 2 kl + ku + 1, and is overwritten by the factors.
+   subroutine solve_banded(ab, kl, ku, b, error)
+      !> Band storage of A.
+      real(dp), intent(inout) :: ab(:, :)
+      !> Sub-diagonals.
+      integer, intent(in) :: kl
+      !> Super-diagonals.
+      integer, intent(in) :: ku
+      !> Right-hand side on entry, solution on return.
+      real(dp), intent(inout) :: b(:)
+      !> Error on a size mismatch or a singular matrix.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, info
+      integer, allocatable :: ipiv(:)
+      n = size(ab, 2)
+      if (kl < 0 .or. ku < 0 .or. (n > 1 .and. (kl >= n .or. ku >= n))) then
+         call fatal_error(error, 'solve_banded: band widths kl = '//str(kl)//', ku = '//str(ku)// &
+                          ' do not fit order '//str(n), stat_numerics)
+         return
+      end if
+      if (size(ab, 1) /= 2*kl + ku + 1) then
+         call fatal_error(error, 'solve_banded: band storage has '//str(size(ab, 1))//' rows, need 2 kl + ku + 1 = ' &
+                          //str(2*kl + ku + 1), stat_numerics)
+         return
+      end if
+      if (size(b) /= n) then
+         call fatal_error(error, 'solve_banded: right-hand side has size '//str(size(b))//', matrix has order ' &
+                          //str(n), stat_numerics)
+         return
+      end if
+      allocate (ipiv(n))
+      call dgbsv(n, kl, ku, 1, ab, size(ab, 1), ipiv, b, n, info)
+      if (info /= 0) call fatal_error(error, info_message('dgbsv', info), stat_numerics)
+   end subroutine solve_banded
+
+   !> Message for a LAPACK info code.
+   function info_message(routine, info) result(msg)
+      character(*), intent(in) :: routine
+      integer, intent(in) :: info
+      character(:), allocatable :: msg
+      if (info < 0) then
+         msg = routine//': argument '//str(-info)//' has an illegal value'
+      else
+         msg = routine//': singular Jacobian (zero pivot U('//str(info)//','//str(info)//'))'
+      end if
+   end function info_message
+end module xcable_solver_banded

@@ -1,0 +1,188 @@
+!> Newton's method for the discrete cable equations, with a banded Jacobian.
+!>
+!> A problem extends `newton_problem` and evaluates its residual and, when
+!> asked, its Jacobian straight into LAPACK band storage. The solver keeps the
+!> factorised Jacobian between calls when `reuse_jacobian` is set and refreshes
+!> it as soon as the iteration contracts poorly (simplified Newton), so a time
+!> step whose state changes little costs one factorisation every few steps.
+!> All work arrays live in `newton_workspace`, allocated once.
+module xcable_solver_newton
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_numerics
+   use xcable_strings, only: str
+   use xcable_solver_banded, only: band_matrix
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: newton_problem, newton_options, newton_report, newton_workspace, newton_solve
+
+   !> A nonlinear system F(x) = 0 with a banded Jacobian.
+   type, abstract :: newton_problem
+   contains
+      !> Residual F(x) and, if with_jacobian, dF/dx into the band matrix.
+      procedure(evaluate_interface), deferred :: evaluate
+   end type newton_problem
+
+   abstract interface
+      subroutine evaluate_interface(self, x, residual, jacobian, with_jacobian)
+         import :: newton_problem, band_matrix, dp
+         !> The problem.
+         class(newton_problem), intent(inout) :: self
+         !> Unknowns.
+         real(dp), intent(in) :: x(:)
+         !> Residual.
+         real(dp), intent(out) :: residual(:)
+         !> Jacobian (set only if with_jacobian).
+         type(band_matrix), intent(inout) :: jacobian
+         !> Whether to compute the Jacobian.
+         logical, intent(in) :: with_jacobian
+      end subroutine evaluate_interface
+   end interface
+
+   !> Controls of the iteration.
+   type :: newton_options
+      !> Converged when max |dx_i| / scale_i <= tolerance.
+      real(dp) :: tolerance = 1.0e-9_dp
+      !> Largest number of iterations.
+      integer :: max_iterations = 25
+      !> Keep the factorised Jacobian across iterations and calls while it contracts well.
+      logical :: reuse_jacobian = .false.
+      !> Refresh the Jacobian when an update is larger than this fraction of the previous one.
+      real(dp) :: max_contraction = 0.25_dp
+   end type newton_options
+
+   !> What one solve did.
+   type :: newton_report
+      !> Iterations (linear solves) done.
+      integer :: iterations = 0
+      !> Jacobian factorisations done.
+      integer :: factorisations = 0
+      !> Whether it converged.
+      logical :: converged = .false.
+      !> max |F_i| (rows scaled by the problem) before each iteration and after the last.
+      real(dp) :: residual_norm(0:100) = 0
+      !> Scaled update norm of each iteration.
+      real(dp) :: update_norm(100) = 0
+   end type newton_report
+
+   !> Work arrays of the solver, allocated once per problem size.
+   type :: newton_workspace
+      !> Jacobian, factorised when `factorised` is true.
+      type(band_matrix) :: jacobian
+      !> Residual.
+      real(dp), allocatable :: residual(:)
+      !> Update.
+      real(dp), allocatable :: update(:)
+      !> Scale of each unknown for the convergence test.
+      real(dp), allocatable :: scale(:)
+      !> Whether jacobian holds a usable factorisation (set .false. when dt changes).
+      logical :: usable = .false.
+   contains
+      !> Allocate for n unknowns with kl, ku diagonals.
+      procedure :: init => workspace_init
+   end type newton_workspace
+
+contains
+
+   !> Allocate the workspace.
+   subroutine workspace_init(self, n, kl, ku, scale)
+      !> Workspace.
+      class(newton_workspace), intent(inout) :: self
+      !> Number of unknowns.
+      integer, intent(in) :: n
+      !> Sub-diagonals of the Jacobian.
+      integer, intent(in) :: kl
+      !> Super-diagonals of the Jacobian.
+      integer, intent(in) :: ku
+      !> Scale of each unknown.
+      real(dp), intent(in) :: scale(n)
+      call self%jacobian%init(n, kl, ku)
+      if (allocated(self%residual)) deallocate (self%residual, self%update, self%scale)
+      allocate (self%residual(n), self%update(n), self%scale(n))
+      self%scale = scale
+      self%usable = .false.
+   end subroutine workspace_init
+
+   !> Solve F(x) = 0 starting from x.
+   subroutine newton_solve(problem, x, work, options, report, error)
+      !> The system.
+      class(newton_problem), intent(inout) :: problem
+      !> First guess on entry, solution on return.
+      real(dp), intent(inout) :: x(:)
+      !> Work arrays (and the kept factorisation).
+      type(newton_workspace), intent(inout) :: work
+      !> Controls.
+      type(newton_options), intent(in) :: options
+      !> What was done.
+      type(newton_report), intent(out) :: report
+      !> Error when it does not converge.
+      type(error_type), allocatable, intent(out) :: error
+      logical :: fresh
+      real(dp) :: dnorm, dnorm_prev, rnorm
+      integer :: it, growth
+
+      if (.not. options%reuse_jacobian) work%usable = .false.
+      fresh = .not. work%usable
+      call problem%evaluate(x, work%residual, work%jacobian, fresh)
+      rnorm = maxval(abs(work%residual))
+      report%residual_norm(0) = rnorm
+      if (.not. ieee_is_finite(rnorm)) then
+         call fatal_error(error, 'Newton: residual is not finite (NaN or Inf) at the first guess', stat_numerics)
+         return
+      end if
+      dnorm_prev = huge(1.0_dp)
+      growth = 0
+      do it = 1, options%max_iterations
+         if (fresh) then
+            call work%jacobian%factor(error)
+            work%usable = .false.
+            if (allocated(error)) return
+            work%usable = .true.
+            report%factorisations = report%factorisations + 1
+         end if
+         work%update = work%residual
+         call work%jacobian%solve(work%update, error)
+         if (allocated(error)) return
+         x = x - work%update
+         dnorm = maxval(abs(work%update)/work%scale)
+         report%iterations = it
+         if (it <= size(report%update_norm)) report%update_norm(it) = dnorm
+         if (.not. ieee_is_finite(dnorm)) then
+            call fatal_error(error, 'Newton: update is not finite (NaN or Inf) at iteration '//str(it), stat_numerics)
+            work%usable = .false.
+            return
+         end if
+         ! Refresh a kept Jacobian as soon as it stops contracting well.
+         fresh = .not. options%reuse_jacobian .or. dnorm > options%max_contraction*dnorm_prev
+         if (dnorm <= options%tolerance) then
+            report%converged = .true.
+            call problem%evaluate(x, work%residual, work%jacobian, .false.)
+            if (it <= ubound(report%residual_norm, 1)) report%residual_norm(it) = maxval(abs(work%residual))
+            return
+         end if
+         if (dnorm > dnorm_prev .and. it > 2) then
+            growth = growth + 1
+         else
+            growth = 0
+         end if
+         if (growth >= 3) then
+            call fatal_error(error, 'Newton: diverging (update grew three times in a row, now '//str(dnorm)//')', &
+                             stat_numerics)
+            work%usable = .false.
+            return
+         end if
+         dnorm_prev = dnorm
+         call problem%evaluate(x, work%residual, work%jacobian, fresh)
+         rnorm = maxval(abs(work%residual))
+         if (it <= ubound(report%residual_norm, 1)) report%residual_norm(it) = rnorm
+         if (.not. ieee_is_finite(rnorm)) then
+            call fatal_error(error, 'Newton: residual is not finite (NaN or Inf) at iteration '//str(it), stat_numerics)
+            work%usable = .false.
+            return
+         end if
+      end do
+      call fatal_error(error, 'Newton: no convergence in '//str(options%max_iterations)//' iterations (update '// &
+                       str(dnorm)//', tolerance '//str(options%tolerance)//')', stat_numerics)
+      work%usable = .false.
+   end subroutine newton_solve
+end module xcable_solver_newton

@@ -9,7 +9,7 @@ module xcable_theory
    implicit none
    private
    public :: catenary_shape, catenary_summary, horizontal_force
-   public :: wave_speed, riemann_speed, gauss_legendre
+   public :: wave_speed, riemann_speed, gauss_legendre, wall_drop_time
 
    !> Gauss-Legendre points per panel.
    integer, parameter :: n_gauss = 8
@@ -154,6 +154,51 @@ contains
          end do
       end do
    end function riemann_speed
+
+   !> Simple-wave time at which the tension at the fixed end (a wall, u = 0)
+   !> has dropped by the fraction drop, for a straight string released by the
+   !> ramp T_s cos^2(pi t / (2 t_break)) at its other end. At the wall the
+   !> change of the Riemann variable phi = integral of c d eps doubles, so the
+   !> wall strain eps_w (f(eps_w) = (1 - drop) T_s) is reached when the
+   !> incoming characteristic with phi(eps_inc) = (phi(eps0) + phi(eps_w)) / 2
+   !> arrives; it left the breaking end when the ramp passed f(eps_inc) and
+   !> runs at c(eps_inc). Valid while characteristics do not cross, that is
+   !> for a law convex between eps_inc and eps0 (no shock).
+   function wall_drop_time(law, mass, length, eps0, t_break, drop) result(t)
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Mass per unstretched length, kg/m.
+      real(dp), intent(in) :: mass
+      !> Unstretched length, m.
+      real(dp), intent(in) :: length
+      !> Static strain.
+      real(dp), intent(in) :: eps0
+      !> Breaking time, s.
+      real(dp), intent(in) :: t_break
+      !> Relative drop of the wall tension (e.g. 0.01).
+      real(dp), intent(in) :: drop
+      real(dp) :: t
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      real(dp) :: t_s, eps_w, half, lo, hi, eps_inc, t_e
+      integer :: it
+      t_s = law%tension(eps0)
+      eps_w = law%strain_at((1 - drop)*t_s)
+      half = 0.5_dp*riemann_speed(law, mass, eps_w, eps0)
+      lo = eps_w
+      hi = eps0
+      do it = 1, 100
+         eps_inc = 0.5_dp*(lo + hi)
+         if (riemann_speed(law, mass, eps_inc, eps0) > half) then
+            lo = eps_inc
+         else
+            hi = eps_inc
+         end if
+      end do
+      eps_inc = 0.5_dp*(lo + hi)
+      t_e = 0
+      if (t_break > 0) t_e = 2*t_break/pi*acos(sqrt(law%tension(eps_inc)/t_s))
+      t = t_e + length/wave_speed(law, mass, eps_inc)
+   end function wall_drop_time
 
    !> Gauss-Legendre points and weights on [-1, 1] (Newton on P_n).
    pure subroutine gauss_legendre(n, xg, wg)

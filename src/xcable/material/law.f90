@@ -132,15 +132,16 @@ contains
       eps = 0.5_dp*(lo + hi)
       do it = 1, 200
          f = self%tension(eps) - t
+         if (abs(f) <= 1.0e-13_dp*max(1.0_dp, abs(t))) exit
          if (f > 0) then
             hi = eps
          else
             lo = eps
          end if
+         if (hi - lo <= 4*epsilon(1.0_dp)*max(1.0_dp, abs(eps))) exit
          df = self%stiffness(eps)
          eps = eps - f/df
-         if (eps <= lo .or. eps >= hi) eps = 0.5_dp*(lo + hi)
-         if (hi - lo < 1.0e-15_dp*max(1.0_dp, abs(eps)) .or. abs(f) < 1.0e-12_dp*max(1.0_dp, abs(t))) exit
+         if (.not. (eps > lo .and. eps < hi)) eps = 0.5_dp*(lo + hi)
       end do
    end function strain_at
 

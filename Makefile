@@ -1,0 +1,31 @@
+# xcable: the two commands of the README are `make run` and `make test`.
+# Each installs what is missing first (tools/install-deps.sh).
+
+SHELL := /bin/bash
+export PATH := $(HOME)/.local/bin:$(PATH)
+FPM ?= fpm
+PROFILE ?= release
+CASE ?= slow_315kN
+
+.PHONY: all deps build run test clean
+
+all: build
+
+deps:
+	@tools/install-deps.sh
+
+build: deps
+	$(FPM) install --profile $(PROFILE) --prefix . >/dev/null
+	@echo "built bin/xcable"
+
+run: build
+	./bin/xcable input/$(CASE).nml
+
+test: deps
+	$(FPM) test --profile $(PROFILE)
+
+clean:
+	rm -rf build bin
+
+# Further targets (figures, bench, stress, test-slurm) live in mk/*.mk.
+-include mk/*.mk

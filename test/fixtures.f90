@@ -1,0 +1,55 @@
+!> Shared set-ups of the tests: the paper's cable, grids and cases.
+module xcable_fixtures
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type
+   use xcable_io_input, only: case_config
+   use xcable_case, only: setup_case
+   use xcable_model_equations, only: cable_model
+   use xcable_solver_newton, only: newton_options
+   use xcable_dynamics, only: dynamics_options
+   implicit none
+   private
+   public :: paper_case, write_text
+
+contains
+
+   !> The paper's cable with the given tension, grid and rupture, built like the app does.
+   subroutine paper_case(tension, nodes, model, s, newton, dynamics, error, t_break, t_end, courant, theta, law, &
+                         bending_stiffness)
+      real(dp), intent(in) :: tension
+      integer, intent(in) :: nodes
+      type(cable_model), intent(out) :: model
+      real(dp), allocatable, intent(out) :: s(:)
+      type(newton_options), intent(out) :: newton
+      type(dynamics_options), intent(out) :: dynamics
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: t_break, t_end, courant, theta, bending_stiffness
+      character(*), intent(in), optional :: law
+      type(case_config) :: config
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      config%source = 'test'
+      config%tension = tension
+      config%nodes = nodes
+      config%area = 0.25_dp*pi*config%diameter**2
+      config%bending_stiffness = config%young*pi*config%diameter**4/64
+      if (present(bending_stiffness)) config%bending_stiffness = bending_stiffness
+      if (present(law)) config%law = law
+      config%ea = config%young*config%area
+      if (present(t_break)) config%t_break = t_break
+      if (present(t_end)) config%t_end = t_end
+      if (present(courant)) config%courant = courant
+      if (present(theta)) config%theta = theta
+      config%newton_tol = 1.0e-10_dp
+      config%quiet = .true.
+      call setup_case(config, model, s, newton, dynamics, error)
+   end subroutine paper_case
+
+   !> Write a text file (a namelist for the input tests).
+   subroutine write_text(path, text)
+      character(*), intent(in) :: path, text
+      integer :: unit
+      open (newunit=unit, file=path, status='replace', action='write', access='stream', form='unformatted')
+      write (unit) text
+      close (unit)
+   end subroutine write_text
+end module xcable_fixtures

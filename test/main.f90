@@ -1,0 +1,37 @@
+!> Test driver: runs every suite, or `suite [test]` given on the command line.
+program xcable_tests
+   use xcable_testing, only: testsuite_type, new_testsuite, run_suite
+   use suite_law, only: collect_law
+   use suite_banded, only: collect_banded
+   use suite_jacobian, only: collect_jacobian
+   use suite_statics, only: collect_statics
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
+   implicit none
+   type(testsuite_type), allocatable :: suites(:)
+   character(len=64) :: only_suite, only_test
+   integer :: i, passed, failed, ran
+
+   suites = [new_testsuite('law', collect_law), &
+             new_testsuite('banded', collect_banded), &
+             new_testsuite('jacobian', collect_jacobian), &
+             new_testsuite('statics', collect_statics)]
+   only_suite = ''
+   only_test = ''
+   if (command_argument_count() >= 1) call get_command_argument(1, only_suite)
+   if (command_argument_count() >= 2) call get_command_argument(2, only_test)
+   passed = 0
+   failed = 0
+   ran = 0
+   do i = 1, size(suites)
+      if (len_trim(only_suite) > 0 .and. suites(i)%name /= trim(only_suite)) cycle
+      ran = ran + 1
+      write (output_unit, '(a)') 'suite '//suites(i)%name
+      call run_suite(suites(i), trim(only_test), passed, failed)
+   end do
+   if (ran == 0) then
+      write (error_unit, '(a)') 'no suite named '//trim(only_suite)
+      error stop 1
+   end if
+   write (output_unit, '(i0,a,i0,a)') passed, ' passed, ', failed, ' failed'
+   if (failed > 0) error stop 1
+end program xcable_tests

@@ -5,6 +5,8 @@ program xcable_tests
    use suite_banded, only: collect_banded
    use suite_jacobian, only: collect_jacobian
    use suite_statics, only: collect_statics
+   use suite_dynamics, only: collect_dynamics
+   use suite_input, only: collect_input
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -14,7 +16,9 @@ program xcable_tests
    suites = [new_testsuite('law', collect_law), &
              new_testsuite('banded', collect_banded), &
              new_testsuite('jacobian', collect_jacobian), &
-             new_testsuite('statics', collect_statics)]
+             new_testsuite('statics', collect_statics), &
+             new_testsuite('dynamics', collect_dynamics), &
+             new_testsuite('input', collect_input)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -93,6 +93,10 @@ module xcable_dynamics
       real(dp) :: time_reached = 0
       !> Wall time of the dynamics, s.
       real(dp) :: wall_time = 0
+      !> Largest |b0^2 + b3^2 - 1| over nodes and steps: the kinematic error of
+      !> the discrete Euler parameters, large only where the curvature is
+      !> unresolved (a buckle at the grid scale).
+      real(dp) :: max_unit_norm_error = 0
    end type run_summary
 
    !> Receives the snapshots of a run (the output writer).
@@ -296,6 +300,8 @@ contains
          ! Accept.
          y_prev = y
          y = reshape(x_new, [n_eq, np])
+         summary%max_unit_norm_error = max(summary%max_unit_norm_error, &
+                                           maxval(abs(y(i_b0, :)**2 + y(i_b3, :)**2 - 1)))
          h_prev = h_step
          have_prev = .true.
          if (nsteps == 1) then
@@ -402,7 +408,10 @@ contains
                                 ' is below -0.9 (the cable has collapsed)', stat_numerics)
                return
             end if
-            if (abs(x(i_b0, k)**2 + x(i_b3, k)**2 - 1) > 0.1_dp) then
+            ! The box scheme keeps b0^2 + b3^2 = 1 only to O((Omega3 ds)^2): a
+            ! drift of a few per cent flags a kink at the grid scale (reported
+            ! as max_unit_norm_error); half the unit circle means the frame is lost.
+            if (abs(x(i_b0, k)**2 + x(i_b3, k)**2 - 1) > 0.5_dp) then
                call fatal_error(err, 'Euler parameters off the unit circle at node '//str(k)// &
                                 ' (b0^2 + b3^2 = '//str(x(i_b0, k)**2 + x(i_b3, k)**2)//')', stat_numerics)
                return

@@ -255,6 +255,7 @@ contains
       call put_real(group, 'energy_drift', summary%energy_drift)
       call put_real(group, 'time_reached', summary%time_reached)
       call put_real(group, 'wall_time', summary%wall_time)
+      call put_real(group, 'max_unit_norm_error', summary%max_unit_norm_error)
       call put_int(group, 'steps', summary%steps)
       call put_int(group, 'rejected_steps', summary%rejected_steps)
       call put_int(group, 'newton_iterations', summary%newton_iterations)

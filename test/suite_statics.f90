@@ -12,7 +12,10 @@ module suite_statics
    use xcable_solver_newton, only: newton_options
    use xcable_dynamics, only: dynamics_options
    use xcable_statics, only: static_state, solve_statics
-   use xcable_theory, only: catenary_summary, catenary_shape, horizontal_force
+   use xcable_theory, only: catenary_summary, catenary_shape, horizontal_force, wave_speed
+   use xcable_statics, only: catenary_guess
+   use xcable_discrete_box, only: box_system
+   use xcable_solver_newton, only: newton_workspace, newton_report, newton_solve
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
@@ -29,6 +32,7 @@ contains
                new_unittest('catenary_slack_2kN', test_slack), &
                new_unittest('irvine_linear_law', test_irvine), &
                new_unittest('newton_quadratic', test_newton_quadratic), &
+               new_unittest('newton_quadratic_far_guess', test_newton_far), &
                new_unittest('tension_too_small', test_too_small)]
    end subroutine collect_statics
 
@@ -171,6 +175,52 @@ contains
       end do
       call check(error, tested >= 1 .and. n >= 3, 'too few iterations to see the convergence rate')
    end subroutine test_newton_quadratic
+
+   !> From a guess far from the solution (strain 20 % off, shear 1 kN, the
+   !> angle and curvature off), the scaled residual falls quadratically once
+   !> Newton is close: r(k+1) <= C r(k)^2. Measured C is up to about 60 in this
+   !> max-norm of scaled rows; C <= 100 still refuses linear convergence (at
+   !> r = 1e-6 it would need a contraction factor below 1e-4).
+   subroutine test_newton_far(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(cable_model) :: model
+      real(dp), allocatable :: s(:), x(:), y(:, :)
+      type(newton_options) :: newton
+      type(dynamics_options) :: dyn
+      type(box_system) :: system
+      type(newton_workspace) :: work
+      type(newton_report) :: report
+      real(dp) :: r(0:100)
+      integer :: kl, ku, k, n, tested
+      call paper_case(180.0e3_dp, 61, model, s, newton, dyn, error)
+      if (allocated(error)) return
+      allocate (y(7, size(s)))
+      call catenary_guess(model, s, 180.0e3_dp, y, error)
+      if (allocated(error)) return
+      y(i_eps, :) = 1.2_dp*y(i_eps, :)
+      y(i_sn, :) = 1.0e3_dp
+      y(5, :) = y(5, :) + 0.02_dp
+      y(7, :) = 3*y(7, :)
+      call system%init(model, s, .false., 180.0e3_dp, wave_speed(model%law, model%mass, 0.178_dp), 1.0_dp)
+      call system%band_widths(kl, ku)
+      call work%init(size(y), kl, ku, system%unknown_scale())
+      newton%tolerance = 1.0e-14_dp
+      x = reshape(y, [size(y)])
+      call newton_solve(system, x, work, newton, report, error)
+      if (allocated(error)) return
+      n = report%iterations
+      r = report%residual_norm
+      write (output_unit, '(4x,a,*(es9.1))') 'Newton from a far guess, scaled residual norms:', r(0:n)
+      tested = 0
+      do k = 0, n - 1
+         if (r(k) > 1.0e-2_dp .or. r(k + 1) < 1.0e-13_dp) cycle
+         call check(error, r(k + 1) <= 100*r(k)**2, 'residual '//str(r(k + 1))//' after '//str(r(k))// &
+                    ' is not quadratic')
+         if (allocated(error)) return
+         tested = tested + 1
+      end do
+      call check(error, tested >= 2, 'fewer than two iterations in the quadratic range ('//str(tested)//')')
+   end subroutine test_newton_far
 
    !> A tension that cannot hold the cable's weight is refused.
    subroutine test_too_small(error)

@@ -20,9 +20,12 @@ build: deps
 
 run: build
 	./bin/xcable input/$(CASE).nml
+	@$(MAKE) --no-print-directory figures-case CASE=$(CASE)
+	@echo "figures of $(CASE) in results/figures/$(CASE)/"
 
-test: deps
+test: build
 	$(FPM) test --profile $(PROFILE)
+	test/test_figures.sh
 
 clean:
 	rm -rf build bin

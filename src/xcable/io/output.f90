@@ -41,7 +41,8 @@ module xcable_io_output
       logical :: want(size(known_fields)) = .false.
       !> Snapshots written so far.
       integer :: snapshots = 0
-      !> Unit of the gnuplot snapshot text (-1: none).
+      !> Whether gnuplot text is written, and the unit of its snapshot file.
+      logical :: gnuplot_text = .false.
       integer :: text_unit = -1
       !> Stem of the gnuplot text files.
       character(:), allocatable :: text_stem
@@ -108,9 +109,9 @@ contains
                iostat=ios, iomsg=msg)
          if (ios /= 0) then
             call fatal_error(error, 'cannot create '//self%text_stem//'.snapshots.dat: '//trim(msg), stat_io)
-            self%text_unit = -1
             return
          end if
+         self%gnuplot_text = .true.
          write (self%text_unit, '(a)') '# xcable snapshots: one block per time (gnuplot index), blocks separated by '// &
             'two blank lines'
          write (self%text_unit, '(a)') '# columns: s[m] x[m] z[m] tension[N] strain[-] u[m/s] v[m/s] shear[N] '// &
@@ -160,8 +161,8 @@ contains
       self%snapshots = self%snapshots + 1
       call append(self%file, 'time', [t], 1, hdferr)
       status = max(status, abs(hdferr))
-      if (self%want(6) .or. self%want(7) .or. self%text_unit >= 0) call positions(y, self%s, x, z)
-      if (self%want(1) .or. self%text_unit >= 0) tension = self%model%law%tension(y(i_eps, :))
+      if (self%want(6) .or. self%want(7) .or. self%gnuplot_text) call positions(y, self%s, x, z)
+      if (self%want(1) .or. self%gnuplot_text) tension = self%model%law%tension(y(i_eps, :))
       do i = 1, size(known_fields)
          if (.not. self%want(i)) cycle
          select case (trim(known_fields(i)))
@@ -181,7 +182,7 @@ contains
       status = max(status, abs(hdferr))
       if (status /= 0) call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed", &
                                         stat_io)
-      if (self%text_unit >= 0) then
+      if (self%gnuplot_text) then
          if (self%snapshots > 1) write (self%text_unit, '(/)')
          write (self%text_unit, '(a,es14.6)') '# t = ', t
          do k = 1, size(self%s)
@@ -282,8 +283,8 @@ contains
       call h5fclose_f(self%file, hdferr)
       self%file = -1
       call h5close_f(hdferr)
-      if (self%text_unit >= 0) close (self%text_unit)
-      self%text_unit = -1
+      if (self%gnuplot_text) close (self%text_unit)
+      self%gnuplot_text = .false.
    end subroutine result_finish
 
    !> Append a value (rank 1) or a row of node values (rank 2) to the

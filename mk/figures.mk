@@ -1,0 +1,24 @@
+# Figures with gnuplot (plots/, docs/figures.md). Included by the main Makefile.
+#   make figures                 run the four paper cases and draw every figure (PNG)
+#   make figures FORMAT=pdf      the same as PDF (pdfcairo), for papers
+#   make figures-case            draw the figures of results/$(CASE) (no run); CASE=slow_315kN by default
+#   make test-figures            check that every plot script draws a PNG without gnuplot warnings
+# Figures go to $(FIGDIR): fig2..fig7 (the paper's pairings) and one directory per case.
+# A case's results are taken from results/<case>.*, where the input files put them.
+
+FORMAT ?= png
+FIGDIR ?= results/figures
+PAPER_CASES := fast_180kN fast_315kN slow_180kN slow_315kN
+
+.PHONY: figures figures-case test-figures
+
+figures: build
+	@for c in $(PAPER_CASES); do ./bin/xcable input/$$c.nml || exit $$?; done
+	plots/draw-paper.sh $(FORMAT) results $(FIGDIR)
+	@for c in $(PAPER_CASES); do plots/draw.sh results/$$c $(FIGDIR)/$$c $(FORMAT) || exit $$?; done
+
+figures-case:
+	plots/draw.sh results/$(CASE) $(FIGDIR)/$(CASE) $(FORMAT)
+
+test-figures: build
+	test/test_figures.sh

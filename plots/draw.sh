@@ -1,0 +1,46 @@
+#!/usr/bin/env bash
+# Draw all the figures of one run with gnuplot.
+#   plots/draw.sh <stem> <outdir> [png|pdf]
+# <stem> is the run's output without extension (results/slow_315kN for results/slow_315kN.h5);
+# the run must have written gnuplot text (&output gnuplot = .true.; energy = .true. for the energy
+# figure). Writes <outdir>/{motion,tension,velocity,ends,energy}.<png|pdf>.
+set -euo pipefail
+
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
+# shellcheck source=plots/caseinfo.sh
+source "$here/caseinfo.sh"
+
+if [ $# -lt 2 ] || [ $# -gt 3 ]; then
+  echo "usage: plots/draw.sh <stem> <outdir> [png|pdf]   (e.g. plots/draw.sh results/slow_315kN results/figures/slow_315kN)" >&2
+  exit 2
+fi
+stem=$1 outdir=$2
+ext=$(format_ext "${3:-png}")
+command -v gnuplot >/dev/null 2>&1 || { echo "draw.sh: gnuplot not found (apt-get install gnuplot-nox)" >&2; exit 1; }
+for f in "$stem.snapshots.dat" "$stem.history.dat"; do
+  if [ ! -r "$f" ]; then
+    echo "draw.sh: $f not found: run the case with &output gnuplot = .true. first" >&2
+    exit 1
+  fi
+done
+if [[ "$stem$outdir" == *"'"* ]]; then
+  echo "draw.sh: paths with a single quote are not supported" >&2
+  exit 2
+fi
+mkdir -p "$outdir"
+
+title=$(case_title "$stem")
+failed=()
+for kind in motion tension velocity ends energy; do
+  out="$outdir/$kind.$ext"
+  rm -f "$out"
+  if gnuplot -e "stem='$stem'; out='$out'; title='$title'" "$here/$kind.gp"; then
+    [ -s "$out" ] && echo "draw.sh: wrote $out"
+  else
+    failed+=("$kind")
+  fi
+done
+if [ ${#failed[@]} -gt 0 ]; then
+  echo "draw.sh: gnuplot failed for: ${failed[*]}" >&2
+  exit 1
+fi

@@ -10,7 +10,10 @@
 # Several complete cases at the same x and series value (a third swept
 # variable) are averaged: give that variable as series, or sweep it separately.
 
-if (!exists("sweep")) { print "sweep_summary.gp: give the sweep directory: gnuplot -e \"sweep='OUTDIR'\" plots/sweep_summary.gp"; exit status 2 }
+if (!exists("sweep")) {
+    print "sweep_summary.gp: give the sweep directory: gnuplot -e \"sweep='OUTDIR'\" plots/sweep_summary.gp"
+    exit status 2
+}
 if (!exists("x")) x = 'static%tension'
 if (!exists("y")) y = 'peak_end_speed'
 if (!exists("series")) series = 'rupture%t_break'
@@ -18,7 +21,8 @@ if (!exists("out")) out = sweep.'/sweep_summary.png'
 csv = sweep.'/summary.csv'
 
 # Column numbers from the header line (0 when absent).
-column_of(name) = int(system(sprintf("awk -F, -v n='%s' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == n) { print i; exit } print 0; exit }' '%s'", name, csv)))
+column_of(name) = int(system(sprintf("awk -F, -v n='%s' 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == n) { print i; exit } \
+                                       print 0; exit }' '%s'", name, csv)))
 xc = column_of(x)
 yc = column_of(y)
 sc = column_of(series)
@@ -41,13 +45,15 @@ set terminal pngcairo size 900,600 enhanced font ",11"
 set output out
 set datafile separator ","
 set grid
+set rmargin 6
 set key top left box opaque
 set xlabel label(x) noenhanced
 set ylabel label(y) noenhanced
 set title sprintf("%s: %d cases%s", system(sprintf("basename '%s'", sweep)), cases, \
                   (left_out > 0) ? sprintf(", %d not complete and left out", left_out) : "") noenhanced
 # The complete cases of one series value, as "x,y" lines (awk keeps NaN out of the lines).
-cases_of(v) = sprintf("< awk -F, -v s=%d -v c=%d -v x=%d -v y=%d -v v='%s' 'NR > 1 && $s == \"complete\" && (c == 0 || $c == v) { print $x \",\" $y }' '%s'", \
+cases_of(v) = sprintf("< awk -F, -v s=%d -v c=%d -v x=%d -v y=%d -v v='%s' \
+                       'NR > 1 && $s == \"complete\" && (c == 0 || $c == v) { print $x \",\" $y }' '%s'", \
                       stc, sc, xc, yc, v, csv)
 plot for [i = 1:words(series_values)] cases_of(word(series_values, i)) using 1:2 \
      smooth unique with linespoints lw 2 pt 7 \

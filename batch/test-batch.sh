@@ -1,0 +1,168 @@
+#!/usr/bin/env bash
+# make test-batch: the sweep scripts without Slurm, in a few seconds.
+#
+# Checks sweep-generate (values, ranges, replacement in the base, refusals, the
+# variable table against bin/xcable's own messages), sweep-local with a case
+# that fails, one killed while running, one damaged and one missing, the
+# collector's rows for each status, --failed-only, and the array lists that
+# sweep-submit would give sbatch (--dry-run, including a sweep split by
+# MaxArraySize). Runs in a temporary directory, removed unless a check fails
+# or KEEP=1.
+#
+# Exit codes: 0 all checks passed; 1 a check failed; 2 cannot run (no bin/xcable).
+set -euo pipefail
+PROG=test-batch
+here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd -P)
+repo=$(cd "$here/.." && pwd -P)
+# shellcheck source-path=SCRIPTDIR source=sweep-lib.sh
+. "$here/sweep-lib.sh"
+t0=$(date +%s.%N)
+xcable=$repo/bin/xcable
+[ -x "$xcable" ] || die 2 "$xcable not built (make build)"
+
+tmp=$(mktemp -d /tmp/xcable-batch.XXXXXX)
+passes=0
+failures=0
+long_pid=""
+finish() {
+  local code=$?
+  [ -z "$long_pid" ] || kill -KILL "$long_pid" 2>/dev/null || true
+  if [ $code -ne 0 ] || [ $failures -ne 0 ] || [ -n "${KEEP:-}" ]; then
+    echo "$PROG: kept $tmp" >&2
+  else
+    rm -rf "$tmp"
+  fi
+  exit $code
+}
+trap finish EXIT
+
+check() {
+  local what=$1
+  shift
+  if "$@"; then
+    passes=$((passes + 1))
+    echo "  ok   $what"
+  else
+    failures=$((failures + 1))
+    echo "  FAIL $what"
+  fi
+}
+# refuses MESSAGE_PART ARGS...: sweep-generate exits 2 with one line naming the problem, writing nothing.
+refuses() {
+  local part=$1 out code=0
+  shift
+  rm -rf "$tmp/refused"
+  out=$("$here/sweep-generate" "$repo/input/fast_180kN.nml" "$tmp/refused" "$@" 2>&1) || code=$?
+  [ $code -eq 2 ] && [ "$(printf '%s\n' "$out" | wc -l)" -eq 1 ] && [[ "$out" == *"$part"* ]] && [ ! -e "$tmp/refused" ]
+}
+column() {
+  awk -F, -v n="$2" 'NR == 1 { for (i = 1; i <= NF; i++) if ($i == n) c = i; next } c { print $c }' "$1"
+}
+
+echo "$PROG: sweep-generate"
+# The variable table of sweep-lib.sh against what xcable itself allows.
+table_matches_xcable() {
+  local group allowed mine
+  printf '&zz_no_group /\n' >"$tmp/probe.nml"
+  allowed=$("$xcable" "$tmp/probe.nml" 2>&1 | sed -n 's/.*allowed: //p' | tr -d '&')
+  mine=$(sweep_variable_table | awk '!seen[$1]++ { printf "%s%s", sep, $1; sep = ", " }')
+  [ "$allowed" = "$mine" ] || { echo "    groups: xcable '$allowed', table '$mine'"; return 1; }
+  for group in $(sweep_variable_table | awk '!seen[$1]++ { print $1 }'); do
+    printf '&%s zz_no_variable = 1 /\n' "$group" >"$tmp/probe.nml"
+    allowed=$("$xcable" "$tmp/probe.nml" 2>&1 | sed -n 's/.*allowed: //p')
+    mine=$(sweep_variable_table | awk -v g="$group" '$1 == g { printf "%s%s", sep, $2; sep = ", " }')
+    [ "$allowed" = "$mine" ] || { echo "    &$group: xcable '$allowed', table '$mine'"; return 1; }
+  done
+}
+check "the variable table of sweep-lib.sh is xcable's" table_matches_xcable
+check "refuses an unknown group, naming the allowed ones" \
+  refuses "unknown group 'statics'; allowed: cable, material" statics%tension=1
+check "refuses an unknown variable, naming the allowed ones" \
+  refuses "unknown variable 'tensoin' in &static; allowed: tension" static%tensoin=1
+check "refuses the vector material%p without a subscript" refuses "material%p is a vector of 5" material%p=1,2
+check "refuses output%file" refuses "output%file is set by sweep-generate" output%file=x.h5
+check "refuses a real for an integer" refuses '"41.5" is not an integer' numerics%nodes=41.5
+check "refuses a range with a zero step" refuses "the step is zero" static%tension=1e5:2e5:0
+check "refuses a variable given twice" refuses "given twice" rupture%t_break=0.01 rupture%t_break=0.02
+check "refuses a non-logical for a logical" refuses "is not .true. or .false." output%energy=yes
+
+cat >"$tmp/base.nml" <<'EOF'
+! a base with several assignments a line, comments, quotes and the whole vector p
+&Numerics nodes = 41, t_end = 0.02,   ! a comment / with a slash
+   courant = 1.0 /
+&material p = 2.703e5, 10.2, -2.128, 2.627e5, 135.5 /
+&output interval = 0.01, fields = 'tension u', file = 'elsewhere/x.h5' /
+EOF
+sweep=$tmp/s1
+"$here/sweep-generate" "$tmp/base.nml" "$sweep" 'static%tension=1e5:3e5:1e5' 'material%p(2)=10,10.5' \
+  numerics%max_wall_time=0,1e-6 >/dev/null
+check "12 cases and a manifest with a header" \
+  test "$(ls "$sweep/cases" | wc -l)" -eq 12 -a "$(head -1 "$sweep/manifest.tsv")" = \
+  "$(printf 'task\tstatic%%tension\tmaterial%%p(2)\tnumerics%%max_wall_time')"
+check "the first variable varies slowest, ranges include hi" \
+  test "$(sed -n 13p "$sweep/manifest.tsv")" = "$(printf '11\t300000\t10.5\t1e-6')"
+case_ok() {
+  local f=$sweep/cases/0007.nml
+  grep -q "^   file = '$sweep/results/0007.h5'$" "$f" && grep -q '^   quiet = .true.$' "$f" &&
+    grep -q '^   max_wall_time = 1e-6$' "$f" && grep -q '^   courant = 1.0$' "$f" &&
+    grep -q '^&static$' "$f" && [ "$(grep -c 'file =' "$f")" -eq 1 ] &&
+    [ "$(awk '/^&material/ { m = 1 } m && /p\(2\) = 10.5/ { print "ok"; exit }' "$f")" = ok ]
+}
+check "a case: file and quiet set, values replaced or added, missing group added" case_ok
+"$xcable" "$sweep/cases/0002.nml"
+p2=$(h5dump -a namelist "$sweep/results/0002.h5" | grep -o 'p = [^,]*, [^,]*' | awk '{ print $4 + 0 }')
+check "xcable runs a generated case; material%p(2) overrides the base's vector (p2 = $p2)" test "$p2" = 10.5
+
+echo "$PROG: sweep-local and the collector"
+out=$("$here/sweep-local" "$sweep" -j 2 2>&1) && code=0 || code=$?
+check "sweep-local exits 1 when cases fail, naming them" test "$code" -eq 1 -a "$(grep -c 'exit 1, failed' <<<"$out")" -eq 6
+check "every task logged its attempt" test "$(grep -l 'job local_' "$sweep"/logs/0*.log | wc -l)" -eq 12
+# Damage the results: one missing, one unreadable, one left 'running' by a killed run.
+rm "$sweep/results/0000.h5"
+head -c 4096 /dev/urandom >"$sweep/results/0002.h5"
+sed -i 's/^   nodes = 41$/   nodes = 4001/; s/^   t_end = 0.02$/   t_end = 50/' "$sweep/cases/0004.nml"
+(cd "$sweep" && exec "$xcable" cases/0004.nml) &
+long_pid=$!
+for _ in $(seq 100); do
+  [ "$(result_status "$sweep/results/0004.h5")" = running ] && break
+  sleep 0.1
+done
+"$here/sweep-collect" "$sweep" --plot >"$tmp/collect.out" 2>&1
+kill -KILL "$long_pid" 2>/dev/null || true
+wait "$long_pid" 2>/dev/null || true
+long_pid=""
+csv=$sweep/summary.csv
+statuses=$(column "$csv" status | tr '\n' ' ')
+check "one row per task with its status: $statuses" \
+  test "$statuses" = "missing failed unreadable failed running failed complete failed complete failed complete failed "
+check "a failed row keeps its reason and figures" \
+  bash -c "sed -n 3p '$csv' | grep -q 'wall-clock limit' && test \"\$(sed -n 3p '$csv' | cut -d, -f9)\" != NaN"
+check "a missing row has NaN figures and -1 counts" \
+  bash -c "sed -n 2p '$csv' | grep -q '^0,100000,10,0,missing,NaN,.*,-1,'"
+check "summary.h5 holds the statuses and the swept values as numbers" \
+  bash -c "h5dump -d /status '$sweep/summary.h5' | grep -q '\"unreadable\"' &&
+           h5dump -d '/swept/static%tension' '$sweep/summary.h5' | grep -q 'H5T_IEEE_F64LE'"
+check "the summary figure was drawn" test -s "$sweep/sweep_summary.png"
+
+echo "$PROG: --failed-only and sweep-submit's array lists"
+out=$("$here/sweep-submit" "$sweep" --dry-run --failed-only --limit 3 -- --time=00:05:00)
+check "sweep-submit --failed-only lists the 9 tasks that are not complete" \
+  grep -q -- "--array=0-5\\\\,7\\\\,9\\\\,11%3 .*--time=00:05:00 .*sweep.sbatch" <<<"$out"
+out=$(SWEEP_MAX_ARRAY_SIZE=5 "$here/sweep-submit" "$sweep" --dry-run)
+check "a sweep larger than MaxArraySize is split into arrays with offsets" \
+  test "$(grep -o 'array=[^ ]* --export=ALL\\,SWEEP_OFFSET=[0-9]*' <<<"$out" | tr '\n' ' ')" = \
+  'array=0-4 --export=ALL\,SWEEP_OFFSET=0 array=0-4 --export=ALL\,SWEEP_OFFSET=5 array=0-1 --export=ALL\,SWEEP_OFFSET=10 '
+# Make the failed cases good and rerun only what is not complete.
+sed -i 's/^   max_wall_time = 1e-6$/   max_wall_time = 0/; s/^   nodes = 4001$/   nodes = 41/; s/^   t_end = 50$/   t_end = 0.02/' \
+  "$sweep"/cases/*.nml
+out=$("$here/sweep-local" "$sweep" --failed-only -j 2 2>&1) && code=0 || code=$?
+check "sweep-local --failed-only reran exactly the 9 tasks" test "$code" -eq 0 -a "$(grep -c '^task ' <<<"$out")" -eq 9
+"$here/sweep-collect" "$sweep" >/dev/null
+check "then all 12 complete" test "$(column "$csv" status | grep -c '^complete$')" -eq 12
+check "task 6, complete before, was not rerun" test "$(grep -c '### task 6: start' "$sweep/logs/0006.log")" -eq 1
+out=$("$here/sweep-local" "$sweep" --failed-only)
+check "nothing left to run" grep -q "nothing to run" <<<"$out"
+
+echo "$PROG: $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s"
+echo "$PROG: $passes passed, $failures failed"
+[ $failures -eq 0 ] || exit 1

@@ -1,6 +1,7 @@
 !> xcable: rupture dynamics of a highly extensible cable from a namelist.
 !>
 !>   xcable case.nml
+!>   xcable --check case.nml   (validate the case and exit)
 !>
 !> Exit codes: 0 complete; 1 numerical failure (the result file says 'failed',
 !> with the reason and time); 2 bad input or output path (no result file).
@@ -30,15 +31,23 @@ program xcable_main
    type(error_type), allocatable :: error
    character(len=4096) :: path
    integer :: nargs
+   logical :: check_only
+   character(len=*), parameter :: usage = 'usage: xcable [--check] <case.nml>   (--check: validate only; '// &
+                                          'see README.md for the namelist groups)'
 
    nargs = command_argument_count()
-   if (nargs /= 1) then
-      write (error_unit, '(a)') 'usage: xcable <case.nml>   (see README.md for the namelist groups)'
+   check_only = .false.
+   if (nargs == 2) then
+      call get_command_argument(1, path)
+      check_only = trim(path) == '--check'
+   end if
+   if (.not. (nargs == 1 .or. check_only)) then
+      write (error_unit, '(a)') usage
       stop 2, quiet=.true.
    end if
-   call get_command_argument(1, path)
+   call get_command_argument(nargs, path)
    if (trim(path) == '--help' .or. trim(path) == '-h') then
-      write (output_unit, '(a)') 'usage: xcable <case.nml>   (see README.md for the namelist groups)'
+      write (output_unit, '(a)') usage
       stop
    end if
 
@@ -46,6 +55,10 @@ program xcable_main
    if (allocated(error)) call fail_input(error)
    call setup_case(config, model, s, newton, dynamics, error)
    if (allocated(error)) call fail_input(error)
+   if (check_only) then
+      write (output_unit, '(a)') trim(path)//': ok'
+      stop
+   end if
 
    call output%create(trim(config%file), model, s, config%fields, config_text(config), trim(path), config%gnuplot, error)
    if (allocated(error)) then

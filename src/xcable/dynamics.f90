@@ -182,15 +182,17 @@ contains
       real(dp), intent(in) :: z(:)
       !> Energies (4).
       real(dp), intent(out) :: e(4)
-      real(dp) :: density(4, size(s))
+      real(dp) :: density(4), density_prev(4)
       integer :: k
-      density(1, :) = model%law%strain_energy(y(i_eps, :))
-      density(2, :) = 0.5_dp*model%mass*(y(i_u, :)**2 + y(i_v, :)**2)
-      density(3, :) = 0.5_dp*model%bending_stiffness*y(i_om, :)**2
-      density(4, :) = model%weight*z
+      ! Node by node (no work array: the ledger is kept at every step).
       e = 0
-      do k = 2, size(s)
-         e = e + 0.5_dp*(s(k) - s(k - 1))*(density(:, k) + density(:, k - 1))
+      do k = 1, size(s)
+         density(1) = model%law%strain_energy(y(i_eps, k))
+         density(2) = 0.5_dp*model%mass*(y(i_u, k)**2 + y(i_v, k)**2)
+         density(3) = 0.5_dp*model%bending_stiffness*y(i_om, k)**2
+         density(4) = model%weight*z(k)
+         if (k > 1) e = e + 0.5_dp*(s(k) - s(k - 1))*(density + density_prev)
+         density_prev = density
       end do
    end subroutine energy_terms
 
@@ -216,11 +218,12 @@ contains
       type(box_system) :: system
       type(newton_workspace) :: work
       type(newton_report) :: report
+      type(newton_options) :: newton
       type(error_type), allocatable :: step_error
       real(dp), allocatable :: y(:, :), y_prev(:, :), x_new(:), xpos(:), zpos(:)
       real(dp) :: t, h, h_step, h_prev, t_event, t_next_snapshot, end_tension, force_h, force_v, r
       real(dp) :: power_old, power_new, work_done, e(4), vel_x, vel_z, c_ref, wall, last_report
-      integer :: np, kl, ku, nsteps, n_good, rejected_here, capacity, snapshot_index
+      integer :: np, kl, ku, nsteps, n_good, rejected_here, capacity, snapshot_index, k
       integer(i8) :: clock_start, clock_now, clock_rate
       logical :: have_prev
       character(:), allocatable :: reason
@@ -230,6 +233,15 @@ contains
       allocate (y(n_eq, np), y_prev(n_eq, np), x_new(n_eq*np), xpos(np), zpos(np))
       y = y_static
       y_prev = y_static
+      ! Newton settings of a time step (docs/benchmark.md, "Speed work"): stop on
+      ! the contraction estimate, keep the Jacobian while it contracts by 0.5
+      ! per iteration within a step, refresh it at the start of a step once it
+      ! contracted by more than 0.05, and skip the report's final residual.
+      newton = options%newton
+      newton%final_residual = .false.
+      newton%estimate_error = .true.
+      newton%max_contraction = 0.5_dp
+      newton%refresh_contraction = 0.05_dp
       end_tension = model%law%tension(y_static(i_eps, np))
       ! Static end force: the internal force vector T t + Sn n at the breaking end.
       associate (b0 => y_static(i_b0, np), b3 => y_static(i_b3, np), sn => y_static(i_sn, np))
@@ -273,12 +285,15 @@ contains
          if (nsteps == 1) h_step = t_event - t
          r = rupture_factor(t + h_step, options%t_break)
          call system%prepare_step(y, h_step, r*force_h, r*force_v)
-         if (have_prev .and. options%extrapolate) then
-            x_new = reshape(y + (h_step/h_prev)*(y - y_prev), [n_eq*np])
-         else
-            x_new = reshape(y, [n_eq*np])
-         end if
-         call newton_solve(system, x_new, work, options%newton, report, step_error)
+         ! First guess (node by node: no array temporaries in the time loop).
+         do k = 1, np
+            if (have_prev .and. options%extrapolate) then
+               x_new(n_eq*(k - 1) + 1:n_eq*k) = y(:, k) + (h_step/h_prev)*(y(:, k) - y_prev(:, k))
+            else
+               x_new(n_eq*(k - 1) + 1:n_eq*k) = y(:, k)
+            end if
+         end do
+         call newton_solve(system, x_new, work, newton, report, step_error)
          summary%factorisations = summary%factorisations + report%factorisations
          if (.not. allocated(step_error)) call check_physical(x_new, np, step_error)
          if (allocated(step_error)) then
@@ -299,7 +314,9 @@ contains
          end if
          ! Accept.
          y_prev = y
-         y = reshape(x_new, [n_eq, np])
+         do k = 1, np
+            y(:, k) = x_new(n_eq*(k - 1) + 1:n_eq*k)
+         end do
          summary%max_unit_norm_error = max(summary%max_unit_norm_error, &
                                            maxval(abs(y(i_b0, :)**2 + y(i_b3, :)**2 - 1)))
          h_prev = h_step

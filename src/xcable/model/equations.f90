@@ -17,6 +17,7 @@ module xcable_model_equations
    public :: cable_model, n_eq
    public :: i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
    public :: equation_terms, equation_derivatives, mass_times
+   public :: forcing_from_law, mass_times_from_law
 
    !> Number of unknowns per node.
    integer, parameter :: n_eq = 7
@@ -40,7 +41,7 @@ module xcable_model_equations
 contains
 
    !> M(Y) (7x7, eq. 20) and P(Y) (eq. 21) at one node.
-   pure subroutine equation_terms(model, y, mass, forcing)
+   pure subroutine equation_terms(model, y, mass, forcing, compliance)
       !> Cable data.
       type(cable_model), intent(in) :: model
       !> Unknowns at the node.
@@ -49,10 +50,13 @@ contains
       real(dp), intent(out) :: mass(n_eq, n_eq)
       !> P(Y).
       real(dp), intent(out) :: forcing(n_eq)
-      real(dp) :: m, g, f
+      !> 1 / f'(eps) at the node, 1/N.
+      real(dp), intent(out), optional :: compliance
+      real(dp) :: m, g, f, fp
       m = model%mass
-      g = 1.0_dp/model%law%stiffness(y(i_eps))
-      f = model%law%tension(y(i_eps))
+      call model%law%tension_stiffness(y(i_eps), f, fp)
+      g = 1.0_dp/fp
+      if (present(compliance)) compliance = g
       mass = 0
       mass(1, i_u) = -m*g
       mass(1, i_b0) = -2*m*y(i_v)*y(i_b3)*g
@@ -63,6 +67,21 @@ contains
       mass(3, i_eps) = -1
       mass(4, i_b0) = 2*(1 + y(i_eps))*y(i_b3)
       mass(4, i_b3) = -2*(1 + y(i_eps))*y(i_b0)
+      call forcing_from_law(model, y, f, g, forcing)
+   end subroutine equation_terms
+
+   !> P(Y) (eq. 21) at one node, given the law's values there (no law call).
+   pure subroutine forcing_from_law(model, y, f, g, forcing)
+      !> Cable data.
+      type(cable_model), intent(in) :: model
+      !> Unknowns at the node.
+      real(dp), intent(in) :: y(n_eq)
+      !> Tension f(eps), N.
+      real(dp), intent(in) :: f
+      !> Compliance 1 / f'(eps), 1/N.
+      real(dp), intent(in) :: g
+      !> P(Y).
+      real(dp), intent(out) :: forcing(n_eq)
       forcing(1) = -g*(y(i_sn)*y(i_om) + model%weight*(y(i_b0)**2 - y(i_b3)**2))
       forcing(2) = f*y(i_om) + 2*model%weight*y(i_b0)*y(i_b3)
       forcing(3) = -y(i_om)*y(i_v)
@@ -70,7 +89,7 @@ contains
       forcing(5) = 0.5_dp*y(i_b3)*y(i_om)
       forcing(6) = -0.5_dp*y(i_b0)*y(i_om)
       forcing(7) = y(i_sn)*(1 + y(i_eps))**3/model%bending_stiffness
-   end subroutine equation_terms
+   end subroutine forcing_from_law
 
    !> M(Y) z for a vector z, without forming M.
    pure function mass_times(model, y, z) result(mz)
@@ -81,15 +100,29 @@ contains
       !> Vector multiplied.
       real(dp), intent(in) :: z(n_eq)
       real(dp) :: mz(n_eq)
-      real(dp) :: m, g
+      call mass_times_from_law(model, y, 1.0_dp/model%law%stiffness(y(i_eps)), z, mz)
+   end function mass_times
+
+   !> M(Y) z at one node given the compliance 1 / f'(eps) there (no law call, no temporary).
+   pure subroutine mass_times_from_law(model, y, g, z, mz)
+      !> Cable data.
+      type(cable_model), intent(in) :: model
+      !> Unknowns at the node.
+      real(dp), intent(in) :: y(n_eq)
+      !> Compliance 1 / f'(eps), 1/N.
+      real(dp), intent(in) :: g
+      !> Vector multiplied.
+      real(dp), intent(in) :: z(n_eq)
+      !> M(Y) z.
+      real(dp), intent(out) :: mz(n_eq)
+      real(dp) :: m
       m = model%mass
-      g = 1.0_dp/model%law%stiffness(y(i_eps))
-      mz = 0
       mz(1) = m*g*(-z(i_u) - 2*y(i_v)*y(i_b3)*z(i_b0) + 2*y(i_v)*y(i_b0)*z(i_b3))
       mz(2) = m*(-z(i_v) + 2*y(i_u)*y(i_b3)*z(i_b0) - 2*y(i_u)*y(i_b0)*z(i_b3))
       mz(3) = -z(i_eps)
       mz(4) = 2*(1 + y(i_eps))*(y(i_b3)*z(i_b0) - y(i_b0)*z(i_b3))
-   end function mass_times
+      mz(5:) = 0
+   end subroutine mass_times_from_law
 
    !> Exact derivatives at one node: dmz = d(M(Y) z)/dY for fixed z, and dP/dY.
    pure subroutine equation_derivatives(model, y, z, dmz, dforcing)

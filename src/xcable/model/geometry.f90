@@ -21,15 +21,20 @@ contains
       real(dp), intent(out) :: x(:)
       !> Vertical position (i component, up), m.
       real(dp), intent(out) :: z(:)
-      real(dp) :: tx(size(s)), tz(size(s))
+      real(dp) :: tx, tz, tx_prev, tz_prev
       integer :: k
-      tz = (1 + y(i_eps, :))*(y(i_b0, :)**2 - y(i_b3, :)**2)
-      tx = (1 + y(i_eps, :))*2*y(i_b0, :)*y(i_b3, :)
+      ! Node by node, without work arrays (called at every step for the energy ledger).
       x(1) = 0
       z(1) = 0
+      tz_prev = (1 + y(i_eps, 1))*(y(i_b0, 1)**2 - y(i_b3, 1)**2)
+      tx_prev = (1 + y(i_eps, 1))*2*y(i_b0, 1)*y(i_b3, 1)
       do k = 2, size(s)
-         x(k) = x(k - 1) + 0.5_dp*(s(k) - s(k - 1))*(tx(k) + tx(k - 1))
-         z(k) = z(k - 1) + 0.5_dp*(s(k) - s(k - 1))*(tz(k) + tz(k - 1))
+         tz = (1 + y(i_eps, k))*(y(i_b0, k)**2 - y(i_b3, k)**2)
+         tx = (1 + y(i_eps, k))*2*y(i_b0, k)*y(i_b3, k)
+         x(k) = x(k - 1) + 0.5_dp*(s(k) - s(k - 1))*(tx + tx_prev)
+         z(k) = z(k - 1) + 0.5_dp*(s(k) - s(k - 1))*(tz + tz_prev)
+         tx_prev = tx
+         tz_prev = tz
       end do
    end subroutine positions
 

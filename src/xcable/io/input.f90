@@ -70,7 +70,7 @@ module xcable_io_input
       !> Time weight theta of the box scheme (0.5: the paper's).
       real(dp) :: theta = 0.5_dp
       !> Newton tolerance on the scaled update.
-      real(dp) :: newton_tol = 1.0e-9_dp
+      real(dp) :: newton_tol = 1.0e-7_dp
       !> Newton iteration limit.
       integer :: newton_max_iter = 25
       !> Keep the factorised Jacobian while Newton contracts well.

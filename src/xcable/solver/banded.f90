@@ -1,17 +1,15 @@
-!> Banded linear systems in LAPACK band storage.
+!> Banded linear systems through LAPACK (dgbsv, dgbtrf, dgbtrs).
 !>
 !> The matrix is kept in LAPACK band storage for factorisation:
 !> A(i, j) is stored in ab(kl + ku + 1 + i - j, j) for
 !> max(1, j - ku) <= i <= min(n, j + kl); the first kl rows of ab are
-!> workspace for the fill-in of partial pivoting.
-!>
-!> `solve_banded` calls LAPACK's dgbsv. The factorisation and substitution of
-!> `band_matrix`, which Newton's method calls hundreds of times per run, are
-!> the algorithms of dgbtf2/dgbtrf and dgbtrs written out in plain loops, with
-!> the same storage, pivots and factors: for the narrow band of the box scheme
-!> (kl = 7, ku = 10) the per-column calls to the reference BLAS (idamax,
-!> dswap, dscal, dger, dtbsv) cost more than the arithmetic. Measured at 241
-!> nodes: factorisation 72 instead of 82 us, substitution 21 instead of 28 us.
+!> workspace for the fill-in of partial pivoting. Newton's method factorises
+!> with LAPACK's dgbtrf and keeps the factors for several substitutions; the
+!> substitution is dgbtrs('N') for one right-hand side written as two plain
+!> loops, because for the narrow band of the box scheme (kl = 7, ku = 10) the
+!> per-column reference-BLAS calls inside dgbtrs cost more than the arithmetic
+!> and the substitution is the most frequent operation of a run (simplified
+!> Newton). It is tested against a dense solve. `solve_banded` is dgbsv.
 module xcable_solver_banded
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_numerics
@@ -128,79 +126,13 @@ contains
       !> Error if the matrix is singular.
       type(error_type), allocatable, intent(out) :: error
       integer :: info
-      call band_lu(self%n, self%kl, self%ku, self%ab, self%ipiv, info)
+      call dgbtrf(self%n, self%n, self%kl, self%ku, self%ab, self%ldab, self%ipiv, info)
       if (info /= 0) then
          call fatal_error(error, info_message('dgbtrf', info), stat_numerics)
          return
       end if
       self%factorised = .true.
    end subroutine band_factor
-
-   !> LU factorisation with partial pivoting in LAPACK band storage: the
-   !> algorithm of dgbtf2 (which dgbtrf uses when kl is below its block size,
-   !> as here), with the same pivots, factors and storage, in plain loops
-   !> instead of one idamax, dswap, dscal and dger call per column.
-   pure subroutine band_lu(n, kl, ku, ab, ipiv, info)
-      !> Order, sub- and super-diagonals.
-      integer, intent(in) :: n, kl, ku
-      !> Matrix on entry (rows kl+1 .. 2 kl+ku+1), LU factors on return.
-      real(dp), intent(inout) :: ab(2*kl + ku + 1, n)
-      !> Row interchanges: row j was interchanged with row ipiv(j).
-      integer, intent(out) :: ipiv(n)
-      !> 0, or the first j with U(j, j) = 0.
-      integer, intent(out) :: info
-      integer :: i, j, jp, ju, km, kv, c, d
-      real(dp) :: amax, t, rec
-      kv = ku + kl
-      info = 0
-      ! The fill-in part of the first columns starts at zero.
-      do j = ku + 2, min(kv, n)
-         ab(kv - j + 2:kl, j) = 0
-      end do
-      ju = 1
-      do j = 1, n
-         if (j + kv <= n) ab(1:kl, j + kv) = 0
-         km = min(kl, n - j)
-         ! Pivot: the first largest |A(j + i - 1, j)|, i = 1 .. km + 1.
-         jp = 1
-         amax = abs(ab(kv + 1, j))
-         do i = 2, km + 1
-            if (abs(ab(kv + i, j)) > amax) then
-               amax = abs(ab(kv + i, j))
-               jp = i
-            end if
-         end do
-         ipiv(j) = jp + j - 1
-         if (ab(kv + jp, j) == 0) then
-            if (info == 0) info = j
-            cycle
-         end if
-         ju = max(ju, min(j + ku + jp - 1, n))
-         if (jp /= 1) then
-            ! Interchange rows j and j + jp - 1 in columns j .. ju (A(r, c) is ab(kv + 1 + r - c, c)).
-            do c = j, ju
-               d = kv + 1 + j - c
-               t = ab(d + jp - 1, c)
-               ab(d + jp - 1, c) = ab(d, c)
-               ab(d, c) = t
-            end do
-         end if
-         if (km > 0) then
-            rec = 1/ab(kv + 1, j)
-            ab(kv + 2:kv + 1 + km, j) = ab(kv + 2:kv + 1 + km, j)*rec
-            ! Rank-one update of A(j+1 .. j+km, j+1 .. ju).
-            do c = j + 1, ju
-               d = kv + 1 + j - c
-               t = ab(d, c)
-               if (t /= 0) then
-                  do i = 1, km
-                     ab(d + i, c) = ab(d + i, c) - ab(kv + 1 + i, j)*t
-                  end do
-               end if
-            end do
-         end if
-      end do
-   end subroutine band_lu
 
    !> Solve A x = b with the factors; b is overwritten by x.
    subroutine band_solve(self, b, error)
@@ -219,57 +151,11 @@ contains
                           ', matrix has order '//str(self%n), stat_numerics)
          return
       end if
-      if (self%kl == 7 .and. self%ku == 10) then
-         call band_substitute_7_10(self%n, self%ab, self%ipiv, b)
-      else
-         call band_substitute(self%n, self%kl, self%ku, self%ab, self%ipiv, b)
-      end if
+      call band_substitute(self%n, self%kl, self%ku, self%ab, self%ipiv, b)
    end subroutine band_solve
 
-   !> band_substitute for kl = 7, ku = 10, the band of a time step of the box
-   !> scheme (xcable_discrete_box): with the widths known at compile time the
-   !> inner loops unroll completely, which makes the substitution, the most
-   !> frequent operation of a run, 15 % faster.
-   pure subroutine band_substitute_7_10(n, ab, ipiv, b)
-      integer, parameter :: kl = 7, ku = 10, kd = kl + ku + 1, width = kl + ku
-      !> Order.
-      integer, intent(in) :: n
-      !> LU factors in LAPACK band storage.
-      real(dp), intent(in) :: ab(2*kl + ku + 1, n)
-      !> Row interchanges.
-      integer, intent(in) :: ipiv(n)
-      !> Right-hand side on entry, solution on return.
-      real(dp), intent(inout) :: b(n)
-      integer :: i, j, l
-      real(dp) :: temp
-      do j = 1, n - 1
-         l = ipiv(j)
-         temp = b(l)
-         b(l) = b(j)
-         b(j) = temp
-         if (j <= n - kl) then
-            b(j + 1:j + kl) = b(j + 1:j + kl) - ab(kd + 1:kd + kl, j)*temp
-         else
-            do i = 1, n - j
-               b(j + i) = b(j + i) - ab(kd + i, j)*temp
-            end do
-         end if
-      end do
-      do j = n, 1, -1
-         temp = b(j)/ab(kd, j)
-         b(j) = temp
-         if (j > width) then
-            b(j - width:j - 1) = b(j - width:j - 1) - ab(kd - width:kd - 1, j)*temp
-         else
-            do i = 1, j - 1
-               b(i) = b(i) - ab(kd + i - j, j)*temp
-            end do
-         end if
-      end do
-   end subroutine band_substitute_7_10
-
-   !> Forward and back substitution with the factors of band_lu (or dgbtrf):
-   !> the operations of dgbtrs('N') for one right-hand side, in plain loops.
+   !> Forward and back substitution with the LU factors of dgbtrf: the
+   !> operations of dgbtrs('N') for one right-hand side, in plain loops.
    pure subroutine band_substitute(n, kl, ku, ab, ipiv, b)
       !> Order, sub- and super-diagonals.
       integer, intent(in) :: n, kl, ku

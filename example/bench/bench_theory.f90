@@ -30,7 +30,7 @@
 module bench_theory
    use xcable_kinds, only: dp
    use xcable_material_law, only: material_law
-   use xcable_theory, only: wave_speed, riemann_speed
+   use xcable_theory, only: wave_speed, riemann_speed, wall_incoming_strain
    implicit none
    private
    public :: wave_reference, simple_wave_reference
@@ -79,7 +79,7 @@ contains
       !> The references.
       type(wave_reference), intent(out) :: ref
       real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: t_s, eps_w, eps_inc, psi_half, lo, hi, tau_max, x, t, s_speed, t_next, t_arr, t_prev
+      real(dp) :: t_s, eps_w, eps_inc, tau_max, x, t, s_speed, t_next, t_arr, t_prev
       real(dp) :: tau(0:n_char), eps(0:n_char), c(0:n_char), dtau, t_form, t_ahead, t_behind, t_shock
       integer :: i, a, b, it
 
@@ -91,18 +91,7 @@ contains
 
       ! Incoming strain that gives the drop at the wall (phi doubles there).
       eps_w = law%strain_at((1 - drop)*t_s)
-      psi_half = 0.5_dp*riemann_speed(law, mass, eps_w, eps0)
-      lo = eps_w
-      hi = eps0
-      do it = 1, 100
-         eps_inc = 0.5_dp*(lo + hi)
-         if (riemann_speed(law, mass, eps_inc, eps0) > psi_half) then
-            lo = eps_inc
-         else
-            hi = eps_inc
-         end if
-      end do
-      eps_inc = 0.5_dp*(lo + hi)
+      eps_inc = wall_incoming_strain(law, mass, eps0, drop)
       ref%drop_time_characteristic = departure(law%tension(eps_inc)) + length/wave_speed(law, mass, eps_inc)
 
       ! Characteristics leaving the end while the tension falls to (1 - 10 drop) T_s.

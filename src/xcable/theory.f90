@@ -9,7 +9,7 @@ module xcable_theory
    implicit none
    private
    public :: catenary_shape, catenary_summary, horizontal_force
-   public :: wave_speed, riemann_speed, gauss_legendre, wall_drop_time
+   public :: wave_speed, riemann_speed, gauss_legendre, wall_drop_time, wall_incoming_strain
 
    !> Gauss-Legendre points per panel.
    integer, parameter :: n_gauss = 8
@@ -179,10 +179,30 @@ contains
       real(dp), intent(in) :: drop
       real(dp) :: t
       real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: t_s, eps_w, half, lo, hi, eps_inc, t_e
-      integer :: it
+      real(dp) :: t_s, eps_inc, t_e
       t_s = law%tension(eps0)
-      eps_w = law%strain_at((1 - drop)*t_s)
+      eps_inc = wall_incoming_strain(law, mass, eps0, drop)
+      t_e = 0
+      if (t_break > 0) t_e = 2*t_break/pi*acos(sqrt(law%tension(eps_inc)/t_s))
+      t = t_e + length/wave_speed(law, mass, eps_inc)
+   end function wall_drop_time
+
+   !> Strain of the incoming simple-wave characteristic that lowers the wall
+   !> tension by the fraction drop: phi(eps0) - phi(eps_inc) is half of
+   !> phi(eps0) - phi(eps_w), with f(eps_w) = (1 - drop) f(eps0) (bisection).
+   function wall_incoming_strain(law, mass, eps0, drop) result(eps_inc)
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Mass per unstretched length, kg/m.
+      real(dp), intent(in) :: mass
+      !> Static strain.
+      real(dp), intent(in) :: eps0
+      !> Relative drop of the wall tension.
+      real(dp), intent(in) :: drop
+      real(dp) :: eps_inc
+      real(dp) :: eps_w, half, lo, hi
+      integer :: it
+      eps_w = law%strain_at((1 - drop)*law%tension(eps0))
       half = 0.5_dp*riemann_speed(law, mass, eps_w, eps0)
       lo = eps_w
       hi = eps0
@@ -195,10 +215,7 @@ contains
          end if
       end do
       eps_inc = 0.5_dp*(lo + hi)
-      t_e = 0
-      if (t_break > 0) t_e = 2*t_break/pi*acos(sqrt(law%tension(eps_inc)/t_s))
-      t = t_e + length/wave_speed(law, mass, eps_inc)
-   end function wall_drop_time
+   end function wall_incoming_strain
 
    !> Gauss-Legendre points and weights on [-1, 1] (Newton on P_n).
    pure subroutine gauss_legendre(n, xg, wg)

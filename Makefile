@@ -26,6 +26,7 @@ run: build
 test: build
 	$(FPM) test --profile $(PROFILE)
 	test/test_figures.sh
+	test/test_fuzz.sh bin/xcable
 
 clean:
 	rm -rf build bin

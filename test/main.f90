@@ -7,6 +7,7 @@ program xcable_tests
    use suite_statics, only: collect_statics
    use suite_dynamics, only: collect_dynamics
    use suite_input, only: collect_input
+   use suite_stability, only: collect_stability
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -18,7 +19,8 @@ program xcable_tests
              new_testsuite('jacobian', collect_jacobian), &
              new_testsuite('statics', collect_statics), &
              new_testsuite('dynamics', collect_dynamics), &
-             new_testsuite('input', collect_input)]
+             new_testsuite('input', collect_input), &
+             new_testsuite('stability', collect_stability)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

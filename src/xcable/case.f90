@@ -6,7 +6,7 @@ module xcable_case
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
    use xcable_strings, only: str
-   use xcable_io_input, only: case_config
+   use xcable_io_input, only: case_config, max_time_steps
    use xcable_material_law, only: new_law
    use xcable_model_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
@@ -76,6 +76,13 @@ contains
          dynamics%dt = config%dt
       else
          dynamics%dt = config%courant*ds/wave_speed(model%law, model%mass, eps_static)
+         if (.not. (config%t_end/dynamics%dt <= max_time_steps)) then
+            call fatal_error(error, config%source//': &numerics: courant = '//str(config%courant)//': gives dt = '// &
+                             str(dynamics%dt)//' s (ds = '//str(ds)//' m, c(eps0) = '// &
+                             str(wave_speed(model%law, model%mass, eps_static))//' m/s), more than '// &
+                             str(max_time_steps)//' steps to t_end = '//str(config%t_end)//' s', stat_input)
+            return
+         end if
          ! Steps are uniform within each snapshot interval (dynamics). Fit a whole
          ! number of steps into the interval by rounding the step up, so that the
          ! Courant number at eps0 is the requested one or slightly above: below 1

@@ -6,6 +6,20 @@
 !> are uniform within each output interval; a step whose Newton iteration fails
 !> or that leaves the physical range is retried with half the step, down to a
 !> floor, and the step grows back to the requested one after four good steps.
+!> A Newton failure of an attempt that started from a Jacobian kept from
+!> earlier steps is first retried at the same step with a fresh Jacobian.
+!>
+!> Bounds that keep every run finite (issue 6): Newton stops after
+!> max_iterations, or when its update grows three times in a row, or on a
+!> non-finite residual or update; one step is halved at most
+!> log2(1 / min_step_fraction) times before the run stops; the rejected
+!> attempts of the whole run are limited to 1000 + the number of requested
+!> steps (beyond that the step stays far below dt and the run stops with a
+!> named reason: ask for a smaller dt); a step that no longer advances the
+!> time stops the run; the wall clock (max_wall_time) is checked before every
+!> attempt, rejected ones included. history%rejected(i) counts the attempts
+!> rejected before accepted step i; summary%rejected_steps counts them all
+!> (with those of a final failing step).
 module xcable_dynamics
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics
@@ -223,9 +237,10 @@ contains
       real(dp), allocatable :: y(:, :), y_prev(:, :), x_new(:), xpos(:), zpos(:)
       real(dp) :: t, h, h_step, h_prev, t_event, t_next_snapshot, end_tension, force_h, force_v, r
       real(dp) :: power_old, power_new, work_done, e(4), vel_x, vel_z, c_ref, wall, last_report
-      integer :: np, kl, ku, nsteps, n_good, rejected_here, capacity, snapshot_index, k
-      integer(i8) :: clock_start, clock_now, clock_rate
-      logical :: have_prev
+      integer :: np, kl, ku, n_good, rejected_here, capacity, snapshot_index, k
+      integer(i8) :: clock_start, clock_now, clock_rate, nsteps
+      real(dp) :: max_rejections
+      logical :: have_prev, kept_jacobian, newton_failed
       character(:), allocatable :: reason
 
       call system_clock(clock_start, clock_rate)
@@ -255,7 +270,11 @@ contains
       call system%band_widths(kl, ku)
       call work%init(n_eq*np, kl, ku, system%unknown_scale())
 
-      capacity = ceiling(options%t_end/options%dt) + ceiling(options%t_end/max(options%interval, options%dt)) + 16
+      ! Room for the requested steps and snapshots (in real arithmetic: a step
+      ! that is tiny against t_end overflowed the integer count); the history
+      ! grows when the step control needs more.
+      capacity = int(min(options%t_end/options%dt + options%t_end/max(options%interval, options%dt), 1.0e6_dp)) + 16
+      max_rejections = 1000 + options%t_end/options%dt
       call history%reserve(capacity, options%energy)
       call record(0, 0.0_dp, 0.0_dp, 0, 0)
       if (options%energy) then
@@ -279,10 +298,22 @@ contains
       end if
 
       do while (t < options%t_end*(1 - 1.0e-12_dp))
+         call system_clock(clock_now)
+         wall = real(clock_now - clock_start, dp)/clock_rate
+         if (options%max_wall_time > 0 .and. wall > options%max_wall_time) then
+            call fatal_error(error, 'wall-clock limit of '//str(options%max_wall_time)//' s reached at t = '// &
+                             str(t)//' s', stat_numerics)
+            exit
+         end if
          t_event = min(t_next_snapshot, options%t_end)
-         nsteps = max(1, ceiling((t_event - t)/h - 1.0e-6_dp))
+         nsteps = max(1_i8, ceiling(min((t_event - t)/h - 1.0e-6_dp, 1.0e18_dp), i8))
          h_step = (t_event - t)/nsteps
          if (nsteps == 1) h_step = t_event - t
+         if (.not. (t + h_step > t)) then
+            call fatal_error(error, 'step control: the step '//str(h_step)//' s no longer advances the time at t = '// &
+                             str(t)//' s', stat_numerics)
+            exit
+         end if
          r = rupture_factor(t + h_step, options%t_break)
          call system%prepare_step(y, h_step, r*force_h, r*force_v)
          ! First guess (node by node: no array temporaries in the time loop).
@@ -293,15 +324,31 @@ contains
                x_new(n_eq*(k - 1) + 1:n_eq*k) = y(:, k)
             end if
          end do
+         ! Whether Newton starts from a factorisation kept from earlier steps
+         ! (the test of newton_solve for a fresh one).
+         kept_jacobian = newton%reuse_jacobian .and. work%usable .and. work%contraction <= newton%refresh_contraction
          call newton_solve(system, x_new, work, newton, report, step_error)
          summary%factorisations = summary%factorisations + report%factorisations
+         newton_failed = allocated(step_error)
          if (.not. allocated(step_error)) call check_physical(x_new, np, step_error)
          if (allocated(step_error)) then
-            ! Reject: retry with half the step.
             summary%rejected_steps = summary%rejected_steps + 1
             rejected_here = rejected_here + 1
             work%usable = .false.
             reason = step_error%message
+            if (summary%rejected_steps > max_rejections) then
+               call fatal_error(error, 'step control: '//str(summary%rejected_steps)//' rejected attempts by t = '// &
+                                str(t)//' s (the limit is 1000 + the '//str(nint(min(max_rejections - 1000, 2.0e9_dp)))// &
+                                ' requested steps): the step stays far below dt = '//str(options%dt)// &
+                                ' s; last: '//reason, stat_numerics)
+               exit
+            end if
+            ! A Newton failure that started from a kept factorisation may be the
+            ! old Jacobian's fault, not the step's: retry the same step once with
+            ! a fresh one before halving (without this, a Newton iteration bound
+            ! of a few iterations ratcheted the step down to the floor).
+            if (newton_failed .and. kept_jacobian) cycle
+            ! Reject: retry with half the step.
             h = 0.5_dp*h
             n_good = 0
             if (h < options%dt*options%min_step_fraction) then
@@ -331,6 +378,8 @@ contains
             if (n_good >= 4) then
                h = min(2*h, options%dt)
                n_good = 0
+               ! The kept factorisation holds the mass terms of the old step.
+               work%usable = .false.
             end if
          end if
          if (history%n + 1 > ubound(history%time, 1)) call history%reserve(2*ubound(history%time, 1), options%energy)
@@ -356,11 +405,6 @@ contains
             write (error_unit, '(a,f5.1,a,es10.3,a,es10.3,a,f8.1,a,f8.1,a)') 'xcable: ', 100*t/options%t_end, &
                '%  t = ', t, ' s of ', options%t_end, ' s, wall ', wall, ' s, remaining ', &
                wall*(options%t_end - t)/max(t, tiny(t)), ' s'
-         end if
-         if (options%max_wall_time > 0 .and. wall > options%max_wall_time) then
-            call fatal_error(error, 'wall-clock limit of '//str(options%max_wall_time)//' s reached at t = '// &
-                             str(t)//' s', stat_numerics)
-            exit
          end if
       end do
 

@@ -9,7 +9,7 @@
 !> checked against their allowed ranges. Every message names the file, the
 !> group, the variable, its value and what is allowed.
 module xcable_io_input
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: str, to_lower
    use xcable_material_law, only: paper_tanh_coefficients
@@ -23,6 +23,11 @@ module xcable_io_input
       [character(len=9) :: 'tension', 'shear', 'strain', 'u', 'v', 'x', 'z', 'curvature']
 
    integer, parameter :: line_len = 1024, max_lines = 5000
+
+   !> Most time steps a run may ask for (t_end / dt): the history is kept in
+   !> memory, and a step far below this is a typing error (dt = 1e-300 made
+   !> an integer overflow and a crash).
+   integer, parameter, public :: max_time_steps = 1000000
 
    !> A case, with the paper's values as defaults (slow rupture at 315 kN).
    type :: case_config
@@ -122,61 +127,92 @@ contains
       call validate(config, error)
    end subroutine read_config
 
-   !> Read the file into lines, refusing non-text content.
+   !> Read the file into lines, refusing what is not plain text.
+   !>
+   !> The bytes are read unformatted and split here, at LF or CR LF: gfortran's
+   !> formatted stream input also ends a line at a lone CR (old Mac text) but
+   !> its namelist input does not, so the scan and the read would see
+   !> different files. A lone CR, a control byte or a byte above 126 is
+   !> refused with its line and column; a tab counts as a blank.
    subroutine load_lines(path, lines, nlines, error)
       character(*), intent(in) :: path
       character(len=line_len), allocatable, intent(out) :: lines(:)
       integer, intent(out) :: nlines
       type(error_type), allocatable, intent(out) :: error
-      integer :: unit, ios, i, c, length
+      integer, parameter :: max_bytes = line_len*max_lines
+      character(len=:), allocatable :: bytes
       character(len=256) :: msg
+      integer(i8) :: file_size
+      integer :: unit, ios, i, c, column
       logical :: exists
-      character(len=line_len + 1) :: buffer
       inquire (file=path, exist=exists)
       if (.not. exists) then
          call fatal_error(error, path//': no such file', stat_input)
          return
       end if
-      open (newunit=unit, file=path, status='old', action='read', access='stream', form='formatted', &
+      open (newunit=unit, file=path, status='old', action='read', access='stream', form='unformatted', &
             iostat=ios, iomsg=msg)
       if (ios /= 0) then
          call fatal_error(error, path//': cannot open: '//trim(msg), stat_input)
          return
       end if
+      inquire (unit=unit, size=file_size)
+      if (file_size < 0 .or. file_size > max_bytes) then
+         close (unit)
+         call fatal_error(error, path//': size '//str(int(file_size))//' bytes: not a namelist file (at most '// &
+                          str(max_bytes)//' bytes)', stat_input)
+         return
+      end if
+      allocate (character(len=int(file_size)) :: bytes)
+      ios = 0
+      if (file_size > 0) read (unit, iostat=ios, iomsg=msg) bytes
+      close (unit)
+      if (ios /= 0) then
+         call fatal_error(error, path//': cannot read: '//trim(msg)//' (not a regular text file?)', stat_input)
+         return
+      end if
       allocate (lines(max_lines))
       nlines = 0
-      do
-         buffer = ''
-         read (unit, '(a)', iostat=ios, size=length, advance='no') buffer
-         if (is_iostat_end(ios)) exit
-         if (ios /= 0 .and. .not. is_iostat_eor(ios)) then
-            call fatal_error(error, path//': cannot read line '//str(nlines + 1)//' (not a text file?)', stat_input)
-            exit
-         end if
-         if (length > line_len) then
-            call fatal_error(error, path//': line '//str(nlines + 1)//' is longer than '//str(line_len)// &
-                             ' characters', stat_input)
-            exit
-         end if
-         nlines = nlines + 1
-         if (nlines > max_lines) then
-            call fatal_error(error, path//': more than '//str(max_lines)//' lines', stat_input)
-            exit
-         end if
-         do i = 1, length
-            c = iachar(buffer(i:i))
-            if ((c < 32 .and. c /= 9 .and. c /= 13) .or. c > 126) then
-               call fatal_error(error, path//': line '//str(nlines)//', column '//str(i)// &
-                                ': byte '//str(c)//' is not printable text (a namelist is plain ASCII)', stat_input)
-               exit
+      column = -1
+      do i = 1, len(bytes)
+         c = ichar(bytes(i:i))
+         if (column < 0) then
+            ! A new line starts.
+            if (nlines == max_lines) then
+               call fatal_error(error, path//': more than '//str(max_lines)//' lines', stat_input)
+               return
             end if
-            if (c == 9 .or. c == 13) buffer(i:i) = ' '
-         end do
-         if (allocated(error)) exit
-         lines(nlines) = buffer(1:min(length, line_len))
-         if (is_iostat_end(ios)) exit
+            nlines = nlines + 1
+            lines(nlines) = ''
+            column = 0
+         end if
+         if (c == 10) then
+            column = -1
+            cycle
+         end if
+         if (c == 13) then
+            if (i < len(bytes)) then
+               if (ichar(bytes(i + 1:i + 1)) == 10) cycle
+            end if
+            call fatal_error(error, path//': line '//str(nlines)//', column '//str(column + 1)// &
+                             ': carriage return without line feed (old Mac line ends?); save the file with '// &
+                             'LF or CR LF line ends', stat_input)
+            return
+         end if
+         if (c == 9) c = 32
+         if (c < 32 .or. c > 126) then
+            call fatal_error(error, path//': line '//str(nlines)//', column '//str(column + 1)// &
+                             ': byte '//str(c)//' is not printable text (a namelist is plain ASCII)', stat_input)
+            return
+         end if
+         column = column + 1
+         if (column > line_len) then
+            call fatal_error(error, path//': line '//str(nlines)//' is longer than '//str(line_len)// &
+                             ' characters', stat_input)
+            return
+         end if
+         lines(nlines)(column:column) = achar(c)
       end do
-      close (unit)
    end subroutine load_lines
 
    !> Locate the groups, refuse unknown, duplicated and unterminated ones, and
@@ -273,12 +309,13 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=24), allocatable :: names(:)
       character :: types(20)
-      integer :: eq(200), neq, i, j, name_start, name_end, value_end, iv
-      character(:), allocatable :: name, value
+      integer :: sizes(20), lengths(20)
+      integer :: eq(200), neq, i, j, name_start, name_end, value_end, iv, capacity
+      character(:), allocatable :: name, value, subscript
       logical :: in_quote
       character :: quote
 
-      call group_variables(group, names, types)
+      call group_variables(group, names, types, sizes, lengths)
       ! Positions of '=' outside quotes.
       neq = 0
       in_quote = .false.
@@ -316,13 +353,19 @@ contains
                return
             end if
          end if
-         if (index(name, '(') > 0) name = name(1:index(name, '(') - 1)
+         subscript = ''
+         if (index(name, '(') > 0) then
+            subscript = name(index(name, '('):)
+            name = name(1:index(name, '(') - 1)
+         end if
          iv = findloc_name(names, name)
          if (iv == 0 .or. len(name) == 0) then
             call fatal_error(error, path//': &'//group//': unknown variable "'//text(name_start:name_end)// &
                              '"; allowed: '//join_names(names, ''), stat_input)
             return
          end if
+         call check_subscript(path, group, name, subscript, sizes(iv), capacity, error)
+         if (allocated(error)) return
          if (j < neq) then
             call name_before(text, eq(j + 1), value_end, i)
             value_end = value_end - 1
@@ -334,10 +377,50 @@ contains
             if (value(len(value):len(value)) /= ',') exit
             value = trim(value(1:len(value) - 1))
          end do
-         call check_value(path, group, name, value, types(iv), error)
+         call check_value(path, group, name//subscript, value, types(iv), capacity, lengths(iv), error)
          if (allocated(error)) return
       end do
    end subroutine check_assignments
+
+   !> Check the subscript of an assignment, '' or '(i)' or '(i:j)', against the
+   !> variable's size and give the number of values it can take. gfortran
+   !> itself reports a bad subscript as "Index 1 out of range" whatever the index.
+   subroutine check_subscript(path, group, name, subscript, size, capacity, error)
+      character(*), intent(in) :: path, group, name, subscript
+      !> Number of elements of the variable (1: a scalar).
+      integer, intent(in) :: size
+      !> Number of values the assignment can take.
+      integer, intent(out) :: capacity
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: inside
+      integer :: colon, first, last, ios
+      capacity = size
+      if (len(subscript) == 0) return
+      if (size == 1) then
+         call fatal_error(error, path//': &'//group//': '//name//subscript//': '//name// &
+                          ' is a single value; write it without a subscript', stat_input)
+         return
+      end if
+      inside = ''
+      if (subscript(len(subscript):len(subscript)) == ')') inside = subscript(2:len(subscript) - 1)
+      colon = index(inside, ':')
+      first = 1
+      last = size
+      ios = merge(1, 0, len_trim(inside) == 0 .or. verify(inside, '0123456789: ') > 0)
+      if (ios == 0 .and. colon == 0) then
+         read (inside, *, iostat=ios) first
+      else if (ios == 0) then
+         if (len_trim(inside(1:colon - 1)) > 0) read (inside(1:colon - 1), *, iostat=ios) first
+         if (ios == 0 .and. len_trim(inside(colon + 1:)) > 0) read (inside(colon + 1:), *, iostat=ios) last
+      end if
+      if (ios /= 0 .or. first < 1 .or. last > size .or. first > last) then
+         call fatal_error(error, path//': &'//group//': '//name//subscript//': the subscript must be an index '// &
+                          'from 1 to '//str(size)//' (or a range i:j within it)', stat_input)
+         return
+      end if
+      capacity = size - first + 1
+      if (colon > 0) capacity = last - first + 1
+   end subroutine check_subscript
 
    !> Start and end of the variable name (with an optional subscript) before position ieq.
    subroutine name_before(text, ieq, name_start, name_end)
@@ -364,12 +447,21 @@ contains
    end subroutine name_before
 
    !> Check that a value text has the variable's type: r real(s), i integer, l logical, s string.
-   subroutine check_value(path, group, name, value, kind, error)
+   !> A numeric value list may use repeat counts r*v; the number of values it
+   !> gives must fit the variable (gfortran says only "Cannot match namelist
+   !> object name" or "Repeat count too large"), and a string must fit its
+   !> variable (gfortran cuts it silently).
+   subroutine check_value(path, group, name, value, kind, capacity, max_length, error)
       character(*), intent(in) :: path, group, name, value
       character, intent(in) :: kind
+      !> Number of values the assignment can take.
+      integer, intent(in) :: capacity
+      !> Length of a string variable.
+      integer, intent(in) :: max_length
       type(error_type), allocatable, intent(out) :: error
       character(len=line_len) :: items(20)
-      integer :: n, k, ios, ival
+      integer :: n, k, ios, ival, star, repeat, count
+      character(:), allocatable :: item
       real(dp) :: rval
       logical :: lval
       character(:), allocatable :: what
@@ -391,6 +483,10 @@ contains
          if (.not. (value(1:1) == "'" .or. value(1:1) == '"') .or. len(value) < 2 .or. &
              value(len(value):len(value)) /= value(1:1)) then
             call fatal_error(error, path//': &'//group//': '//name//' = '//value//': must be '//what, stat_input)
+         else if (len(value) - 2 > max_length) then
+            call fatal_error(error, path//': &'//group//': '//name//' = '//value(1:min(len(value), 40))// &
+                             '...: is '//str(len(value) - 2)//' characters long; at most '//str(max_length)// &
+                             ' are allowed', stat_input)
          end if
          return
       end if
@@ -399,24 +495,50 @@ contains
          call fatal_error(error, path//': &'//group//': '//name//' has no value', stat_input)
          return
       end if
+      count = 0
       do k = 1, n
-         if (index(items(k), '*') > 0) cycle
+         item = trim(items(k))
+         star = index(item, '*')
+         repeat = 1
+         if (star > 0) then
+            ! r*v: r a positive integer, v a value or nothing (r null values).
+            ios = merge(1, 0, star == 1 .or. verify(item(1:max(star - 1, 1)), '0123456789') > 0)
+            if (ios == 0) read (item(1:star - 1), *, iostat=ios) repeat
+            if (ios /= 0 .or. repeat < 1) then
+               call fatal_error(error, path//': &'//group//': '//name//' = '//value//': "'//item// &
+                                '" is not a repeat count r*value with r a positive integer', stat_input)
+               return
+            end if
+            item = item(star + 1:)
+         end if
+         if (repeat > capacity - count) then
+            if (capacity == 1) then
+               call fatal_error(error, path//': &'//group//': '//name//' = '//value//': too many values; '// &
+                                name//' takes one value', stat_input)
+            else
+               call fatal_error(error, path//': &'//group//': '//name//' = '//value//': too many values; '// &
+                                name//' takes at most '//str(capacity), stat_input)
+            end if
+            return
+         end if
+         count = count + repeat
+         if (len(item) == 0) cycle
          select case (kind)
          case ('r')
-            read (items(k), *, iostat=ios) rval
+            read (item, *, iostat=ios) rval
             if (ios == 0) then
                if (.not. ieee_is_finite(rval)) ios = 1
             end if
-            if (ios == 0 .and. verify(trim(items(k)), '0123456789+-.eEdD') > 0) ios = 1
+            if (ios == 0 .and. verify(item, '0123456789+-.eEdD') > 0) ios = 1
          case ('i')
-            read (items(k), *, iostat=ios) ival
-            if (ios == 0 .and. verify(trim(items(k)), '0123456789+-') > 0) ios = 1
+            read (item, *, iostat=ios) ival
+            if (ios == 0 .and. verify(item, '0123456789+-') > 0) ios = 1
          case ('l')
-            read (items(k), *, iostat=ios) lval
-            if (ios == 0 .and. index('.tf', to_lower(items(k)(1:1))) == 0) ios = 1
+            read (item, *, iostat=ios) lval
+            if (ios == 0 .and. index('.tf', to_lower(item(1:1))) == 0) ios = 1
          end select
          if (ios /= 0) then
-            call fatal_error(error, path//': &'//group//': '//name//' = '//value//': "'//trim(items(k))// &
+            call fatal_error(error, path//': &'//group//': '//name//' = '//value//': "'//item// &
                              '" is not '//what, stat_input)
             return
          end if
@@ -451,11 +573,15 @@ contains
       end subroutine push
    end subroutine split_items
 
-   !> Variables of a group and their types (r, i, l, s).
-   subroutine group_variables(group, names, types)
+   !> Variables of a group, their types (r, i, l, s), sizes (elements) and
+   !> lengths (characters, strings only; they match case_config).
+   subroutine group_variables(group, names, types, sizes, lengths)
       character(*), intent(in) :: group
       character(len=24), allocatable, intent(out) :: names(:)
       character, intent(out) :: types(:)
+      integer, intent(out) :: sizes(:), lengths(:)
+      sizes = 1
+      lengths = 0
       select case (group)
       case ('cable')
          names = [character(len=24) :: 'length', 'diameter', 'density', 'young', 'gravity', 'area', &
@@ -464,6 +590,8 @@ contains
       case ('material')
          names = [character(len=24) :: 'law', 'p', 'ea', 'strain_max']
          types(1:4) = ['s', 'r', 'r', 'r']
+         sizes(2) = 5
+         lengths(1) = 16
       case ('static')
          names = [character(len=24) :: 'tension']
          types(1) = 'r'
@@ -477,6 +605,8 @@ contains
       case ('output')
          names = [character(len=24) :: 'file', 'interval', 'fields', 'quiet', 'energy', 'gnuplot']
          types(1:6) = ['s', 'r', 's', 'l', 'l', 'l']
+         lengths(1) = 512
+         lengths(3) = 256
       case default
          allocate (names(0))
       end select
@@ -565,15 +695,33 @@ contains
       real(dp), parameter :: pi = acos(-1.0_dp)
       character(len=256) :: items(20)
       integer :: n, k, slash, dot
-      call positive('cable', 'length', c%length, 1.0e5_dp); if (allocated(error)) return
-      call positive('cable', 'diameter', c%diameter, 10.0_dp); if (allocated(error)) return
-      call positive('cable', 'density', c%density, 1.0e5_dp); if (allocated(error)) return
-      call positive('cable', 'young', c%young, 1.0e13_dp); if (allocated(error)) return
-      call in_range('cable', 'gravity', c%gravity, 0.0_dp, 100.0_dp); if (allocated(error)) return
-      call in_range('cable', 'area', c%area, 0.0_dp, 100.0_dp); if (allocated(error)) return
-      call in_range('cable', 'bending_stiffness', c%bending_stiffness, 0.0_dp, 1.0e12_dp); if (allocated(error)) return
+      ! Lower bounds (issue 6, bad-input fuzzing): a value that is positive but
+      ! tiny (1e-300) passed "> 0" and gave a zero mass, an infinite wave
+      ! speed, a zero step or a singular Jacobian. The bounds are generous
+      ! physical ones; gravity must be > 0 because without weight the static
+      ! cable may turn freely about the fixed end (the static Jacobian is
+      ! singular), and EI far below 1e-6 N m^2 leaves the moment balance
+      ! (row 7, scaled by EI / T_s) empty at double precision.
+      call positive_in('cable', 'length', c%length, 1.0e-2_dp, 1.0e5_dp); if (allocated(error)) return
+      call positive_in('cable', 'diameter', c%diameter, 1.0e-4_dp, 10.0_dp); if (allocated(error)) return
+      call positive_in('cable', 'density', c%density, 1.0_dp, 1.0e5_dp); if (allocated(error)) return
+      call positive_in('cable', 'young', c%young, 1.0e3_dp, 1.0e13_dp); if (allocated(error)) return
+      call in_range('cable', 'gravity', c%gravity, 1.0e-6_dp, 100.0_dp, &
+                    ' (without weight the static cable may turn freely: its direction is undetermined)')
+      if (allocated(error)) return
+      call zero_or_range('cable', 'area', c%area, 1.0e-9_dp, 100.0_dp, 'pi d^2 / 4'); if (allocated(error)) return
+      call zero_or_range('cable', 'bending_stiffness', c%bending_stiffness, 1.0e-6_dp, 1.0e12_dp, 'E pi d^4 / 64')
+      if (allocated(error)) return
       if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
-      if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
+      if (c%bending_stiffness == 0) then
+         c%bending_stiffness = c%young*pi*c%diameter**4/64
+         if (c%bending_stiffness < 1.0e-6_dp) then
+            call fatal_error(error, c%source//': &cable: young = '//str(c%young)//', diameter = '//str(c%diameter)// &
+                             ': give a bending stiffness E pi d^4 / 64 = '//str(c%bending_stiffness)// &
+                             ' N m^2, below 1e-6; set bending_stiffness', stat_input)
+            return
+         end if
+      end if
       select case (c%law)
       case ('tanh')
          call positive('material', 'p(1)', c%p(1), 1.0e12_dp); if (allocated(error)) return
@@ -582,7 +730,7 @@ contains
          call in_range('material', 'p(4)', c%p(4), -1.0e12_dp, 1.0e12_dp); if (allocated(error)) return
          call positive('material', 'p(5)', c%p(5), 1.0e12_dp); if (allocated(error)) return
       case ('linear')
-         call in_range('material', 'ea', c%ea, 0.0_dp, 1.0e13_dp); if (allocated(error)) return
+         call zero_or_range('material', 'ea', c%ea, 1.0_dp, 1.0e13_dp, 'young * area'); if (allocated(error)) return
          if (c%ea == 0) c%ea = c%young*c%area
       case default
          call fatal_error(error, c%source//': &material: law = '//trim(c%law)//": must be 'tanh' or 'linear'", &
@@ -599,6 +747,12 @@ contains
       end if
       call positive('numerics', 't_end', c%t_end, 1.0e4_dp); if (allocated(error)) return
       call in_range('numerics', 'dt', c%dt, 0.0_dp, c%t_end); if (allocated(error)) return
+      if (c%dt > 0 .and. c%t_end/c%dt > max_time_steps) then
+         call fatal_error(error, c%source//': &numerics: dt = '//str(c%dt)//': gives more than '// &
+                          str(max_time_steps)//' steps to t_end = '//str(c%t_end)//'; must be at least t_end / '// &
+                          str(max_time_steps)//' = '//str(c%t_end/max_time_steps), stat_input)
+         return
+      end if
       if (c%dt == 0) then
          call positive('numerics', 'courant', c%courant, 1.0e4_dp); if (allocated(error)) return
       end if
@@ -627,6 +781,11 @@ contains
             return
          end if
       end do
+      if (trim(c%file) == c%source .or. './'//trim(c%file) == c%source .or. trim(c%file) == './'//c%source) then
+         call fatal_error(error, c%source//": &output: file = '"//trim(c%file)//"': is the input file itself", &
+                          stat_input)
+         return
+      end if
       if (len_trim(c%file) == 0) then
          slash = index(c%source, '/', back=.true.)
          dot = index(c%source, '.', back=.true.)
@@ -645,14 +804,40 @@ contains
          end if
       end subroutine positive
 
-      subroutine in_range(group, name, value, lower, upper)
+      subroutine in_range(group, name, value, lower, upper, why)
+         character(*), intent(in) :: group, name
+         real(dp), intent(in) :: value, lower, upper
+         character(*), intent(in), optional :: why
+         if (.not. (value >= lower .and. value <= upper)) then
+            if (present(why)) then
+               call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
+                                ': must be in ['//str(lower)//', '//str(upper)//']'//why, stat_input)
+            else
+               call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
+                                ': must be in ['//str(lower)//', '//str(upper)//']', stat_input)
+            end if
+         end if
+      end subroutine in_range
+
+      !> A positive quantity with a physical floor.
+      subroutine positive_in(group, name, value, lower, upper)
          character(*), intent(in) :: group, name
          real(dp), intent(in) :: value, lower, upper
          if (.not. (value >= lower .and. value <= upper)) then
             call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
-                             ': must be in ['//str(lower)//', '//str(upper)//']', stat_input)
+                             ': must be > 0 and in ['//str(lower)//', '//str(upper)//']', stat_input)
          end if
-      end subroutine in_range
+      end subroutine positive_in
+
+      !> 0 (the derived default) or a value in [lower, upper].
+      subroutine zero_or_range(group, name, value, lower, upper, default)
+         character(*), intent(in) :: group, name, default
+         real(dp), intent(in) :: value, lower, upper
+         if (.not. (value == 0 .or. (value >= lower .and. value <= upper))) then
+            call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
+                             ': must be 0 (for '//default//') or in ['//str(lower)//', '//str(upper)//']', stat_input)
+         end if
+      end subroutine zero_or_range
    end subroutine validate
 
    !> The resolved case as namelist text (for provenance in the output).

@@ -108,7 +108,14 @@ contains
          open (newunit=self%text_unit, file=self%text_stem//'.snapshots.dat', status='replace', action='write', &
                iostat=ios, iomsg=msg)
          if (ios /= 0) then
-            call fatal_error(error, 'cannot create '//self%text_stem//'.snapshots.dat: '//trim(msg), stat_io)
+            call fatal_error(error, 'cannot create '//self%text_stem//'.snapshots.dat (&output gnuplot): '// &
+                             trim(msg), stat_io)
+            ! No result file may be left by a run refused before it started.
+            call h5fclose_f(self%file, hdferr)
+            self%file = -1
+            open (newunit=self%text_unit, file=path, status='old', iostat=ios)
+            if (ios == 0) close (self%text_unit, status='delete')
+            self%text_unit = -1
             return
          end if
          self%gnuplot_text = .true.

@@ -1,0 +1,357 @@
+#!/usr/bin/env bash
+# Bad-input fuzzing of xcable (issue 6, item 5).
+#
+#   test/test_fuzz.sh [path/to/xcable]        (default bin/xcable)
+#
+# Makes malformed namelists by corrupting the valid input/*.nml files
+# (truncation, wrong types, NaN and Inf, huge and tiny values, unknown groups
+# and variables, duplicated groups, bad syntax, binary junk, output paths that
+# cannot be created) and runs xcable on each in a scratch directory of its own
+# that has an empty results/ (so a case that slipped through would write its
+# result file there). Every case must end with
+#   - exit code 2 (no signal, no timeout),
+#   - exactly one line on stderr, 'xcable: error: ...', containing the word
+#     the case expects (the group, the variable or the file at fault),
+#   - no 'Backtrace', 'Fortran runtime error' or 'Segmentation' anywhere,
+#   - no file created (the scratch directory and any absolute output path
+#     are checked).
+# Controls first: the unchanged inputs pass `--check` and one short real run
+# does write its result file (so the 'no file' check can see one).
+# Exit code: 0 if every case passed, 1 otherwise (each failure is listed).
+set -u
+
+exe=${1:-bin/xcable}
+[[ -x $exe ]] || { echo "test_fuzz: no executable $exe (make build first)" >&2; exit 1; }
+exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
+root=$(cd "$(dirname "$0")/.." && pwd)
+inputs=("$root"/input/*.nml)
+work=$(mktemp -d "${TMPDIR:-/tmp}/xcable_fuzz.XXXXXX")
+trap 'rm -rf "$work"' EXIT
+limit=30          # seconds per case: a validation takes milliseconds
+n=0
+failed=0
+failures=()
+
+# --- case construction ------------------------------------------------------
+# begin NAME EXPECT: a new scratch directory; the case file is $f.
+begin() {
+   n=$((n + 1))
+   name=$1
+   expect=$2
+   dir=$work/$(printf 'case%03d' "$n")
+   mkdir -p "$dir/results"
+   f=$dir/case.nml
+   extra_paths=()
+}
+# from BASE: start from input/BASE.nml.
+from() { cp "$root/input/$1.nml" "$f"; }
+# edit SED-EXPRESSION: change the case file.
+edit() { sed -i -e "$1" "$f"; }
+# add TEXT: append a line.
+add() { printf '%s\n' "$1" >>"$f"; }
+# set_in GROUP TEXT: put 'TEXT' right after '&GROUP' (the group must be present).
+set_in() { sed -i -e "s|^&$1 |\&$1 $2, |" "$f"; }
+# cut_after PATTERN OFFSET: keep the file up to OFFSET bytes after the first PATTERN.
+cut_after() {
+   local at
+   at=$(grep -b -o -m1 -F -- "$1" "$f" | head -1 | cut -d: -f1)
+   head -c $((at + $2)) "$f" >"$f.tmp" && mv "$f.tmp" "$f"
+}
+
+# --- running and checking ---------------------------------------------------
+# check: run xcable on the case and assert the rules above.
+check() {
+   local out=$dir.stdout err=$dir.stderr rc lines problem='' before after p
+   before=$(cd "$dir" && find . -mindepth 1 | sort)
+   (cd "$dir" && timeout "$limit" "$exe" "${args[@]:-case.nml}" >"$out" 2>"$err")
+   rc=$?
+   after=$(cd "$dir" && find . -mindepth 1 | sort)
+   lines=$(awk 'END { print NR }' "$err")
+   if ((rc == 124)); then
+      problem="timed out after $limit s (hang)"
+   elif ((rc > 128)); then
+      problem="killed by signal $((rc - 128))"
+   elif ((rc != 2)); then
+      problem="exit code $rc, expected 2"
+   fi
+   if grep -q -i -E 'backtrace|fortran runtime error|segmentation|error termination' "$out" "$err"; then
+      problem="${problem:+$problem; }crash output"
+   fi
+   if [[ $lines != 1 ]]; then
+      problem="${problem:+$problem; }$lines lines on stderr, expected 1"
+   elif ! grep -q '^xcable: error: ' "$err"; then
+      problem="${problem:+$problem; }stderr does not start with 'xcable: error: '"
+   elif ! grep -q -i -F -- "$expect" "$err"; then
+      problem="${problem:+$problem; }message does not name '$expect'"
+   fi
+   if [[ $before != "$after" ]]; then
+      problem="${problem:+$problem; }created: $(comm -13 <(echo "$before") <(echo "$after") | tr '\n' ' ')"
+   fi
+   for p in "${extra_paths[@]}"; do
+      [[ -e $p ]] && problem="${problem:+$problem; }created $p"
+   done
+   if [[ -n $problem ]]; then
+      failed=$((failed + 1))
+      failures+=("$(printf 'case%03d %s: %s | %s' "$n" "$name" "$problem" "$(head -c 300 "$err" | head -3 | tr '\n' ' ')")")
+      printf '  FAIL %03d %-44s %s\n' "$n" "$name" "$problem"
+   else
+      printf '  ok   %03d %-44s %s\n' "$n" "$name" "$(head -c 110 "$err" | head -1)"
+   fi
+   args=()
+}
+args=()
+
+# --- controls ---------------------------------------------------------------
+echo "controls: the valid inputs"
+for input in "${inputs[@]}"; do
+   if ! (cd "$root" && "$exe" --check "$input" >/dev/null 2>&1); then
+      echo "  FAIL control: $input is refused by --check"
+      failed=$((failed + 1))
+      failures+=("control $input refused")
+   fi
+done
+# Valid variants the stricter scan must still accept.
+control_ok() {
+   local what=$1 text=$2 c=$work/control.nml
+   printf '%b' "$text" >"$c"
+   if ! "$exe" --check "$c" >/dev/null 2>"$c.err"; then
+      echo "  FAIL control: refused $what: $(head -1 "$c.err")"
+      failed=$((failed + 1))
+      failures+=("control refused: $what")
+   else
+      echo "  ok   accepted: $what"
+   fi
+}
+control_ok 'CR LF line ends' "! DOS text\r\n&static tension = 180000 /\r\n&numerics nodes = 41 /\r\n"
+control_ok 'an element and a range of p' "&material p(2) = 10.2, p(3:4) = -2.128, 2.627e5 /\n"
+control_ok 'p filled from element 4' "&material p(4) = 2.627e5, 135.5 /\n"
+control_ok 'repeat counts' "&material p = 2.703e5, 10.2, -2.128, 2*2.627e5 /\n"
+control_ok 'tabs and trailing blanks' "&static\ttension = 180000   /  \n"
+begin control_run ''
+from fast_180kN
+edit 's/nodes = [0-9]*/nodes = 21/; s/t_end = [0-9.]*/t_end = 0.002/; s/interval = [0-9.]*/interval = 0.001/'
+(cd "$dir" && timeout "$limit" "$exe" case.nml >/dev/null 2>&1)
+if [[ $? != 0 || ! -s $dir/results/fast_180kN.h5 ]]; then
+   echo "  FAIL control: a short valid run did not write results/fast_180kN.h5"
+   failed=$((failed + 1))
+   failures+=("control run wrote no result file")
+else
+   echo "  ok   a short valid run writes its result file"
+fi
+
+echo "malformed namelists"
+# --- truncation ---------------------------------------------------------------
+for base in fast_180kN fast_315kN slow_180kN slow_315kN; do
+   begin "truncated $base inside &numerics" '&numerics'
+   from $base; cut_after '&numerics' 20; check
+done
+begin 'truncated inside a quoted file name' '&output'
+from slow_315kN; cut_after "file = '" 5; check
+begin 'truncated to the comment header' 'no namelist group'
+from fast_180kN; cut_after '&static' 0; check
+begin 'truncated to zero bytes' 'case.nml'
+from fast_180kN; : >"$f"; check
+begin 'truncated inside a value (no /)' '&static'
+from slow_180kN; cut_after '&static' 22; check
+
+# --- wrong types --------------------------------------------------------------
+begin 'real given as a word' 'tension'
+from fast_315kN; edit 's/tension = 315000/tension = abc/'; check
+begin 'real given as a string' 'tension'
+from fast_315kN; edit "s/tension = 315000/tension = '315000'/"; check
+begin 'integer given as a real' 'nodes'
+from fast_315kN; edit 's/nodes = 241/nodes = 24.1/'; check
+begin 'integer given as a logical' 'nodes'
+from fast_315kN; edit 's/nodes = 241/nodes = .true./'; check
+begin 'real with a unit' 't_break'
+from fast_180kN; edit 's/t_break = 0.005/t_break = 5 ms/'; check
+begin 'logical given as an integer' 'gnuplot'
+from fast_180kN; edit 's/gnuplot = .true./gnuplot = 1/'; check
+begin 'logical given as a string' 'energy'
+from fast_180kN; edit "s/energy = .true./energy = 'yes'/"; check
+begin 'string without quotes' 'file'
+from slow_180kN; edit "s|file = 'results/slow_180kN.h5'|file = results/slow_180kN.h5|"; check
+begin 'law given as a number' 'law'
+from slow_180kN; add '&material law = 5 /'; check
+begin 'array with a word' 'p'
+from slow_180kN; add '&material p = 2.703e5, ten, -2.128, 2.627e5, 135.5 /'; check
+begin 'fields given as a number' 'fields'
+from slow_180kN; set_in output 'fields = 3'; check
+
+# --- NaN and Inf ----------------------------------------------------------------
+begin 'tension = NaN' 'tension'
+from fast_315kN; edit 's/tension = 315000/tension = NaN/'; check
+begin 't_break = Inf' 't_break'
+from fast_315kN; edit 's/t_break = 0.005/t_break = Inf/'; check
+begin 'courant = -Infinity' 'courant'
+from fast_315kN; edit 's/courant = 1.0/courant = -Infinity/'; check
+begin 't_end = +inf' 't_end'
+from slow_315kN; edit 's/t_end = [0-9.]*/t_end = +inf/'; check
+begin 'interval = nan' 'interval'
+from slow_315kN; edit 's/interval = 0.01/interval = nan/'; check
+begin 'p(2) = NaN' 'p'
+from slow_315kN; add '&material p(2) = NaN /'; check
+begin 'theta = NaN' 'theta'
+from slow_315kN; set_in numerics 'theta = NaN'; check
+begin 'length = Infinity' 'length'
+from slow_315kN; add '&cable length = Infinity /'; check
+begin 'NaN behind a repeat count' 'tension'
+from fast_315kN; edit 's/tension = 315000/tension = 1*NaN/'; check
+begin 'max_wall_time = Inf' 'max_wall_time'
+from fast_180kN; set_in numerics 'max_wall_time = Inf'; check
+
+# --- huge and tiny values ---------------------------------------------------------
+begin 'tension = 1e300' 'tension'
+from fast_315kN; edit 's/tension = 315000/tension = 1e300/'; check
+begin 'tension = 1e-300 (cannot hold the weight)' 'tension'
+from fast_315kN; edit 's/tension = 315000/tension = 1e-300/'; check
+begin 'tension beyond the law (strain_max)' 'tension'
+from fast_315kN; edit 's/tension = 315000/tension = 9e5/'; check
+begin 'nodes overflowing an integer' 'nodes'
+from fast_315kN; edit 's/nodes = 241/nodes = 99999999999/'; check
+begin 'nodes = 2147483647' 'nodes'
+from fast_315kN; edit 's/nodes = 241/nodes = 2147483647/'; check
+begin 'nodes = -5' 'nodes'
+from fast_315kN; edit 's/nodes = 241/nodes = -5/'; check
+begin 'nodes = 2' 'nodes'
+from fast_315kN; edit 's/nodes = 241/nodes = 2/'; check
+begin 'dt = 1e-300' 'dt'
+from fast_315kN; set_in numerics 'dt = 1e-300'; check
+begin 'courant = 1e-300' 'courant'
+from fast_315kN; edit 's/courant = 1.0/courant = 1e-300/'; check
+begin 'courant = 1e300' 'courant'
+from fast_315kN; edit 's/courant = 1.0/courant = 1e300/'; check
+begin 't_end = 1e300' 't_end'
+from slow_315kN; edit 's/t_end = [0-9.]*/t_end = 1e300/'; check
+begin 'length = 1e-300' 'length'
+from slow_315kN; add '&cable length = 1e-300 /'; check
+begin 'density = 1e-320 (denormal)' 'density'
+from slow_315kN; add '&cable density = 1e-320 /'; check
+begin 'diameter = 1e300' 'diameter'
+from slow_315kN; add '&cable diameter = 1e300 /'; check
+begin 'young = 1e-300' 'young'
+from slow_315kN; add '&cable young = 1e-300 /'; check
+begin 'gravity = 0 (static direction undetermined)' 'gravity'
+from slow_315kN; add '&cable gravity = 0 /'; check
+begin 'gravity = 1e300' 'gravity'
+from slow_315kN; add '&cable gravity = 1e300 /'; check
+begin 'bending_stiffness = 1e-300' 'bending_stiffness'
+from slow_315kN; add '&cable bending_stiffness = 1e-300 /'; check
+begin 'area = -1' 'area'
+from slow_315kN; add '&cable area = -1 /'; check
+begin 't_break = -0.005' 't_break'
+from fast_315kN; edit 's/t_break = 0.005/t_break = -0.005/'; check
+begin 'theta = 0.4' 'theta'
+from slow_315kN; set_in numerics 'theta = 0.4'; check
+begin 'newton_tol = 1e-300' 'newton_tol'
+from slow_315kN; set_in numerics 'newton_tol = 1e-300'; check
+begin 'newton_max_iter = 0' 'newton_max_iter'
+from slow_315kN; set_in numerics 'newton_max_iter = 0'; check
+begin 'min_step_fraction = 0' 'min_step_fraction'
+from slow_315kN; set_in numerics 'min_step_fraction = 0'; check
+begin 'interval = 1e-300' 'interval'
+from slow_315kN; edit 's/interval = 0.01/interval = 1e-300/'; check
+begin 'p(1) = 1e300' 'p'
+from slow_315kN; add '&material p(1) = 1e300 /'; check
+begin 'p(5) = -135.5 (f decreasing)' 'p'
+from slow_315kN; add '&material p(5) = -135.5 /'; check
+begin 'strain_max = 1e-300' 'tension'
+from slow_315kN; add '&material strain_max = 1e-300 /'; check
+begin 'linear law with ea = 1e-300' 'ea'
+from slow_315kN; add "&material law = 'linear', ea = 1e-300 /"; check
+begin 'dt larger than t_end' 'dt'
+from slow_315kN; set_in numerics 'dt = 1.0'; check
+
+# --- unknown groups and variables, duplicates, subscripts --------------------------
+begin 'unknown group &foo' '&foo'
+from fast_180kN; add '&foo bar = 1 /'; check
+begin 'misspelled group &statics' '&statics'
+from fast_180kN; edit 's/&static /\&statics /'; check
+begin 'misspelled variable tensionn' 'tensionn'
+from fast_180kN; edit 's/tension = /tensionn = /'; check
+begin 'variable of another group' 't_break'
+from fast_180kN; edit 's/tension = 180000/tension = 180000, t_break = 0.1/'; check
+begin 'misspelled variable in &cable' 'lenght'
+from fast_180kN; add '&cable lenght = 60 /'; check
+begin 'duplicated group &static' '&static'
+from fast_180kN; add '&static tension = 100000 /'; check
+begin 'duplicated group &numerics' '&numerics'
+from slow_315kN; add '&numerics nodes = 121 /'; check
+begin 'subscript out of range p(7)' 'p'
+from slow_315kN; add '&material p(7) = 1 /'; check
+begin 'subscript zero p(0)' 'p'
+from slow_315kN; add '&material p(0) = 1 /'; check
+begin 'too many values for p' 'p'
+from slow_315kN; add '&material p = 1, 2, 3, 4, 5, 6 /'; check
+begin 'subscript on a scalar' 'tension'
+from slow_315kN; edit 's/tension = 315000/tension(2) = 315000/'; check
+begin 'repeat count on a scalar' 'nodes'
+from slow_315kN; edit 's/nodes = 241/nodes = 2*241/'; check
+begin 'unknown law name' 'law'
+from slow_315kN; add "&material law = 'rubber' /"; check
+begin 'unknown snapshot field' 'fields'
+from slow_315kN; set_in output "fields = 'tension torque'"; check
+
+# --- syntax -------------------------------------------------------------------------
+begin 'assignment without =' '&static'
+from fast_180kN; edit 's/tension = 180000/tension 180000/'; check
+begin 'assignment without value' 'tension'
+from fast_180kN; edit 's/tension = 180000/tension = /'; check
+begin 'group without a name' 'case.nml'
+from fast_180kN; add '& tension = 1 /'; check
+begin 'old-style $group ... $end' 'case.nml'
+from fast_180kN; add '$static tension = 1 $end'; check
+begin 'text after the closing /' 'case.nml'
+from fast_180kN; edit 's|t_break = 0.005 /|t_break = 0.005 / junk|'; check
+begin 'missing closing / (next group starts)' '&rupture'
+from fast_180kN; edit 's|t_break = 0.005 /|t_break = 0.005|'; check
+begin 'unterminated quote' '&output'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'results/fast_180kN.h5|"; check
+begin 'line longer than 1024 characters' 'case.nml'
+from fast_180kN; add "! $(printf 'x%.0s' {1..1500})"; check
+begin 'file name longer than the variable holds' 'file'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'results/$(printf 'd%.0s' {1..600}).h5'|"; check
+begin 'CR-only line ends (old Mac text)' 'case.nml'
+from fast_180kN; tr '\n' '\r' <"$f" >"$f.tmp"; mv "$f.tmp" "$f"; check
+
+# --- binary junk ---------------------------------------------------------------------
+begin 'NUL byte inside a group' 'case.nml'
+from fast_180kN; printf '&cable length = 6\0000 /\n' >>"$f"; check
+begin 'junk bytes appended' 'case.nml'
+from slow_315kN; printf '\x89HDF\r\n\x1a\n\x00\x00\xff\xfe\x01' >>"$f"; check
+begin 'UTF-8 in a comment' 'case.nml'
+from slow_315kN; add '! Zugfestigkeit in kN, Dehnung in % (Kabel aus Polyamid, Länge 60 m)'; check
+begin 'the executable as input' 'case.nml'
+cp "$exe" "$f"; check
+begin 'an HDF5 file as input' 'case.nml'
+printf '\x89HDF\r\n\x1a\n' >"$f"; head -c 2000 /dev/zero >>"$f"; check
+begin 'input is a directory' 'case.nml'
+rm -rf "$f"; mkdir "$f"; check
+begin 'input does not exist' 'missing.nml'
+args=(missing.nml); check
+
+# --- output paths ------------------------------------------------------------------
+begin 'output in a missing directory' 'no/such/dir'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'no/such/dir/out.h5'|"; check
+begin 'output whose parent is a regular file' 'case.nml/out.h5'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'case.nml/out.h5'|"; check
+begin 'output in /proc' '/proc/'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = '/proc/xcable_fuzz_$$.h5'|"
+extra_paths=("/proc/xcable_fuzz_$$.h5"); check
+begin 'output over a read-only /proc file' '/proc/version'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = '/proc/version'|"; check
+begin 'output is a directory' 'results'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'results/'|"; check
+begin 'gnuplot text cannot be created' 'snapshots.dat'
+from fast_180kN; mkdir -p "$dir/results/fast_180kN.snapshots.dat"; check
+begin 'output is the input file itself' 'input file itself'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'case.nml'|"; check
+begin 'output path is the root directory' 'file'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = '/'|"; check
+
+echo "$n cases, $failed failed"
+if ((failed > 0)); then
+   printf '%s\n' "${failures[@]}"
+   exit 1
+fi
+exit 0

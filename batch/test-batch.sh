@@ -120,7 +120,8 @@ check "every task logged its attempt" test "$(grep -l 'job local_' "$sweep"/logs
 # Damage the results: one missing, one unreadable, one left 'running' by a killed run.
 rm "$sweep/results/0000.h5"
 head -c 4096 /dev/urandom >"$sweep/results/0002.h5"
-sed -i 's/^   nodes = 41$/   nodes = 4001/; s/^   t_end = 0.02$/   t_end = 50/' "$sweep/cases/0004.nml"
+# (t_end = 10 s on 4001 nodes: 7e5 steps, under the input limit of 1e6, so it runs until killed.)
+sed -i 's/^   nodes = 41$/   nodes = 4001/; s/^   t_end = 0.02$/   t_end = 10/' "$sweep/cases/0004.nml"
 (cd "$sweep" && exec "$xcable" cases/0004.nml) &
 long_pid=$!
 for _ in $(seq 100); do
@@ -153,7 +154,7 @@ check "a sweep larger than MaxArraySize is split into arrays with offsets" \
   test "$(grep -o 'array=[^ ]* --export=ALL\\,SWEEP_OFFSET=[0-9]*' <<<"$out" | tr '\n' ' ')" = \
   'array=0-4 --export=ALL\,SWEEP_OFFSET=0 array=0-4 --export=ALL\,SWEEP_OFFSET=5 array=0-1 --export=ALL\,SWEEP_OFFSET=10 '
 # Make the failed cases good and rerun only what is not complete.
-sed -i 's/^   max_wall_time = 1e-6$/   max_wall_time = 0/; s/^   nodes = 4001$/   nodes = 41/; s/^   t_end = 50$/   t_end = 0.02/' \
+sed -i 's/^   max_wall_time = 1e-6$/   max_wall_time = 0/; s/^   nodes = 4001$/   nodes = 41/; s/^   t_end = 10$/   t_end = 0.02/' \
   "$sweep"/cases/*.nml
 out=$("$here/sweep-local" "$sweep" --failed-only -j 2 2>&1) && code=0 || code=$?
 check "sweep-local --failed-only reran exactly the 9 tasks" test "$code" -eq 0 -a "$(grep -c '^task ' <<<"$out")" -eq 9

@@ -28,7 +28,7 @@ program xcable_main
    type(run_history) :: history
    type(run_summary) :: summary
    type(result_file) :: output
-   type(error_type), allocatable :: error
+   type(error_type), allocatable :: error, write_error
    character(len=4096) :: path
    integer :: nargs
    logical :: check_only
@@ -68,16 +68,24 @@ program xcable_main
 
    call solve_statics(model, s, config%tension, newton, state, error)
    if (allocated(error)) call fail_run(error, 0.0_dp)
-   call output%write_static(state)
+   call output%write_static(state, error)
+   if (allocated(error)) call fail_run(error, 0.0_dp)
    if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(state%span)//' m, sag '// &
       str(state%sag)//' m, '//str(state%newton%iterations)//' Newton iterations; dynamics with '// &
       str(config%nodes)//' nodes, dt '//str(dynamics%dt)//' s'
 
    call run_rupture(model, s, state%y, dynamics, history, summary, error, output)
-   call output%write_history(history)
-   call output%write_summary(summary)
+   ! A failed run keeps its history and summary too; the first error is reported.
+   call output%write_history(history, write_error)
+   if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
+   call output%write_summary(summary, write_error)
+   if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
    if (allocated(error)) call fail_run(error, summary%time_reached)
-   call output%finish('complete')
+   call output%finish('complete', error=error)
+   if (allocated(error)) then
+      write (error_unit, '(a)') 'xcable: error: '//error%message
+      stop 1, quiet=.true.
+   end if
    if (.not. config%quiet) write (error_unit, '(a)') 'xcable: complete in '//str(summary%wall_time)//' s: '// &
       str(summary%steps)//' steps, peak end speed '//str(summary%peak_end_speed)//' m/s, results in '//trim(config%file)
 

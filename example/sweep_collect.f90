@@ -22,6 +22,7 @@
 program sweep_collect
    use xcable_kinds, only: dp
    use hdf5
+   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_int_attr, put_text_attr
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    implicit none
@@ -493,7 +494,7 @@ contains
       call put_text_vector(file, 'status', statuses, ok)
       do k = 1, size(real_names)
          numbers = results%reals(k)
-         call put_real_vector(file, trim(real_names(k)), numbers, trim(real_units(k)), ok)
+         call put_real_vector(file, trim(real_names(k)), numbers, ok, trim(real_units(k)))
       end do
       do k = 1, size(int_names)
          integers = results%ints(k)
@@ -511,164 +512,18 @@ contains
             if (ios /= 0 .or. verify(trim(values(k, i)), '0123456789+-.eEdD') > 0) numeric = .false.
          end do
          if (numeric) then
-            call put_real_vector(group, trim(names(k)), numbers, '', ok)
+            call put_real_vector(group, trim(names(k)), numbers, ok)
          else
             call put_text_vector(group, trim(names(k)), values(k, :), ok)
          end if
       end do
       call h5gclose_f(group, hdferr)
-      call put_text(file, 'sweep', outdir, ok)
-      call put_int(file, 'cases', n, ok)
+      call put_text_attr(file, 'sweep', outdir, ok)
+      call put_int_attr(file, 'cases', n, ok)
       do k = 1, size(status_names)
-         call put_int(file, trim(status_names(k)), counts(k), ok)
+         call put_int_attr(file, trim(status_names(k)), counts(k), ok)
       end do
       call h5fclose_f(file, hdferr)
       ok = ok .and. hdferr == 0
    end subroutine write_h5
-
-   !> A 1-D real dataset, with a units attribute unless units is ''.
-   subroutine put_real_vector(loc, name, values, units, ok)
-      !> File or group.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset name.
-      character(*), intent(in) :: name
-      !> Values.
-      real(dp), intent(in) :: values(:)
-      !> Units ('' for none).
-      character(*), intent(in) :: units
-      !> Cleared on an HDF5 error.
-      logical, intent(inout) :: ok
-      integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-      dims = size(values)
-      call h5screate_simple_f(1, dims, space, hdferr)
-      call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, space, dset, hdferr)
-      if (hdferr /= 0) then
-         ok = .false.
-         call h5sclose_f(space, hdferr)
-         return
-      end if
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-      ok = ok .and. hdferr == 0
-      if (len(units) > 0) call put_text(dset, 'units', units, ok)
-      call h5dclose_f(dset, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_real_vector
-
-   !> A 1-D integer dataset.
-   subroutine put_int_vector(loc, name, values, ok)
-      !> File or group.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset name.
-      character(*), intent(in) :: name
-      !> Values.
-      integer, intent(in) :: values(:)
-      !> Cleared on an HDF5 error.
-      logical, intent(inout) :: ok
-      integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-      dims = size(values)
-      call h5screate_simple_f(1, dims, space, hdferr)
-      call h5dcreate_f(loc, name, H5T_NATIVE_INTEGER, space, dset, hdferr)
-      if (hdferr /= 0) then
-         ok = .false.
-         call h5sclose_f(space, hdferr)
-         return
-      end if
-      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, values, dims, hdferr)
-      ok = ok .and. hdferr == 0
-      call h5dclose_f(dset, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_int_vector
-
-   !> A 1-D dataset of fixed-length, null-padded strings, as long as the longest
-   !> trimmed entry (so h5py reads 'failed', not 'failed  ').
-   subroutine put_text_vector(loc, name, values, ok)
-      !> File or group.
-      integer(hid_t), intent(in) :: loc
-      !> Dataset name.
-      character(*), intent(in) :: name
-      !> Values.
-      character(len=*), intent(in) :: values(:)
-      !> Cleared on an HDF5 error.
-      logical, intent(inout) :: ok
-      integer(hid_t) :: dset, space, string_type
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr, length, i
-      character(len=:), allocatable :: buffer(:)
-      length = max(1, maxval(len_trim(values)))
-      allocate (character(len=length) :: buffer(size(values)))
-      do i = 1, size(values)
-         buffer(i) = repeat(achar(0), length)
-         buffer(i)(1:len_trim(values(i))) = values(i)(1:len_trim(values(i)))
-      end do
-      dims = size(values)
-      call h5screate_simple_f(1, dims, space, hdferr)
-      call h5tcopy_f(H5T_NATIVE_CHARACTER, string_type, hdferr)
-      call h5tset_size_f(string_type, int(length, size_t), hdferr)
-      call h5tset_strpad_f(string_type, H5T_STR_NULLPAD_F, hdferr)
-      call h5dcreate_f(loc, name, string_type, space, dset, hdferr)
-      if (hdferr /= 0) then
-         ok = .false.
-      else
-         call h5dwrite_f(dset, string_type, buffer, dims, hdferr)
-         ok = ok .and. hdferr == 0
-         call h5dclose_f(dset, hdferr)
-      end if
-      call h5tclose_f(string_type, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_text_vector
-
-   !> A string attribute.
-   subroutine put_text(loc, name, text, ok)
-      !> File, group or dataset.
-      integer(hid_t), intent(in) :: loc
-      !> Attribute name.
-      character(*), intent(in) :: name
-      !> Value (not empty).
-      character(*), intent(in) :: text
-      !> Cleared on an HDF5 error.
-      logical, intent(inout) :: ok
-      integer(hid_t) :: attr, space, string_type
-      integer :: hdferr
-      call h5screate_f(H5S_SCALAR_F, space, hdferr)
-      call h5tcopy_f(H5T_NATIVE_CHARACTER, string_type, hdferr)
-      call h5tset_size_f(string_type, int(max(len(text), 1), size_t), hdferr)
-      call h5acreate_f(loc, name, string_type, space, attr, hdferr)
-      if (hdferr /= 0) then
-         ok = .false.
-      else
-         call h5awrite_f(attr, string_type, text, [1_hsize_t], hdferr)
-         ok = ok .and. hdferr == 0
-         call h5aclose_f(attr, hdferr)
-      end if
-      call h5tclose_f(string_type, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_text
-
-   !> An integer attribute.
-   subroutine put_int(loc, name, value, ok)
-      !> File, group or dataset.
-      integer(hid_t), intent(in) :: loc
-      !> Attribute name.
-      character(*), intent(in) :: name
-      !> Value.
-      integer, intent(in) :: value
-      !> Cleared on an HDF5 error.
-      logical, intent(inout) :: ok
-      integer(hid_t) :: attr, space
-      integer :: hdferr
-      call h5screate_f(H5S_SCALAR_F, space, hdferr)
-      call h5acreate_f(loc, name, H5T_NATIVE_INTEGER, space, attr, hdferr)
-      if (hdferr /= 0) then
-         ok = .false.
-      else
-         call h5awrite_f(attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
-         ok = ok .and. hdferr == 0
-         call h5aclose_f(attr, hdferr)
-      end if
-      call h5sclose_f(space, hdferr)
-   end subroutine put_int
 end program sweep_collect

@@ -8,6 +8,7 @@ program xcable_tests
    use suite_dynamics, only: collect_dynamics
    use suite_input, only: collect_input
    use suite_stability, only: collect_stability
+   use suite_output, only: collect_output
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -20,7 +21,8 @@ program xcable_tests
              new_testsuite('statics', collect_statics), &
              new_testsuite('dynamics', collect_dynamics), &
              new_testsuite('input', collect_input), &
-             new_testsuite('stability', collect_stability)]
+             new_testsuite('stability', collect_stability), &
+             new_testsuite('output', collect_output)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -19,6 +19,7 @@ module xcable_io_output
    use xcable_io_input, only: known_fields
    use xcable_statics, only: static_state
    use xcable_dynamics, only: run_observer, run_history, run_summary, n_energy, energy_names
+   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr
    use hdf5
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
@@ -79,6 +80,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: hdferr, i, dot, ios
       character(len=256) :: msg
+      logical :: ok
       self%path = path
       self%model = model
       self%s = s
@@ -94,13 +96,18 @@ contains
          self%file = -1
          return
       end if
-      call put_text(self%file, 'status', 'running')
-      call put_text(self%file, 'namelist', namelist_text)
-      call put_text(self%file, 'input_file', input_file)
-      call put_text(self%file, 'code_version', code_version)
-      call put_text(self%file, 'compiler_version', compiler_version())
-      call put_text(self%file, 'compiler_options', compiler_options())
-      call put_vector(self%file, 's', s)
+      ok = .true.
+      call put_text_attr(self%file, 'status', 'running', ok)
+      call put_text_attr(self%file, 'namelist', namelist_text, ok)
+      call put_text_attr(self%file, 'input_file', input_file, ok)
+      call put_text_attr(self%file, 'code_version', code_version, ok)
+      call put_text_attr(self%file, 'compiler_version', compiler_version(), ok)
+      call put_text_attr(self%file, 'compiler_options', compiler_options(), ok)
+      call put_real_vector(self%file, 's', s, ok)
+      if (.not. ok) then
+         call fatal_error(error, "writing the provenance to '"//path//"' failed", stat_io)
+         return
+      end if
       if (gnuplot) then
          dot = index(path, '.', back=.true.)
          if (dot <= index(path, '/', back=.true.)) dot = len(path) + 1
@@ -127,29 +134,36 @@ contains
    end subroutine result_create
 
    !> Write the static state.
-   subroutine result_write_static(self, state)
+   subroutine result_write_static(self, state, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Static solution.
       type(static_state), intent(in) :: state
+      !> Error when writing fails.
+      type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group
       integer :: hdferr
+      logical :: ok
       call h5gcreate_f(self%file, 'static', group, hdferr)
-      call put_vector(group, 's', self%s)
-      call put_vector(group, 'x', state%x)
-      call put_vector(group, 'z', state%z)
-      call put_vector(group, 'tension', self%model%law%tension(state%y(i_eps, :)))
-      call put_vector(group, 'shear', state%y(i_sn, :))
-      call put_vector(group, 'strain', state%y(i_eps, :))
-      call put_vector(group, 'curvature', state%y(i_om, :))
-      call put_vector(group, 'beta0', state%y(i_b0, :))
-      call put_vector(group, 'beta3', state%y(i_b3, :))
-      call put_real(group, 'span', state%span)
-      call put_real(group, 'sag', state%sag)
-      call put_real(group, 'end_angle', state%end_angle)
-      call put_int(group, 'newton_iterations', state%newton%iterations)
-      call h5gclose_f(group, hdferr)
+      ok = hdferr == 0
+      if (ok) then
+         call put_real_vector(group, 's', self%s, ok)
+         call put_real_vector(group, 'x', state%x, ok)
+         call put_real_vector(group, 'z', state%z, ok)
+         call put_real_vector(group, 'tension', self%model%law%tension(state%y(i_eps, :)), ok)
+         call put_real_vector(group, 'shear', state%y(i_sn, :), ok)
+         call put_real_vector(group, 'strain', state%y(i_eps, :), ok)
+         call put_real_vector(group, 'curvature', state%y(i_om, :), ok)
+         call put_real_vector(group, 'beta0', state%y(i_b0, :), ok)
+         call put_real_vector(group, 'beta3', state%y(i_b3, :), ok)
+         call put_real_attr(group, 'span', state%span, ok)
+         call put_real_attr(group, 'sag', state%sag, ok)
+         call put_real_attr(group, 'end_angle', state%end_angle, ok)
+         call put_int_attr(group, 'newton_iterations', state%newton%iterations, ok)
+         call h5gclose_f(group, hdferr)
+      end if
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
+      if (.not. ok .or. hdferr /= 0) call fatal_error(error, "writing /static to '"//self%path//"' failed", stat_io)
    end subroutine result_write_static
 
    !> Append one snapshot (run_observer).
@@ -201,32 +215,48 @@ contains
    end subroutine result_snapshot
 
    !> Write the history of the run.
-   subroutine result_write_history(self, history)
+   subroutine result_write_history(self, history, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> One record per accepted step.
       type(run_history), intent(in) :: history
+      !> Error when writing fails.
+      type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group, egroup
       integer :: hdferr, n, i, unit, ios
+      logical :: ok
       n = history%n
       call h5gcreate_f(self%file, 'history', group, hdferr)
-      call put_vector(group, 'time', history%time(0:n))
-      call put_vector(group, 'step', history%step(0:n))
-      call put_vector(group, 'end_velocity', history%end_velocity(0:n))
-      call put_vector(group, 'fixed_end_tension', history%fixed_end_tension(0:n))
-      call put_int_vector(group, 'newton_iterations', history%newton_iterations(0:n))
-      call put_int_vector(group, 'rejected', history%rejected(0:n))
-      if (allocated(history%energy)) then
-         call h5gcreate_f(group, 'energy', egroup, hdferr)
-         do i = 1, n_energy
-            call put_vector(egroup, trim(energy_names(i)), history%energy(i, 0:n))
-         end do
-         call h5gclose_f(egroup, hdferr)
+      ok = hdferr == 0
+      if (ok) then
+         call put_real_vector(group, 'time', history%time(0:n), ok)
+         call put_real_vector(group, 'step', history%step(0:n), ok)
+         call put_real_vector(group, 'end_velocity', history%end_velocity(0:n), ok)
+         call put_real_vector(group, 'fixed_end_tension', history%fixed_end_tension(0:n), ok)
+         call put_int_vector(group, 'newton_iterations', history%newton_iterations(0:n), ok)
+         call put_int_vector(group, 'rejected', history%rejected(0:n), ok)
+         if (allocated(history%energy)) then
+            call h5gcreate_f(group, 'energy', egroup, hdferr)
+            ok = ok .and. hdferr == 0
+            if (hdferr == 0) then
+               do i = 1, n_energy
+                  call put_real_vector(egroup, trim(energy_names(i)), history%energy(i, 0:n), ok)
+               end do
+               call h5gclose_f(egroup, hdferr)
+            end if
+         end if
+         call h5gclose_f(group, hdferr)
       end if
-      call h5gclose_f(group, hdferr)
+      if (.not. ok) then
+         call fatal_error(error, "writing /history to '"//self%path//"' failed", stat_io)
+         return
+      end if
       if (allocated(self%text_stem)) then
          open (newunit=unit, file=self%text_stem//'.history.dat', status='replace', action='write', iostat=ios)
-         if (ios /= 0) return
+         if (ios /= 0) then
+            call fatal_error(error, 'cannot create '//self%text_stem//'.history.dat (&output gnuplot)', stat_io)
+            return
+         end if
          if (allocated(history%energy)) then
             write (unit, '(a)') '# columns: t[s] end_velocity[m/s] fixed_end_tension[N] newton_iterations '// &
                'E_strain[J] E_kinetic[J] E_bending[J] E_gravity[J] W_end[J] ledger[J]'
@@ -247,33 +277,40 @@ contains
    end subroutine result_write_history
 
    !> Write the summary figures as attributes of /summary.
-   subroutine result_write_summary(self, summary)
+   subroutine result_write_summary(self, summary, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Figures of the run.
       type(run_summary), intent(in) :: summary
+      !> Error when writing fails.
+      type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group
       integer :: hdferr
+      logical :: ok
       call h5gcreate_f(self%file, 'summary', group, hdferr)
-      call put_real(group, 'peak_end_speed', summary%peak_end_speed)
-      call put_real(group, 'peak_end_speed_time', summary%peak_end_speed_time)
-      call put_real(group, 'min_fixed_end_tension', summary%min_fixed_end_tension)
-      call put_real(group, 'min_fixed_end_tension_time', summary%min_fixed_end_tension_time)
-      call put_real(group, 'front_arrival_time', summary%front_arrival_time)
-      call put_real(group, 'energy_drift', summary%energy_drift)
-      call put_real(group, 'time_reached', summary%time_reached)
-      call put_real(group, 'wall_time', summary%wall_time)
-      call put_real(group, 'max_unit_norm_error', summary%max_unit_norm_error)
-      call put_int(group, 'steps', summary%steps)
-      call put_int(group, 'rejected_steps', summary%rejected_steps)
-      call put_int(group, 'newton_iterations', summary%newton_iterations)
-      call put_int(group, 'max_newton_iterations', summary%max_newton_iterations)
-      call put_int(group, 'factorisations', summary%factorisations)
-      call h5gclose_f(group, hdferr)
+      ok = hdferr == 0
+      if (ok) then
+         call put_real_attr(group, 'peak_end_speed', summary%peak_end_speed, ok)
+         call put_real_attr(group, 'peak_end_speed_time', summary%peak_end_speed_time, ok)
+         call put_real_attr(group, 'min_fixed_end_tension', summary%min_fixed_end_tension, ok)
+         call put_real_attr(group, 'min_fixed_end_tension_time', summary%min_fixed_end_tension_time, ok)
+         call put_real_attr(group, 'front_arrival_time', summary%front_arrival_time, ok)
+         call put_real_attr(group, 'energy_drift', summary%energy_drift, ok)
+         call put_real_attr(group, 'time_reached', summary%time_reached, ok)
+         call put_real_attr(group, 'wall_time', summary%wall_time, ok)
+         call put_real_attr(group, 'max_unit_norm_error', summary%max_unit_norm_error, ok)
+         call put_int_attr(group, 'steps', summary%steps, ok)
+         call put_int_attr(group, 'rejected_steps', summary%rejected_steps, ok)
+         call put_int_attr(group, 'newton_iterations', summary%newton_iterations, ok)
+         call put_int_attr(group, 'max_newton_iterations', summary%max_newton_iterations, ok)
+         call put_int_attr(group, 'factorisations', summary%factorisations, ok)
+         call h5gclose_f(group, hdferr)
+      end if
+      if (.not. ok) call fatal_error(error, "writing /summary to '"//self%path//"' failed", stat_io)
    end subroutine result_write_summary
 
    !> Set the final status ('complete' or 'failed' with reason and time) and close.
-   subroutine result_finish(self, status, reason, time)
+   subroutine result_finish(self, status, reason, time, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> 'complete' or 'failed'.
@@ -282,12 +319,19 @@ contains
       character(*), intent(in), optional :: reason
       !> Simulated time at the failure, s.
       real(dp), intent(in), optional :: time
+      !> Error when the status cannot be written or the file not closed (the
+      !> file then still reads 'running').
+      type(error_type), allocatable, intent(out), optional :: error
       integer :: hdferr
+      logical :: ok
       if (self%file < 0) return
-      if (present(reason)) call put_text(self%file, 'failure_reason', reason)
-      if (present(time)) call put_real(self%file, 'failure_time', time)
-      call put_text(self%file, 'status', status)
+      ok = .true.
+      if (present(reason)) call put_text_attr(self%file, 'failure_reason', reason, ok)
+      if (present(time)) call put_real_attr(self%file, 'failure_time', time, ok)
+      call put_text_attr(self%file, 'status', status, ok)
       call h5fclose_f(self%file, hdferr)
+      if ((.not. ok .or. hdferr /= 0) .and. present(error)) &
+         call fatal_error(error, "writing the status '"//status//"' to '"//self%path//"' failed", stat_io)
       self%file = -1
       call h5close_f(hdferr)
       if (self%gnuplot_text) close (self%text_unit)
@@ -345,88 +389,6 @@ contains
       call h5sclose_f(space, hdferr)
       call h5dclose_f(dset, hdferr)
    end subroutine append
-
-   subroutine put_vector(loc, name, values)
-      integer(hid_t), intent(in) :: loc
-      character(*), intent(in) :: name
-      real(dp), intent(in) :: values(:)
-      integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-      dims = size(values)
-      call h5screate_simple_f(1, dims, space, hdferr)
-      call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, space, dset, hdferr)
-      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-      call h5dclose_f(dset, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_vector
-
-   subroutine put_int_vector(loc, name, values)
-      integer(hid_t), intent(in) :: loc
-      character(*), intent(in) :: name
-      integer, intent(in) :: values(:)
-      integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(1)
-      integer :: hdferr
-      dims = size(values)
-      call h5screate_simple_f(1, dims, space, hdferr)
-      call h5dcreate_f(loc, name, H5T_NATIVE_INTEGER, space, dset, hdferr)
-      call h5dwrite_f(dset, H5T_NATIVE_INTEGER, values, dims, hdferr)
-      call h5dclose_f(dset, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_int_vector
-
-   subroutine put_real(loc, name, value)
-      integer(hid_t), intent(in) :: loc
-      character(*), intent(in) :: name
-      real(dp), intent(in) :: value
-      integer(hid_t) :: attr, space
-      integer :: hdferr
-      logical :: exists
-      call h5aexists_f(loc, name, exists, hdferr)
-      if (exists) call h5adelete_f(loc, name, hdferr)
-      call h5screate_f(H5S_SCALAR_F, space, hdferr)
-      call h5acreate_f(loc, name, H5T_NATIVE_DOUBLE, space, attr, hdferr)
-      call h5awrite_f(attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
-      call h5aclose_f(attr, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_real
-
-   subroutine put_int(loc, name, value)
-      integer(hid_t), intent(in) :: loc
-      character(*), intent(in) :: name
-      integer, intent(in) :: value
-      integer(hid_t) :: attr, space
-      integer :: hdferr
-      call h5screate_f(H5S_SCALAR_F, space, hdferr)
-      call h5acreate_f(loc, name, H5T_NATIVE_INTEGER, space, attr, hdferr)
-      call h5awrite_f(attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
-      call h5aclose_f(attr, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_int
-
-   !> A fixed-length string attribute (replaced if it exists).
-   subroutine put_text(loc, name, text)
-      integer(hid_t), intent(in) :: loc
-      character(*), intent(in) :: name, text
-      integer(hid_t) :: attr, space, string_type
-      integer :: hdferr
-      logical :: exists
-      call h5aexists_f(loc, name, exists, hdferr)
-      if (exists) call h5adelete_f(loc, name, hdferr)
-      call h5screate_f(H5S_SCALAR_F, space, hdferr)
-      call h5tcopy_f(H5T_NATIVE_CHARACTER, string_type, hdferr)
-      call h5tset_size_f(string_type, int(max(len(text), 1), size_t), hdferr)
-      call h5acreate_f(loc, name, string_type, space, attr, hdferr)
-      if (len(text) > 0) then
-         call h5awrite_f(attr, string_type, text, [1_hsize_t], hdferr)
-      else
-         call h5awrite_f(attr, string_type, ' ', [1_hsize_t], hdferr)
-      end if
-      call h5aclose_f(attr, hdferr)
-      call h5tclose_f(string_type, hdferr)
-      call h5sclose_f(space, hdferr)
-   end subroutine put_text
 
    !> Whether a blank- or comma-separated list contains a word.
    pure logical function has_word(list, word)

@@ -1,0 +1,156 @@
+!> The result file: write errors are reported, not swallowed, and the status
+!> attribute reads 'complete' only after finish('complete').
+module suite_output
+   use xcable_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check
+   use xcable_fixtures, only: paper_case
+   use xcable_model_equations, only: cable_model
+   use xcable_solver_newton, only: newton_options
+   use xcable_dynamics, only: dynamics_options, run_history, run_summary
+   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
+                             put_text_attr
+   use xcable_io_output, only: result_file
+   use hdf5
+   implicit none
+   private
+   public :: collect_output
+
+contains
+
+   subroutine collect_output(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('hdf5_writers_report_errors', test_writers), &
+               new_unittest('result_file_status_and_errors', test_result_file)]
+   end subroutine collect_output
+
+   !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
+   !> that exists); attributes are replaced, not duplicated.
+   subroutine test_writers(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: path = 'build/test_output_writers.h5'
+      integer(hid_t) :: file
+      integer :: hdferr
+      logical :: ok
+      character(:), allocatable :: text
+      call h5open_f(hdferr)
+      call h5eset_auto_f(0, hdferr)
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, file, hdferr)
+      call check(error, hdferr == 0, 'cannot create '//path)
+      if (allocated(error)) return
+      ok = .true.
+      call put_real_vector(file, 'a', [1.0_dp, 2.0_dp], ok, 'm')
+      call put_int_vector(file, 'b', [1, 2, 3], ok)
+      call put_text_vector(file, 'c', ['one  ', 'three'], ok)
+      call put_real_attr(file, 'r', 1.5_dp, ok)
+      call put_int_attr(file, 'i', 7, ok)
+      call put_text_attr(file, 'status', 'running', ok)
+      call put_text_attr(file, 'status', 'complete', ok)
+      call put_real_attr(file, 'r', 2.5_dp, ok)
+      call check(error, ok, 'a first write of each item failed')
+      if (.not. allocated(error)) then
+         call read_text_attr(file, 'status', text)
+         call check(error, text == 'complete', 'the status attribute reads "'//text//'" after being replaced')
+      end if
+      if (.not. allocated(error)) then
+         call put_real_vector(file, 'a', [3.0_dp], ok)
+         call check(error, .not. ok, 'writing the dataset a twice did not clear ok')
+      end if
+      if (.not. allocated(error)) then
+         ok = .true.
+         call put_int_vector(file, 'b', [4], ok)
+         call check(error, .not. ok, 'writing the dataset b twice did not clear ok')
+      end if
+      if (.not. allocated(error)) then
+         ok = .true.
+         call put_text_vector(file, 'c', ['x'], ok)
+         call check(error, .not. ok, 'writing the dataset c twice did not clear ok')
+      end if
+      if (.not. allocated(error)) then
+         ok = .true.
+         call put_text_attr(-1_hid_t, 'status', 'complete', ok)
+         call check(error, .not. ok, 'writing an attribute to an invalid identifier did not clear ok')
+      end if
+      call h5fclose_f(file, hdferr)
+      call delete_file(path)
+   end subroutine test_writers
+
+   !> A result file reads 'running' until finish('complete'); a second
+   !> /history is an HDF5 error that reaches the caller with the group's name.
+   subroutine test_result_file(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: path = 'build/test_output_result.h5'
+      type(cable_model) :: model
+      real(dp), allocatable :: s(:)
+      type(newton_options) :: newton
+      type(dynamics_options) :: dynamics
+      type(result_file) :: output
+      type(run_history) :: history
+      type(run_summary) :: summary
+      type(error_type), allocatable :: write_error
+      integer(hid_t) :: file
+      integer :: hdferr
+      character(:), allocatable :: text
+      call paper_case(180.0e3_dp, 11, model, s, newton, dynamics, error)
+      if (allocated(error)) return
+      call output%create(path, model, s, 'tension', '&static tension = 180000 /', 'test.nml', .false., error)
+      if (allocated(error)) return
+      call history%reserve(4, .false.)
+      call output%write_history(history, write_error)
+      call check(error, .not. allocated(write_error), 'the first /history failed')
+      if (allocated(error)) return
+      call output%write_history(history, write_error)
+      call check(error, allocated(write_error), 'a second /history was not reported as an error')
+      if (allocated(error)) return
+      call check(error, index(write_error%message, '/history') > 0, 'message: '//write_error%message)
+      if (allocated(error)) return
+      call output%write_summary(summary, write_error)
+      call check(error, .not. allocated(write_error), 'the summary failed')
+      if (allocated(error)) return
+      ! Still running: read it while the result file is open (HDF5 allows a
+      ! second read-only handle in the same process).
+      call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+      call read_text_attr(file, 'status', text)
+      call h5fclose_f(file, hdferr)
+      call check(error, text == 'running', 'status before finish: "'//text//'"')
+      if (allocated(error)) return
+      call output%finish('complete', error=write_error)
+      call check(error, .not. allocated(write_error), 'finish failed')
+      if (allocated(error)) return
+      call h5open_f(hdferr)
+      call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+      call check(error, hdferr == 0, 'cannot reopen '//path)
+      if (allocated(error)) return
+      call read_text_attr(file, 'status', text)
+      call h5fclose_f(file, hdferr)
+      call check(error, text == 'complete', 'status after finish: "'//text//'"')
+      call delete_file(path)
+   end subroutine test_result_file
+
+   !> A string attribute of loc ('' when it cannot be read).
+   subroutine read_text_attr(loc, name, text)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name
+      character(:), allocatable, intent(out) :: text
+      integer(hid_t) :: attr, atype
+      integer(size_t) :: length
+      integer :: hdferr
+      text = ''
+      call h5aopen_f(loc, name, attr, hdferr)
+      if (hdferr /= 0) return
+      call h5aget_type_f(attr, atype, hdferr)
+      call h5tget_size_f(atype, length, hdferr)
+      deallocate (text)
+      allocate (character(len=int(length)) :: text)
+      call h5aread_f(attr, atype, text, [1_hsize_t], hdferr)
+      if (hdferr /= 0) text = ''
+      call h5tclose_f(atype, hdferr)
+      call h5aclose_f(attr, hdferr)
+   end subroutine read_text_attr
+
+   subroutine delete_file(path)
+      character(*), intent(in) :: path
+      integer :: unit, ios
+      open (newunit=unit, file=path, status='old', iostat=ios)
+      if (ios == 0) close (unit, status='delete')
+   end subroutine delete_file
+end module suite_output

@@ -177,11 +177,11 @@ contains
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: x(size(self%s)), z(size(self%s)), tension(size(self%s)), field(size(self%s))
-      integer :: i, k, hdferr, status
-      status = 0
+      integer :: i, k, hdferr
+      logical :: ok
+      ok = .true.
       self%snapshots = self%snapshots + 1
-      call append(self%file, 'time', [t], 1, hdferr)
-      status = max(status, abs(hdferr))
+      call append(self%file, 'time', [t], 1, ok)
       if (self%want(6) .or. self%want(7) .or. self%gnuplot_text) call positions(y, self%s, x, z)
       if (self%want(1) .or. self%gnuplot_text) tension = self%model%law%tension(y(i_eps, :))
       do i = 1, size(known_fields)
@@ -196,12 +196,10 @@ contains
          case ('z'); field = z
          case ('curvature'); field = y(i_om, :)
          end select
-         call append(self%file, trim(known_fields(i)), field, 2, hdferr)
-         status = max(status, abs(hdferr))
+         call append(self%file, trim(known_fields(i)), field, 2, ok)
       end do
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
-      status = max(status, abs(hdferr))
-      if (status /= 0) call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed", &
+      if (.not. ok .or. hdferr /= 0) call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed", &
                                         stat_io)
       if (self%gnuplot_text) then
          if (self%snapshots > 1) write (self%text_unit, '(/)')
@@ -340,12 +338,15 @@ contains
 
    !> Append a value (rank 1) or a row of node values (rank 2) to the
    !> extendible dataset name, created on first use.
-   subroutine append(loc, name, values, rank, hdferr)
+   !> ok is cleared when the dataset cannot be created or opened, extended or
+   !> written.
+   subroutine append(loc, name, values, rank, ok)
       integer(hid_t), intent(in) :: loc
       character(*), intent(in) :: name
       real(dp), intent(in) :: values(:)
       integer, intent(in) :: rank
-      integer, intent(out) :: hdferr
+      logical, intent(inout) :: ok
+      integer :: hdferr, err
       integer(hid_t) :: dset, space, memspace, plist
       integer(hsize_t) :: dims(2), maxdims(2), offset(2), count(2)
       logical :: exists
@@ -363,11 +364,15 @@ contains
             call h5pset_chunk_f(plist, 2, count, hdferr)
          end if
          call h5screate_simple_f(rank, dims(1:rank), space, hdferr, maxdims(1:rank))
-         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, space, dset, hdferr, plist)
+         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, space, dset, err, plist)
          call h5sclose_f(space, hdferr)
          call h5pclose_f(plist, hdferr)
       else
-         call h5dopen_f(loc, name, dset, hdferr)
+         call h5dopen_f(loc, name, dset, err)
+      end if
+      if (err /= 0) then
+         ok = .false.
+         return
       end if
       call h5dget_space_f(dset, space, hdferr)
       call h5sget_simple_extent_dims_f(space, dims(1:rank), maxdims(1:rank), hdferr)
@@ -381,10 +386,12 @@ contains
          dims(2) = dims(2) + 1
       end if
       call h5dset_extent_f(dset, dims(1:rank), hdferr)
+      ok = ok .and. hdferr == 0
       call h5dget_space_f(dset, space, hdferr)
       call h5sselect_hyperslab_f(space, H5S_SELECT_SET_F, offset(1:rank), count(1:rank), hdferr)
       call h5screate_simple_f(rank, count(1:rank), memspace, hdferr)
       call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, count(1:rank), hdferr, memspace, space)
+      ok = ok .and. hdferr == 0
       call h5sclose_f(memspace, hdferr)
       call h5sclose_f(space, hdferr)
       call h5dclose_f(dset, hdferr)

@@ -26,15 +26,11 @@ contains
       real(dp), intent(in), optional :: t_break, t_end, courant, theta, bending_stiffness
       character(*), intent(in), optional :: law
       type(case_config) :: config
-      real(dp), parameter :: pi = acos(-1.0_dp)
       config%source = 'test'
       config%tension = tension
       config%nodes = nodes
-      config%area = 0.25_dp*pi*config%diameter**2
-      config%bending_stiffness = config%young*pi*config%diameter**4/64
       if (present(bending_stiffness)) config%bending_stiffness = bending_stiffness
       if (present(law)) config%law = law
-      config%ea = config%young*config%area
       if (present(t_break)) config%t_break = t_break
       if (present(t_end)) config%t_end = t_end
       if (present(courant)) config%courant = courant

@@ -55,11 +55,7 @@ contains
       type(static_state), intent(out) :: state
       type(error_type), allocatable, intent(out) :: error
       type(case_config) :: config
-      real(dp), parameter :: pi = acos(-1.0_dp)
       config%source = 'suite_stability'
-      config%area = 0.25_dp*pi*config%diameter**2
-      config%bending_stiffness = config%young*pi*config%diameter**4/64
-      config%ea = config%young*config%area
       config%tension = tension
       config%nodes = nodes
       config%t_break = t_break

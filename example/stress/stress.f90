@@ -630,8 +630,9 @@ contains
       integer :: i, j
       v = pack(values, .not. ieee_is_nan(values))
       if (size(v) == 0) then
-         m = values(1)
-         if (size(values) == 0) m = 0
+         ! No finite value: NaN if there were values (all NaN), 0 if none.
+         m = 0
+         if (size(values) > 0) m = values(1)
          return
       end if
       do i = 2, size(v)

@@ -133,9 +133,6 @@ contains
       config%nodes = spec%nodes
       config%courant = spec%courant
       config%theta = spec%theta
-      ! The derived defaults of read_config (area, EA), which is bypassed here.
-      config%area = 0.25_dp*acos(-1.0_dp)*config%diameter**2
-      config%ea = config%young*config%area
       config%bending_stiffness = spec%ei_factor*paper_bending_stiffness
       config%interval = spec%interval
       config%energy = .true.
@@ -241,8 +238,6 @@ contains
       real(dp) :: eps_zero, lo, hi, mid
       integer :: it, j
       config%source = 'stress'
-      config%area = 0.25_dp*acos(-1.0_dp)*config%diameter**2
-      config%ea = config%young*config%area
       config%bending_stiffness = paper_bending_stiffness
       config%tension = tension
       call setup_case(config, model, s, newton, dynamics, error)

@@ -6,7 +6,7 @@ module xcable_case
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
    use xcable_strings, only: str
-   use xcable_io_input, only: case_config, max_time_steps
+   use xcable_io_input, only: case_config, max_time_steps, derive_defaults
    use xcable_material_law, only: new_law
    use xcable_model_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
@@ -19,9 +19,9 @@ module xcable_case
 contains
 
    !> Build the model, grid and controls of a case.
-   subroutine setup_case(config, model, s, newton, dynamics, error)
-      !> Validated case.
-      type(case_config), intent(in) :: config
+   subroutine setup_case(validated, model, s, newton, dynamics, error)
+      !> Validated case (a zero area, EI or EA is derived as read_config does).
+      type(case_config), intent(in) :: validated
       !> Cable data.
       type(cable_model), intent(out) :: model
       !> Node arc lengths (uniform grid), m.
@@ -32,9 +32,12 @@ contains
       type(dynamics_options), intent(out) :: dynamics
       !> Error (class stat_input) naming the variable at fault.
       type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
       real(dp) :: eps_static, half_weight, ds
       integer :: k
 
+      config = validated
+      call derive_defaults(config)
       call new_law(model%law, trim(config%law), config%p, config%ea, config%strain_max, error)
       if (allocated(error)) then
          call prefix_error(error, config%source//': &material: ')

@@ -16,7 +16,7 @@ module xcable_io_input
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: case_config, read_config, config_text, known_fields
+   public :: case_config, read_config, config_text, known_fields, derive_defaults
 
    !> Snapshot fields that &output fields may name.
    character(len=*), parameter :: known_fields(8) = &
@@ -688,6 +688,19 @@ contains
       c%gnuplot = gnuplot
    end subroutine read_groups
 
+   !> The values whose 0 means "derived from others": the area from the
+   !> diameter, EI from young and the diameter, EA of the linear law from young
+   !> and the area. Called by validate and by setup_case, so that a case built
+   !> in code (tests, examples) gets them as a namelist does.
+   pure subroutine derive_defaults(c)
+      !> Case; derived values replace zeros.
+      type(case_config), intent(inout) :: c
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
+      if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
+      if (c%law == 'linear' .and. c%ea == 0) c%ea = c%young*c%area
+   end subroutine derive_defaults
+
    !> Range checks, and the derived defaults (area, EI, EA, output file).
    subroutine validate(c, error)
       type(case_config), intent(inout) :: c
@@ -712,16 +725,6 @@ contains
       call zero_or_range('cable', 'area', c%area, 1.0e-9_dp, 100.0_dp, 'pi d^2 / 4'); if (allocated(error)) return
       call zero_or_range('cable', 'bending_stiffness', c%bending_stiffness, 1.0e-6_dp, 1.0e12_dp, 'E pi d^4 / 64')
       if (allocated(error)) return
-      if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
-      if (c%bending_stiffness == 0) then
-         c%bending_stiffness = c%young*pi*c%diameter**4/64
-         if (c%bending_stiffness < 1.0e-6_dp) then
-            call fatal_error(error, c%source//': &cable: young = '//str(c%young)//', diameter = '//str(c%diameter)// &
-                             ': give a bending stiffness E pi d^4 / 64 = '//str(c%bending_stiffness)// &
-                             ' N m^2, below 1e-6; set bending_stiffness', stat_input)
-            return
-         end if
-      end if
       select case (c%law)
       case ('tanh')
          call positive('material', 'p(1)', c%p(1), 1.0e12_dp); if (allocated(error)) return
@@ -731,12 +734,19 @@ contains
          call positive('material', 'p(5)', c%p(5), 1.0e12_dp); if (allocated(error)) return
       case ('linear')
          call zero_or_range('material', 'ea', c%ea, 1.0_dp, 1.0e13_dp, 'young * area'); if (allocated(error)) return
-         if (c%ea == 0) c%ea = c%young*c%area
       case default
          call fatal_error(error, c%source//': &material: law = '//trim(c%law)//": must be 'tanh' or 'linear'", &
                           stat_input)
          return
       end select
+      ! An EI given is in range (above); one derived from young and d may not be.
+      if (c%bending_stiffness == 0 .and. c%young*pi*c%diameter**4/64 < 1.0e-6_dp) then
+         call fatal_error(error, c%source//': &cable: young = '//str(c%young)//', diameter = '//str(c%diameter)// &
+                          ': give a bending stiffness E pi d^4 / 64 = '//str(c%young*pi*c%diameter**4/64)// &
+                          ' N m^2, below 1e-6; set bending_stiffness', stat_input)
+         return
+      end if
+      call derive_defaults(c)
       call positive('material', 'strain_max', c%strain_max, 10.0_dp); if (allocated(error)) return
       call positive('static', 'tension', c%tension, 1.0e9_dp); if (allocated(error)) return
       call in_range('rupture', 't_break', c%t_break, 0.0_dp, 1.0e4_dp); if (allocated(error)) return

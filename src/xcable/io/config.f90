@@ -1,0 +1,146 @@
+!> The resolved content of a case file: one component per namelist variable,
+!> grouped as in the file, with the paper's values as defaults (the slow
+!> rupture at 315 kN). The schema (io/schema.f90) describes every component:
+!> its group, type, unit, range and meaning; the reader, the validation, the
+!> echo into the result file and the README table all follow the schema.
+module xcable_io_config
+   use xcable_kinds, only: dp
+   use xcable_material_law, only: paper_tanh_coefficients
+   implicit none
+   private
+   public :: case_config, end_config, max_table_points
+
+   !> Longest inline table (law tables and end histories).
+   integer, parameter :: max_table_points = 1000
+
+   !> One end of the cable (&end_a at s = 0, &end_b at s = L).
+   type :: end_config
+      !> 'fixed', 'free', 'force', 'motion' or 'mass'.
+      character(len=16) :: kind = 'fixed'
+      !> Position of a fixed end, or the mean position of a moving end, m (x horizontal, z up).
+      real(dp) :: x = 0, z = 0
+      !> Applied force of a force end (constant value, or the value the ramp starts from), N.
+      real(dp) :: force_x = 0, force_z = 0
+      !> Force history: 'constant', 'ramp' (cos^2 to zero over ramp_time) or 'table'.
+      character(len=16) :: history = 'constant'
+      !> Duration of the force ramp, or of the smooth start of a motion, s.
+      real(dp) :: ramp_time = 0
+      !> Motion of a moving end: 'harmonic' or 'table'.
+      character(len=16) :: motion = 'harmonic'
+      !> Harmonic motion: amplitude (m), period (s), phase (rad) and direction (unit vector, x and z).
+      real(dp) :: amplitude = 0, period = 1, phase = 0, direction_x = 0, direction_z = 1
+      !> Point mass of a mass end, kg.
+      real(dp) :: mass = 0
+      !> Inline table: times (s) and x, z columns (force in N, or displacement in m).
+      real(dp) :: table_time(max_table_points) = 0, table_x(max_table_points) = 0, table_z(max_table_points) = 0
+      !> Number of table rows given inline (0: none).
+      integer :: table_rows = 0
+      !> Table file with columns t, x, z ('' : none).
+      character(len=512) :: table_file = ''
+   end type end_config
+
+   !> A case.
+   type :: case_config
+      !> Namelist file the case came from.
+      character(:), allocatable :: source
+      ! &cable
+      !> Unstretched length L, m.
+      real(dp) :: length = 60
+      !> Diameter, m.
+      real(dp) :: diameter = 0.05_dp
+      !> Density, kg/m^3.
+      real(dp) :: density = 1140
+      !> Young's modulus, Pa.
+      real(dp) :: young = 230.0e6_dp
+      !> Gravity, m/s^2.
+      real(dp) :: gravity = 9.81_dp
+      !> Cross-section area, m^2 (0: pi d^2 / 4).
+      real(dp) :: area = 0
+      !> Bending stiffness EI, N m^2 (0: E pi d^4 / 64).
+      real(dp) :: bending_stiffness = 0
+      ! &material
+      !> 'tanh' (eq. 17) or 'linear'.
+      character(len=16) :: law = 'tanh'
+      !> Coefficients of eq. 17.
+      real(dp) :: p(5) = paper_tanh_coefficients
+      !> EA of the linear law, N (0: young * area).
+      real(dp) :: ea = 0
+      !> Largest strain the law is used for in statics.
+      real(dp) :: strain_max = 0.35_dp
+      !> Behaviour in compression: 'law' (the law continued below zero) or 'none' (no compressive tension).
+      character(len=16) :: compression = 'law'
+      ! &static
+      !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
+      real(dp) :: tension = 315.0e3_dp
+      ! &end_a, &end_b
+      type(end_config) :: end_a, end_b
+      ! &rupture
+      !> Whether the cable breaks (&rupture enabled).
+      logical :: break_enabled = .true.
+      !> Unstretched arc length of the break from end a, m (negative: L, the paper's end break).
+      real(dp) :: s_break = -1
+      !> Breaking time: the force across the break goes as cos^2 to zero over t_break, s.
+      real(dp) :: t_break = 0.05_dp
+      !> Time at which the break starts, s (&rupture time).
+      real(dp) :: break_time = 0
+      ! &numerics
+      !> Discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme).
+      character(len=16) :: scheme = 'rod'
+      !> Number of nodes.
+      integer :: nodes = 121
+      !> Time step, s (0: from courant).
+      real(dp) :: dt = 0
+      !> Courant number c(eps0) dt / ds giving dt when dt = 0.
+      real(dp) :: courant = 1
+      !> End of the run, s.
+      real(dp) :: t_end = 0.16_dp
+      !> Time weight theta (0.5: conservative / the paper's).
+      real(dp) :: theta = 0.5_dp
+      !> Kinetic energy of the rod scheme: 'averaged' (cell-averaged velocities, as the box scheme) or 'lumped'.
+      character(len=16) :: mass_matrix = 'averaged'
+      !> Newton tolerance on the scaled update.
+      real(dp) :: newton_tol = 1.0e-7_dp
+      !> Newton iteration limit.
+      integer :: newton_max_iter = 25
+      !> Keep the factorised Jacobian while Newton contracts well.
+      logical :: reuse_jacobian = .true.
+      !> First guess of a step by extrapolation.
+      logical :: extrapolate = .true.
+      !> Smallest step of the step control, as a fraction of dt.
+      real(dp) :: min_step_fraction = 1.0_dp/1024
+      !> Wall-clock limit, s (0: none).
+      real(dp) :: max_wall_time = 0
+      ! &output
+      !> HDF5 result file ('' : results/<namelist stem>.h5).
+      character(len=512) :: file = ''
+      !> Snapshot interval, s.
+      real(dp) :: interval = 0.01_dp
+      !> Snapshot fields, separated by spaces or commas.
+      character(len=256) :: fields = 'tension shear strain u v x z curvature'
+      !> No progress on stderr.
+      logical :: quiet = .false.
+      !> Keep the energy ledger.
+      logical :: energy = .false.
+      !> Write gnuplot-ready text beside the HDF5 file.
+      logical :: gnuplot = .false.
+      !> Variables assigned in the file, as 'group%variable' names separated by blanks
+      !> (so that "both given" and "not given" can be told apart from defaults).
+      character(:), allocatable :: given
+   contains
+      !> Whether group%variable was assigned in the file.
+      procedure :: is_given
+   end type case_config
+
+contains
+
+   !> Whether a variable was assigned in the case file.
+   pure logical function is_given(self, group, variable)
+      !> The case.
+      class(case_config), intent(in) :: self
+      !> Group and variable name (lower case).
+      character(*), intent(in) :: group, variable
+      is_given = .false.
+      if (.not. allocated(self%given)) return
+      is_given = index(' '//self%given//' ', ' '//group//'%'//variable//' ') > 0
+   end function is_given
+end module xcable_io_config

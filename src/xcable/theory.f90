@@ -10,6 +10,7 @@ module xcable_theory
    private
    public :: catenary_shape, catenary_summary, horizontal_force
    public :: wave_speed, riemann_speed, gauss_legendre, wall_drop_time, wall_incoming_strain
+   public :: catenary_from_force, catenary_between
 
    !> Gauss-Legendre points per panel.
    integer, parameter :: n_gauss = 8
@@ -118,6 +119,168 @@ contains
       end_angle = atan2(0.5_dp*weight*length, h)
       mid_strain = eps(2)
    end subroutine catenary_summary
+
+   !> Extensible catenary (no bending) from the internal force at s = 0: with
+   !> N(s) = n0 + w0 s e_z the internal force (the pull of the part beyond s on
+   !> the part before it), T = |N|, eps = f^-1(T) and dR/ds = (1 + eps) N / T,
+   !> the positions at the points s (increasing, s(1) = 0) from R(0) = r0, by
+   !> composite Gauss-Legendre quadrature. Strain and tension at the points too.
+   subroutine catenary_from_force(law, weight, n0, r0, s, r, eps, tension)
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Weight per unstretched length, N/m.
+      real(dp), intent(in) :: weight
+      !> Internal force at s = 0 (x, z), N.
+      real(dp), intent(in) :: n0(2)
+      !> Position at s = 0, m.
+      real(dp), intent(in) :: r0(2)
+      !> Points, m.
+      real(dp), intent(in) :: s(:)
+      !> Positions (2, size(s)), m.
+      real(dp), intent(out) :: r(:, :)
+      !> Strain and tension (N) at the points.
+      real(dp), intent(out) :: eps(:), tension(:)
+      real(dp) :: xg(n_gauss), wg(n_gauss), a, b, sq, nv(2), t, e
+      integer :: k, p, q
+      integer, parameter :: panels = 8
+      call gauss_legendre(n_gauss, xg, wg)
+      do k = 1, size(s)
+         nv = n0 + [0.0_dp, weight*s(k)]
+         tension(k) = norm2(nv)
+         eps(k) = law%strain_at(tension(k))
+         if (k == 1) then
+            r(:, 1) = r0
+            cycle
+         end if
+         r(:, k) = r(:, k - 1)
+         do p = 1, panels
+            a = s(k - 1) + (s(k) - s(k - 1))*(p - 1)/panels
+            b = s(k - 1) + (s(k) - s(k - 1))*p/panels
+            do q = 1, n_gauss
+               sq = 0.5_dp*(a + b) + 0.5_dp*(b - a)*xg(q)
+               nv = n0 + [0.0_dp, weight*sq]
+               t = norm2(nv)
+               if (t <= 0) cycle
+               e = law%strain_at(t)
+               r(:, k) = r(:, k) + 0.5_dp*(b - a)*wg(q)*(1 + e)*nv/t
+            end do
+         end do
+      end do
+   end subroutine catenary_from_force
+
+   !> The extensible catenary hanging between two points: the internal force
+   !> n0 at s = 0 such that R(L) = rb when R(0) = ra (a damped Newton
+   !> iteration on n0 with central-difference derivatives, from the
+   !> inextensible catenary or, for a taut line, a straight line). The ends may
+   !> be at different heights; the line may be slack or taut.
+   subroutine catenary_between(law, weight, length, ra, rb, n0, error)
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Weight per unstretched length, N/m.
+      real(dp), intent(in) :: weight
+      !> Unstretched length, m.
+      real(dp), intent(in) :: length
+      !> End points (x, z), m.
+      real(dp), intent(in) :: ra(2), rb(2)
+      !> Internal force at end a, N.
+      real(dp), intent(out) :: n0(2)
+      !> Error when no catenary is found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: d(2), dist, chord, a, lo, hi, h0, res(2), jac(2, 2), step(2), trial(2), rt(2), hstep, nrm, nrm_t
+      real(dp) :: rp(2), rm(2), eps_zero, lam
+      integer :: it, j, ls
+      d = rb - ra
+      dist = norm2(d)
+      eps_zero = law%strain_at(0.0_dp)
+      if (abs(d(1)) < 1.0e-9_dp*max(length, 1.0_dp)) then
+         call fatal_error(error, 'the ends are vertically above each other: no catenary guess for this scene', stat_input)
+         return
+      end if
+      if (dist >= length*(1 + eps_zero) .or. weight <= 0) then
+         ! Taut (or weightless): a straight line at the tension of its mean strain.
+         h0 = law%tension(max(dist/length - 1, eps_zero + 1.0e-6_dp))
+         n0 = h0*d/dist - [0.0_dp, 0.5_dp*weight*length]
+      else
+         ! Slack: the inextensible catenary through the two points, a = H / w0 from
+         ! 2 a sinh(dx / (2 a)) = sqrt(L^2 - dz^2) (bisection on log a).
+         chord = sqrt(max(length**2 - d(2)**2, (1.0e-6_dp*length)**2))
+         lo = 1.0e-6_dp*abs(d(1))
+         hi = 1.0e6_dp*length
+         do it = 1, 200
+            a = sqrt(lo*hi)
+            if (2*a*sinh(min(abs(d(1))/(2*a), 700.0_dp)) > chord) then
+               lo = a
+            else
+               hi = a
+            end if
+         end do
+         h0 = weight*a
+         ! Vertical force at a: the lowest point is where V = 0; for the inextensible
+         ! catenary z(L) - z(0) = a (cosh u_b - cosh u_a), x(L) - x(0) = a (u_b - u_a),
+         ! with sinh u = V / H.
+         lam = abs(d(1))/a
+         ! solve a (cosh(u_a + lam) - cosh(u_a)) = dz for u_a (monotone in u_a)
+         lo = -50
+         hi = 50
+         do it = 1, 200
+            rp(1) = 0.5_dp*(lo + hi)
+            if (a*(cosh(rp(1) + lam) - cosh(rp(1))) > d(2)) then
+               hi = rp(1)
+            else
+               lo = rp(1)
+            end if
+         end do
+         n0 = [sign(h0, d(1)), h0*sinh(0.5_dp*(lo + hi))]
+      end if
+      ! Newton on the end mismatch R(L) - rb.
+      call mismatch(n0, res)
+      nrm = norm2(res)
+      do it = 1, 100
+         if (nrm <= 1.0e-12_dp*length) return
+         do j = 1, 2
+            hstep = 1.0e-6_dp*max(norm2(n0), weight*length, 1.0_dp)
+            trial = n0
+            trial(j) = n0(j) + hstep
+            call mismatch(trial, rp)
+            trial(j) = n0(j) - hstep
+            call mismatch(trial, rm)
+            jac(:, j) = (rp - rm)/(2*hstep)
+         end do
+         step = solve2(jac, res)
+         ! Backtracking: halve the step until the mismatch falls.
+         do ls = 1, 40
+            trial = n0 - step
+            call mismatch(trial, rt)
+            nrm_t = norm2(rt)
+            if (nrm_t < nrm) exit
+            step = 0.5_dp*step
+         end do
+         n0 = trial
+         res = rt
+         nrm = nrm_t
+      end do
+      if (nrm > 1.0e-8_dp*length) then
+         call fatal_error(error, 'no catenary between ('//str(ra(1))//', '//str(ra(2))//') and ('//str(rb(1))// &
+                          ', '//str(rb(2))//') m (end mismatch '//str(nrm)//' m)', stat_input)
+      end if
+
+   contains
+
+      subroutine mismatch(force0, m)
+         real(dp), intent(in) :: force0(2)
+         real(dp), intent(out) :: m(2)
+         real(dp) :: rr(2, 2), ee(2), tt(2)
+         call catenary_from_force(law, weight, force0, ra, [0.0_dp, length], rr, ee, tt)
+         m = rr(:, 2) - rb
+      end subroutine mismatch
+
+      pure function solve2(mat, rhs) result(sol)
+         real(dp), intent(in) :: mat(2, 2), rhs(2)
+         real(dp) :: sol(2), det
+         det = mat(1, 1)*mat(2, 2) - mat(1, 2)*mat(2, 1)
+         sol = [mat(2, 2)*rhs(1) - mat(1, 2)*rhs(2), -mat(2, 1)*rhs(1) + mat(1, 1)*rhs(2)]/det
+      end function solve2
+   end subroutine catenary_between
 
    !> Axial wave speed c = sqrt(f'(eps) / m) (eq. 33), m/s.
    elemental function wave_speed(law, mass, eps) result(c)

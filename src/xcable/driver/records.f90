@@ -1,0 +1,182 @@
+!> What a run produces besides its snapshots: the history (one record per
+!> accepted time step), the summary figures, the static state, and the
+!> observer interface through which the output (or a test) receives them.
+!>
+!> Every scene has named ends: 'end_a' (s = 0) and 'end_b' (s = L), and for a
+!> break inside the cable 'break_a' and 'break_b' (the two new ends, on the
+!> side of end a and of end b). For each end the history keeps its position,
+!> velocity, the tension of its cell and the external force on it (the
+!> support's reaction for a held end, the applied force for a loaded one).
+module xcable_run_records
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type
+   implicit none
+   private
+   public :: run_history, run_summary, static_info, run_observer, end_summary
+   public :: n_end_quantities, end_quantity_names, n_energy, energy_names, field_names, n_fields
+
+   !> Quantities recorded per end and step.
+   integer, parameter :: n_end_quantities = 7
+   character(len=*), parameter :: end_quantity_names(n_end_quantities) = &
+      [character(len=8) :: 'x', 'z', 'vx', 'vz', 'tension', 'force_x', 'force_z']
+   !> Energy ledger columns (J): ledger = strain + kinetic + bending + gravity - work + dissipation.
+   integer, parameter :: n_energy = 7
+   character(len=*), parameter :: energy_names(n_energy) = &
+      [character(len=11) :: 'strain', 'kinetic', 'bending', 'gravity', 'work', 'dissipation', 'ledger']
+   !> Snapshot fields, in this order.
+   integer, parameter :: n_fields = 8
+   character(len=*), parameter :: field_names(n_fields) = &
+      [character(len=9) :: 'tension', 'shear', 'strain', 'u', 'v', 'x', 'z', 'curvature']
+
+   !> One record per accepted step (index 0: the static state at t = 0).
+   type :: run_history
+      !> Number of accepted steps.
+      integer :: n = 0
+      !> Time and step taken, s.
+      real(dp), allocatable :: time(:), step(:)
+      !> Newton iterations of the accepted step and attempts rejected before it.
+      integer, allocatable :: newton_iterations(:), rejected(:)
+      !> Names of the ends.
+      character(len=8), allocatable :: end_labels(:)
+      !> End quantities (n_end_quantities, ends, 0:n).
+      real(dp), allocatable :: ends(:, :, :)
+      !> Energy ledger (n_energy, 0:n), J, when asked for.
+      real(dp), allocatable :: energy(:, :)
+   contains
+      !> Make room for at least n records (keeps the content).
+      procedure :: reserve => history_reserve
+   end type run_history
+
+   !> Figures of one end.
+   type :: end_summary
+      !> Largest speed |V| (m/s) and when (s).
+      real(dp) :: peak_speed = 0, peak_speed_time = 0
+      !> Smallest and largest tension of the end cell (N), and when the smallest happened (s).
+      real(dp) :: min_tension = 0, min_tension_time = 0, max_tension = 0
+      !> First time the end force falls 1 % below its value at t = 0 (s; -1: never). Held ends only.
+      real(dp) :: front_arrival_time = -1
+   end type end_summary
+
+   !> Figures of a run.
+   type :: run_summary
+      !> Per end, in the order of run_history%end_labels.
+      type(end_summary), allocatable :: ends(:)
+      !> The paper's figures: the largest speed of a released (breaking) end, m/s, and when;
+      !> the smallest tension at end a, N, and when; the 1 % drop of the end-a force, s.
+      real(dp) :: peak_end_speed = 0, peak_end_speed_time = 0
+      real(dp) :: min_fixed_end_tension = 0, min_fixed_end_tension_time = 0
+      real(dp) :: front_arrival_time = -1
+      !> max |ledger - ledger(0)| / strain energy at t = 0 (-1: ledger not kept), and the
+      !> numerical dissipation booked in the ledger (J).
+      real(dp) :: energy_drift = -1, dissipated = 0
+      !> Accepted and rejected steps; Newton iterations (total, largest per step); factorisations.
+      integer :: steps = 0, rejected_steps = 0, newton_iterations = 0, max_newton_iterations = 0, factorisations = 0
+      !> Simulated time reached and wall time of the dynamics, s.
+      real(dp) :: time_reached = 0, wall_time = 0
+      !> Time step asked for and the largest one taken (s); Courant number asked for and taken.
+      real(dp) :: dt_requested = 0, dt_used = 0, courant_requested = 0, courant_used = 0
+      !> Box scheme: largest |b0^2 + b3^2 - 1|. Rod: largest turning angle between two cells (rad).
+      real(dp) :: max_unit_norm_error = 0, max_turning_angle = 0
+      !> Smallest strain reached.
+      real(dp) :: min_strain = 0
+      !> Warnings: one line each ('' : none).
+      character(:), allocatable :: warnings
+   end type run_summary
+
+   !> The static state, with its fields on the output nodes.
+   type :: static_info
+      !> Node arc lengths, m.
+      real(dp), allocatable :: s(:)
+      !> Fields (nodes, n_fields), in the order of field_names.
+      real(dp), allocatable :: fields(:, :)
+      !> Horizontal distance between the ends and depth of the lowest point below the higher end, m.
+      real(dp) :: span = 0, sag = 0
+      !> Angle of the tangent at end a below the horizontal, rad.
+      real(dp) :: end_angle = 0
+      !> Tension at end a and end b, N.
+      real(dp) :: tension_a = 0, tension_b = 0
+      !> Newton iterations.
+      integer :: newton_iterations = 0
+      !> Euler parameters of the box scheme (absent for the rod).
+      real(dp), allocatable :: beta0(:), beta3(:)
+   end type static_info
+
+   !> Receives the static state and the snapshots of a run (the output file, or a test).
+   type, abstract :: run_observer
+   contains
+      !> The static state.
+      procedure(static_interface), deferred :: static
+      !> One snapshot.
+      procedure(snapshot_interface), deferred :: snapshot
+      !> Progress of the run (default: nothing).
+      procedure :: progress => observer_progress
+   end type run_observer
+
+   abstract interface
+      subroutine static_interface(self, info, error)
+         import :: run_observer, static_info, error_type
+         !> Observer.
+         class(run_observer), intent(inout) :: self
+         !> The static state.
+         type(static_info), intent(in) :: info
+         !> Error when writing fails.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine static_interface
+      subroutine snapshot_interface(self, t, fields, error)
+         import :: run_observer, dp, error_type
+         !> Observer.
+         class(run_observer), intent(inout) :: self
+         !> Time, s.
+         real(dp), intent(in) :: t
+         !> Fields (nodes, n_fields) in the order of field_names.
+         real(dp), intent(in) :: fields(:, :)
+         !> Error when writing fails.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine snapshot_interface
+   end interface
+
+contains
+
+   !> Default progress report: none.
+   subroutine observer_progress(self, t, t_end, wall)
+      !> Observer.
+      class(run_observer), intent(inout) :: self
+      !> Time reached and end of the run (s); wall time so far (s).
+      real(dp), intent(in) :: t, t_end, wall
+   end subroutine observer_progress
+
+   !> Make room for at least n records (keeps the content).
+   subroutine history_reserve(self, n, n_ends, energy)
+      !> History.
+      class(run_history), intent(inout) :: self
+      !> Records needed (steps).
+      integer, intent(in) :: n
+      !> Number of ends.
+      integer, intent(in) :: n_ends
+      !> Whether the energy ledger is kept.
+      logical, intent(in) :: energy
+      real(dp), allocatable :: r(:), e(:, :), q(:, :, :)
+      integer, allocatable :: i(:)
+      integer :: m
+      if (allocated(self%time)) then
+         if (ubound(self%time, 1) >= n) return
+      end if
+      if (.not. allocated(self%time)) then
+         allocate (self%time(0:n), self%step(0:n), self%newton_iterations(0:n), self%rejected(0:n))
+         allocate (self%ends(n_end_quantities, n_ends, 0:n))
+         self%ends = 0
+         if (energy) allocate (self%energy(n_energy, 0:n))
+         return
+      end if
+      m = self%n
+      allocate (r(0:n)); r(0:m) = self%time(0:m); call move_alloc(r, self%time)
+      allocate (r(0:n)); r(0:m) = self%step(0:m); call move_alloc(r, self%step)
+      allocate (i(0:n)); i(0:m) = self%newton_iterations(0:m); call move_alloc(i, self%newton_iterations)
+      allocate (i(0:n)); i(0:m) = self%rejected(0:m); call move_alloc(i, self%rejected)
+      allocate (q(n_end_quantities, n_ends, 0:n)); q = 0; q(:, :, 0:m) = self%ends(:, :, 0:m)
+      call move_alloc(q, self%ends)
+      if (energy) then
+         allocate (e(n_energy, 0:n)); e(:, 0:m) = self%energy(:, 0:m); call move_alloc(e, self%energy)
+      end if
+   end subroutine history_reserve
+end module xcable_run_records

@@ -1,0 +1,921 @@
+!> Time integration of a scene with the rod discretisation: statics, the
+!> break, the time steps with their step control, the energy ledger, the
+!> history and the snapshots. One `rod_run` holds the whole state of a run;
+!> each phase is a type-bound procedure.
+!>
+!> Steps. The step is the one asked for (dt, or courant ds / c with c the
+!> largest axial wave speed of the static state and ds the longest cell);
+!> only the last step before t_end, or before the start of a break, is
+!> shortened to land on it. Snapshots at the times k * interval are
+!> interpolated inside the step that contains them (cubic Hermite in the
+!> positions and velocities of its two ends, third order), so the output
+!> interval does not change the step.
+!>
+!> Step control. A step whose Newton iteration fails, or that leaves the
+!> model's range (a non-finite state, a cell squeezed below 5 % of its length,
+!> a turning angle passing half a turn within the step), is retried once with
+!> a fresh Jacobian if it started from a kept one, then with half the step,
+!> down to min_step_fraction dt; after four good steps the step doubles back
+!> towards dt. The rejected attempts of a run are bounded by 1000 + the number
+!> of requested steps, and the wall clock (max_wall_time) is checked before
+!> every attempt.
+!>
+!> Newton in a time step (this is the policy, not a silent override of the
+!> case's settings): the case's tolerance, iteration limit and
+!> reuse_jacobian; stop on the contraction estimate of the remaining error;
+!> keep the factorised Jacobian while an iteration contracts by 0.5 within a
+!> step, and refresh it at the start of a step once the last step contracted
+!> by more than 0.05 per iteration, or when the step size changed (the mass
+!> term of the Jacobian goes as 1/dt^2).
+module xcable_rod_run
+   use xcable_kinds, only: dp, i8
+   use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
+   use xcable_strings, only: str
+   use xcable_scene, only: scene_type, scene_grid
+   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, perp, cross2
+   use xcable_ends_end, only: end_condition
+   use xcable_ends_fixed, only: fixed_end
+   use xcable_ends_force, only: force_end
+   use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
+   use xcable_solver_banded, only: band_matrix
+   use xcable_rod_statics, only: rod_static_state, solve_rod_statics
+   use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
+                                 n_end_quantities
+   use xcable_theory, only: wave_speed
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
+   implicit none
+   private
+   public :: rod_run, rod_run_options
+
+   !> Most time steps a run may ask for.
+   integer, parameter, public :: max_steps = 1000000
+   !> Warning thresholds (documented in the README, "Warnings").
+   real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
+                                  warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp
+
+   !> Controls of a rod run.
+   type :: rod_run_options
+      !> Number of nodes.
+      integer :: nodes = 121
+      !> Time step (0: from the Courant number), Courant number, end of the run, s.
+      real(dp) :: dt = 0, courant = 1, t_end = 0.16_dp
+      !> Time weight of the new level (1/2: energy-conserving).
+      real(dp) :: theta = 0.5_dp
+      !> Share of the averaged mass matrix (1: averaged, 0: lumped).
+      real(dp) :: mu = 1
+      !> Snapshot interval, s (0: only t_end).
+      real(dp) :: interval = 0.01_dp
+      !> Newton controls of a time step (tolerance, iteration limit, reuse).
+      type(newton_options) :: newton
+      !> First guess of a step: R + dt V.
+      logical :: extrapolate = .true.
+      !> Keep the energy ledger.
+      logical :: energy = .false.
+      !> Smallest step of the step control, as a fraction of dt; wall-clock limit (s, 0: none).
+      real(dp) :: min_step_fraction = 1.0_dp/1024, max_wall_time = 0
+   end type rod_run_options
+
+   !> One piece of cable in a run.
+   type :: piece_run
+      !> The piece as a Newton problem.
+      type(rod_problem) :: problem
+      !> Newton work arrays and the kept factorisation.
+      type(newton_workspace) :: work
+      !> Step the kept factorisation was made for, s.
+      real(dp) :: factor_step = -1
+      !> Positions and velocities (2, n) at the current time.
+      real(dp), allocatable :: r(:, :), v(:, :)
+      !> Positions and velocities at the previous time (for the snapshots inside a step).
+      real(dp), allocatable :: r_prev(:, :), v_prev(:, :)
+      !> New level of the step being tried (unknowns, 2 n).
+      real(dp), allocatable :: x(:)
+      !> Force of the supports on the two end nodes at the current time (held ends), N.
+      real(dp) :: reaction(2, 2) = 0
+      !> Output columns of the nodes.
+      integer, allocatable :: column(:)
+      !> History slots of the two ends (0: none).
+      integer :: end_slot(2) = 0
+   end type piece_run
+
+   !> A run.
+   type :: rod_run
+      !> The scene.
+      type(scene_type) :: scene
+      !> Controls.
+      type(rod_run_options) :: options
+      !> Node arc lengths of the whole cable and the break node (0: none inside).
+      real(dp), allocatable :: s(:)
+      integer :: break_node = 0
+      !> Output nodes (the break node twice) and their arc lengths.
+      integer :: n_out = 0
+      real(dp), allocatable :: s_out(:)
+      !> The pieces (one, or two after a break inside the cable).
+      type(piece_run), allocatable :: pieces(:)
+      !> Static state and what the output needs of it.
+      type(rod_static_state) :: static
+      type(static_info) :: info
+      !> Time step used, s.
+      real(dp) :: dt = 0
+      !> Current time, s.
+      real(dp) :: t = 0
+      !> Energy bookkeeping: work of the ends and loads, numerical dissipation, J.
+      real(dp) :: work = 0, dissipation = 0
+      !> Whether the break has happened.
+      logical :: broken = .false.
+      !> History and summary.
+      type(run_history) :: history
+      type(run_summary) :: summary
+   contains
+      !> Statics, the time step and the pieces (before any output).
+      procedure :: prepare => run_prepare
+      !> The dynamics to t_end.
+      procedure :: run => run_dynamics
+      !> Fields on the output nodes.
+      procedure :: fields => run_fields
+   end type rod_run
+
+contains
+
+   !> Set up the run: grid, the whole cable as one piece, the statics, the
+   !> time step. Errors: stat_input for an inconsistent scene, stat_numerics
+   !> when the statics fails.
+   subroutine run_prepare(self, scene, options, error)
+      !> Run.
+      class(rod_run), intent(inout) :: self
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      !> Controls.
+      type(rod_run_options), intent(in) :: options
+      !> Error.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: pa(2), pb(2), reach, c_max, ds_max
+      integer :: n, k, c
+      type(newton_options) :: static_newton
+      self%scene = scene
+      self%options = options
+      n = options%nodes
+      call scene_grid(scene, n, self%s, self%break_node)
+      if (scene%interior_break() .and. self%break_node == 0) then
+         call fatal_error(error, scene%source//': &numerics: nodes = '//str(n)// &
+                          ': a break inside the cable needs at least 5 nodes', stat_input)
+         return
+      end if
+      ! Ends held at two points farther apart than the cable can reach.
+      if (scene%end_a%held() .and. scene%end_b%held() .and. .not. scene%from_tension) then
+         pa = scene%end_a%position(0.0_dp)
+         pb = scene%end_b%position(0.0_dp)
+         reach = scene%length*(1 + scene%law%strain_max)
+         if (norm2(pb - pa) >= reach) then
+            call fatal_error(error, scene%source//': &end_b: x, z = '//str(pb(1))//', '//str(pb(2))// &
+                             ': the ends are '//str(norm2(pb - pa))//' m apart, the cable reaches at most '// &
+                             str(reach)//' m (L (1 + strain_max))', stat_input)
+            return
+         end if
+      end if
+      if (scene%gravity <= 0 .and. .not. (scene%end_a%held() .and. scene%end_b%held())) then
+         call fatal_error(error, scene%source//': &cable: gravity = 0: a cable held at one end only has no '// &
+                          'static shape without weight', stat_input)
+         return
+      end if
+      allocate (self%pieces(1))
+      call self%pieces(1)%problem%piece%init(self%s, scene%mass, scene%weight, scene%ei, scene%gravity, options%mu, &
+                                              scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp))
+      static_newton = options%newton
+      call solve_rod_statics(scene, self%pieces(1)%problem, static_newton, self%static, error)
+      if (allocated(error)) return
+      if (scene%from_tension) then
+         deallocate (self%scene%end_b)
+         allocate (self%scene%end_b, source=fixed_end(point=self%static%end_b_point))
+         self%scene%end_b%label = 'end_b'
+      end if
+      ! Row scale: the largest static tension (1 N at least).
+      associate (piece => self%pieces(1)%problem%piece)
+         piece%tension_ref = max(maxval(abs(piece%law%tension(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1) &
+                                                                  /piece%ds - 1))), 1.0_dp)
+         c_max = 0
+         do c = 1, n - 1
+            c_max = max(c_max, wave_speed(piece%law, piece%mass, norm2(self%static%r(:, c + 1) - self%static%r(:, c)) &
+                                          /piece%ds(c) - 1))
+         end do
+         ds_max = maxval(piece%ds)
+      end associate
+      if (options%dt > 0) then
+         self%dt = options%dt
+      else
+         self%dt = options%courant*ds_max/c_max
+      end if
+      self%summary%dt_requested = self%dt
+      self%summary%courant_requested = self%dt*c_max/ds_max
+      if (.not. (options%t_end/self%dt <= max_steps)) then
+         call fatal_error(error, scene%source//': &numerics: the time step '//str(self%dt)//' s (courant = '// &
+                          str(options%courant)//', ds = '//str(ds_max)//' m, largest wave speed '//str(c_max)// &
+                          ' m/s) gives more than '//str(max_steps)//' steps to t_end = '//str(options%t_end)//' s', &
+                          stat_input)
+         return
+      end if
+      ! Output nodes: the break node twice.
+      self%n_out = n + merge(1, 0, self%break_node > 0)
+      allocate (self%s_out(self%n_out))
+      allocate (self%pieces(1)%column(n))
+      do k = 1, n
+         self%pieces(1)%column(k) = k
+         if (self%break_node > 0 .and. k > self%break_node) self%pieces(1)%column(k) = k + 1
+         self%s_out(self%pieces(1)%column(k)) = self%s(k)
+      end do
+      if (self%break_node > 0) self%s_out(self%break_node + 1) = self%s(self%break_node)
+      self%pieces(1)%r = self%static%r
+      call self%pieces(1)%work%init(2*n, rod_kl, rod_ku, spread(self%pieces(1)%problem%piece%length_ref, 1, 2*n))
+      allocate (self%pieces(1)%v(2, n))
+      self%pieces(1)%v = 0
+      if (self%scene%end_a%held()) self%pieces(1)%v(:, 1) = self%scene%end_a%velocity(0.0_dp)
+      if (self%scene%end_b%held()) self%pieces(1)%v(:, n) = self%scene%end_b%velocity(0.0_dp)
+      deallocate (self%pieces(1)%problem%piece%end_b)
+      allocate (self%pieces(1)%problem%piece%end_b, source=self%scene%end_b)
+      call static_fields(self)
+   end subroutine run_prepare
+
+   !> Fill self%info from the static state.
+   subroutine static_fields(self)
+      type(rod_run), intent(inout) :: self
+      integer :: n
+      real(dp) :: t_a(2)
+      n = self%options%nodes
+      self%info%s = self%s_out
+      allocate (self%info%fields(self%n_out, n_fields))
+      call self%fields(self%info%fields)
+      self%info%span = self%static%span
+      self%info%sag = self%static%sag
+      t_a = self%static%r(:, 2) - self%static%r(:, 1)
+      self%info%end_angle = atan2(-t_a(2), t_a(1))
+      self%info%tension_a = self%info%fields(1, 1)
+      self%info%tension_b = self%info%fields(self%n_out, 1)
+      if (self%scene%end_a%held()) self%info%tension_a = norm2(self%static%reaction_a)
+      if (self%scene%end_b%held() .or. self%scene%from_tension) self%info%tension_b = norm2(self%static%reaction_b)
+      self%info%newton_iterations = self%static%newton_iterations
+   end subroutine static_fields
+
+   !> Fields on the output nodes from the current state of the pieces: cell
+   !> values (tension, strain, shear) at a node are the mean of its cells
+   !> (one cell at an end); u, v along the node tangent (the mean direction of
+   !> its cells) and the paper's normal n = -perp(t); curvature is the paper's
+   !> Omega3 = -theta_k / h_k (0 at the ends).
+   subroutine run_fields(self, fields, positions, velocities)
+      !> Run.
+      class(rod_run), intent(inout) :: self
+      !> Fields (n_out, n_fields) in the order of field_names.
+      real(dp), intent(out) :: fields(:, :)
+      !> Positions and velocities per piece (2, n_out): if given, used instead of the pieces' current state.
+      real(dp), intent(in), optional :: positions(:, :), velocities(:, :)
+      integer :: p, k, n, col
+      real(dp), allocatable :: ten(:), eps(:), shear(:), mom(:), r(:, :), v(:, :)
+      real(dp) :: tk(2), nk(2), e(2)
+      do p = 1, size(self%pieces)
+         associate (piece => self%pieces(p)%problem%piece, cols => self%pieces(p)%column)
+            n = piece%n
+            allocate (ten(n - 1), eps(n - 1), shear(n - 1), mom(n), r(2, n), v(2, n))
+            if (present(positions)) then
+               r = positions(:, cols)
+               v = velocities(:, cols)
+            else
+               r = self%pieces(p)%r
+               v = self%pieces(p)%v
+            end if
+            call piece%cell_fields(r, ten, eps, shear, mom)
+            do k = 1, n
+               col = cols(k)
+               if (k == 1) then
+                  fields(col, 1) = ten(1); fields(col, 2) = shear(1); fields(col, 3) = eps(1)
+                  e = r(:, 2) - r(:, 1)
+               else if (k == n) then
+                  fields(col, 1) = ten(n - 1); fields(col, 2) = shear(n - 1); fields(col, 3) = eps(n - 1)
+                  e = r(:, n) - r(:, n - 1)
+               else
+                  fields(col, 1) = 0.5_dp*(ten(k - 1) + ten(k))
+                  fields(col, 2) = 0.5_dp*(shear(k - 1) + shear(k))
+                  fields(col, 3) = 0.5_dp*(eps(k - 1) + eps(k))
+                  e = (r(:, k + 1) - r(:, k))/norm2(r(:, k + 1) - r(:, k)) + (r(:, k) - r(:, k - 1))/norm2(r(:, k) - r(:, k - 1))
+               end if
+               tk = e/max(norm2(e), tiny(1.0_dp))
+               nk = -perp(tk)
+               fields(col, 4) = dot_product(v(:, k), tk)
+               fields(col, 5) = dot_product(v(:, k), nk)
+               fields(col, 6) = r(1, k)
+               fields(col, 7) = r(2, k)
+               fields(col, 8) = 0
+               if (k > 1 .and. k < n) fields(col, 8) = -mom(k)/piece%ei
+            end do
+            ! Before a break inside the cable the break node fills both of its columns.
+            if (size(self%pieces) == 1 .and. self%break_node > 0) fields(self%break_node + 1, :) = fields(self%break_node, :)
+            deallocate (ten, eps, shear, mom, r, v)
+         end associate
+      end do
+   end subroutine run_fields
+
+   !> Integrate to t_end, sending snapshots to the observer. On error the
+   !> history and summary hold what was done.
+   subroutine run_dynamics(self, observer, error)
+      !> Run (prepared).
+      class(rod_run), intent(inout) :: self
+      !> Receives the static state and snapshots.
+      class(run_observer), intent(inout), optional :: observer
+      !> Error when the run cannot go on.
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type), allocatable :: step_error
+      integer(i8) :: clock_start, clock_now, clock_rate
+      real(dp) :: h, h_try, wall, last_report, t_stop, max_rejections
+      integer :: snapshot_index, rejected_here, n_good, p, iterations, capacity
+      logical :: newton_failed, kept, any_kept
+      real(dp), allocatable :: buffer(:, :)
+      character(:), allocatable :: reason
+
+      call system_clock(clock_start, clock_rate)
+      self%t = 0
+      self%work = 0
+      self%dissipation = 0
+      allocate (buffer(self%n_out, n_fields))
+      call start_history(self)
+      if (present(observer)) then
+         call observer%static(self%info, error)
+         if (allocated(error)) return
+         call observer%snapshot(0.0_dp, self%info%fields, error)
+         if (allocated(error)) return
+      end if
+      capacity = int(min(self%options%t_end/self%dt, real(max_steps, dp))) + 16
+      call self%history%reserve(capacity, size(self%history%end_labels), self%options%energy)
+      max_rejections = 1000 + self%options%t_end/self%dt
+      snapshot_index = 1
+      h = self%dt
+      n_good = 0
+      rejected_here = 0
+      last_report = 0
+      ! A break at t = 0 happens before the first step.
+      if (self%scene%breaks .and. self%scene%break_time <= 0) then
+         call split(self, error)
+         if (allocated(error)) return
+      end if
+      ! Nothing moves before a break if no end moves or changes its load: skip to it.
+      if (self%scene%breaks .and. .not. self%broken .and. .not. ends_change(self)) then
+         call emit_snapshots(self%scene%break_time, .true.)
+         if (allocated(error)) return
+         self%t = self%scene%break_time
+         call record(self, 0, 0, self%t - self%history%time(self%history%n))
+         call split(self, error)
+         if (allocated(error)) return
+      end if
+
+      do while (self%t < self%options%t_end*(1 - 1.0e-12_dp))
+         call system_clock(clock_now)
+         wall = real(clock_now - clock_start, dp)/clock_rate
+         if (self%options%max_wall_time > 0 .and. wall > self%options%max_wall_time) then
+            call fatal_error(error, 'wall-clock limit of '//str(self%options%max_wall_time)//' s reached at t = '// &
+                             str(self%t)//' s', stat_numerics)
+            exit
+         end if
+         ! Land on t_end and on the start of the break.
+         t_stop = self%options%t_end
+         if (self%scene%breaks .and. .not. self%broken .and. self%scene%break_time > self%t) &
+            t_stop = min(t_stop, self%scene%break_time)
+         h_try = h
+         if (self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*h) h_try = t_stop - self%t
+         if (.not. (self%t + h_try > self%t)) then
+            call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
+                             str(self%t)//' s', stat_numerics)
+            exit
+         end if
+         ! One attempt on every piece.
+         newton_failed = .false.
+         any_kept = .false.
+         iterations = 0
+         do p = 1, size(self%pieces)
+            call attempt(self, p, h_try, kept, iterations, step_error)
+            any_kept = any_kept .or. kept
+            if (allocated(step_error)) then
+               newton_failed = .true.
+               exit
+            end if
+         end do
+         if (.not. allocated(step_error)) call check_state(self, h_try, step_error)
+         if (allocated(step_error)) then
+            self%summary%rejected_steps = self%summary%rejected_steps + 1
+            rejected_here = rejected_here + 1
+            do p = 1, size(self%pieces)
+               self%pieces(p)%work%usable = .false.
+            end do
+            reason = step_error%message
+            deallocate (step_error)
+            if (self%summary%rejected_steps > max_rejections) then
+               call fatal_error(error, 'step control: '//str(self%summary%rejected_steps)//' rejected attempts by t = '// &
+                                str(self%t)//' s: the step stays far below dt = '//str(self%dt)//' s; last: '//reason// &
+                                '; try a smaller dt or courant, or theta = 0.55', stat_numerics)
+               exit
+            end if
+            if (newton_failed .and. any_kept) cycle
+            h = 0.5_dp*h
+            n_good = 0
+            if (h < self%dt*self%options%min_step_fraction) then
+               call fatal_error(error, 'step control: step fell below '//str(self%dt*self%options%min_step_fraction)// &
+                                ' s at t = '//str(self%t)//' s after '//str(rejected_here)//' rejected attempts; last: '// &
+                                reason//'; try a smaller dt or courant, more nodes, or theta = 0.55', stat_numerics)
+               exit
+            end if
+            cycle
+         end if
+         ! Accept: snapshots inside the step, then the new level.
+         call accept(self, h_try)
+         call emit_snapshots(self%t + h_try, .false.)
+         if (allocated(error)) exit
+         self%t = self%t + h_try
+         if (abs(self%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) self%t = t_stop
+         self%summary%dt_used = max(self%summary%dt_used, h_try)
+         if (h < self%dt) then
+            n_good = n_good + 1
+            if (n_good >= 4) then
+               h = min(2*h, self%dt)
+               n_good = 0
+            end if
+         end if
+         call record(self, iterations, rejected_here, h_try)
+         rejected_here = 0
+         if (self%scene%breaks .and. .not. self%broken .and. self%t >= self%scene%break_time*(1 - 1.0e-12_dp)) then
+            call split(self, error)
+            if (allocated(error)) exit
+         end if
+         call system_clock(clock_now)
+         wall = real(clock_now - clock_start, dp)/clock_rate
+         if (present(observer) .and. wall - last_report >= 1.0_dp) then
+            last_report = wall
+            call observer%progress(self%t, self%options%t_end, wall)
+         end if
+      end do
+      call system_clock(clock_now)
+      self%summary%wall_time = real(clock_now - clock_start, dp)/clock_rate
+      self%summary%time_reached = self%t
+      call summarise(self)
+
+   contains
+
+      !> Snapshots due up to time t_new: inside the step just accepted
+      !> (interpolated), or of the static state (static = .true.).
+      subroutine emit_snapshots(t_new, static)
+         real(dp), intent(in) :: t_new
+         logical, intent(in) :: static
+         real(dp) :: ts
+         do
+            ts = snapshot_time(self, snapshot_index)
+            if (ts > t_new*(1 + 1.0e-12_dp)) exit
+            if (static) then
+               buffer = self%info%fields
+            else
+               call interpolated_fields(self, ts, buffer)
+            end if
+            snapshot_index = snapshot_index + 1
+            if (present(observer)) then
+               call observer%snapshot(ts, buffer, step_error)
+               if (allocated(step_error)) then
+                  call prefix_error(step_error, 'output: ')
+                  call move_alloc(step_error, error)
+                  return
+               end if
+            end if
+         end do
+      end subroutine emit_snapshots
+   end subroutine run_dynamics
+
+   !> Time of snapshot i (i >= 1); huge when there is none.
+   pure real(dp) function snapshot_time(self, i)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: i
+      if (self%options%interval > 0) then
+         snapshot_time = i*self%options%interval
+         if (snapshot_time > self%options%t_end*(1 + 1.0e-9_dp)) snapshot_time = huge(1.0_dp)
+      else
+         snapshot_time = merge(self%options%t_end, huge(1.0_dp), i == 1)
+      end if
+   end function snapshot_time
+
+   !> Whether an end moves or changes its load in time.
+   logical function ends_change(self)
+      type(rod_run), intent(in) :: self
+      ends_change = self%scene%end_a%time_dependent() .or. self%scene%end_b%time_dependent() .or. &
+                    self%scene%end_a%kind() == 'motion' .or. self%scene%end_b%kind() == 'motion'
+   end function ends_change
+
+   !> Newton controls of a time step (see the module header).
+   function step_newton(self) result(opts)
+      type(rod_run), intent(in) :: self
+      type(newton_options) :: opts
+      opts = self%options%newton
+      opts%estimate_error = .true.
+      opts%max_contraction = 0.5_dp
+      opts%refresh_contraction = 0.05_dp
+      ! The residual at the converged point sets the cell forces of the reactions.
+      opts%final_residual = .true.
+   end function step_newton
+
+   !> One Newton solve of piece p for the step from self%t to self%t + h.
+   subroutine attempt(self, p, h, kept, iterations, error)
+      type(rod_run), intent(inout) :: self
+      integer, intent(in) :: p
+      real(dp), intent(in) :: h
+      logical, intent(out) :: kept
+      integer, intent(inout) :: iterations
+      type(error_type), allocatable, intent(out) :: error
+      type(newton_options) :: opts
+      type(newton_report) :: report
+      integer :: n
+      associate (piece => self%pieces(p))
+         n = piece%problem%piece%n
+         piece%problem%t0 = self%t
+         piece%problem%dt = h
+         piece%problem%theta = self%options%theta
+         call piece%problem%piece%prepare_step(piece%r, piece%v)
+         if (self%options%extrapolate) then
+            piece%x = reshape(piece%r + h*piece%v, [2*n])
+         else
+            piece%x = reshape(piece%r, [2*n])
+         end if
+         if (piece%problem%piece%end_a%held()) piece%x(1:2) = piece%problem%piece%end_a%position(self%t + h)
+         if (piece%problem%piece%end_b%held()) piece%x(2*n - 1:2*n) = piece%problem%piece%end_b%position(self%t + h)
+         ! A factorisation made for another step size is stale (the mass term goes as 1/dt^2).
+         if (abs(piece%factor_step - h) > 1.0e-12_dp*h) piece%work%usable = .false.
+         opts = step_newton(self)
+         kept = opts%reuse_jacobian .and. piece%work%usable .and. piece%work%contraction <= opts%refresh_contraction
+         call newton_solve(piece%problem, piece%x, piece%work, opts, report, error)
+         iterations = max(iterations, report%iterations)
+         if (report%factorisations > 0) piece%factor_step = h
+         self%summary%factorisations = self%summary%factorisations + report%factorisations
+         self%summary%newton_iterations = self%summary%newton_iterations + report%iterations
+      end associate
+   end subroutine attempt
+
+   !> Reject states outside the model's range (after an attempt on every piece).
+   subroutine check_state(self, h, error)
+      type(rod_run), intent(inout) :: self
+      real(dp), intent(in) :: h
+      type(error_type), allocatable, intent(out) :: error
+      integer :: p, c, k
+      real(dp) :: dphi_a, dphi_b
+      do p = 1, size(self%pieces)
+         associate (piece => self%pieces(p)%problem%piece, x => self%pieces(p)%x)
+            if (.not. all(ieee_is_finite(x))) then
+               call fatal_error(error, 'non-finite positions in piece '//str(p), stat_numerics)
+               return
+            end if
+            ! The last evaluation (final residual) was at x: e1, l1, th1 are those of the new level.
+            do c = 1, piece%n - 1
+               if (piece%l1(c) < 0.05_dp) then
+                  call fatal_error(error, 'cell '//str(c)//' of piece '//str(p)//' squeezed to '// &
+                                   str(100*piece%l1(c))//' % of its length (strain '//str(piece%l1(c) - 1)// &
+                                   '): the compressed zone has collapsed', stat_numerics)
+                  return
+               end if
+            end do
+            do k = 2, piece%n - 1
+               dphi_a = atan2(cross2(piece%e0(:, k - 1), piece%e1(:, k - 1)), dot_product(piece%e0(:, k - 1), piece%e1(:, k - 1)))
+               dphi_b = atan2(cross2(piece%e0(:, k), piece%e1(:, k)), dot_product(piece%e0(:, k), piece%e1(:, k)))
+               if (abs(piece%th1(k) - piece%th0(k) - (dphi_b - dphi_a)) > 3.0_dp) then
+                  call fatal_error(error, 'the turning angle at node '//str(k)//' of piece '//str(p)// &
+                                   ' passed half a turn within one step of '//str(h)//' s (a fold)', stat_numerics)
+                  return
+               end if
+            end do
+         end associate
+      end do
+   end subroutine check_state
+
+   !> Accept the step of length h: new velocities, the reactions at held ends,
+   !> the work and the dissipation of the step, and the resolution figures.
+   subroutine accept(self, h)
+      type(rod_run), intent(inout) :: self
+      real(dp), intent(in) :: h
+      integer :: p, n
+      real(dp), allocatable :: r1(:, :), v1(:, :), dv(:, :), mdv(:, :)
+      real(dp) :: theta, dphi, f(2)
+      theta = self%options%theta
+      do p = 1, size(self%pieces)
+         associate (run_piece => self%pieces(p), piece => self%pieces(p)%problem%piece)
+            n = piece%n
+            r1 = reshape(run_piece%x, [2, n])
+            allocate (v1(2, n))
+            call piece%new_velocity(r1, h, theta, v1)
+            if (piece%end_a%held()) run_piece%reaction(:, 1) = piece%reaction(1, run_piece%x, h, theta)
+            if (piece%end_b%held()) run_piece%reaction(:, 2) = piece%reaction(n, run_piece%x, h, theta)
+            if (self%options%energy) then
+               ! Work of the ends: applied force (mean over the step) or reaction, times the displacement.
+               call end_work(piece%end_a, 1, 1)
+               call end_work(piece%end_b, n, 2)
+               if (theta /= 0.5_dp) then
+                  dv = v1 - run_piece%v
+                  allocate (mdv(2, n))
+                  call piece%mass_times(dv, mdv)
+                  self%dissipation = self%dissipation + (theta - 0.5_dp)*sum(dv*mdv)
+                  deallocate (mdv)
+               end if
+            end if
+            self%summary%max_turning_angle = max(self%summary%max_turning_angle, maxval(abs(piece%th1)))
+            self%summary%min_strain = min(self%summary%min_strain, minval(piece%l1) - 1)
+            run_piece%r_prev = run_piece%r
+            run_piece%v_prev = run_piece%v
+            run_piece%r = r1
+            run_piece%v = v1
+            deallocate (v1)
+         end associate
+      end do
+
+   contains
+
+      !> Work of one end in the step: force times displacement, couple times the end cell's rotation.
+      subroutine end_work(end, node, side)
+         class(end_condition), intent(in) :: end
+         integer, intent(in) :: node, side
+         integer :: cell
+         associate (run_piece => self%pieces(p), piece => self%pieces(p)%problem%piece)
+            if (end%held()) then
+               f = run_piece%reaction(:, side)
+            else
+               f = 0.5_dp*(end%applied_force(self%t) + end%applied_force(self%t + h))
+            end if
+            self%work = self%work + dot_product(f, r1(:, node) - run_piece%r(:, node))
+            cell = merge(1, n - 1, side == 1)
+            dphi = atan2(cross2(piece%e0(:, cell), piece%e1(:, cell)), dot_product(piece%e0(:, cell), piece%e1(:, cell)))
+            self%work = self%work + 0.5_dp*(end%applied_couple(self%t) + end%applied_couple(self%t + h))*dphi
+         end associate
+      end subroutine end_work
+   end subroutine accept
+
+   !> End labels and the record of the static state (index 0).
+   subroutine start_history(self)
+      type(rod_run), intent(inout) :: self
+      integer :: n_ends
+      n_ends = merge(4, 2, self%break_node > 0)
+      allocate (self%history%end_labels(n_ends))
+      self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
+      if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      self%pieces(1)%end_slot = [1, 2]
+      self%pieces(1)%reaction(:, 1) = self%static%reaction_a
+      self%pieces(1)%reaction(:, 2) = self%static%reaction_b
+      call self%history%reserve(16, n_ends, self%options%energy)
+      self%history%n = -1
+      call record(self, 0, 0, 0.0_dp)
+   end subroutine start_history
+
+   !> Append a history record at the current time.
+   subroutine record(self, iterations, rejected, step)
+      type(rod_run), intent(inout) :: self
+      integer, intent(in) :: iterations, rejected
+      real(dp), intent(in) :: step
+      integer :: i, p, side, node, slot
+      real(dp) :: en(4), e(2), f(2), ten
+      if (self%history%n + 1 > ubound(self%history%time, 1)) &
+         call self%history%reserve(2*ubound(self%history%time, 1), size(self%history%end_labels), self%options%energy)
+      i = self%history%n + 1
+      self%history%n = i
+      self%history%time(i) = self%t
+      self%history%step(i) = step
+      self%history%newton_iterations(i) = iterations
+      self%history%rejected(i) = rejected
+      if (i > 0) self%summary%max_newton_iterations = max(self%summary%max_newton_iterations, iterations)
+      en = 0
+      do p = 1, size(self%pieces)
+         associate (run_piece => self%pieces(p), piece => self%pieces(p)%problem%piece)
+            do side = 1, 2
+               slot = run_piece%end_slot(side)
+               if (slot == 0) cycle
+               node = merge(1, piece%n, side == 1)
+               if (side == 1) then
+                  e = run_piece%r(:, 2) - run_piece%r(:, 1)
+               else
+                  e = run_piece%r(:, piece%n) - run_piece%r(:, piece%n - 1)
+               end if
+               ten = piece%law%tension(norm2(e)/piece%ds(merge(1, piece%n - 1, side == 1)) - 1)
+               if (side == 1) then
+                  if (piece%end_a%held()) then
+                     f = run_piece%reaction(:, 1)
+                  else
+                     f = piece%end_a%applied_force(self%t)
+                  end if
+               else
+                  if (piece%end_b%held()) then
+                     f = run_piece%reaction(:, 2)
+                  else
+                     f = piece%end_b%applied_force(self%t)
+                  end if
+               end if
+               self%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
+            end do
+            if (self%options%energy) then
+               call piece%geometry(run_piece%r, piece%e1, piece%l1, piece%th1)
+               en = en + piece%energies(run_piece%r, run_piece%v, piece%l1, piece%th1)
+            end if
+         end associate
+      end do
+      if (self%options%energy) then
+         self%history%energy(1:4, i) = en
+         self%history%energy(5, i) = self%work
+         self%history%energy(6, i) = self%dissipation
+         self%history%energy(7, i) = sum(en) - self%work + self%dissipation
+      end if
+   end subroutine record
+
+   !> Fields at time ts inside the step just accepted (from self%t to the new
+   !> level): cubic Hermite in the positions and velocities of its two ends.
+   subroutine interpolated_fields(self, ts, fields)
+      type(rod_run), intent(inout) :: self
+      real(dp), intent(in) :: ts
+      real(dp), intent(out) :: fields(:, :)
+      real(dp), allocatable :: r(:, :), v(:, :)
+      real(dp) :: h, u, h00, h10, h01, h11, d00, d10, d01, d11
+      integer :: p
+      allocate (r(2, self%n_out), v(2, self%n_out))
+      do p = 1, size(self%pieces)
+         associate (rp => self%pieces(p))
+            h = self%history%time(self%history%n) ! placeholder, replaced below
+            h = rp%problem%dt
+            u = (ts - self%t)/h
+            u = min(max(u, 0.0_dp), 1.0_dp)
+            h00 = (1 + 2*u)*(1 - u)**2
+            h10 = u*(1 - u)**2
+            h01 = u*u*(3 - 2*u)
+            h11 = u*u*(u - 1)
+            d00 = 6*u*u - 6*u
+            d10 = 3*u*u - 4*u + 1
+            d01 = 6*u - 6*u*u
+            d11 = 3*u*u - 2*u
+            r(:, rp%column) = h00*rp%r_prev + h10*h*rp%v_prev + h01*rp%r + h11*h*rp%v
+            v(:, rp%column) = (d00*rp%r_prev + d01*rp%r)/h + d10*rp%v_prev + d11*rp%v
+         end associate
+      end do
+      call self%fields(fields, r, v)
+   end subroutine interpolated_fields
+
+   !> The break: split the piece at the break node into two, or release a held
+   !> end. The new ends carry the force (and at an inner break the moment) that
+   !> held them at the break time, ramped to zero over t_break (eqs. 31-32).
+   subroutine split(self, error)
+      type(rod_run), intent(inout) :: self
+      type(error_type), allocatable, intent(out) :: error
+      type(piece_run), allocatable :: old(:)
+      type(force_end) :: cut_a, cut_b
+      real(dp), allocatable :: x(:), res(:)
+      type(band_matrix) :: unused
+      integer :: n, kb
+      real(dp) :: w_a, w_b, m_b
+      self%broken = .true.
+      n = self%pieces(1)%problem%piece%n
+      if (self%scene%break_at_a .or. self%scene%break_at_b) then
+         associate (piece => self%pieces(1)%problem%piece)
+            cut_a = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, &
+                              duration=self%scene%t_break)
+            if (self%scene%break_at_b) then
+               cut_a%force0 = self%pieces(1)%reaction(:, 2)
+               cut_a%label = 'end_b'
+               deallocate (piece%end_b)
+               allocate (piece%end_b, source=cut_a)
+            else
+               cut_a%force0 = self%pieces(1)%reaction(:, 1)
+               cut_a%label = 'end_a'
+               deallocate (piece%end_a)
+               allocate (piece%end_a, source=cut_a)
+            end if
+         end associate
+         self%pieces(1)%work%usable = .false.
+         return
+      end if
+      ! Inside: the elastic cell forces at the current positions.
+      kb = self%break_node
+      associate (piece => self%pieces(1)%problem%piece)
+         x = reshape(self%pieces(1)%r, [2*n])
+         allocate (res(2*n))
+         call piece%static_system(x, self%t, res, unused, .false.)
+         w_a = 0.5_dp*piece%weight*piece%ds(kb - 1)
+         w_b = 0.5_dp*piece%weight*piece%ds(kb)
+         m_b = piece%ei*piece%th1(kb)/piece%dual(kb)
+         cut_a = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
+                           force0=piece%force(:, kb - 1) + [0.0_dp, w_a], couple0=m_b)
+         cut_b = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
+                           force0=-piece%force(:, kb) + [0.0_dp, w_b], couple0=-m_b)
+         ! The bending energy at the break node leaves with the cut: booked as work.
+         self%work = self%work - 0.5_dp*piece%ei*piece%th1(kb)**2/piece%dual(kb)
+      end associate
+      cut_a%label = 'break_a'
+      cut_b%label = 'break_b'
+      call move_alloc(self%pieces, old)
+      allocate (self%pieces(2))
+      associate (whole => old(1)%problem%piece)
+         call self%pieces(1)%problem%piece%init(self%s(1:kb), whole%mass, whole%weight, whole%ei, whole%gravity, &
+                                                 whole%mu, whole%law, whole%end_a, cut_a, whole%tension_ref)
+         call self%pieces(2)%problem%piece%init(self%s(kb:n), whole%mass, whole%weight, whole%ei, whole%gravity, &
+                                                 whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref)
+      end associate
+      self%pieces(1)%r = old(1)%r(:, 1:kb)
+      self%pieces(1)%v = old(1)%v(:, 1:kb)
+      self%pieces(1)%column = old(1)%column(1:kb)
+      self%pieces(1)%end_slot = [1, 3]
+      self%pieces(1)%reaction(:, 1) = old(1)%reaction(:, 1)
+      self%pieces(2)%r = old(1)%r(:, kb:n)
+      self%pieces(2)%v = old(1)%v(:, kb:n)
+      self%pieces(2)%column = [kb + 1, old(1)%column(kb + 1:n)]
+      self%pieces(2)%end_slot = [4, 2]
+      self%pieces(2)%reaction(:, 2) = old(1)%reaction(:, 2)
+      call self%pieces(1)%work%init(2*kb, rod_kl, rod_ku, spread(self%pieces(1)%problem%piece%length_ref, 1, 2*kb))
+      call self%pieces(2)%work%init(2*(n - kb + 1), rod_kl, rod_ku, &
+                                    spread(self%pieces(2)%problem%piece%length_ref, 1, 2*(n - kb + 1)))
+   end subroutine split
+
+   !> Summary figures and warnings from the history.
+   subroutine summarise(self)
+      type(rod_run), intent(inout) :: self
+      integer :: i, j, n, n_ends
+      real(dp) :: speed, f0, f1, fi, reference
+      logical :: held_end
+      n = self%history%n
+      n_ends = size(self%history%end_labels)
+      allocate (self%summary%ends(n_ends))
+      self%summary%steps = n
+      self%summary%peak_end_speed = 0
+      self%summary%min_fixed_end_tension = huge(1.0_dp)
+      do j = 1, n_ends
+         associate (e => self%summary%ends(j))
+            e%min_tension = self%history%ends(5, j, 0)
+            e%max_tension = self%history%ends(5, j, 0)
+            do i = 0, n
+               speed = norm2(self%history%ends(3:4, j, i))
+               if (speed > e%peak_speed) then
+                  e%peak_speed = speed
+                  e%peak_speed_time = self%history%time(i)
+               end if
+               if (self%history%ends(5, j, i) < e%min_tension) then
+                  e%min_tension = self%history%ends(5, j, i)
+                  e%min_tension_time = self%history%time(i)
+               end if
+               e%max_tension = max(e%max_tension, self%history%ends(5, j, i))
+            end do
+            held_end = end_is_held(self, j)
+            if (held_end) then
+               f0 = norm2(self%history%ends(6:7, j, 0))
+               do i = 1, n
+                  fi = norm2(self%history%ends(6:7, j, i))
+                  if (fi <= 0.99_dp*f0) then
+                     f1 = norm2(self%history%ends(6:7, j, i - 1))
+                     e%front_arrival_time = self%history%time(i - 1) + (self%history%time(i) - self%history%time(i - 1)) &
+                                            *(0.99_dp*f0 - f1)/(fi - f1)
+                     exit
+                  end if
+               end do
+               if (e%min_tension < self%summary%min_fixed_end_tension) then
+                  self%summary%min_fixed_end_tension = e%min_tension
+                  self%summary%min_fixed_end_tension_time = e%min_tension_time
+               end if
+               if (e%front_arrival_time >= 0 .and. (self%summary%front_arrival_time < 0 .or. &
+                                                    e%front_arrival_time < self%summary%front_arrival_time)) &
+                  self%summary%front_arrival_time = e%front_arrival_time
+            else if (e%peak_speed > self%summary%peak_end_speed) then
+               self%summary%peak_end_speed = e%peak_speed
+               self%summary%peak_end_speed_time = e%peak_speed_time
+            end if
+         end associate
+      end do
+      if (self%summary%min_fixed_end_tension == huge(1.0_dp)) self%summary%min_fixed_end_tension = 0
+      self%summary%courant_used = self%summary%courant_requested*max(self%summary%dt_used, tiny(1.0_dp))/self%dt
+      if (self%summary%dt_used == 0) self%summary%courant_used = self%summary%courant_requested
+      self%summary%dissipated = self%dissipation
+      if (self%options%energy) then
+         reference = self%history%energy(1, 0)
+         if (reference <= 0) reference = max(maxval(abs(self%history%energy(1:4, 0))), 1.0_dp)
+         self%summary%energy_drift = maxval(abs(self%history%energy(7, 0:n) - self%history%energy(7, 0)))/reference
+      end if
+      self%summary%warnings = ''
+      if (self%summary%energy_drift > warn_energy_drift) call warn('the energy ledger drifted by '// &
+         str(100*self%summary%energy_drift)//' % of the initial strain energy (more than '// &
+         str(100*warn_energy_drift)//' %)')
+      if (self%summary%max_turning_angle > warn_turning_angle) call warn('neighbouring cells turned by up to '// &
+         str(self%summary%max_turning_angle)//' rad (more than '//str(warn_turning_angle)// &
+         ' rad): a kink at the grid scale, the buckled zone is not resolved; more nodes resolve it')
+      if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
+         str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &
+         ' accepted): the step control struggled; a smaller dt or courant may be more economical')
+      if (abs(self%summary%courant_used/max(self%summary%courant_requested, tiny(1.0_dp)) - 1) > warn_courant_change) &
+         call warn('the Courant number taken, '//str(self%summary%courant_used)//', differs from the one asked for, '// &
+                   str(self%summary%courant_requested))
+
+   contains
+
+      subroutine warn(line)
+         character(*), intent(in) :: line
+         if (len(self%summary%warnings) > 0) self%summary%warnings = self%summary%warnings//new_line('a')
+         self%summary%warnings = self%summary%warnings//line
+      end subroutine warn
+   end subroutine summarise
+
+   !> Whether history slot j belongs to an end held at the end of the run.
+   logical function end_is_held(self, j)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: j
+      integer :: p
+      end_is_held = .false.
+      do p = 1, size(self%pieces)
+         if (self%pieces(p)%end_slot(1) == j) end_is_held = self%pieces(p)%problem%piece%end_a%held()
+         if (self%pieces(p)%end_slot(2) == j) end_is_held = self%pieces(p)%problem%piece%end_b%held()
+      end do
+   end function end_is_held
+end module xcable_rod_run

@@ -1,0 +1,38 @@
+!> A fixed end: the end node stays at a given point (a pin: no moment).
+module xcable_ends_fixed
+   use xcable_kinds, only: dp
+   use xcable_ends_end, only: end_condition
+   implicit none
+   private
+   public :: fixed_end
+
+   !> An end pinned at a point.
+   type, extends(end_condition) :: fixed_end
+      !> The point (x, z), m.
+      real(dp) :: point(2) = 0
+   contains
+      procedure :: kind => fixed_kind
+      procedure :: held => fixed_held
+      procedure :: position => fixed_position
+   end type fixed_end
+
+contains
+
+   pure function fixed_kind(self) result(name)
+      class(fixed_end), intent(in) :: self
+      character(:), allocatable :: name
+      name = 'fixed'
+   end function fixed_kind
+
+   pure logical function fixed_held(self)
+      class(fixed_end), intent(in) :: self
+      fixed_held = .true.
+   end function fixed_held
+
+   pure function fixed_position(self, t) result(x)
+      class(fixed_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(2)
+      x = self%point
+   end function fixed_position
+end module xcable_ends_fixed

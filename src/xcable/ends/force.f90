@@ -1,0 +1,75 @@
+!> An end loaded by an applied force history F(t) (and a couple history C(t)):
+!> the internal force at the end equals the applied force.
+!>
+!> Histories: 'constant' F0; 'ramp' the paper's release, F0 cos^2(pi (t - t0)
+!> / (2 T)) from t0 to t0 + T, F0 before and 0 after (eqs. 31-32); 'table' a
+!> force table (straight segments). A break is this end with the 'ramp'
+!> history, starting at the break time, from the static internal force and
+!> moment at the break point (kind 'break').
+module xcable_ends_force
+   use xcable_kinds, only: dp
+   use xcable_ends_end, only: end_condition, smooth_ramp
+   use xcable_ends_table, only: time_table
+   implicit none
+   private
+   public :: force_end
+
+   !> A force-loaded end.
+   type, extends(end_condition) :: force_end
+      !> Kind reported: 'force', or 'break' for the ends a break makes.
+      character(len=8) :: kind_name = 'force'
+      !> 'constant', 'ramp' or 'table'.
+      character(len=8) :: history = 'constant'
+      !> Force of the 'constant' history and starting force of the 'ramp', N.
+      real(dp) :: force0(2) = 0
+      !> Starting couple of the 'ramp' (and constant couple otherwise), N m.
+      real(dp) :: couple0 = 0
+      !> Start and duration of the ramp, s.
+      real(dp) :: t0 = 0, duration = 0
+      !> Force table of the 'table' history.
+      type(time_table) :: table
+   contains
+      procedure :: kind => force_kind
+      procedure :: applied_force => force_applied_force
+      procedure :: applied_couple => force_applied_couple
+      procedure :: time_dependent => force_time_dependent
+   end type force_end
+
+contains
+
+   pure function force_kind(self) result(name)
+      class(force_end), intent(in) :: self
+      character(:), allocatable :: name
+      name = trim(self%kind_name)
+   end function force_kind
+
+   pure function force_applied_force(self, t) result(f)
+      class(force_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: f(2)
+      select case (self%history)
+      case ('ramp')
+         f = self%force0*smooth_ramp(t, self%t0, self%duration)
+      case ('table')
+         f = self%table%at(t)
+      case default
+         f = self%force0
+      end select
+   end function force_applied_force
+
+   pure function force_applied_couple(self, t) result(c)
+      class(force_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: c
+      if (self%history == 'ramp') then
+         c = self%couple0*smooth_ramp(t, self%t0, self%duration)
+      else
+         c = self%couple0
+      end if
+   end function force_applied_couple
+
+   pure logical function force_time_dependent(self)
+      class(force_end), intent(in) :: self
+      force_time_dependent = self%history /= 'constant'
+   end function force_time_dependent
+end module xcable_ends_force

@@ -1,0 +1,87 @@
+!> An end whose position is prescribed: a fairlead that moves.
+!>
+!> 'harmonic': X(t) = X0 + a d w(t) [sin(2 pi t / T + phi) - sin(phi)], with
+!> the unit direction d, and w(t) = 1 - cos^2(pi t / (2 t_r)) rising smoothly
+!> from 0 to 1 over the start time t_r (w = 1 when t_r = 0), so that X(0) =
+!> X0, and with t_r > 0 the motion starts from rest. 'table': X(t) = X0 + the
+!> tabulated displacement (cubic Hermite, continuous velocity).
+module xcable_ends_motion
+   use xcable_kinds, only: dp
+   use xcable_ends_end, only: end_condition, smooth_ramp, smooth_ramp_rate
+   use xcable_ends_table, only: time_table
+   implicit none
+   private
+   public :: motion_end
+
+   real(dp), parameter :: two_pi = 2*acos(-1.0_dp)
+
+   !> A moving end.
+   type, extends(end_condition) :: motion_end
+      !> 'harmonic' or 'table'.
+      character(len=8) :: motion = 'harmonic'
+      !> Mean (and starting) position, m.
+      real(dp) :: origin(2) = 0
+      !> Amplitude (m), period (s), phase (rad), unit direction, start time (s).
+      real(dp) :: amplitude = 0, period = 1, phase = 0, direction(2) = [0.0_dp, 1.0_dp], ramp_time = 0
+      !> Displacement table of the 'table' motion.
+      type(time_table) :: table
+   contains
+      procedure :: kind => motion_kind
+      procedure :: held => motion_held
+      procedure :: position => motion_position
+      procedure :: velocity => motion_velocity
+   end type motion_end
+
+contains
+
+   pure function motion_kind(self) result(name)
+      class(motion_end), intent(in) :: self
+      character(:), allocatable :: name
+      name = 'motion'
+   end function motion_kind
+
+   pure logical function motion_held(self)
+      class(motion_end), intent(in) :: self
+      motion_held = .true.
+   end function motion_held
+
+   !> Smooth start factor w(t) and its rate.
+   pure subroutine start_factor(self, t, w, dw)
+      class(motion_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(out) :: w, dw
+      if (self%ramp_time > 0) then
+         w = 1 - smooth_ramp(t, 0.0_dp, self%ramp_time)
+         dw = -smooth_ramp_rate(t, 0.0_dp, self%ramp_time)
+      else
+         w = 1
+         dw = 0
+      end if
+   end subroutine start_factor
+
+   pure function motion_position(self, t) result(x)
+      class(motion_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(2), w, dw
+      if (self%motion == 'table') then
+         x = self%origin + self%table%at(t)
+      else
+         call start_factor(self, t, w, dw)
+         x = self%origin + self%amplitude*w*(sin(two_pi*t/self%period + self%phase) - sin(self%phase))*self%direction
+      end if
+   end function motion_position
+
+   pure function motion_velocity(self, t) result(v)
+      class(motion_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: v(2), w, dw, omega
+      if (self%motion == 'table') then
+         v = self%table%rate(t)
+      else
+         call start_factor(self, t, w, dw)
+         omega = two_pi/self%period
+         v = self%amplitude*(dw*(sin(omega*t + self%phase) - sin(self%phase)) + w*omega*cos(omega*t + self%phase)) &
+             *self%direction
+      end if
+   end function motion_velocity
+end module xcable_ends_motion

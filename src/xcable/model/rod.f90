@@ -1,0 +1,660 @@
+!> The energy-conserving discrete rod: the default discretisation of the
+!> planar cable (docs/ARCHITECTURE.md, docs/numerics.md).
+!>
+!> The continuum is the paper's (extensible, shear-rigid, bending stiffness
+!> EI, T = f(eps), moment M = EI Omega with Omega the curvature per unstretched
+!> length, so that the moment balance reads EI Omega' + (1 + eps) Sn = 0). It
+!> is discretised on a staggered grid: the unknowns are the node positions R_k
+!> (x horizontal, z up); each cell c between nodes c and c+1 carries the
+!> stretch vector e_c = (R_c+1 - R_c) / ds_c, its strain eps_c = |e_c| - 1 and
+!> its tension f(eps_c); each interior node carries the turning angle theta_k
+!> between its two cells and the moment M_k = EI theta_k / h_k, h_k the mean of
+!> the two cell lengths. The stored energy is
+!>
+!>     U = sum_c ds_c W(eps_c) + sum_k EI theta_k^2 / (2 h_k) + sum_k w_k z_k,
+!>
+!> W the strain energy of the law per unstretched length and w_k the weight of
+!> node k (its share of the cable and any point mass). The kinetic energy is
+!> 1/2 V^T M V with M = (1 - mu) M_lumped + mu M_averaged: M_lumped puts m ds/2
+!> at each end of a cell, M_averaged gives each cell the kinetic energy of its
+!> mean velocity, m ds |V_c + V_c+1|^2 / 8. With mu = 1 ('averaged', the
+!> default) the linear axial waves of the scheme are those of the paper's box
+!> scheme, exact at Courant number 1.
+!>
+!> Time stepping, from (R^n, V^n) to (R^n+1, V^n+1):
+!>
+!>     R^n+1 - R^n = dt [(1 - theta) V^n + theta V^n+1]
+!>     M (V^n+1 - V^n) / dt = -grad U(R^n, R^n+1) + F_ext,
+!>
+!> where grad U(R^n, R^n+1) is a discrete gradient: it satisfies
+!> grad U . (R^n+1 - R^n) = U(R^n+1) - U(R^n) exactly. With theta = 1/2 the
+!> energy changes by exactly the work of the ends and loads (to the Newton
+!> tolerance), in every regime, taut, slack, compressed or buckled; theta >
+!> 1/2 removes (theta - 1/2) (V^n+1 - V^n)^T M (V^n+1 - V^n) per step, which
+!> the energy ledger books as numerical dissipation. The discrete gradient of
+!> a cell: the strain part q (e^n + e^n+1) / (|e^n| + |e^n+1|) with q the
+!> divided difference of W between the two strains, and the bending part
+!> S_c G_c / ds_c with S_c the difference of the time-averaged moments at the
+!> two nodes of the cell and G_c = perp(e_mid) dphi / (sin(dphi) |e^n| |e^n+1|),
+!> dphi the rotation of the cell in the step; G_c . (e^n+1 - e^n) = dphi exactly.
+!>
+!> The unknowns of Newton's method are the new positions, two per node, node
+!> after node; the momentum balance of node k involves nodes k-2 .. k+2, so
+!> the Jacobian has kl = ku = 5. A held end's rows are R = X(t).
+module xcable_model_rod
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_numerics
+   use xcable_strings, only: str
+   use xcable_material_law, only: material_law
+   use xcable_solver_banded, only: band_matrix
+   use xcable_ends_end, only: end_condition
+   use xcable_solver_newton, only: newton_problem
+   implicit none
+   private
+   public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2
+
+   !> Band widths of the Jacobian.
+   integer, parameter :: rod_kl = 5, rod_ku = 5
+   !> Strain differences below this use the Taylor form of the divided difference.
+   real(dp), parameter :: small_strain_step = 1.0e-6_dp
+   !> Rotations below this use the Taylor form of dphi / sin(dphi).
+   real(dp), parameter :: small_rotation = 1.0e-4_dp
+
+   !> One piece of cable between two ends: grid, material and work arrays.
+   type :: rod_piece
+      !> Number of nodes.
+      integer :: n = 0
+      !> Unstretched arc length of the nodes from end a of the whole cable, m.
+      real(dp), allocatable :: s(:)
+      !> Cell lengths (n - 1), m.
+      real(dp), allocatable :: ds(:)
+      !> Length attributed to each node: half of each adjacent cell, m.
+      real(dp), allocatable :: lumped(:)
+      !> h_k = mean length of the two cells at an interior node (0 at the ends), m.
+      real(dp), allocatable :: dual(:)
+      !> Mass and weight per unstretched length, kg/m and N/m; bending stiffness EI, N m^2; gravity, m/s^2.
+      real(dp) :: mass = 0, weight = 0, ei = 0, gravity = 0
+      !> Share of the averaged mass matrix (1: averaged, 0: lumped).
+      real(dp) :: mu = 1
+      !> Tension-strain law.
+      class(material_law), allocatable :: law
+      !> Ends at node 1 and node n.
+      class(end_condition), allocatable :: end_a, end_b
+      !> Row scale of the momentum rows (a reference tension, N) and the position scale (m).
+      real(dp) :: tension_ref = 1, length_ref = 1
+      ! Work arrays, allocated once by init.
+      !> Old level: positions, velocities, M V, cell vectors, lengths, turning angles.
+      real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
+      !> New level: cell vectors, lengths, turning angles, cell forces.
+      real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :)
+      !> Cell quantities of the Jacobian: 2x2 blocks dN_c/de_c' for c' = c-1, c, c+1.
+      real(dp), allocatable :: block(:, :, :, :)
+      !> Diagonal and off-diagonal (k, k+1) entries of the mass matrix, kg.
+      real(dp), allocatable :: mass_diag(:), mass_off(:)
+   contains
+      !> Set up grid, material and work arrays.
+      procedure :: init => rod_init
+      !> Number of unknowns.
+      procedure :: unknowns => rod_unknowns
+      !> Cell vectors, lengths and turning angles of positions R.
+      procedure :: geometry => rod_geometry
+      !> Strain, kinetic, bending and gravity energy, J.
+      procedure :: energies => rod_energies
+      !> M V.
+      procedure :: mass_times => rod_mass_times
+      !> Residual and Jacobian of the static equilibrium at time t.
+      procedure :: static_system => rod_static_system
+      !> Store the old level of a time step.
+      procedure :: prepare_step => rod_prepare_step
+      !> Residual and Jacobian of a time step.
+      procedure :: step_system => rod_step_system
+      !> New velocities from new positions.
+      procedure :: new_velocity => rod_new_velocity
+      !> Tension, strain and shear of each cell and the moment of each node.
+      procedure :: cell_fields => rod_cell_fields
+      !> The external force a held end node needs (its reaction), after an evaluation at the state.
+      procedure :: reaction => rod_reaction
+   end type rod_piece
+
+   !> The nonlinear system Newton solves for one piece: the static equilibrium
+   !> at time t0, or the step from t0 to t0 + dt.
+   type, extends(newton_problem) :: rod_problem
+      !> The piece (its old level set by prepare_step for a step).
+      type(rod_piece) :: piece
+      !> Time step (0: statics), old time, time weight.
+      real(dp) :: dt = 0, t0 = 0, theta = 0.5_dp
+   contains
+      procedure :: evaluate => rod_problem_evaluate
+   end type rod_problem
+
+contains
+
+   !> Residual and Jacobian (newton_problem interface).
+   subroutine rod_problem_evaluate(self, x, residual, jacobian, with_jacobian)
+      !> Problem.
+      class(rod_problem), intent(inout) :: self
+      !> Positions, 2 per node.
+      real(dp), intent(in) :: x(:)
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian in band storage.
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form it.
+      logical, intent(in) :: with_jacobian
+      if (self%dt > 0) then
+         call self%piece%step_system(x, self%t0, self%dt, self%theta, residual, jacobian, with_jacobian)
+      else
+         call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
+      end if
+   end subroutine rod_problem_evaluate
+
+   !> perp(a) = a rotated by +90 degrees, so that perp(a) . b = a x b.
+   pure function perp(a) result(p)
+      !> Vector.
+      real(dp), intent(in) :: a(2)
+      real(dp) :: p(2)
+      p = [-a(2), a(1)]
+   end function perp
+
+   !> Scalar cross product a x b = a1 b2 - a2 b1.
+   pure real(dp) function cross2(a, b)
+      !> Vectors.
+      real(dp), intent(in) :: a(2), b(2)
+      cross2 = a(1)*b(2) - a(2)*b(1)
+   end function cross2
+
+   !> Set up a piece on the node arc lengths s.
+   subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      !> Node arc lengths, increasing, m.
+      real(dp), intent(in) :: s(:)
+      !> Mass (kg/m) and weight (N/m) per unstretched length, EI (N m^2), gravity (m/s^2).
+      real(dp), intent(in) :: mass, weight, ei, gravity
+      !> Share of the averaged mass matrix, 0 to 1.
+      real(dp), intent(in) :: mu
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Ends at s(1) and s(n).
+      class(end_condition), intent(in) :: end_a, end_b
+      !> Reference tension of the row scaling, N.
+      real(dp), intent(in) :: tension_ref
+      integer :: n, k
+      n = size(s)
+      self%n = n
+      self%s = s
+      self%ds = s(2:n) - s(1:n - 1)
+      allocate (self%lumped(n), self%dual(n))
+      self%lumped = 0
+      self%lumped(1:n - 1) = self%lumped(1:n - 1) + 0.5_dp*self%ds
+      self%lumped(2:n) = self%lumped(2:n) + 0.5_dp*self%ds
+      self%dual = 0
+      do k = 2, n - 1
+         self%dual(k) = 0.5_dp*(self%ds(k - 1) + self%ds(k))
+      end do
+      self%mass = mass
+      self%weight = weight
+      self%ei = ei
+      self%gravity = gravity
+      self%mu = mu
+      if (allocated(self%law)) deallocate (self%law)
+      allocate (self%law, source=law)
+      if (allocated(self%end_a)) deallocate (self%end_a)
+      if (allocated(self%end_b)) deallocate (self%end_b)
+      allocate (self%end_a, source=end_a)
+      allocate (self%end_b, source=end_b)
+      self%tension_ref = tension_ref
+      self%length_ref = sum(self%ds)/(n - 1)
+      allocate (self%r0(2, n), self%v0(2, n), self%mv0(2, n), self%e0(2, n - 1), self%l0(n - 1), self%th0(n))
+      allocate (self%e1(2, n - 1), self%l1(n - 1), self%th1(n), self%force(2, n - 1))
+      allocate (self%block(2, 2, -1:1, n - 1), self%mass_diag(n), self%mass_off(n - 1))
+      self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
+      self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
+      self%mass_diag = (1 - mu)*mass*self%lumped
+      self%mass_diag(1) = self%mass_diag(1) + end_a%point_mass()
+      self%mass_diag(n) = self%mass_diag(n) + end_b%point_mass()
+      self%mass_off = 0.25_dp*mu*mass*self%ds
+      self%mass_diag(1:n - 1) = self%mass_diag(1:n - 1) + 0.25_dp*mu*mass*self%ds
+      self%mass_diag(2:n) = self%mass_diag(2:n) + 0.25_dp*mu*mass*self%ds
+   end subroutine rod_init
+
+   !> Number of unknowns (two per node).
+   pure integer function rod_unknowns(self)
+      !> Piece.
+      class(rod_piece), intent(in) :: self
+      rod_unknowns = 2*self%n
+   end function rod_unknowns
+
+   !> Cell vectors e_c, their lengths and the turning angles at the interior nodes.
+   pure subroutine rod_geometry(self, r, e, l, th)
+      !> Piece.
+      class(rod_piece), intent(in) :: self
+      !> Positions (2, n), m.
+      real(dp), intent(in) :: r(:, :)
+      !> Cell vectors (2, n - 1), lengths (n - 1) and turning angles (n; 0 at the ends), rad.
+      real(dp), intent(out) :: e(:, :), l(:), th(:)
+      integer :: c, k
+      do c = 1, self%n - 1
+         e(:, c) = (r(:, c + 1) - r(:, c))/self%ds(c)
+         l(c) = norm2(e(:, c))
+      end do
+      th = 0
+      do k = 2, self%n - 1
+         th(k) = atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
+      end do
+   end subroutine rod_geometry
+
+   !> Weight of node k (cable share and point mass), N.
+   pure real(dp) function node_weight(self, k)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      node_weight = self%weight*self%lumped(k)
+      if (k == 1) node_weight = node_weight + self%gravity*self%end_a%point_mass()
+      if (k == self%n) node_weight = node_weight + self%gravity*self%end_b%point_mass()
+   end function node_weight
+
+   !> M V for velocities V (2, n).
+   pure subroutine rod_mass_times(self, v, mv)
+      !> Piece.
+      class(rod_piece), intent(in) :: self
+      !> Velocities (2, n), m/s.
+      real(dp), intent(in) :: v(:, :)
+      !> M V (2, n), kg m/s.
+      real(dp), intent(out) :: mv(:, :)
+      integer :: k
+      do k = 1, self%n
+         mv(:, k) = self%mass_diag(k)*v(:, k)
+      end do
+      do k = 1, self%n - 1
+         mv(:, k) = mv(:, k) + self%mass_off(k)*v(:, k + 1)
+         mv(:, k + 1) = mv(:, k + 1) + self%mass_off(k)*v(:, k)
+      end do
+   end subroutine rod_mass_times
+
+   !> Energies of a state: strain, kinetic, bending, gravity (J), from the
+   !> geometry e, l, th of R (as rod_geometry gives it).
+   pure function rod_energies(self, r, v, l, th) result(en)
+      !> Piece.
+      class(rod_piece), intent(in) :: self
+      !> Positions and velocities (2, n).
+      real(dp), intent(in) :: r(:, :), v(:, :)
+      !> Cell lengths (n - 1) and turning angles (n) of r.
+      real(dp), intent(in) :: l(:), th(:)
+      real(dp) :: en(4)
+      integer :: k, c
+      en = 0
+      do c = 1, self%n - 1
+         en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
+      end do
+      do k = 1, self%n
+         en(2) = en(2) + 0.5_dp*self%mass_diag(k)*dot_product(v(:, k), v(:, k))
+         en(4) = en(4) + node_weight(self, k)*r(2, k)
+      end do
+      do k = 1, self%n - 1
+         en(2) = en(2) + self%mass_off(k)*dot_product(v(:, k), v(:, k + 1))
+      end do
+      do k = 2, self%n - 1
+         en(3) = en(3) + 0.5_dp*self%ei*th(k)**2/self%dual(k)
+      end do
+   end function rod_energies
+
+   !> Residual (and Jacobian) of the static equilibrium at time t: for a loaded
+   !> node, [-(N_k - N_k-1) + w_k e_z - F_k(t)] / T_ref with N_c the exact
+   !> gradient of U per cell; for a held node (R_k - X(t)) / ds_ref.
+   subroutine rod_static_system(self, x, t, residual, jacobian, with_jacobian)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      !> Positions, 2 per node.
+      real(dp), intent(in) :: x(:)
+      !> Time of the loads and held positions, s.
+      real(dp), intent(in) :: t
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian (band storage).
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form the Jacobian.
+      logical, intent(in) :: with_jacobian
+      integer :: c, n
+      real(dp) :: f, fp, t_c(2), pvec(2), moment_diff, couple, stiff(2, 2), dp_de(2, 2)
+      real(dp) :: dmom(2, -1:1), jm(2, 2)
+      n = self%n
+      call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
+      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      do c = 1, n - 1
+         associate (e => self%e1(:, c), l => self%l1(c))
+            call self%law%tension_stiffness(l - 1, f, fp)
+            t_c = e/l
+            pvec = perp(e)/l**2
+            couple = cell_couple(self, c, t, t)
+            moment_diff = moment(self, self%th1, c) - moment(self, self%th1, c + 1) - couple
+            self%force(:, c) = f*t_c + moment_diff/self%ds(c)*pvec
+            if (.not. with_jacobian) cycle
+            stiff = fp*outer(t_c, t_c) + f/l*(identity2() - outer(t_c, t_c))
+            dp_de = (jm - 2*outer(matmul(jm, e), e)/l**2)/l**2
+            ! d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1.
+            dmom = 0
+            if (c >= 2) then
+               dmom(:, 0) = dmom(:, 0) + self%ei/self%dual(c)*pvec
+               dmom(:, -1) = -self%ei/self%dual(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+            end if
+            if (c + 1 <= n - 1) then
+               dmom(:, 0) = dmom(:, 0) + self%ei/self%dual(c + 1)*pvec
+               dmom(:, 1) = -self%ei/self%dual(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+            end if
+            self%block(:, :, 0, c) = stiff + moment_diff/self%ds(c)*dp_de + outer(pvec, dmom(:, 0))/self%ds(c)
+            self%block(:, :, -1, c) = outer(pvec, dmom(:, -1))/self%ds(c)
+            self%block(:, :, 1, c) = outer(pvec, dmom(:, 1))/self%ds(c)
+         end associate
+      end do
+      call assemble(self, x, t, t, residual, jacobian, with_jacobian, dynamic=.false.)
+   end subroutine rod_static_system
+
+   !> Store the old level (positions and velocities) of a step.
+   subroutine rod_prepare_step(self, r0, v0)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      !> Positions and velocities at the old level (2, n).
+      real(dp), intent(in) :: r0(:, :), v0(:, :)
+      self%r0 = r0
+      self%v0 = v0
+      call self%mass_times(v0, self%mv0)
+      call self%geometry(r0, self%e0, self%l0, self%th0)
+   end subroutine rod_prepare_step
+
+   !> New velocities from the new positions: V^n+1 = [(R^n+1 - R^n)/dt - (1 - theta) V^n] / theta.
+   pure subroutine rod_new_velocity(self, r1, dt, theta, v1)
+      !> Piece (holds the old level).
+      class(rod_piece), intent(in) :: self
+      !> New positions (2, n), m.
+      real(dp), intent(in) :: r1(:, :)
+      !> Step (s) and time weight.
+      real(dp), intent(in) :: dt, theta
+      !> New velocities (2, n), m/s.
+      real(dp), intent(out) :: v1(:, :)
+      v1 = ((r1 - self%r0)/dt - (1 - theta)*self%v0)/theta
+   end subroutine rod_new_velocity
+
+   !> Residual and Jacobian of the step from t0 to t0 + dt with the old level
+   !> stored by prepare_step: for a loaded node k,
+   !> [(M V^n+1)_k - (M V^n)_k] / dt - (N_k - N_k-1) + w_k e_z - F_k(mid), over T_ref,
+   !> with N_c the discrete gradient per cell; for a held node (R_k - X(t0 + dt)) / ds_ref.
+   subroutine rod_step_system(self, x, t0, dt, theta, residual, jacobian, with_jacobian)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      !> New positions, 2 per node.
+      real(dp), intent(in) :: x(:)
+      !> Old time and step, s; time weight (1/2 conserves energy).
+      real(dp), intent(in) :: t0, dt, theta
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian (band storage).
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form the Jacobian.
+      logical, intent(in) :: with_jacobian
+      integer :: c, n
+      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
+      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
+      n = self%n
+      call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
+      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      do c = 1, n - 1
+         associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
+            ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
+            eps0 = l0 - 1
+            eps1 = l1 - 1
+            h = eps1 - eps0
+            if (abs(h) < small_strain_step) then
+               mid = 0.5_dp*(eps0 + eps1)
+               q = self%law%tension(mid) + self%law%stiffness_slope(mid)*h*h/24
+               dq = 0.5_dp*self%law%stiffness(mid) + self%law%stiffness_slope(mid)*h/12
+            else
+               q = (self%law%strain_energy(eps1) - self%law%strain_energy(eps0))/h
+               dq = (self%law%tension(eps1) - q)/h
+            end if
+            lsum = l0 + l1
+            wsum = e0 + e1
+            self%force(:, c) = q*wsum/lsum
+            ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
+            em = 0.5_dp*wsum
+            cross01 = cross2(e0, e1)
+            dphi = atan2(cross01, dot_product(e0, e1))
+            if (abs(dphi) < small_rotation) then
+               rho = 1 + dphi**2/6
+               drho = dphi/3
+            else
+               rho = dphi/sin(dphi)
+               drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
+            end if
+            g = rho/(l0*l1)
+            gvec = perp(em)*g
+            couple = cell_couple(self, c, t0, t0 + dt)
+            s_c = 0.5_dp*(moment(self, self%th0, c) + moment(self, self%th1, c) &
+                          - moment(self, self%th0, c + 1) - moment(self, self%th1, c + 1)) - couple
+            self%force(:, c) = self%force(:, c) + s_c/self%ds(c)*gvec
+            if (.not. with_jacobian) cycle
+            ds_dq = dq*e1/l1
+            dstrain = outer(wsum/lsum, ds_dq) + q*(identity2()/lsum - outer(wsum, e1/l1)/lsum**2)
+            dphi_de = perp(e1)/l1**2
+            dg_de = drho*dphi_de/(l0*l1) - rho/(l0*l1**2)*e1/l1
+            dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
+            ds_de = 0
+            if (c >= 2) then
+               ds_de(:, 0) = ds_de(:, 0) + 0.5_dp*self%ei/self%dual(c)*dphi_de
+               ds_de(:, -1) = -0.5_dp*self%ei/self%dual(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+            end if
+            if (c + 1 <= n - 1) then
+               ds_de(:, 0) = ds_de(:, 0) + 0.5_dp*self%ei/self%dual(c + 1)*dphi_de
+               ds_de(:, 1) = -0.5_dp*self%ei/self%dual(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+            end if
+            self%block(:, :, 0, c) = dstrain + s_c/self%ds(c)*dgvec + outer(gvec, ds_de(:, 0))/self%ds(c)
+            self%block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/self%ds(c)
+            self%block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/self%ds(c)
+         end associate
+      end do
+      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
+   end subroutine rod_step_system
+
+   !> Moment M_k = EI theta_k / h_k of interior node k from turning angles th (0 outside 2..n-1).
+   pure real(dp) function moment(self, th, k)
+      class(rod_piece), intent(in) :: self
+      real(dp), intent(in) :: th(:)
+      integer, intent(in) :: k
+      if (k >= 2 .and. k <= self%n - 1) then
+         moment = self%ei*th(k)/self%dual(k)
+      else
+         moment = 0
+      end if
+   end function moment
+
+   !> Applied couple on cell c (the end cells), averaged over [ta, tb].
+   pure real(dp) function cell_couple(self, c, ta, tb)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: c
+      real(dp), intent(in) :: ta, tb
+      cell_couple = 0
+      if (c == 1) cell_couple = cell_couple + 0.5_dp*(self%end_a%applied_couple(ta) + self%end_a%applied_couple(tb))
+      if (c == self%n - 1) cell_couple = cell_couple + 0.5_dp*(self%end_b%applied_couple(ta) &
+                                                               + self%end_b%applied_couple(tb))
+   end function cell_couple
+
+   !> Node residuals and the Jacobian from the cell forces and blocks (statics:
+   !> t1 is the time; dynamics: t1 = t0, t2 = dt).
+   subroutine assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
+      class(rod_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: t1, t2
+      real(dp), intent(out) :: residual(:)
+      type(band_matrix), intent(inout) :: jacobian
+      logical, intent(in) :: with_jacobian, dynamic
+      real(dp), intent(in), optional :: theta
+      integer :: n, c, k, j, side, cp, node, band0, a, b, row, col
+      real(dp) :: scale, rate, sgn, blk(2, 2), mv(2), vk(2), fext(2), t_new
+      logical :: held_a, held_b
+      n = self%n
+      scale = 1/self%tension_ref
+      held_a = self%end_a%held()
+      held_b = self%end_b%held()
+      ! Internal forces: node k gets N_k - N_k-1.
+      residual = 0
+      do c = 1, n - 1
+         residual(2*c - 1:2*c) = residual(2*c - 1:2*c) - self%force(:, c)
+         residual(2*c + 1:2*c + 2) = residual(2*c + 1:2*c + 2) + self%force(:, c)
+      end do
+      ! Weight and applied forces.
+      do k = 1, n
+         residual(2*k) = residual(2*k) + node_weight(self, k)
+      end do
+      if (dynamic) then
+         t_new = t1 + t2
+         fext = 0.5_dp*(self%end_a%applied_force(t1) + self%end_a%applied_force(t_new))
+         residual(1:2) = residual(1:2) - fext
+         fext = 0.5_dp*(self%end_b%applied_force(t1) + self%end_b%applied_force(t_new))
+         residual(2*n - 1:2*n) = residual(2*n - 1:2*n) - fext
+         ! Inertia: [M (V^n+1 - V^n)] / dt with V^n+1 from the new positions.
+         rate = 1/(theta*t2*t2)
+         do k = 1, n
+            vk = ((x(2*k - 1:2*k) - self%r0(:, k))/t2 - (1 - theta)*self%v0(:, k))/theta
+            mv = self%mass_diag(k)*vk
+            if (k > 1) mv = mv + self%mass_off(k - 1)*(((x(2*k - 3:2*k - 2) - self%r0(:, k - 1))/t2 &
+                                                         - (1 - theta)*self%v0(:, k - 1))/theta)
+            if (k < n) mv = mv + self%mass_off(k)*(((x(2*k + 1:2*k + 2) - self%r0(:, k + 1))/t2 &
+                                                     - (1 - theta)*self%v0(:, k + 1))/theta)
+            residual(2*k - 1:2*k) = residual(2*k - 1:2*k) + (mv - self%mv0(:, k))/t2
+         end do
+      else
+         t_new = t1
+         residual(1:2) = residual(1:2) - self%end_a%applied_force(t1)
+         residual(2*n - 1:2*n) = residual(2*n - 1:2*n) - self%end_b%applied_force(t1)
+         rate = 0
+      end if
+      residual = residual*scale
+      if (held_a) residual(1:2) = (x(1:2) - self%end_a%position(t_new))/self%length_ref
+      if (held_b) residual(2*n - 1:2*n) = (x(2*n - 1:2*n) - self%end_b%position(t_new))/self%length_ref
+      if (.not. with_jacobian) return
+
+      jacobian%ab = 0
+      jacobian%factorised = .false.
+      band0 = jacobian%kl + jacobian%ku + 1
+      ! dN_c/dR_node: block(c, cp) * (+-1 / ds_cp) for the two nodes of cell cp.
+      do c = 1, n - 1
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            do side = 0, 1
+               node = cp + side
+               sgn = merge(1.0_dp, -1.0_dp, side == 1)/self%ds(cp)
+               blk = self%block(:, :, cp - c, c)*sgn*scale
+               ! Node c gets -N_c, node c+1 gets +N_c.
+               do j = 0, 1
+                  k = c + j
+                  if (k == 1 .and. held_a) cycle
+                  if (k == n .and. held_b) cycle
+                  do a = 1, 2
+                     do b = 1, 2
+                        row = 2*(k - 1) + a
+                        col = 2*(node - 1) + b
+                        jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                              + merge(1.0_dp, -1.0_dp, j == 1)*blk(a, b)
+                     end do
+                  end do
+               end do
+            end do
+         end do
+      end do
+      if (dynamic) then
+         do k = 1, n
+            if (k == 1 .and. held_a) cycle
+            if (k == n .and. held_b) cycle
+            do a = 1, 2
+               row = 2*(k - 1) + a
+               jacobian%ab(band0, row) = jacobian%ab(band0, row) + self%mass_diag(k)*rate*scale
+               if (k > 1) then
+                  col = row - 2
+                  jacobian%ab(band0 + 2, col) = jacobian%ab(band0 + 2, col) + self%mass_off(k - 1)*rate*scale
+               end if
+               if (k < n) then
+                  col = row + 2
+                  jacobian%ab(band0 - 2, col) = jacobian%ab(band0 - 2, col) + self%mass_off(k)*rate*scale
+               end if
+            end do
+         end do
+      end if
+      if (held_a) call held_rows(1)
+      if (held_b) call held_rows(n)
+
+   contains
+
+      !> Rows of a held node: R_k - X(t) = 0.
+      subroutine held_rows(kk)
+         integer, intent(in) :: kk
+         integer :: aa
+         do aa = 1, 2
+            row = 2*(kk - 1) + aa
+            jacobian%ab(band0, row) = 1/self%length_ref
+         end do
+      end subroutine held_rows
+   end subroutine assemble
+
+   !> The force the support exerts on end node k (1 or n) to keep the balance of
+   !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step
+   !> also plus the node's inertia [M (V^n+1 - V^n)]_k / dt. Uses the cell forces
+   !> of the last evaluation (at the converged state), so call it right after.
+   function rod_reaction(self, k, x, dt, theta) result(f)
+      !> Piece.
+      class(rod_piece), intent(in) :: self
+      !> End node, 1 or n.
+      integer, intent(in) :: k
+      !> Positions at which the piece was last evaluated, 2 per node.
+      real(dp), intent(in) :: x(:)
+      !> Step (0: statics) and time weight.
+      real(dp), intent(in) :: dt, theta
+      real(dp) :: f(2), vk(2), mv(2)
+      integer :: n
+      n = self%n
+      f = [0.0_dp, node_weight(self, k)]
+      if (k < n) f = f - self%force(:, k)
+      if (k > 1) f = f + self%force(:, k - 1)
+      if (dt > 0) then
+         vk = ((x(2*k - 1:2*k) - self%r0(:, k))/dt - (1 - theta)*self%v0(:, k))/theta
+         mv = self%mass_diag(k)*vk
+         if (k > 1) mv = mv + self%mass_off(k - 1)*(((x(2*k - 3:2*k - 2) - self%r0(:, k - 1))/dt &
+                                                      - (1 - theta)*self%v0(:, k - 1))/theta)
+         if (k < n) mv = mv + self%mass_off(k)*(((x(2*k + 1:2*k + 2) - self%r0(:, k + 1))/dt &
+                                                  - (1 - theta)*self%v0(:, k + 1))/theta)
+         f = f + (mv - self%mv0(:, k))/dt
+      end if
+   end function rod_reaction
+
+   !> Tension, strain and shear force of each cell and the moment of each node of positions R.
+   subroutine rod_cell_fields(self, r, tension, strain, shear, moment_node)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      !> Positions (2, n).
+      real(dp), intent(in) :: r(:, :)
+      !> Tension (N), strain, shear force (N; along the normal n of the paper, -perp(t)) per cell (n - 1).
+      real(dp), intent(out) :: tension(:), strain(:), shear(:)
+      !> Moment per node, N m (0 at the ends).
+      real(dp), intent(out) :: moment_node(:)
+      integer :: c, k
+      call self%geometry(r, self%e1, self%l1, self%th1)
+      do k = 1, self%n
+         moment_node(k) = moment(self, self%th1, k)
+      end do
+      do c = 1, self%n - 1
+         strain(c) = self%l1(c) - 1
+         tension(c) = self%law%tension(strain(c))
+         ! Sn along the paper's normal n = -perp(t): EI Omega' + (1 + eps) Sn = 0.
+         shear(c) = (moment_node(c + 1) - moment_node(c))/(self%ds(c)*self%l1(c))
+      end do
+   end subroutine rod_cell_fields
+
+   pure function outer(a, b) result(m)
+      real(dp), intent(in) :: a(2), b(2)
+      real(dp) :: m(2, 2)
+      m(:, 1) = a*b(1)
+      m(:, 2) = a*b(2)
+   end function outer
+
+   pure function identity2() result(m)
+      real(dp) :: m(2, 2)
+      m = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+   end function identity2
+end module xcable_model_rod

@@ -1,0 +1,212 @@
+!> The static state of the whole cable in the rod discretisation: Newton's
+!> method on the equilibrium of every node (model/rod.f90) from the
+!> extensible catenary (theory.f90) as the first guess.
+!>
+!> - Both ends held: the catenary between the two points.
+!> - One end held, the other loaded (free, force, point mass): the load fixes
+!>   the internal force at the loaded end, and the catenary is integrated from
+!>   the held end.
+!> - The paper's symmetric case (end tension given): the span is adjusted by a
+!>   secant iteration until the force the support exerts at end b has the
+!>   magnitude T_s (the span of the exact catenary is the first guess).
+!>
+!> The static solve always iterates to a scaled update of 1e-10 (the time
+!> steps use &numerics newton_tol).
+module xcable_rod_statics
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
+   use xcable_strings, only: str
+   use xcable_scene, only: scene_type
+   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
+   use xcable_ends_fixed, only: fixed_end
+   use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
+   use xcable_theory, only: catenary_from_force, catenary_between, catenary_summary
+   implicit none
+   private
+   public :: rod_static_state, solve_rod_statics, static_tolerance
+
+   !> Scaled update at which the static solve stops.
+   real(dp), parameter :: static_tolerance = 1.0e-10_dp
+
+   !> A static solution.
+   type :: rod_static_state
+      !> Positions (2, n), m.
+      real(dp), allocatable :: r(:, :)
+      !> Resolved point of end b in the symmetric case (x, z), m.
+      real(dp) :: end_b_point(2) = 0
+      !> Force the supports exert at the two ends (held ends), N.
+      real(dp) :: reaction_a(2) = 0, reaction_b(2) = 0
+      !> Horizontal distance between the ends and depth of the lowest point below the higher end, m.
+      real(dp) :: span = 0, sag = 0
+      !> Newton iterations (all solves) and secant iterations on the span.
+      integer :: newton_iterations = 0, span_iterations = 0
+   end type rod_static_state
+
+contains
+
+   !> Solve the statics of the scene on the grid s. problem%piece must be set
+   !> up on s with the scene's ends (the symmetric case replaces end b).
+   subroutine solve_rod_statics(scene, problem, options, state, error)
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      !> The piece (whole cable) as a Newton problem.
+      type(rod_problem), intent(inout) :: problem
+      !> Newton controls (the iteration limit is used; the tolerance is static_tolerance).
+      type(newton_options), intent(in) :: options
+      !> The solution.
+      type(rod_static_state), intent(out) :: state
+      !> Error when no equilibrium is found.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: span0, span1, sag, angle, mid, r0, r1, span2
+      integer :: it, n
+      n = problem%piece%n
+      allocate (state%r(2, n))
+      problem%dt = 0
+      problem%t0 = 0
+      if (scene%from_tension) then
+         call catenary_summary(scene%law, scene%weight, scene%length, scene%tension, span0, sag, angle, mid, error)
+         if (allocated(error)) then
+            call prefix_error(error, scene%source//': &static: ')
+            return
+         end if
+         call set_end_b(span0)
+         call first_guess(error)
+         if (allocated(error)) return
+         call solve_at_span(r0, error)
+         if (allocated(error)) return
+         if (abs(r0) > 1.0e-12_dp) then
+            span1 = span0*(1 + 1.0e-7_dp)
+            do it = 1, 30
+               call stretch_to(span1)
+               call solve_at_span(r1, error)
+               if (allocated(error)) return
+               state%span_iterations = it
+               if (abs(r1) <= 1.0e-12_dp .or. r1 == r0) exit
+               span2 = span1 - r1*(span1 - span0)/(r1 - r0)
+               span0 = span1
+               r0 = r1
+               span1 = span2
+               if (it == 30) then
+                  call fatal_error(error, 'statics: the span for the end tension '//str(scene%tension)// &
+                                   ' N was not found (relative mismatch '//str(r1)//')', stat_numerics)
+                  return
+               end if
+            end do
+         end if
+      else
+         call first_guess(error)
+         if (allocated(error)) return
+         call solve_now(error)
+         if (allocated(error)) return
+      end if
+      call finish()
+
+   contains
+
+      !> Replace end b by a fixed end at the height of end a, span to its right.
+      subroutine set_end_b(span)
+         real(dp), intent(in) :: span
+         real(dp) :: pa(2)
+         pa = problem%piece%end_a%position(0.0_dp)
+         state%end_b_point = pa + [span, 0.0_dp]
+         deallocate (problem%piece%end_b)
+         allocate (problem%piece%end_b, source=fixed_end(point=state%end_b_point))
+         problem%piece%end_b%label = 'end_b'
+      end subroutine set_end_b
+
+      !> Move end b to a new span, stretching the current solution horizontally.
+      subroutine stretch_to(span)
+         real(dp), intent(in) :: span
+         real(dp) :: pa(2), old
+         pa = problem%piece%end_a%position(0.0_dp)
+         old = state%end_b_point(1) - pa(1)
+         state%r(1, :) = pa(1) + (state%r(1, :) - pa(1))*span/old
+         call set_end_b(span)
+      end subroutine stretch_to
+
+      !> Solve at the current span; mismatch = |reaction at b| / T_s - 1.
+      subroutine solve_at_span(mismatch, err)
+         real(dp), intent(out) :: mismatch
+         type(error_type), allocatable, intent(out) :: err
+         real(dp) :: f(2)
+         call solve_now(err)
+         if (allocated(err)) return
+         f = problem%piece%reaction(n, reshape(state%r, [2*n]), 0.0_dp, 0.5_dp)
+         mismatch = norm2(f)/scene%tension - 1
+      end subroutine solve_at_span
+
+      !> Newton from state%r.
+      subroutine solve_now(err)
+         type(error_type), allocatable, intent(out) :: err
+         type(newton_workspace) :: work
+         type(newton_options) :: opts
+         type(newton_report) :: report
+         real(dp), allocatable :: x(:)
+         opts = options
+         opts%tolerance = static_tolerance
+         opts%reuse_jacobian = .false.
+         call work%init(2*n, rod_kl, rod_ku, spread(problem%piece%length_ref, 1, 2*n))
+         x = reshape(state%r, [2*n])
+         call newton_solve(problem, x, work, opts, report, err)
+         state%newton_iterations = state%newton_iterations + report%iterations
+         if (allocated(err)) then
+            call prefix_error(err, 'statics: ')
+            return
+         end if
+         state%r = reshape(x, [2, n])
+      end subroutine solve_now
+
+      !> The catenary guess.
+      subroutine first_guess(err)
+         type(error_type), allocatable, intent(out) :: err
+         real(dp) :: n0(2), pa(2), pb(2), load(2), ss(n)
+         real(dp), allocatable :: eps(:), ten(:), rr(:, :)
+         logical :: held_a, held_b
+         allocate (eps(n), ten(n), rr(2, n))
+         held_a = problem%piece%end_a%held()
+         held_b = problem%piece%end_b%held()
+         ss = problem%piece%s - problem%piece%s(1)
+         if (held_a .and. held_b) then
+            pa = problem%piece%end_a%position(0.0_dp)
+            pb = problem%piece%end_b%position(0.0_dp)
+            call catenary_between(scene%law, scene%weight, scene%length, pa, pb, n0, err)
+            if (allocated(err)) then
+               call prefix_error(err, scene%source//': statics: ')
+               return
+            end if
+            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten)
+         else if (held_a) then
+            ! The internal force at s = L is the load of end b (its force and the point mass's weight).
+            load = problem%piece%end_b%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_b%point_mass()]
+            n0 = load - [0.0_dp, scene%weight*scene%length]
+            pa = problem%piece%end_a%position(0.0_dp)
+            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten)
+         else if (held_b) then
+            ! The internal force at s = 0 balances the load of end a.
+            load = problem%piece%end_a%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_a%point_mass()]
+            n0 = -load
+            pb = problem%piece%end_b%position(0.0_dp)
+            call catenary_from_force(scene%law, scene%weight, n0, [0.0_dp, 0.0_dp], ss, rr, eps, ten)
+            state%r(1, :) = rr(1, :) - rr(1, n) + pb(1)
+            state%r(2, :) = rr(2, :) - rr(2, n) + pb(2)
+         else
+            call fatal_error(err, scene%source//': statics: neither end is held (fixed or moving): the cable has '// &
+                             'no static position', stat_input)
+         end if
+      end subroutine first_guess
+
+      !> Span, sag and the reactions of the solution.
+      subroutine finish()
+         use xcable_solver_banded, only: band_matrix
+         real(dp) :: x(2*n), res(2*n)
+         type(band_matrix) :: unused
+         x = reshape(state%r, [2*n])
+         ! One evaluation at the solution sets the cell forces the reactions use.
+         call problem%evaluate(x, res, unused, .false.)
+         state%reaction_a = problem%piece%reaction(1, x, 0.0_dp, 0.5_dp)
+         state%reaction_b = problem%piece%reaction(n, x, 0.0_dp, 0.5_dp)
+         state%span = abs(state%r(1, n) - state%r(1, 1))
+         state%sag = max(state%r(2, 1), state%r(2, n)) - minval(state%r(2, :))
+      end subroutine finish
+   end subroutine solve_rod_statics
+end module xcable_rod_statics

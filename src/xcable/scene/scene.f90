@@ -1,0 +1,169 @@
+!> The scene a case describes: the cable (its material, weight and bending
+!> stiffness), its two ends, how its static state is defined, and the break.
+!> Built once from a validated case; the models and the driver read it.
+!>
+!> The static state is defined either by the two end positions (every held
+!> end at its point, loaded ends where the statics puts them), or, in the
+!> paper's symmetric case (&static tension, both ends fixed and no position
+!> given for end b), by the end tension: end b then lies at the height of
+!> end a, at the span the tension gives.
+module xcable_scene
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
+   use xcable_strings, only: str
+   use xcable_io_config, only: case_config
+   use xcable_material_law, only: material_law, new_law
+   use xcable_material_tension_only, only: tension_only_law, new_tension_only
+   use xcable_ends_end, only: end_condition
+   use xcable_ends_factory, only: new_end
+   implicit none
+   private
+   public :: scene_type, scene_from_config, scene_grid
+
+   !> A scene.
+   type :: scene_type
+      !> Namelist file of the case (for messages).
+      character(:), allocatable :: source
+      !> Unstretched length, m; mass and weight per unstretched length, kg/m and N/m.
+      real(dp) :: length = 60, mass = 0, weight = 0
+      !> Gravity, m/s^2; bending stiffness EI, N m^2.
+      real(dp) :: gravity = 9.81_dp, ei = 0
+      !> Tension-strain law (with the compression option applied).
+      class(material_law), allocatable :: law
+      !> End a (s = 0) and end b (s = L).
+      class(end_condition), allocatable :: end_a, end_b
+      !> The paper's symmetric case: statics from the end tension.
+      logical :: from_tension = .false.
+      !> End tension of the symmetric case, N.
+      real(dp) :: tension = 0
+      !> Whether and where (arc length from end a, m) the cable breaks, when it
+      !> starts (s) and the duration of the force ramp (s).
+      logical :: breaks = .false.
+      real(dp) :: s_break = 0, break_time = 0, t_break = 0
+      !> Whether the break is at end a, at end b, or inside the cable.
+      logical :: break_at_a = .false., break_at_b = .false.
+   contains
+      !> Whether the break splits the cable in two.
+      procedure :: interior_break
+   end type scene_type
+
+contains
+
+   !> Whether the break is inside the cable (two pieces).
+   pure logical function interior_break(self)
+      !> Scene.
+      class(scene_type), intent(in) :: self
+      interior_break = self%breaks .and. .not. (self%break_at_a .or. self%break_at_b)
+   end function interior_break
+
+   !> Build the scene of a validated case (zero area, EI or EA derived as the reader does).
+   subroutine scene_from_config(config, scene, error)
+      !> Validated case.
+      type(case_config), intent(in) :: config
+      !> The scene.
+      type(scene_type), intent(out) :: scene
+      !> Error (stat_input) naming what is inconsistent.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      class(material_law), allocatable :: law
+      real(dp) :: area, ei, ea, rel
+      scene%source = config%source
+      area = config%area
+      if (area == 0) area = 0.25_dp*pi*config%diameter**2
+      ei = config%bending_stiffness
+      if (ei == 0) ei = config%young*pi*config%diameter**4/64
+      ea = config%ea
+      if (ea == 0) ea = config%young*area
+      call new_law(law, trim(config%law), config%p, ea, config%strain_max, error)
+      if (allocated(error)) then
+         call prefix_error(error, config%source//': &material: ')
+         return
+      end if
+      select case (trim(config%compression))
+      case ('none')
+         allocate (scene%law, source=new_tension_only(law))
+      case default
+         call move_alloc(law, scene%law)
+      end select
+      scene%length = config%length
+      scene%mass = config%density*area
+      scene%gravity = config%gravity
+      scene%weight = scene%mass*config%gravity
+      scene%ei = ei
+
+      call new_end(config%end_a, 'end_a', scene%end_a, error)
+      if (allocated(error)) then
+         call prefix_error(error, config%source//': &end_a: ')
+         return
+      end if
+      call new_end(config%end_b, 'end_b', scene%end_b, error)
+      if (allocated(error)) then
+         call prefix_error(error, config%source//': &end_b: ')
+         return
+      end if
+
+      ! The paper's symmetric case: both ends fixed and no position given for end b.
+      scene%from_tension = trim(config%end_a%kind) == 'fixed' .and. trim(config%end_b%kind) == 'fixed' .and. &
+                           .not. (config%is_given('end_b', 'x') .or. config%is_given('end_b', 'z'))
+      scene%tension = config%tension
+      if (scene%from_tension .and. config%tension <= 1.001_dp*0.5_dp*scene%weight*scene%length) then
+         call fatal_error(error, config%source//': &static: tension = '//str(config%tension)// &
+                          ': must exceed half the weight of the cable, w0 L / 2 = '// &
+                          str(0.5_dp*scene%weight*scene%length)//' N', stat_input)
+         return
+      end if
+
+      scene%breaks = config%break_enabled
+      if (scene%breaks) then
+         scene%s_break = config%s_break
+         if (scene%s_break < 0) scene%s_break = config%length
+         scene%break_time = config%break_time
+         scene%t_break = config%t_break
+         rel = scene%s_break/config%length
+         scene%break_at_a = rel <= 1.0e-12_dp
+         scene%break_at_b = rel >= 1 - 1.0e-12_dp
+         if (scene%break_at_a .and. .not. scene%end_a%held()) then
+            call fatal_error(error, config%source//': &rupture: s_break = '//str(scene%s_break)//': end a is '// &
+                             scene%end_a%kind()//', not held, so nothing breaks there', stat_input)
+            return
+         end if
+         if (scene%break_at_b .and. .not. scene%end_b%held()) then
+            call fatal_error(error, config%source//': &rupture: s_break = '//str(scene%s_break)//': end b is '// &
+                             scene%end_b%kind()//', not held, so nothing breaks there', stat_input)
+            return
+         end if
+      end if
+   end subroutine scene_from_config
+
+   !> Node arc lengths: uniform on [0, L], or, with a break inside the cable,
+   !> uniform on each side of it with the break point a node (the nodes split
+   !> in proportion to the lengths of the two sides, at least two cells each).
+   subroutine scene_grid(scene, nodes, s, break_node)
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      !> Number of nodes.
+      integer, intent(in) :: nodes
+      !> Arc lengths, m.
+      real(dp), allocatable, intent(out) :: s(:)
+      !> Node at the break (0 without an interior break).
+      integer, intent(out) :: break_node
+      integer :: k, cells_a, cells
+      allocate (s(nodes))
+      cells = nodes - 1
+      break_node = 0
+      if (scene%interior_break() .and. cells >= 4) then
+         cells_a = min(max(nint(cells*scene%s_break/scene%length), 2), cells - 2)
+         break_node = cells_a + 1
+         do k = 1, break_node
+            s(k) = scene%s_break*real(k - 1, dp)/cells_a
+         end do
+         do k = break_node + 1, nodes
+            s(k) = scene%s_break + (scene%length - scene%s_break)*real(k - break_node, dp)/(cells - cells_a)
+         end do
+      else
+         do k = 1, nodes
+            s(k) = scene%length*real(k - 1, dp)/cells
+         end do
+      end if
+   end subroutine scene_grid
+end module xcable_scene

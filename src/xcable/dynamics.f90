@@ -85,6 +85,10 @@ module xcable_dynamics
       integer, allocatable :: rejected(:)
       !> Energy ledger (n_energy, 0:n), J, when asked for.
       real(dp), allocatable :: energy(:, :)
+      !> Unknowns at the fixed end and at the breaking end (n_eq, 2, 0:n).
+      real(dp), allocatable :: end_y(:, :, :)
+      !> Position (x, z) of the breaking end (2, 0:n), m.
+      real(dp), allocatable :: end_position(:, :)
    contains
       procedure :: reserve => history_reserve
    end type run_history
@@ -160,7 +164,7 @@ contains
       integer, intent(in) :: n
       !> Whether the energy ledger is kept.
       logical, intent(in) :: energy
-      real(dp), allocatable :: r(:), e(:, :)
+      real(dp), allocatable :: r(:), e(:, :), ey(:, :, :)
       integer, allocatable :: i(:)
       integer :: m
       if (allocated(self%time)) then
@@ -170,9 +174,12 @@ contains
       if (.not. allocated(self%time)) then
          allocate (self%time(0:n), self%step(0:n), self%end_velocity(0:n), self%fixed_end_tension(0:n))
          allocate (self%newton_iterations(0:n), self%rejected(0:n))
+         allocate (self%end_y(n_eq, 2, 0:n), self%end_position(2, 0:n))
          if (energy) allocate (self%energy(n_energy, 0:n))
          return
       end if
+      allocate (ey(n_eq, 2, 0:n)); ey(:, :, 0:m) = self%end_y(:, :, 0:m); call move_alloc(ey, self%end_y)
+      allocate (e(2, 0:n)); e(:, 0:m) = self%end_position(:, 0:m); call move_alloc(e, self%end_position)
       allocate (r(0:n)); r(0:m) = self%time(0:m); call move_alloc(r, self%time)
       allocate (r(0:n)); r(0:m) = self%step(0:m); call move_alloc(r, self%step)
       allocate (r(0:n)); r(0:m) = self%end_velocity(0:m); call move_alloc(r, self%end_velocity)
@@ -437,6 +444,10 @@ contains
          history%fixed_end_tension(i) = model%law%tension(y(i_eps, 1))
          history%newton_iterations(i) = iterations
          history%rejected(i) = rejected
+         history%end_y(:, 1, i) = y(:, 1)
+         history%end_y(:, 2, i) = y(:, np)
+         call positions(y, s, xpos, zpos)
+         history%end_position(:, i) = [xpos(np), zpos(np)]
       end subroutine record
 
       !> Energy ledger at record i.

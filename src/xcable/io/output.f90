@@ -2,23 +2,24 @@
 !>
 !> Layout (h5py reads 2-D datasets as [time, node]):
 !>   /  attributes status ('running', 'complete' or 'failed'), failure_reason,
-!>      failure_time, namelist, input_file, code_version, compiler_version,
-!>      compiler_options
-!>   /static/{s,x,z,tension,shear,strain,curvature,beta0,beta3}, attributes span, sag, end_angle
-!>   /time, /s, and one 2-D dataset per field asked for in &output fields
-!>   /history/{time,step,end_velocity,fixed_end_tension,newton_iterations,rejected}
-!>   /history/energy/{strain,kinetic,bending,gravity,work,ledger} when the ledger is kept
-!>   /summary attributes (peak_end_speed, min_fixed_end_tension, ...)
-!> The status is 'running' from creation, so a run that is killed never looks complete.
+!>      failure_time, warnings, namelist, input_file, code_version,
+!>      compiler_version, compiler_options, scheme, terms
+!>   /s, /time, and one 2-D dataset per field asked for in &output fields
+!>   /static/{s,x,z,tension,shear,strain,u,v,curvature} (+ beta0, beta3 of the
+!>      box scheme), attributes span, sag, end_angle, tension_a, tension_b,
+!>      newton_iterations
+!>   /history/{time,step,newton_iterations,rejected}
+!>   /history/<end>/{x,z,vx,vz,tension,force_x,force_z} for each end
+!>   /history/energy/{strain,kinetic,bending,gravity,work,dissipation,ledger} with the ledger
+!>   /summary attributes
+!> The status is 'running' from creation, so a run that is killed never looks
+!> complete. Only the fields asked for are written.
 module xcable_io_output
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_io
    use xcable_strings, only: str
-   use xcable_model_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
-   use xcable_model_geometry, only: positions
-   use xcable_io_input, only: known_fields
-   use xcable_statics, only: static_state
-   use xcable_dynamics, only: run_observer, run_history, run_summary, n_energy, energy_names
+   use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
+                                 field_names, n_fields, n_end_quantities, end_quantity_names
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr
    use hdf5
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
@@ -27,19 +28,18 @@ module xcable_io_output
    public :: result_file, code_version
 
    !> Version of the code written into every result.
-   character(len=*), parameter :: code_version = '0.1.0'
+   character(len=*), parameter :: code_version = '0.2.0'
 
-   !> An open result file; receives the snapshots of a run.
+   !> An open result file; receives the static state and the snapshots of a run.
    type, extends(run_observer) :: result_file
       !> Path of the HDF5 file.
       character(:), allocatable :: path
       !> HDF5 identifier of the file.
       integer(hid_t) :: file = -1
-      !> Cable data (for the tension) and grid.
-      type(cable_model) :: model
+      !> Output node arc lengths.
       real(dp), allocatable :: s(:)
-      !> Which of known_fields are written.
-      logical :: want(size(known_fields)) = .false.
+      !> Which of field_names are written.
+      logical :: want(n_fields) = .false.
       !> Snapshots written so far.
       integer :: snapshots = 0
       !> Whether gnuplot text is written, and the unit of its snapshot file.
@@ -47,9 +47,11 @@ module xcable_io_output
       integer :: text_unit = -1
       !> Stem of the gnuplot text files.
       character(:), allocatable :: text_stem
+      !> Output columns where a new piece starts (a blank line in the gnuplot text).
+      integer, allocatable :: piece_starts(:)
    contains
       procedure :: create => result_create
-      procedure :: write_static => result_write_static
+      procedure :: static => result_static
       procedure :: snapshot => result_snapshot
       procedure :: write_history => result_write_history
       procedure :: write_summary => result_write_summary
@@ -59,14 +61,12 @@ module xcable_io_output
 contains
 
    !> Create the file (status 'running') and write the provenance.
-   subroutine result_create(self, path, model, s, fields, namelist_text, input_file, gnuplot, error)
+   subroutine result_create(self, path, s, fields, namelist_text, input_file, gnuplot, scheme, terms, piece_starts, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Path of the HDF5 file.
       character(*), intent(in) :: path
-      !> Cable data.
-      type(cable_model), intent(in) :: model
-      !> Node arc lengths, m.
+      !> Output node arc lengths, m.
       real(dp), intent(in) :: s(:)
       !> Snapshot fields, separated by blanks or commas.
       character(*), intent(in) :: fields
@@ -76,16 +76,20 @@ contains
       character(*), intent(in) :: input_file
       !> Write gnuplot-ready text too.
       logical, intent(in) :: gnuplot
+      !> Discretisation and the terms of the model that were computed.
+      character(*), intent(in) :: scheme, terms
+      !> Output columns where a new piece starts (empty: one piece).
+      integer, intent(in) :: piece_starts(:)
       !> Error when the file cannot be created.
       type(error_type), allocatable, intent(out) :: error
       integer :: hdferr, i, dot, ios
       character(len=256) :: msg
       logical :: ok
       self%path = path
-      self%model = model
       self%s = s
-      do i = 1, size(known_fields)
-         self%want(i) = has_word(fields, trim(known_fields(i)))
+      self%piece_starts = piece_starts
+      do i = 1, n_fields
+         self%want(i) = has_word(fields, trim(field_names(i)))
       end do
       call h5open_f(hdferr)
       call h5eset_auto_f(0, hdferr)
@@ -103,7 +107,9 @@ contains
       call put_text_attr(self%file, 'code_version', code_version, ok)
       call put_text_attr(self%file, 'compiler_version', compiler_version(), ok)
       call put_text_attr(self%file, 'compiler_options', compiler_options(), ok)
-      call put_real_vector(self%file, 's', s, ok)
+      call put_text_attr(self%file, 'scheme', scheme, ok)
+      call put_text_attr(self%file, 'terms', terms, ok)
+      call put_real_vector(self%file, 's', s, ok, 'm')
       if (.not. ok) then
          call fatal_error(error, "writing the provenance to '"//path//"' failed", stat_io)
          return
@@ -127,92 +133,83 @@ contains
          end if
          self%gnuplot_text = .true.
          write (self%text_unit, '(a)') '# xcable snapshots: one block per time (gnuplot index), blocks separated by '// &
-            'two blank lines'
+            'two blank lines; a single blank line separates the pieces of a broken cable'
          write (self%text_unit, '(a)') '# columns: s[m] x[m] z[m] tension[N] strain[-] u[m/s] v[m/s] shear[N] '// &
             'curvature[1/m]'
       end if
    end subroutine result_create
 
-   !> Write the static state.
-   subroutine result_write_static(self, state, error)
+   !> Write the static state (run_observer).
+   subroutine result_static(self, info, error)
       !> Result file.
       class(result_file), intent(inout) :: self
-      !> Static solution.
-      type(static_state), intent(in) :: state
+      !> Static state.
+      type(static_info), intent(in) :: info
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group
-      integer :: hdferr
+      integer :: hdferr, i
       logical :: ok
       call h5gcreate_f(self%file, 'static', group, hdferr)
       ok = hdferr == 0
       if (ok) then
-         call put_real_vector(group, 's', self%s, ok)
-         call put_real_vector(group, 'x', state%x, ok)
-         call put_real_vector(group, 'z', state%z, ok)
-         call put_real_vector(group, 'tension', self%model%law%tension(state%y(i_eps, :)), ok)
-         call put_real_vector(group, 'shear', state%y(i_sn, :), ok)
-         call put_real_vector(group, 'strain', state%y(i_eps, :), ok)
-         call put_real_vector(group, 'curvature', state%y(i_om, :), ok)
-         call put_real_vector(group, 'beta0', state%y(i_b0, :), ok)
-         call put_real_vector(group, 'beta3', state%y(i_b3, :), ok)
-         call put_real_attr(group, 'span', state%span, ok)
-         call put_real_attr(group, 'sag', state%sag, ok)
-         call put_real_attr(group, 'end_angle', state%end_angle, ok)
-         call put_int_attr(group, 'newton_iterations', state%newton%iterations, ok)
+         call put_real_vector(group, 's', info%s, ok, 'm')
+         do i = 1, n_fields
+            call put_real_vector(group, trim(field_names(i)), info%fields(:, i), ok, field_unit(i))
+         end do
+         if (allocated(info%beta0)) then
+            call put_real_vector(group, 'beta0', info%beta0, ok)
+            call put_real_vector(group, 'beta3', info%beta3, ok)
+         end if
+         call put_real_attr(group, 'span', info%span, ok)
+         call put_real_attr(group, 'sag', info%sag, ok)
+         call put_real_attr(group, 'end_angle', info%end_angle, ok)
+         call put_real_attr(group, 'tension_a', info%tension_a, ok)
+         call put_real_attr(group, 'tension_b', info%tension_b, ok)
+         call put_int_attr(group, 'newton_iterations', info%newton_iterations, ok)
          call h5gclose_f(group, hdferr)
       end if
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
       if (.not. ok .or. hdferr /= 0) call fatal_error(error, "writing /static to '"//self%path//"' failed", stat_io)
-   end subroutine result_write_static
+   end subroutine result_static
 
    !> Append one snapshot (run_observer).
-   subroutine result_snapshot(self, t, y, error)
+   subroutine result_snapshot(self, t, fields, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Time, s.
       real(dp), intent(in) :: t
-      !> Unknowns (7, nodes).
-      real(dp), intent(in) :: y(:, :)
+      !> Fields (nodes, n_fields).
+      real(dp), intent(in) :: fields(:, :)
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: x(size(self%s)), z(size(self%s)), tension(size(self%s)), field(size(self%s))
       integer :: i, k, hdferr
       logical :: ok
       ok = .true.
       self%snapshots = self%snapshots + 1
       call append(self%file, 'time', [t], 1, ok)
-      if (self%want(6) .or. self%want(7) .or. self%gnuplot_text) call positions(y, self%s, x, z)
-      if (self%want(1) .or. self%gnuplot_text) tension = self%model%law%tension(y(i_eps, :))
-      do i = 1, size(known_fields)
-         if (.not. self%want(i)) cycle
-         select case (trim(known_fields(i)))
-         case ('tension'); field = tension
-         case ('shear'); field = y(i_sn, :)
-         case ('strain'); field = y(i_eps, :)
-         case ('u'); field = y(i_u, :)
-         case ('v'); field = y(i_v, :)
-         case ('x'); field = x
-         case ('z'); field = z
-         case ('curvature'); field = y(i_om, :)
-         end select
-         call append(self%file, trim(known_fields(i)), field, 2, ok)
+      do i = 1, n_fields
+         if (self%want(i)) call append(self%file, trim(field_names(i)), fields(:, i), 2, ok)
       end do
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
-      if (.not. ok .or. hdferr /= 0) call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed", &
-                                        stat_io)
+      if (.not. ok .or. hdferr /= 0) then
+         call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed", stat_io)
+         return
+      end if
       if (self%gnuplot_text) then
          if (self%snapshots > 1) write (self%text_unit, '(/)')
          write (self%text_unit, '(a,es14.6)') '# t = ', t
          do k = 1, size(self%s)
-            write (self%text_unit, '(9es16.8)') self%s(k), x(k), z(k), tension(k), y(i_eps, k), y(i_u, k), &
-               y(i_v, k), y(i_sn, k), y(i_om, k)
+            if (any(self%piece_starts == k)) write (self%text_unit, '(a)') ''
+            ! columns: s x z tension strain u v shear curvature
+            write (self%text_unit, '(9es16.8)') self%s(k), fields(k, 6), fields(k, 7), fields(k, 1), fields(k, 3), &
+               fields(k, 4), fields(k, 5), fields(k, 2), fields(k, 8)
          end do
          flush (self%text_unit)
       end if
    end subroutine result_snapshot
 
-   !> Write the history of the run.
+   !> Write the history of the run (and its gnuplot text).
    subroutine result_write_history(self, history, error)
       !> Result file.
       class(result_file), intent(inout) :: self
@@ -221,24 +218,33 @@ contains
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group, egroup
-      integer :: hdferr, n, i, unit, ios
+      integer :: hdferr, n, i, j, q, unit, ios, n_ends
       logical :: ok
+      character(:), allocatable :: header
       n = history%n
+      n_ends = size(history%end_labels)
       call h5gcreate_f(self%file, 'history', group, hdferr)
       ok = hdferr == 0
       if (ok) then
-         call put_real_vector(group, 'time', history%time(0:n), ok)
-         call put_real_vector(group, 'step', history%step(0:n), ok)
-         call put_real_vector(group, 'end_velocity', history%end_velocity(0:n), ok)
-         call put_real_vector(group, 'fixed_end_tension', history%fixed_end_tension(0:n), ok)
+         call put_real_vector(group, 'time', history%time(0:n), ok, 's')
+         call put_real_vector(group, 'step', history%step(0:n), ok, 's')
          call put_int_vector(group, 'newton_iterations', history%newton_iterations(0:n), ok)
          call put_int_vector(group, 'rejected', history%rejected(0:n), ok)
+         do j = 1, n_ends
+            call h5gcreate_f(group, trim(history%end_labels(j)), egroup, hdferr)
+            ok = ok .and. hdferr == 0
+            if (hdferr /= 0) cycle
+            do q = 1, n_end_quantities
+               call put_real_vector(egroup, trim(end_quantity_names(q)), history%ends(q, j, 0:n), ok, end_unit(q))
+            end do
+            call h5gclose_f(egroup, hdferr)
+         end do
          if (allocated(history%energy)) then
             call h5gcreate_f(group, 'energy', egroup, hdferr)
             ok = ok .and. hdferr == 0
             if (hdferr == 0) then
                do i = 1, n_energy
-                  call put_real_vector(egroup, trim(energy_names(i)), history%energy(i, 0:n), ok)
+                  call put_real_vector(egroup, trim(energy_names(i)), history%energy(i, 0:n), ok, 'J')
                end do
                call h5gclose_f(egroup, hdferr)
             end if
@@ -249,41 +255,67 @@ contains
          call fatal_error(error, "writing /history to '"//self%path//"' failed", stat_io)
          return
       end if
-      if (allocated(self%text_stem)) then
-         open (newunit=unit, file=self%text_stem//'.history.dat', status='replace', action='write', iostat=ios)
-         if (ios /= 0) then
-            call fatal_error(error, 'cannot create '//self%text_stem//'.history.dat (&output gnuplot)', stat_io)
-            return
-         end if
-         if (allocated(history%energy)) then
-            write (unit, '(a)') '# columns: t[s] end_velocity[m/s] fixed_end_tension[N] newton_iterations '// &
-               'E_strain[J] E_kinetic[J] E_bending[J] E_gravity[J] W_end[J] ledger[J]'
-         else
-            write (unit, '(a)') '# columns: t[s] end_velocity[m/s] fixed_end_tension[N] newton_iterations'
-         end if
-         do i = 0, n
-            if (allocated(history%energy)) then
-               write (unit, '(3es16.8,i4,6es17.9)') history%time(i), history%end_velocity(i), &
-                  history%fixed_end_tension(i), history%newton_iterations(i), history%energy(:, i)
-            else
-               write (unit, '(3es16.8,i4)') history%time(i), history%end_velocity(i), &
-                  history%fixed_end_tension(i), history%newton_iterations(i)
-            end if
-         end do
-         close (unit)
+      if (.not. allocated(self%text_stem)) return
+      open (newunit=unit, file=self%text_stem//'.history.dat', status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+         call fatal_error(error, 'cannot create '//self%text_stem//'.history.dat (&output gnuplot)', stat_io)
+         return
       end if
+      ! Columns 1-4: t, velocity u of end b along the cable (the released end of the
+      ! paper's case), tension at end a, Newton iterations; 5-11 the energy ledger
+      ! (strain kinetic bending gravity work ledger dissipation) or zeros without it;
+      ! then per end: speed, tension of the end cell, |external force|.
+      header = '# columns: t[s] end_b_u[m/s] end_a_tension[N] newton_iterations E_strain[J] E_kinetic[J] '// &
+               'E_bending[J] E_gravity[J] W_end[J] ledger[J] dissipation[J]'
+      do j = 1, n_ends
+         header = header//' '//trim(history%end_labels(j))//':speed[m/s] '//trim(history%end_labels(j))// &
+                  ':tension[N] '//trim(history%end_labels(j))//':force[N]'
+      end do
+      if (.not. allocated(history%energy)) header = header//' (no energy ledger)'
+      write (unit, '(a)') header
+      do i = 0, n
+         write (unit, '(3es16.8,i4)', advance='no') history%time(i), end_b_u(i), history%ends(5, 1, i), &
+            history%newton_iterations(i)
+         if (allocated(history%energy)) then
+            write (unit, '(7es17.9)', advance='no') history%energy(1:5, i), history%energy(7, i), history%energy(6, i)
+         else
+            write (unit, '(7es17.9)', advance='no') (0.0_dp, q=1, 7)
+         end if
+         do j = 1, n_ends
+            write (unit, '(3es16.8)', advance='no') norm2(history%ends(3:4, j, i)), history%ends(5, j, i), &
+               norm2(history%ends(6:7, j, i))
+         end do
+         write (unit, '(a)') ''
+      end do
+      close (unit)
+
+   contains
+
+      !> Velocity of end b along the direction from end a to end b at the start (the recoil is negative).
+      real(dp) function end_b_u(i)
+         integer, intent(in) :: i
+         real(dp) :: d(2)
+         d = history%ends(1:2, 2, 0) - history%ends(1:2, 1, 0)
+         if (norm2(d) > 0) then
+            end_b_u = dot_product(history%ends(3:4, 2, i), d)/norm2(d)
+         else
+            end_b_u = 0
+         end if
+      end function end_b_u
    end subroutine result_write_history
 
    !> Write the summary figures as attributes of /summary.
-   subroutine result_write_summary(self, summary, error)
+   subroutine result_write_summary(self, summary, end_labels, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Figures of the run.
       type(run_summary), intent(in) :: summary
+      !> Names of the ends.
+      character(len=*), intent(in) :: end_labels(:)
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group
-      integer :: hdferr
+      integer :: hdferr, j
       logical :: ok
       call h5gcreate_f(self%file, 'summary', group, hdferr)
       ok = hdferr == 0
@@ -294,21 +326,42 @@ contains
          call put_real_attr(group, 'min_fixed_end_tension_time', summary%min_fixed_end_tension_time, ok)
          call put_real_attr(group, 'front_arrival_time', summary%front_arrival_time, ok)
          call put_real_attr(group, 'energy_drift', summary%energy_drift, ok)
+         call put_real_attr(group, 'dissipated', summary%dissipated, ok)
          call put_real_attr(group, 'time_reached', summary%time_reached, ok)
          call put_real_attr(group, 'wall_time', summary%wall_time, ok)
+         call put_real_attr(group, 'dt_requested', summary%dt_requested, ok)
+         call put_real_attr(group, 'dt_used', summary%dt_used, ok)
+         call put_real_attr(group, 'courant_requested', summary%courant_requested, ok)
+         call put_real_attr(group, 'courant_used', summary%courant_used, ok)
          call put_real_attr(group, 'max_unit_norm_error', summary%max_unit_norm_error, ok)
+         call put_real_attr(group, 'max_turning_angle', summary%max_turning_angle, ok)
+         call put_real_attr(group, 'min_strain', summary%min_strain, ok)
          call put_int_attr(group, 'steps', summary%steps, ok)
          call put_int_attr(group, 'rejected_steps', summary%rejected_steps, ok)
          call put_int_attr(group, 'newton_iterations', summary%newton_iterations, ok)
          call put_int_attr(group, 'max_newton_iterations', summary%max_newton_iterations, ok)
          call put_int_attr(group, 'factorisations', summary%factorisations, ok)
+         if (allocated(summary%warnings)) call put_text_attr(group, 'warnings', summary%warnings, ok)
+         if (allocated(summary%ends)) then
+            do j = 1, size(summary%ends)
+               associate (e => summary%ends(j), label => trim(end_labels(j)))
+                  call put_real_attr(group, label//'_peak_speed', e%peak_speed, ok)
+                  call put_real_attr(group, label//'_peak_speed_time', e%peak_speed_time, ok)
+                  call put_real_attr(group, label//'_min_tension', e%min_tension, ok)
+                  call put_real_attr(group, label//'_min_tension_time', e%min_tension_time, ok)
+                  call put_real_attr(group, label//'_max_tension', e%max_tension, ok)
+                  call put_real_attr(group, label//'_front_arrival_time', e%front_arrival_time, ok)
+               end associate
+            end do
+         end if
          call h5gclose_f(group, hdferr)
       end if
       if (.not. ok) call fatal_error(error, "writing /summary to '"//self%path//"' failed", stat_io)
    end subroutine result_write_summary
 
-   !> Set the final status ('complete' or 'failed' with reason and time) and close.
-   subroutine result_finish(self, status, reason, time, error)
+   !> Set the final status ('complete' or 'failed' with reason and time), the
+   !> warnings, and close.
+   subroutine result_finish(self, status, reason, time, warnings, error)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> 'complete' or 'failed'.
@@ -317,6 +370,8 @@ contains
       character(*), intent(in), optional :: reason
       !> Simulated time at the failure, s.
       real(dp), intent(in), optional :: time
+      !> Warnings of the run, one per line ('' : none).
+      character(*), intent(in), optional :: warnings
       !> Error when the status cannot be written or the file not closed (the
       !> file then still reads 'running').
       type(error_type), allocatable, intent(out), optional :: error
@@ -326,6 +381,7 @@ contains
       ok = .true.
       if (present(reason)) call put_text_attr(self%file, 'failure_reason', reason, ok)
       if (present(time)) call put_real_attr(self%file, 'failure_time', time, ok)
+      if (present(warnings)) call put_text_attr(self%file, 'warnings', warnings, ok)
       call put_text_attr(self%file, 'status', status, ok)
       call h5fclose_f(self%file, hdferr)
       if ((.not. ok .or. hdferr /= 0) .and. present(error)) &
@@ -335,6 +391,23 @@ contains
       if (self%gnuplot_text) close (self%text_unit)
       self%gnuplot_text = .false.
    end subroutine result_finish
+
+   !> Units of a snapshot field.
+   pure function field_unit(i) result(u)
+      integer, intent(in) :: i
+      character(:), allocatable :: u
+      character(len=5), parameter :: units(n_fields) = [character(len=5) :: 'N', 'N', '', 'm/s', 'm/s', 'm', 'm', '1/m']
+      u = trim(units(i))
+   end function field_unit
+
+   !> Units of an end quantity.
+   pure function end_unit(i) result(u)
+      integer, intent(in) :: i
+      character(:), allocatable :: u
+      character(len=3), parameter :: units(n_end_quantities) = [character(len=3) :: 'm', 'm', 'm/s', 'm/s', 'N', &
+                                                                 'N', 'N']
+      u = trim(units(i))
+   end function end_unit
 
    !> Append a value (rank 1) or a row of node values (rank 2) to the
    !> extendible dataset name, created on first use.

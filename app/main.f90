@@ -2,6 +2,7 @@
 !>
 !>   xcable case.nml
 !>   xcable --check case.nml   (validate the case and exit)
+!>   xcable --schema markdown|tsv   (the input table: README's, or the sweep scripts')
 !>
 !> Exit codes: 0 complete; 1 numerical failure (the result file says 'failed',
 !> with the reason and time); 2 bad input or output path (no result file).
@@ -10,6 +11,7 @@ program xcable_main
    use xcable_error, only: error_type, stat_input, stat_io
    use xcable_strings, only: str
    use xcable_io_input, only: case_config, read_config, config_text
+   use xcable_io_schema, only: write_schema
    use xcable_case, only: setup_case
    use xcable_model_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
@@ -33,9 +35,10 @@ program xcable_main
    integer :: nargs
    logical :: check_only
    character(len=*), parameter :: usage = 'usage: xcable [--check] <case.nml>   (--check: validate only; '// &
-                                          'see README.md for the namelist groups)'
+                                          'see README.md for the namelist groups); xcable --schema markdown|tsv'
 
    nargs = command_argument_count()
+   call schema_option()
    check_only = .false.
    if (nargs == 2) then
       call get_command_argument(1, path)
@@ -90,6 +93,18 @@ program xcable_main
       str(summary%steps)//' steps, peak end speed '//str(summary%peak_end_speed)//' m/s, results in '//trim(config%file)
 
 contains
+
+   !> xcable --schema markdown|tsv: print the input table and stop.
+   subroutine schema_option()
+      character(len=16) :: option, format
+      if (nargs /= 2) return
+      call get_command_argument(1, option)
+      if (option /= '--schema') return
+      call get_command_argument(2, format)
+      call write_schema(output_unit, trim(format), error)
+      if (allocated(error)) call fail_input(error)
+      stop
+   end subroutine schema_option
 
    !> Bad input: one line on stderr, exit code 2.
    subroutine fail_input(err)

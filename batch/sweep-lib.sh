@@ -11,43 +11,15 @@
 #   jobs.txt        the Slurm jobs submitted for this sweep
 #   summary.csv, summary.h5  written by batch/sweep-collect
 
-# Variables the namelist groups accept, as "group variable type" with type
-# r real, i integer, l logical, s string, r5 a real vector of 5.
-# Keep in step with group_variables in src/xcable/io/input.f90
-# (batch/test-batch.sh checks this table against bin/xcable).
+# sweep_variable_table XCABLE: the variables the namelist groups accept, one a
+# line as "group variable type", type r real, i integer, l logical, s string,
+# followed by the element count for an array (r5: the vector p; r1000: a
+# table). Taken from "XCABLE --schema tsv", the schema of the executable the
+# sweep runs (src/xcable/io/schema.f90), so it cannot drift from it.
 sweep_variable_table() {
-  cat <<'TABLE'
-cable length r
-cable diameter r
-cable density r
-cable young r
-cable gravity r
-cable area r
-cable bending_stiffness r
-material law s
-material p r5
-material ea r
-material strain_max r
-static tension r
-rupture t_break r
-numerics nodes i
-numerics dt r
-numerics courant r
-numerics t_end r
-numerics theta r
-numerics newton_tol r
-numerics newton_max_iter i
-numerics reuse_jacobian l
-numerics extrapolate l
-numerics min_step_fraction r
-numerics max_wall_time r
-output file s
-output interval r
-output fields s
-output quiet l
-output energy l
-output gnuplot l
-TABLE
+  local exe=$1 tsv
+  tsv=$("$exe" --schema tsv) || return 1
+  awk -F '\t' 'NR > 1 && NF == 4 { t = substr($3, 1, 1); if ($4 > 1) t = t $4; print $1, $2, t }' <<<"$tsv"
 }
 
 # die CODE MESSAGE: one line on stderr, prefixed with the script's name, and exit.

@@ -60,26 +60,28 @@ column() {
 }
 
 echo "$PROG: sweep-generate"
-# The variable table of sweep-lib.sh against what xcable itself allows.
+# The variable table (xcable --schema tsv) against what xcable's reader itself allows.
 table_matches_xcable() {
   local group allowed mine
   printf '&zz_no_group /\n' >"$tmp/probe.nml"
   allowed=$("$xcable" "$tmp/probe.nml" 2>&1 | sed -n 's/.*allowed: //p' | tr -d '&')
-  mine=$(sweep_variable_table | awk '!seen[$1]++ { printf "%s%s", sep, $1; sep = ", " }')
+  mine=$(sweep_variable_table "$xcable" | awk '!seen[$1]++ { printf "%s%s", sep, $1; sep = ", " }')
   [ "$allowed" = "$mine" ] || { echo "    groups: xcable '$allowed', table '$mine'"; return 1; }
-  for group in $(sweep_variable_table | awk '!seen[$1]++ { print $1 }'); do
+  for group in $(sweep_variable_table "$xcable" | awk '!seen[$1]++ { print $1 }'); do
     printf '&%s zz_no_variable = 1 /\n' "$group" >"$tmp/probe.nml"
     allowed=$("$xcable" "$tmp/probe.nml" 2>&1 | sed -n 's/.*allowed: //p')
-    mine=$(sweep_variable_table | awk -v g="$group" '$1 == g { printf "%s%s", sep, $2; sep = ", " }')
+    mine=$(sweep_variable_table "$xcable" | awk -v g="$group" '$1 == g { printf "%s%s", sep, $2; sep = ", " }')
     [ "$allowed" = "$mine" ] || { echo "    &$group: xcable '$allowed', table '$mine'"; return 1; }
   done
 }
-check "the variable table of sweep-lib.sh is xcable's" table_matches_xcable
+check "the variable table (xcable --schema tsv) is what xcable's reader allows" table_matches_xcable
 check "refuses an unknown group, naming the allowed ones" \
   refuses "unknown group 'statics'; allowed: cable, material" statics%tension=1
 check "refuses an unknown variable, naming the allowed ones" \
   refuses "unknown variable 'tensoin' in &static; allowed: tension" static%tensoin=1
 check "refuses the vector material%p without a subscript" refuses "material%p is a vector of 5" material%p=1,2
+check "refuses a table (end_b%table_time)" refuses "end_b%table_time is a table of 1000 values" end_b%table_time=1,2
+check "refuses an element of a table" refuses "end_a%table_x is a table of 1000 values" 'end_a%table_x(2)=1,2'
 check "refuses output%file" refuses "output%file is set by sweep-generate" output%file=x.h5
 check "refuses a real for an integer" refuses '"41.5" is not an integer' numerics%nodes=41.5
 check "refuses a range with a zero step" refuses "the step is zero" static%tension=1e5:2e5:0

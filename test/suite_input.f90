@@ -140,7 +140,7 @@ contains
 
    subroutine test_negative_length(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&cable length = -60 /'//nl, [character(16) :: path, '&cable', 'length', '-60', '> 0'])
+      call expect_error(error, '&cable length = -60 /'//nl, [character(16) :: path, '&cable', 'length = -60', 'in [0.01'])
    end subroutine test_negative_length
 
    subroutine test_nodes(error)

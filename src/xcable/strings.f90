@@ -3,7 +3,7 @@ module xcable_strings
    use xcable_kinds, only: dp
    implicit none
    private
-   public :: str, to_lower
+   public :: str, to_lower, real_text
 
    !> Convert a number to a compact string.
    interface str
@@ -46,6 +46,68 @@ contains
       s = merge('.true. ', '.false.', l)
       s = trim(s)
    end function str_logical
+
+   !> The shortest decimal text that reads back to exactly x: plain for
+   !> 1e-4 <= |x| < 1e6 ('60', '0.05', '315000'), else with an exponent
+   !> ('2.3e8', '1e-7'). For the namelist echo, the schema's defaults and
+   !> messages that must show the value given.
+   pure function real_text(x) result(s)
+      !> Value.
+      real(dp), intent(in) :: x
+      character(:), allocatable :: s
+      character(len=40) :: buf
+      character(len=12) :: fmt
+      character(:), allocatable :: digits, sign
+      real(dp) :: y
+      integer :: d, ios, e_at, exponent, n
+      if (x /= x .or. abs(x) > huge(x)) then
+         s = str_real(x)
+         return
+      end if
+      if (x == 0) then
+         s = '0'
+         return
+      end if
+      do d = 1, 17
+         write (fmt, '(a,i0,a)') '(es40.', d - 1, 'e4)'
+         write (buf, fmt) x
+         read (buf, *, iostat=ios) y
+         if (ios == 0 .and. y == x) exit
+      end do
+      buf = adjustl(buf)
+      sign = ''
+      if (buf(1:1) == '-') then
+         sign = '-'
+         buf = buf(2:)
+      end if
+      e_at = scan(buf, 'Ee')
+      read (buf(e_at + 1:), *) exponent
+      ! Mantissa digits without the point, trailing zeros dropped.
+      digits = buf(1:1)//buf(3:e_at - 1)
+      if (buf(2:2) /= '.') digits = buf(1:1)
+      n = len(digits)
+      do while (n > 1)
+         if (digits(n:n) /= '0') exit
+         n = n - 1
+      end do
+      digits = digits(1:n)
+      if (exponent >= -4 .and. exponent < 6) then
+         if (exponent < 0) then
+            s = sign//'0.'//repeat('0', -exponent - 1)//digits
+         else if (n <= exponent + 1) then
+            s = sign//digits//repeat('0', exponent + 1 - n)
+         else
+            s = sign//digits(1:exponent + 1)//'.'//digits(exponent + 2:)
+         end if
+      else
+         if (n == 1) then
+            s = sign//digits
+         else
+            s = sign//digits(1:1)//'.'//digits(2:)
+         end if
+         s = s//'e'//str_int(exponent)
+      end if
+   end function real_text
 
    !> Lower-case copy of a string (ASCII).
    pure function to_lower(s) result(t)

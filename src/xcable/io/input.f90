@@ -4,23 +4,28 @@
 !> and a missing closing '/' alike (often as "End of file"), so the file is
 !> first scanned here: groups are located, unknown or duplicated groups and
 !> unterminated groups are refused, every assignment's name is checked against
-!> the group's variables and its value against the variable's type. Only then
-!> is each group read with the compiler's namelist input, and the values are
-!> checked against their allowed ranges. Every message names the file, the
-!> group, the variable, its value and what is allowed.
+!> the group's variables and its value against the variable's type, both taken
+!> from the schema (io/schema.f90). Only then is each group read with the
+!> compiler's namelist input. The validation checks every variable against
+!> its schema entry (range or allowed words), then the conditions between
+!> variables (the ends, the tables, the rupture). Every message is one line
+!> naming the file, the group, the variable, its value and what is allowed.
+!>
+!> The namelist reads need compile-time lists of variables (read_groups,
+!> read_end) and the generic code needs a way from a schema entry to its
+!> component of case_config (access); the suite input checks both against
+!> the schema for every entry.
 module xcable_io_input
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str, to_lower
-   use xcable_material_law, only: paper_tanh_coefficients
+   use xcable_strings, only: str, to_lower, real_text
+   use xcable_io_config, only: case_config, end_config, max_table_points
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, find_entry, group_entries, allowed_text, &
+                               known_fields, is_table
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: case_config, read_config, config_text, known_fields, derive_defaults
-
-   !> Snapshot fields that &output fields may name.
-   character(len=*), parameter :: known_fields(8) = &
-      [character(len=9) :: 'tension', 'shear', 'strain', 'u', 'v', 'x', 'z', 'curvature']
+   public :: case_config, read_config, read_values, config_text, value_text, known_fields, derive_defaults
 
    integer, parameter :: line_len = 1024, max_lines = 5000
 
@@ -29,77 +34,30 @@ module xcable_io_input
    !> an integer overflow and a crash).
    integer, parameter, public :: max_time_steps = 1000000
 
-   !> A case, with the paper's values as defaults (slow rupture at 315 kN).
-   type :: case_config
-      !> Namelist file the case came from.
-      character(:), allocatable :: source
-      ! &cable
-      !> Unstretched length, m.
-      real(dp) :: length = 60
-      !> Diameter, m.
-      real(dp) :: diameter = 0.05_dp
-      !> Density, kg/m^3.
-      real(dp) :: density = 1140
-      !> Young's modulus, Pa.
-      real(dp) :: young = 230.0e6_dp
-      !> Gravity, m/s^2.
-      real(dp) :: gravity = 9.81_dp
-      !> Cross-section area, m^2 (0: pi d^2 / 4).
-      real(dp) :: area = 0
-      !> Bending stiffness EI, N m^2 (0: E pi d^4 / 64).
-      real(dp) :: bending_stiffness = 0
-      ! &material
-      !> 'tanh' (eq. 17) or 'linear'.
-      character(len=16) :: law = 'tanh'
-      !> Coefficients of eq. 17.
-      real(dp) :: p(5) = paper_tanh_coefficients
-      !> EA of the linear law, N (0: young * area).
-      real(dp) :: ea = 0
-      !> Largest strain the law is used for in statics.
-      real(dp) :: strain_max = 0.35_dp
-      ! &static
-      !> End tension of the initial catenary, N.
-      real(dp) :: tension = 315.0e3_dp
-      ! &rupture
-      !> Breaking time, s.
-      real(dp) :: t_break = 0.05_dp
-      ! &numerics
-      !> Number of nodes.
-      integer :: nodes = 121
-      !> Time step, s (0: from courant).
-      real(dp) :: dt = 0
-      !> Courant number c(eps0) dt / ds giving dt when dt = 0.
-      real(dp) :: courant = 1
-      !> End of the run, s.
-      real(dp) :: t_end = 0.16_dp
-      !> Time weight theta of the box scheme (0.5: the paper's).
-      real(dp) :: theta = 0.5_dp
-      !> Newton tolerance on the scaled update.
-      real(dp) :: newton_tol = 1.0e-7_dp
-      !> Newton iteration limit.
-      integer :: newton_max_iter = 25
-      !> Keep the factorised Jacobian while Newton contracts well.
-      logical :: reuse_jacobian = .true.
-      !> First guess of a step by extrapolation.
-      logical :: extrapolate = .true.
-      !> Smallest step of the step control, as a fraction of dt.
-      real(dp) :: min_step_fraction = 1.0_dp/1024
-      !> Wall-clock limit, s (0: none).
-      real(dp) :: max_wall_time = 0
-      ! &output
-      !> HDF5 result file ('' : results/<namelist stem>.h5).
-      character(len=512) :: file = ''
-      !> Snapshot interval, s.
-      real(dp) :: interval = 0.01_dp
-      !> Snapshot fields, separated by spaces or commas.
-      character(len=256) :: fields = 'tension shear strain u v x z curvature'
-      !> No progress on stderr.
-      logical :: quiet = .false.
-      !> Keep the energy ledger.
-      logical :: energy = .false.
-      !> Write gnuplot-ready text beside the HDF5 file.
-      logical :: gnuplot = .false.
-   end type case_config
+   !> Most snapshots a run may ask for (t_end / interval).
+   real(dp), parameter :: max_snapshots = 1.0e5_dp
+
+   !> Values longer than this are cut in messages.
+   integer, parameter :: shown_length = 60
+
+   !> The value of one variable, on its way between case_config and the generic code.
+   type :: config_value
+      !> Whether the variable is known to `access`.
+      logical :: found = .false.
+      !> A real or the elements of a real array (a table: its rows).
+      real(dp), allocatable :: reals(:)
+      !> An integer.
+      integer :: int = 0
+      !> A logical.
+      logical :: flag = .false.
+      !> A string, without trailing blanks.
+      character(:), allocatable :: text
+   end type config_value
+
+   !> Move a component to (store = .false.) or from (store = .true.) a config_value.
+   interface move
+      module procedure move_real, move_reals, move_integer, move_logical, move_string
+   end interface move
 
 contains
 
@@ -111,21 +69,84 @@ contains
       type(case_config), intent(out) :: config
       !> Error naming file, group, variable, value and what is allowed.
       type(error_type), allocatable, intent(out) :: error
-      character(len=line_len), allocatable :: lines(:)
-      integer :: nlines
-      character(len=16) :: group_names(6)
-      logical :: present_group(6)
-
-      config%source = path
-      group_names = [character(len=16) :: 'cable', 'material', 'static', 'rupture', 'numerics', 'output']
-      call load_lines(path, lines, nlines, error)
-      if (allocated(error)) return
-      call scan_groups(path, lines(1:nlines), group_names, present_group, error)
-      if (allocated(error)) return
-      call read_groups(path, config, group_names, present_group, error)
+      call read_values(path, config, error)
       if (allocated(error)) return
       call validate(config, error)
    end subroutine read_config
+
+   !> Read a case without validating its values: scan the file (groups,
+   !> names, value types), read the groups that are present, record which
+   !> variables are given (config%given), put the words of string variables
+   !> in lower case and count the inline table rows.
+   subroutine read_values(path, config, error)
+      !> Namelist file.
+      character(*), intent(in) :: path
+      !> The case, not yet validated.
+      type(case_config), intent(out) :: config
+      !> Error naming file, group and variable.
+      type(error_type), allocatable, intent(out) :: error
+      type(schema_entry), allocatable :: t(:)
+      character(len=16), allocatable :: groups(:)
+      character(len=line_len), allocatable :: lines(:)
+      logical, allocatable :: present_group(:)
+      integer, allocatable :: counts(:)
+      integer :: nlines, i
+
+      config%source = path
+      t = schema_table()
+      groups = schema_groups(t)
+      call load_lines(path, lines, nlines, error)
+      if (allocated(error)) return
+      allocate (present_group(size(groups)), counts(size(t)))
+      call scan_groups(path, lines(1:nlines), t, groups, present_group, counts, error)
+      if (allocated(error)) return
+      call read_groups(path, config, groups, present_group, error)
+      if (allocated(error)) return
+      config%given = ''
+      do i = 1, size(t)
+         if (counts(i) > 0) config%given = config%given//' '//trim(t(i)%group)//'%'//trim(t(i)%name)
+      end do
+      config%given = adjustl(config%given)
+      do i = 1, size(t)
+         if (len_trim(t(i)%choices) > 0) call lower_words(config, t(i))
+      end do
+      call count_table_rows(config, t, counts, error)
+   end subroutine read_values
+
+   !> Put the value of a string variable with allowed words in lower case, without leading blanks.
+   subroutine lower_words(c, e)
+      type(case_config), intent(inout) :: c
+      type(schema_entry), intent(in) :: e
+      type(config_value) :: v
+      call access(c, e, v, .false.)
+      v%text = to_lower(trim(adjustl(v%text)))
+      call access(c, e, v, .true.)
+   end subroutine lower_words
+
+   !> The number of rows of each end's inline table: the number of values
+   !> given to table_time, which table_x and table_z must match.
+   subroutine count_table_rows(c, t, counts, error)
+      type(case_config), intent(inout) :: c
+      type(schema_entry), intent(in) :: t(:)
+      !> Values given to each entry (its highest index assigned).
+      integer, intent(in) :: counts(:)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
+      integer :: k, n_time, n_x, n_z
+      do k = 1, size(ends)
+         n_time = counts(find_entry(t, ends(k), 'table_time'))
+         n_x = counts(find_entry(t, ends(k), 'table_x'))
+         n_z = counts(find_entry(t, ends(k), 'table_z'))
+         if (n_x /= n_time .or. n_z /= n_time) then
+            call fatal_error(error, c%source//': &'//ends(k)//': table_time has '//str(n_time)//' values, table_x '// &
+                             str(n_x)//', table_z '//str(n_z)//': the three columns of a table must have equal counts', &
+                             stat_input)
+            return
+         end if
+         if (k == 1) c%end_a%table_rows = n_time
+         if (k == 2) c%end_b%table_rows = n_time
+      end do
+   end subroutine count_table_rows
 
    !> Read the file into lines, refusing what is not plain text.
    !>
@@ -135,9 +156,13 @@ contains
    !> different files. A lone CR, a control byte or a byte above 126 is
    !> refused with its line and column; a tab counts as a blank.
    subroutine load_lines(path, lines, nlines, error)
+      !> Text file.
       character(*), intent(in) :: path
+      !> Its lines (the first nlines are used).
       character(len=line_len), allocatable, intent(out) :: lines(:)
+      !> Number of lines.
       integer, intent(out) :: nlines
+      !> Error naming the file, the line and the column.
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: max_bytes = line_len*max_lines
       character(len=:), allocatable :: bytes
@@ -217,11 +242,20 @@ contains
 
    !> Locate the groups, refuse unknown, duplicated and unterminated ones, and
    !> check each assignment's variable name and value type.
-   subroutine scan_groups(path, lines, group_names, present_group, error)
+   subroutine scan_groups(path, lines, t, group_names, present_group, counts, error)
+      !> Namelist file (for messages).
       character(*), intent(in) :: path
+      !> Its lines.
       character(len=*), intent(in) :: lines(:)
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> The groups of the schema.
       character(len=16), intent(in) :: group_names(:)
+      !> Which groups the file has.
       logical, intent(out) :: present_group(:)
+      !> For each entry of the schema, its highest element assigned (0: not given).
+      integer, intent(out) :: counts(:)
+      !> Error naming the file, the line or group, and the variable.
       type(error_type), allocatable, intent(out) :: error
       character(:), allocatable :: text, group
       integer :: i, j, start_line, ig
@@ -229,6 +263,7 @@ contains
       character :: quote, ch
 
       present_group = .false.
+      counts = 0
       in_group = .false.
       in_quote = .false.
       quote = ' '
@@ -255,6 +290,11 @@ contains
                   return
                end if
                group = word_at(lines(i), j + 1)
+               if (len(group) == 0) then
+                  call fatal_error(error, path//': line '//str(i)//': "&" without a group name; allowed: '// &
+                                   join_names(group_names, '&'), stat_input)
+                  return
+               end if
                ig = findloc_name(group_names, group)
                if (ig == 0) then
                   call fatal_error(error, path//': line '//str(i)//': unknown group &'//group// &
@@ -279,7 +319,7 @@ contains
                return
             end if
             if (ch == '/') then
-               call check_assignments(path, group, text, error)
+               call check_assignments(path, t, group, text, counts, error)
                if (allocated(error)) return
                in_group = .false.
                cycle
@@ -303,20 +343,28 @@ contains
       end if
    end subroutine scan_groups
 
-   !> Check the names and value types of the assignments of one group.
-   subroutine check_assignments(path, group, text, error)
-      character(*), intent(in) :: path, group, text
+   !> Check the names and value types of the assignments of one group, and
+   !> record the highest element each assignment gives.
+   subroutine check_assignments(path, t, group, text, counts, error)
+      !> Namelist file (for messages).
+      character(*), intent(in) :: path
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> Group, and the text between its name and its closing '/'.
+      character(*), intent(in) :: group, text
+      !> For each entry, its highest element assigned; updated.
+      integer, intent(inout) :: counts(:)
+      !> Error naming the file, the group and the variable.
       type(error_type), allocatable, intent(out) :: error
-      character(len=24), allocatable :: names(:)
-      character :: types(20)
-      integer :: sizes(20), lengths(20)
-      integer :: eq(200), neq, i, j, name_start, name_end, value_end, iv, capacity
+      integer, allocatable :: eq(:), mine(:)
+      integer :: neq, i, j, name_start, name_end, value_end, iv, capacity, first, count
       character(:), allocatable :: name, value, subscript
       logical :: in_quote
       character :: quote
 
-      call group_variables(group, names, types, sizes, lengths)
+      mine = group_entries(t, group)
       ! Positions of '=' outside quotes.
+      allocate (eq(len(text)))
       neq = 0
       in_quote = .false.
       quote = ' '
@@ -327,13 +375,12 @@ contains
             in_quote = .true.
             quote = text(i:i)
          else if (text(i:i) == '=') then
-            if (neq == size(eq)) exit
             neq = neq + 1
             eq(neq) = i
          end if
       end do
       if (neq == 0 .and. len_trim(text) > 0) then
-         call fatal_error(error, path//': &'//group//': "'//trim(adjustl(text))// &
+         call fatal_error(error, path//': &'//group//': "'//shown(trim(adjustl(text)))// &
                           '" is not an assignment (expected variable = value)', stat_input)
          return
       end if
@@ -348,8 +395,8 @@ contains
          name = to_lower(text(name_start:name_end))
          if (j == 1) then
             if (len_trim(text(1:name_start - 1)) > 0) then
-               call fatal_error(error, path//': &'//group//': unexpected "'//trim(adjustl(text(1:name_start - 1)))// &
-                                '" before '//name, stat_input)
+               call fatal_error(error, path//': &'//group//': unexpected "'// &
+                                shown(trim(adjustl(text(1:name_start - 1))))//'" before '//name, stat_input)
                return
             end if
          end if
@@ -358,13 +405,14 @@ contains
             subscript = name(index(name, '('):)
             name = name(1:index(name, '(') - 1)
          end if
-         iv = findloc_name(names, name)
-         if (iv == 0 .or. len(name) == 0) then
+         iv = 0
+         if (len(name) > 0) iv = find_entry(t, group, name)
+         if (iv == 0) then
             call fatal_error(error, path//': &'//group//': unknown variable "'//text(name_start:name_end)// &
-                             '"; allowed: '//join_names(names, ''), stat_input)
+                             '"; allowed: '//join_names(t(mine)%name, ''), stat_input)
             return
          end if
-         call check_subscript(path, group, name, subscript, sizes(iv), capacity, error)
+         call check_subscript(path, group, name, subscript, t(iv)%count, first, capacity, error)
          if (allocated(error)) return
          if (j < neq) then
             call name_before(text, eq(j + 1), value_end, i)
@@ -377,24 +425,30 @@ contains
             if (value(len(value):len(value)) /= ',') exit
             value = trim(value(1:len(value) - 1))
          end do
-         call check_value(path, group, name//subscript, value, types(iv), capacity, lengths(iv), error)
+         call check_value(path, group, name//subscript, value, t(iv)%type, capacity, t(iv)%length, count, error)
          if (allocated(error)) return
+         counts(iv) = max(counts(iv), first - 1 + count)
       end do
    end subroutine check_assignments
 
    !> Check the subscript of an assignment, '' or '(i)' or '(i:j)', against the
    !> variable's size and give the number of values it can take. gfortran
    !> itself reports a bad subscript as "Index 1 out of range" whatever the index.
-   subroutine check_subscript(path, group, name, subscript, size, capacity, error)
+   subroutine check_subscript(path, group, name, subscript, size, first, capacity, error)
+      !> Namelist file, group, variable and its subscript ('' if none), for messages.
       character(*), intent(in) :: path, group, name, subscript
       !> Number of elements of the variable (1: a scalar).
       integer, intent(in) :: size
+      !> First element assigned.
+      integer, intent(out) :: first
       !> Number of values the assignment can take.
       integer, intent(out) :: capacity
+      !> Error naming the variable and the subscripts allowed.
       type(error_type), allocatable, intent(out) :: error
       character(:), allocatable :: inside
-      integer :: colon, first, last, ios
+      integer :: colon, last, ios
       capacity = size
+      first = 1
       if (len(subscript) == 0) return
       if (size == 1) then
          call fatal_error(error, path//': &'//group//': '//name//subscript//': '//name// &
@@ -404,7 +458,6 @@ contains
       inside = ''
       if (subscript(len(subscript):len(subscript)) == ')') inside = subscript(2:len(subscript) - 1)
       colon = index(inside, ':')
-      first = 1
       last = size
       ios = merge(1, 0, len_trim(inside) == 0 .or. verify(inside, '0123456789: ') > 0)
       if (ios == 0 .and. colon == 0) then
@@ -424,8 +477,11 @@ contains
 
    !> Start and end of the variable name (with an optional subscript) before position ieq.
    subroutine name_before(text, ieq, name_start, name_end)
+      !> Text of a group.
       character(*), intent(in) :: text
+      !> Position of an '='.
       integer, intent(in) :: ieq
+      !> Where the name starts and ends.
       integer, intent(out) :: name_start, name_end
       integer :: i, depth
       i = ieq - 1
@@ -446,43 +502,50 @@ contains
       if (name_start > name_end) name_start = name_end
    end subroutine name_before
 
-   !> Check that a value text has the variable's type: r real(s), i integer, l logical, s string.
-   !> A numeric value list may use repeat counts r*v; the number of values it
-   !> gives must fit the variable (gfortran says only "Cannot match namelist
-   !> object name" or "Repeat count too large"), and a string must fit its
-   !> variable (gfortran cuts it silently).
-   subroutine check_value(path, group, name, value, kind, capacity, max_length, error)
-      character(*), intent(in) :: path, group, name, value
-      character, intent(in) :: kind
+   !> Check that a value text has the variable's type (real, integer, logical
+   !> or string). A numeric value list may use repeat counts r*v; the number of
+   !> values it gives must fit the variable (gfortran says only "Cannot match
+   !> namelist object name" or "Repeat count too large"), and a string must fit
+   !> its variable (gfortran cuts it silently).
+   subroutine check_value(path, group, name, value, type, capacity, max_length, count, error)
+      !> Namelist file, group and variable (with its subscript), for messages.
+      character(*), intent(in) :: path, group, name
+      !> The value text, without the trailing comma.
+      character(*), intent(in) :: value
+      !> 'real', 'integer', 'logical' or 'string'.
+      character(*), intent(in) :: type
       !> Number of values the assignment can take.
       integer, intent(in) :: capacity
       !> Length of a string variable.
       integer, intent(in) :: max_length
+      !> Number of values given (repeat counts included).
+      integer, intent(out) :: count
+      !> Error naming the variable, its value and the type expected.
       type(error_type), allocatable, intent(out) :: error
-      character(len=line_len) :: items(20)
-      integer :: n, k, ios, ival, star, repeat, count
-      character(:), allocatable :: item
+      integer :: pos, ios, ival, star, repeat
+      character(:), allocatable :: item, what
       real(dp) :: rval
       logical :: lval
-      character(:), allocatable :: what
+      count = 0
       if (len(value) == 0) then
          call fatal_error(error, path//': &'//group//': '//name//' has no value', stat_input)
          return
       end if
-      select case (kind)
-      case ('r')
+      select case (type)
+      case ('real')
          what = 'a finite real number'
-      case ('i')
+      case ('integer')
          what = 'an integer'
-      case ('l')
+      case ('logical')
          what = '.true. or .false.'
       case default
          what = 'a quoted string'
       end select
-      if (kind == 's') then
+      if (type == 'string') then
+         count = 1
          if (.not. (value(1:1) == "'" .or. value(1:1) == '"') .or. len(value) < 2 .or. &
              value(len(value):len(value)) /= value(1:1)) then
-            call fatal_error(error, path//': &'//group//': '//name//' = '//value//': must be '//what, stat_input)
+            call fatal_error(error, path//': &'//group//': '//name//' = '//shown(value)//': must be '//what, stat_input)
          else if (len(value) - 2 > max_length) then
             call fatal_error(error, path//': &'//group//': '//name//' = '//value(1:min(len(value), 40))// &
                              '...: is '//str(len(value) - 2)//' characters long; at most '//str(max_length)// &
@@ -490,14 +553,10 @@ contains
          end if
          return
       end if
-      call split_items(value, items, n)
-      if (n == 0) then
-         call fatal_error(error, path//': &'//group//': '//name//' has no value', stat_input)
-         return
-      end if
-      count = 0
-      do k = 1, n
-         item = trim(items(k))
+      pos = 1
+      do
+         call next_item(value, pos, item)
+         if (len(item) == 0) exit
          star = index(item, '*')
          repeat = 1
          if (star > 0) then
@@ -505,7 +564,7 @@ contains
             ios = merge(1, 0, star == 1 .or. verify(item(1:max(star - 1, 1)), '0123456789') > 0)
             if (ios == 0) read (item(1:star - 1), *, iostat=ios) repeat
             if (ios /= 0 .or. repeat < 1) then
-               call fatal_error(error, path//': &'//group//': '//name//' = '//value//': "'//item// &
+               call fatal_error(error, path//': &'//group//': '//name//' = '//shown(value)//': "'//shown(item)// &
                                 '" is not a repeat count r*value with r a positive integer', stat_input)
                return
             end if
@@ -513,137 +572,114 @@ contains
          end if
          if (repeat > capacity - count) then
             if (capacity == 1) then
-               call fatal_error(error, path//': &'//group//': '//name//' = '//value//': too many values; '// &
+               call fatal_error(error, path//': &'//group//': '//name//' = '//shown(value)//': too many values; '// &
                                 name//' takes one value', stat_input)
             else
-               call fatal_error(error, path//': &'//group//': '//name//' = '//value//': too many values; '// &
+               call fatal_error(error, path//': &'//group//': '//name//' = '//shown(value)//': too many values; '// &
                                 name//' takes at most '//str(capacity), stat_input)
             end if
             return
          end if
          count = count + repeat
          if (len(item) == 0) cycle
-         select case (kind)
-         case ('r')
+         select case (type)
+         case ('real')
             read (item, *, iostat=ios) rval
             if (ios == 0) then
                if (.not. ieee_is_finite(rval)) ios = 1
             end if
             if (ios == 0 .and. verify(item, '0123456789+-.eEdD') > 0) ios = 1
-         case ('i')
+         case ('integer')
             read (item, *, iostat=ios) ival
             if (ios == 0 .and. verify(item, '0123456789+-') > 0) ios = 1
-         case ('l')
+         case ('logical')
             read (item, *, iostat=ios) lval
             if (ios == 0 .and. index('.tf', to_lower(item(1:1))) == 0) ios = 1
          end select
          if (ios /= 0) then
-            call fatal_error(error, path//': &'//group//': '//name//' = '//value//': "'//item// &
+            call fatal_error(error, path//': &'//group//': '//name//' = '//shown(value)//': "'//shown(item)// &
                              '" is not '//what, stat_input)
             return
          end if
       end do
+      if (count == 0) call fatal_error(error, path//': &'//group//': '//name//' has no value', stat_input)
    end subroutine check_value
 
-   !> Split a value list at commas and blanks.
-   subroutine split_items(value, items, n)
-      character(*), intent(in) :: value
-      character(len=*), intent(out) :: items(:)
-      integer, intent(out) :: n
-      integer :: i, start
-      n = 0
-      start = 0
-      do i = 1, len(value) + 1
-         if (i > len(value)) then
-            if (start > 0) call push(value(start:i - 1))
-         else if (value(i:i) == ',' .or. value(i:i) == ' ') then
-            if (start > 0) call push(value(start:i - 1))
-            start = 0
-         else if (start == 0) then
-            start = i
-         end if
+   !> The next item of a list separated by commas and blanks, from position
+   !> pos on ('' when none is left); pos moves past it.
+   subroutine next_item(text, pos, item)
+      !> The list.
+      character(*), intent(in) :: text
+      !> Where to start; on return, where the next search starts.
+      integer, intent(inout) :: pos
+      !> The item.
+      character(:), allocatable, intent(out) :: item
+      integer :: start
+      do while (pos <= len(text))
+         if (text(pos:pos) /= ',' .and. text(pos:pos) /= ' ') exit
+         pos = pos + 1
       end do
-   contains
-      subroutine push(item)
-         character(*), intent(in) :: item
-         if (n < size(items)) then
-            n = n + 1
-            items(n) = item
-         end if
-      end subroutine push
-   end subroutine split_items
+      start = pos
+      do while (pos <= len(text))
+         if (text(pos:pos) == ',' .or. text(pos:pos) == ' ') exit
+         pos = pos + 1
+      end do
+      item = text(start:pos - 1)
+   end subroutine next_item
 
-   !> Variables of a group, their types (r, i, l, s), sizes (elements) and
-   !> lengths (characters, strings only; they match case_config).
-   subroutine group_variables(group, names, types, sizes, lengths)
-      character(*), intent(in) :: group
-      character(len=24), allocatable, intent(out) :: names(:)
-      character, intent(out) :: types(:)
-      integer, intent(out) :: sizes(:), lengths(:)
-      sizes = 1
-      lengths = 0
-      select case (group)
-      case ('cable')
-         names = [character(len=24) :: 'length', 'diameter', 'density', 'young', 'gravity', 'area', &
-                  'bending_stiffness']
-         types(1:7) = 'r'
-      case ('material')
-         names = [character(len=24) :: 'law', 'p', 'ea', 'strain_max']
-         types(1:4) = ['s', 'r', 'r', 'r']
-         sizes(2) = 5
-         lengths(1) = 16
-      case ('static')
-         names = [character(len=24) :: 'tension']
-         types(1) = 'r'
-      case ('rupture')
-         names = [character(len=24) :: 't_break']
-         types(1) = 'r'
-      case ('numerics')
-         names = [character(len=24) :: 'nodes', 'dt', 'courant', 't_end', 'theta', 'newton_tol', &
-                  'newton_max_iter', 'reuse_jacobian', 'extrapolate', 'min_step_fraction', 'max_wall_time']
-         types(1:11) = ['i', 'r', 'r', 'r', 'r', 'r', 'i', 'l', 'l', 'r', 'r']
-      case ('output')
-         names = [character(len=24) :: 'file', 'interval', 'fields', 'quiet', 'energy', 'gnuplot']
-         types(1:6) = ['s', 'r', 's', 'l', 'l', 'l']
-         lengths(1) = 512
-         lengths(3) = 256
-      case default
-         allocate (names(0))
-      end select
-   end subroutine group_variables
+   !> A value for a message: cut after shown_length characters.
+   pure function shown(value) result(s)
+      !> The value text.
+      character(*), intent(in) :: value
+      character(:), allocatable :: s
+      if (len(value) > shown_length) then
+         s = value(1:shown_length)//'...'
+      else
+         s = value
+      end if
+   end function shown
 
    !> Read the groups that are present with the compiler's namelist input.
+   !> The namelist statements here are the compile-time copy of the schema's
+   !> variable lists (the suite input checks them against the schema).
    subroutine read_groups(path, c, group_names, present_group, error)
+      !> Namelist file.
       character(*), intent(in) :: path
+      !> The case: defaults in, values given out.
       type(case_config), intent(inout) :: c
+      !> The groups of the schema.
       character(len=16), intent(in) :: group_names(:)
+      !> Which groups the file has.
       logical, intent(in) :: present_group(:)
+      !> Error naming the group.
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness
-      character(len=16) :: law
-      real(dp) :: p(5), ea, strain_max, tension, t_break, dt, courant, t_end, theta, newton_tol
+      character(len=16) :: law, compression, scheme, mass_matrix
+      real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
       real(dp) :: min_step_fraction, max_wall_time, interval
       integer :: nodes, newton_max_iter
-      logical :: reuse_jacobian, extrapolate, quiet, energy, gnuplot
+      logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot
       character(len=512) :: file
       character(len=256) :: fields
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness
-      namelist /material/ law, p, ea, strain_max
+      namelist /material/ law, p, ea, strain_max, compression
       namelist /static/ tension
-      namelist /rupture/ t_break
-      namelist /numerics/ nodes, dt, courant, t_end, theta, newton_tol, newton_max_iter, reuse_jacobian, &
-         extrapolate, min_step_fraction, max_wall_time
+      namelist /rupture/ enabled, s_break, t_break, time
+      namelist /numerics/ scheme, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
+         reuse_jacobian, extrapolate, min_step_fraction, max_wall_time
       namelist /output/ file, interval, fields, quiet, energy, gnuplot
       integer :: unit, ios, ig
       character(len=512) :: msg
 
       length = c%length; diameter = c%diameter; density = c%density; young = c%young
       gravity = c%gravity; area = c%area; bending_stiffness = c%bending_stiffness
-      law = c%law; p = c%p; ea = c%ea; strain_max = c%strain_max
-      tension = c%tension; t_break = c%t_break
-      nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
-      newton_tol = c%newton_tol; newton_max_iter = c%newton_max_iter; reuse_jacobian = c%reuse_jacobian
-      extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction; max_wall_time = c%max_wall_time
+      law = c%law; p = c%p; ea = c%ea; strain_max = c%strain_max; compression = c%compression
+      tension = c%tension
+      enabled = c%break_enabled; s_break = c%s_break; t_break = c%t_break; time = c%break_time
+      scheme = c%scheme; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
+      mass_matrix = c%mass_matrix; newton_tol = c%newton_tol; newton_max_iter = c%newton_max_iter
+      reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
+      max_wall_time = c%max_wall_time
       file = c%file; interval = c%interval; fields = c%fields; quiet = c%quiet; energy = c%energy
       gnuplot = c%gnuplot
 
@@ -662,12 +698,19 @@ contains
             read (unit, nml=material, iostat=ios, iomsg=msg)
          case ('static')
             read (unit, nml=static, iostat=ios, iomsg=msg)
+         case ('end_a')
+            call read_end(unit, 'end_a', c%end_a, ios, msg)
+         case ('end_b')
+            call read_end(unit, 'end_b', c%end_b, ios, msg)
          case ('rupture')
             read (unit, nml=rupture, iostat=ios, iomsg=msg)
          case ('numerics')
             read (unit, nml=numerics, iostat=ios, iomsg=msg)
          case ('output')
             read (unit, nml=output, iostat=ios, iomsg=msg)
+         case default
+            ios = 1
+            msg = 'no namelist read for this group (a schema group missing in read_groups)'
          end select
          if (ios /= 0) then
             call fatal_error(error, path//': &'//trim(group_names(ig))//': cannot be read: '//trim(msg), stat_input)
@@ -679,19 +722,259 @@ contains
 
       c%length = length; c%diameter = diameter; c%density = density; c%young = young
       c%gravity = gravity; c%area = area; c%bending_stiffness = bending_stiffness
-      c%law = to_lower(adjustl(law)); c%p = p; c%ea = ea; c%strain_max = strain_max
-      c%tension = tension; c%t_break = t_break
-      c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
-      c%newton_tol = newton_tol; c%newton_max_iter = newton_max_iter; c%reuse_jacobian = reuse_jacobian
-      c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction; c%max_wall_time = max_wall_time
+      c%law = law; c%p = p; c%ea = ea; c%strain_max = strain_max; c%compression = compression
+      c%tension = tension
+      c%break_enabled = enabled; c%s_break = s_break; c%t_break = t_break; c%break_time = time
+      c%scheme = scheme; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
+      c%mass_matrix = mass_matrix; c%newton_tol = newton_tol; c%newton_max_iter = newton_max_iter
+      c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction
+      c%max_wall_time = max_wall_time
       c%file = file; c%interval = interval; c%fields = fields; c%quiet = quiet; c%energy = energy
       c%gnuplot = gnuplot
    end subroutine read_groups
 
+   !> Read &end_a or &end_b (the same variables) into one end.
+   subroutine read_end(unit, group, e, ios, msg)
+      !> Open namelist file, rewound.
+      integer, intent(in) :: unit
+      !> 'end_a' or 'end_b'.
+      character(*), intent(in) :: group
+      !> The end: defaults in, values given out.
+      type(end_config), intent(inout) :: e
+      !> iostat and iomsg of the read.
+      integer, intent(out) :: ios
+      character(len=*), intent(inout) :: msg
+      character(len=16) :: kind, history, motion
+      real(dp) :: x, z, force_x, force_z, ramp_time, amplitude, period, phase, direction_x, direction_z, mass
+      real(dp) :: table_time(max_table_points), table_x(max_table_points), table_z(max_table_points)
+      character(len=512) :: table_file
+      namelist /end_a/ kind, x, z, force_x, force_z, history, ramp_time, motion, amplitude, period, phase, &
+         direction_x, direction_z, mass, table_time, table_x, table_z, table_file
+      namelist /end_b/ kind, x, z, force_x, force_z, history, ramp_time, motion, amplitude, period, phase, &
+         direction_x, direction_z, mass, table_time, table_x, table_z, table_file
+
+      kind = e%kind; x = e%x; z = e%z; force_x = e%force_x; force_z = e%force_z; history = e%history
+      ramp_time = e%ramp_time; motion = e%motion; amplitude = e%amplitude; period = e%period; phase = e%phase
+      direction_x = e%direction_x; direction_z = e%direction_z; mass = e%mass
+      table_time = e%table_time; table_x = e%table_x; table_z = e%table_z; table_file = e%table_file
+      if (group == 'end_a') then
+         read (unit, nml=end_a, iostat=ios, iomsg=msg)
+      else
+         read (unit, nml=end_b, iostat=ios, iomsg=msg)
+      end if
+      if (ios /= 0) return
+      e%kind = kind; e%x = x; e%z = z; e%force_x = force_x; e%force_z = force_z; e%history = history
+      e%ramp_time = ramp_time; e%motion = motion; e%amplitude = amplitude; e%period = period; e%phase = phase
+      e%direction_x = direction_x; e%direction_z = direction_z; e%mass = mass
+      e%table_time = table_time; e%table_x = table_x; e%table_z = table_z; e%table_file = table_file
+   end subroutine read_end
+
+   !> Get (store = .false.) or set (store = .true.) the value of a schema
+   !> entry in a case: the one map from a namelist variable to its component
+   !> of case_config for the generic code (validation, echo, tests).
+   subroutine access(c, e, v, store)
+      !> The case.
+      type(case_config), intent(inout) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      !> Its value; v%found is .false. for a variable this map does not know.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      v%found = .true.
+      select case (e%group)
+      case ('end_a')
+         call access_end(c%end_a, e%name, v, store)
+         return
+      case ('end_b')
+         call access_end(c%end_b, e%name, v, store)
+         return
+      end select
+      select case (trim(e%group)//'%'//trim(e%name))
+      case ('cable%length'); call move(c%length, v, store)
+      case ('cable%diameter'); call move(c%diameter, v, store)
+      case ('cable%density'); call move(c%density, v, store)
+      case ('cable%young'); call move(c%young, v, store)
+      case ('cable%gravity'); call move(c%gravity, v, store)
+      case ('cable%area'); call move(c%area, v, store)
+      case ('cable%bending_stiffness'); call move(c%bending_stiffness, v, store)
+      case ('material%law'); call move(c%law, v, store)
+      case ('material%p'); call move(c%p, v, store)
+      case ('material%ea'); call move(c%ea, v, store)
+      case ('material%strain_max'); call move(c%strain_max, v, store)
+      case ('material%compression'); call move(c%compression, v, store)
+      case ('static%tension'); call move(c%tension, v, store)
+      case ('rupture%enabled'); call move(c%break_enabled, v, store)
+      case ('rupture%s_break'); call move(c%s_break, v, store)
+      case ('rupture%t_break'); call move(c%t_break, v, store)
+      case ('rupture%time'); call move(c%break_time, v, store)
+      case ('numerics%scheme'); call move(c%scheme, v, store)
+      case ('numerics%nodes'); call move(c%nodes, v, store)
+      case ('numerics%dt'); call move(c%dt, v, store)
+      case ('numerics%courant'); call move(c%courant, v, store)
+      case ('numerics%t_end'); call move(c%t_end, v, store)
+      case ('numerics%theta'); call move(c%theta, v, store)
+      case ('numerics%mass_matrix'); call move(c%mass_matrix, v, store)
+      case ('numerics%newton_tol'); call move(c%newton_tol, v, store)
+      case ('numerics%newton_max_iter'); call move(c%newton_max_iter, v, store)
+      case ('numerics%reuse_jacobian'); call move(c%reuse_jacobian, v, store)
+      case ('numerics%extrapolate'); call move(c%extrapolate, v, store)
+      case ('numerics%min_step_fraction'); call move(c%min_step_fraction, v, store)
+      case ('numerics%max_wall_time'); call move(c%max_wall_time, v, store)
+      case ('output%file'); call move(c%file, v, store)
+      case ('output%interval'); call move(c%interval, v, store)
+      case ('output%fields'); call move(c%fields, v, store)
+      case ('output%quiet'); call move(c%quiet, v, store)
+      case ('output%energy'); call move(c%energy, v, store)
+      case ('output%gnuplot'); call move(c%gnuplot, v, store)
+      case default
+         v%found = .false.
+      end select
+   end subroutine access
+
+   !> `access` for the variables of &end_a and &end_b.
+   subroutine access_end(e, name, v, store)
+      !> The end.
+      type(end_config), intent(inout) :: e
+      !> Variable name.
+      character(*), intent(in) :: name
+      !> Its value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      select case (name)
+      case ('kind'); call move(e%kind, v, store)
+      case ('x'); call move(e%x, v, store)
+      case ('z'); call move(e%z, v, store)
+      case ('force_x'); call move(e%force_x, v, store)
+      case ('force_z'); call move(e%force_z, v, store)
+      case ('history'); call move(e%history, v, store)
+      case ('ramp_time'); call move(e%ramp_time, v, store)
+      case ('motion'); call move(e%motion, v, store)
+      case ('amplitude'); call move(e%amplitude, v, store)
+      case ('period'); call move(e%period, v, store)
+      case ('phase'); call move(e%phase, v, store)
+      case ('direction_x'); call move(e%direction_x, v, store)
+      case ('direction_z'); call move(e%direction_z, v, store)
+      case ('mass'); call move(e%mass, v, store)
+      case ('table_time'); call move_rows(e%table_time, e%table_rows, v, store)
+      case ('table_x'); call move_rows(e%table_x, e%table_rows, v, store)
+      case ('table_z'); call move_rows(e%table_z, e%table_rows, v, store)
+      case ('table_file'); call move(e%table_file, v, store)
+      case default
+         v%found = .false.
+      end select
+   end subroutine access_end
+
+   !> A real scalar.
+   subroutine move_real(x, v, store)
+      !> Component.
+      real(dp), intent(inout) :: x
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set x from v.
+      logical, intent(in) :: store
+      if (store) then
+         x = v%reals(1)
+      else
+         v%reals = [x]
+      end if
+   end subroutine move_real
+
+   !> A real array.
+   subroutine move_reals(x, v, store)
+      !> Component.
+      real(dp), intent(inout) :: x(:)
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set x from v.
+      logical, intent(in) :: store
+      if (store) then
+         x(1:size(v%reals)) = v%reals
+      else
+         v%reals = x
+      end if
+   end subroutine move_reals
+
+   !> A table column: its first rows elements (a store sets the elements given, not rows).
+   subroutine move_rows(x, rows, v, store)
+      !> Column.
+      real(dp), intent(inout) :: x(:)
+      !> Rows of the table.
+      integer, intent(in) :: rows
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set x from v.
+      logical, intent(in) :: store
+      if (store) then
+         x(1:size(v%reals)) = v%reals
+      else
+         v%reals = x(1:rows)
+      end if
+   end subroutine move_rows
+
+   !> An integer.
+   subroutine move_integer(i, v, store)
+      !> Component.
+      integer, intent(inout) :: i
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set i from v.
+      logical, intent(in) :: store
+      if (store) then
+         i = v%int
+      else
+         v%int = i
+      end if
+   end subroutine move_integer
+
+   !> A logical.
+   subroutine move_logical(l, v, store)
+      !> Component.
+      logical, intent(inout) :: l
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set l from v.
+      logical, intent(in) :: store
+      if (store) then
+         l = v%flag
+      else
+         v%flag = l
+      end if
+   end subroutine move_logical
+
+   !> A string.
+   subroutine move_string(s, v, store)
+      !> Component.
+      character(*), intent(inout) :: s
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set s from v.
+      logical, intent(in) :: store
+      if (store) then
+         s = v%text
+      else
+         v%text = trim(s)
+      end if
+   end subroutine move_string
+
+   !> The value of an entry in a case.
+   function get_value(c, e) result(v)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      type(config_value) :: v
+      type(case_config) :: copy
+      copy = c
+      call access(copy, e, v, .false.)
+   end function get_value
+
    !> The values whose 0 means "derived from others": the area from the
    !> diameter, EI from young and the diameter, EA of the linear law from young
-   !> and the area. Called by validate and by setup_case, so that a case built
-   !> in code (tests, examples) gets them as a namelist does.
+   !> and the area; and a negative s_break, the end b (s = L). Called by
+   !> validate and by setup_case, so that a case built in code (tests,
+   !> examples) gets them as a namelist does.
    pure subroutine derive_defaults(c)
       !> Case; derived values replace zeros.
       type(case_config), intent(inout) :: c
@@ -699,98 +982,69 @@ contains
       if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
       if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
       if (c%law == 'linear' .and. c%ea == 0) c%ea = c%young*c%area
+      if (c%s_break < 0) c%s_break = c%length
    end subroutine derive_defaults
 
-   !> Range checks, and the derived defaults (area, EI, EA, output file).
+   !> The checks of a case read: the tables from files, every variable
+   !> against its schema entry, the law's coefficients, the derived values,
+   !> the conditions between variables, and the default output file.
    subroutine validate(c, error)
+      !> The case; derived values and table files filled in.
       type(case_config), intent(inout) :: c
+      !> Error naming file, group, variable, value and what is allowed.
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: pi = acos(-1.0_dp)
-      character(len=256) :: items(20)
-      integer :: n, k, slash, dot
+      type(schema_entry), allocatable :: t(:)
+      type(end_config) :: e
+      integer :: i, slash, dot
+
+      t = schema_table()
+      e = c%end_a
+      call load_table(c, 'end_a', e, error)
+      if (allocated(error)) return
+      c%end_a = e
+      e = c%end_b
+      call load_table(c, 'end_b', e, error)
+      if (allocated(error)) return
+      c%end_b = e
+      do i = 1, size(t)
+         call check_entry(c, t(i), error)
+         if (allocated(error)) return
+      end do
       ! Lower bounds (issue 6, bad-input fuzzing): a value that is positive but
       ! tiny (1e-300) passed "> 0" and gave a zero mass, an infinite wave
-      ! speed, a zero step or a singular Jacobian. The bounds are generous
-      ! physical ones; gravity must be > 0 because without weight the static
-      ! cable may turn freely about the fixed end (the static Jacobian is
-      ! singular), and EI far below 1e-6 N m^2 leaves the moment balance
-      ! (row 7, scaled by EI / T_s) empty at double precision.
-      call positive_in('cable', 'length', c%length, 1.0e-2_dp, 1.0e5_dp); if (allocated(error)) return
-      call positive_in('cable', 'diameter', c%diameter, 1.0e-4_dp, 10.0_dp); if (allocated(error)) return
-      call positive_in('cable', 'density', c%density, 1.0_dp, 1.0e5_dp); if (allocated(error)) return
-      call positive_in('cable', 'young', c%young, 1.0e3_dp, 1.0e13_dp); if (allocated(error)) return
-      call in_range('cable', 'gravity', c%gravity, 1.0e-6_dp, 100.0_dp, &
-                    ' (without weight the static cable may turn freely: its direction is undetermined)')
-      if (allocated(error)) return
-      call zero_or_range('cable', 'area', c%area, 1.0e-9_dp, 100.0_dp, 'pi d^2 / 4'); if (allocated(error)) return
-      call zero_or_range('cable', 'bending_stiffness', c%bending_stiffness, 1.0e-6_dp, 1.0e12_dp, 'E pi d^4 / 64')
-      if (allocated(error)) return
-      select case (c%law)
-      case ('tanh')
-         call positive('material', 'p(1)', c%p(1), 1.0e12_dp); if (allocated(error)) return
-         call positive('material', 'p(2)', c%p(2), 1.0e6_dp); if (allocated(error)) return
-         call in_range('material', 'p(3)', c%p(3), -1.0e3_dp, 1.0e3_dp); if (allocated(error)) return
-         call in_range('material', 'p(4)', c%p(4), -1.0e12_dp, 1.0e12_dp); if (allocated(error)) return
-         call positive('material', 'p(5)', c%p(5), 1.0e12_dp); if (allocated(error)) return
-      case ('linear')
-         call zero_or_range('material', 'ea', c%ea, 1.0_dp, 1.0e13_dp, 'young * area'); if (allocated(error)) return
-      case default
-         call fatal_error(error, c%source//': &material: law = '//trim(c%law)//": must be 'tanh' or 'linear'", &
-                          stat_input)
-         return
-      end select
-      ! An EI given is in range (above); one derived from young and d may not be.
+      ! speed, a zero step or a singular Jacobian; the schema's ranges are
+      ! generous physical ones. The tanh law's coefficients have ranges of
+      ! their own.
+      if (c%law == 'tanh') then
+         call coefficient(1, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
+         call coefficient(2, 0.0_dp, 1.0e6_dp, .true.); if (allocated(error)) return
+         call coefficient(3, -1.0e3_dp, 1.0e3_dp, .false.); if (allocated(error)) return
+         call coefficient(5, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
+      end if
+      ! An EI given is in range (above); one derived from young and d may not be:
+      ! EI far below 1e-6 N m^2 leaves the moment balance empty at double precision.
       if (c%bending_stiffness == 0 .and. c%young*pi*c%diameter**4/64 < 1.0e-6_dp) then
-         call fatal_error(error, c%source//': &cable: young = '//str(c%young)//', diameter = '//str(c%diameter)// &
-                          ': give a bending stiffness E pi d^4 / 64 = '//str(c%young*pi*c%diameter**4/64)// &
-                          ' N m^2, below 1e-6; set bending_stiffness', stat_input)
+         call fatal_error(error, c%source//': &cable: young = '//real_text(c%young)//', diameter = '// &
+                          real_text(c%diameter)//': give a bending stiffness E pi d^4 / 64 = '// &
+                          str(c%young*pi*c%diameter**4/64)//' N m^2, below 1e-6; set bending_stiffness', stat_input)
          return
       end if
       call derive_defaults(c)
-      call positive('material', 'strain_max', c%strain_max, 10.0_dp); if (allocated(error)) return
-      call positive('static', 'tension', c%tension, 1.0e9_dp); if (allocated(error)) return
-      call in_range('rupture', 't_break', c%t_break, 0.0_dp, 1.0e4_dp); if (allocated(error)) return
-      if (c%nodes < 3 .or. c%nodes > 100001) then
-         call fatal_error(error, c%source//': &numerics: nodes = '//str(c%nodes)//': must be an integer from 3 to 100001', &
-                          stat_input)
-         return
-      end if
-      call positive('numerics', 't_end', c%t_end, 1.0e4_dp); if (allocated(error)) return
-      call in_range('numerics', 'dt', c%dt, 0.0_dp, c%t_end); if (allocated(error)) return
       if (c%dt > 0 .and. c%t_end/c%dt > max_time_steps) then
-         call fatal_error(error, c%source//': &numerics: dt = '//str(c%dt)//': gives more than '// &
-                          str(max_time_steps)//' steps to t_end = '//str(c%t_end)//'; must be at least t_end / '// &
-                          str(max_time_steps)//' = '//str(c%t_end/max_time_steps), stat_input)
+         call fatal_error(error, c%source//': &numerics: dt = '//real_text(c%dt)//': gives more than '// &
+                          str(max_time_steps)//' steps to t_end = '//real_text(c%t_end)//'; must be at least t_end / '// &
+                          str(max_time_steps)//' = '//real_text(c%t_end/max_time_steps), stat_input)
          return
       end if
-      if (c%dt == 0) then
-         call positive('numerics', 'courant', c%courant, 1.0e4_dp); if (allocated(error)) return
-      end if
-      call in_range('numerics', 'theta', c%theta, 0.5_dp, 1.0_dp); if (allocated(error)) return
-      call in_range('numerics', 'newton_tol', c%newton_tol, 1.0e-15_dp, 1.0e-3_dp); if (allocated(error)) return
-      if (c%newton_max_iter < 1 .or. c%newton_max_iter > 100) then
-         call fatal_error(error, c%source//': &numerics: newton_max_iter = '//str(c%newton_max_iter)// &
-                          ': must be an integer from 1 to 100', stat_input)
-         return
-      end if
-      call in_range('numerics', 'min_step_fraction', c%min_step_fraction, 1.0e-9_dp, 1.0_dp)
-      if (allocated(error)) return
-      call in_range('numerics', 'max_wall_time', c%max_wall_time, 0.0_dp, 1.0e7_dp); if (allocated(error)) return
-      call in_range('output', 'interval', c%interval, 0.0_dp, c%t_end); if (allocated(error)) return
-      if (c%interval > 0 .and. c%t_end/c%interval > 1.0e5_dp) then
-         call fatal_error(error, c%source//': &output: interval = '//str(c%interval)// &
+      if (c%interval > 0 .and. c%t_end/c%interval > max_snapshots) then
+         call fatal_error(error, c%source//': &output: interval = '//real_text(c%interval)// &
                           ': gives more than 100000 snapshots; must be at least t_end / 100000 = '// &
-                          str(c%t_end/1.0e5_dp), stat_input)
+                          real_text(c%t_end/max_snapshots), stat_input)
          return
       end if
-      call split_items(c%fields, items, n)
-      do k = 1, n
-         if (findloc_name(known_fields, trim(items(k))) == 0) then
-            call fatal_error(error, c%source//': &output: fields = '//trim(c%fields)//': unknown field "'// &
-                             trim(items(k))//'"; allowed: '//join_names(known_fields, ''), stat_input)
-            return
-         end if
-      end do
+      call check_scene(c, error)
+      if (allocated(error)) return
       if (trim(c%file) == c%source .or. './'//trim(c%file) == c%source .or. trim(c%file) == './'//c%source) then
          call fatal_error(error, c%source//": &output: file = '"//trim(c%file)//"': is the input file itself", &
                           stat_input)
@@ -805,86 +1059,521 @@ contains
 
    contains
 
-      subroutine positive(group, name, value, upper)
-         character(*), intent(in) :: group, name
-         real(dp), intent(in) :: value, upper
-         if (.not. (value > 0 .and. value <= upper)) then
-            call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
-                             ': must be > 0 and <= '//str(upper), stat_input)
+      !> A coefficient of the tanh law in its range.
+      subroutine coefficient(k, lower, upper, open)
+         integer, intent(in) :: k
+         real(dp), intent(in) :: lower, upper
+         logical, intent(in) :: open
+         if (open) then
+            if (c%p(k) > lower .and. c%p(k) <= upper) return
+            call fatal_error(error, c%source//': &material: p('//str(k)//') = '//real_text(c%p(k))// &
+                             ': must be > '//real_text(lower)//' and <= '//real_text(upper)//' for the tanh law', &
+                             stat_input)
+         else
+            if (c%p(k) >= lower .and. c%p(k) <= upper) return
+            call fatal_error(error, c%source//': &material: p('//str(k)//') = '//real_text(c%p(k))// &
+                             ': must be in ['//real_text(lower)//', '//real_text(upper)//'] for the tanh law', stat_input)
          end if
-      end subroutine positive
-
-      subroutine in_range(group, name, value, lower, upper, why)
-         character(*), intent(in) :: group, name
-         real(dp), intent(in) :: value, lower, upper
-         character(*), intent(in), optional :: why
-         if (.not. (value >= lower .and. value <= upper)) then
-            if (present(why)) then
-               call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
-                                ': must be in ['//str(lower)//', '//str(upper)//']'//why, stat_input)
-            else
-               call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
-                                ': must be in ['//str(lower)//', '//str(upper)//']', stat_input)
-            end if
-         end if
-      end subroutine in_range
-
-      !> A positive quantity with a physical floor.
-      subroutine positive_in(group, name, value, lower, upper)
-         character(*), intent(in) :: group, name
-         real(dp), intent(in) :: value, lower, upper
-         if (.not. (value >= lower .and. value <= upper)) then
-            call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
-                             ': must be > 0 and in ['//str(lower)//', '//str(upper)//']', stat_input)
-         end if
-      end subroutine positive_in
-
-      !> 0 (the derived default) or a value in [lower, upper].
-      subroutine zero_or_range(group, name, value, lower, upper, default)
-         character(*), intent(in) :: group, name, default
-         real(dp), intent(in) :: value, lower, upper
-         if (.not. (value == 0 .or. (value >= lower .and. value <= upper))) then
-            call fatal_error(error, c%source//': &'//group//': '//name//' = '//str(value)// &
-                             ': must be 0 (for '//default//') or in ['//str(lower)//', '//str(upper)//']', stat_input)
-         end if
-      end subroutine zero_or_range
+      end subroutine coefficient
    end subroutine validate
 
-   !> The resolved case as namelist text (for provenance in the output).
+   !> Check one variable against its schema entry: a number against its
+   !> range (0 allowed where it stands for a derived value; an upper bound
+   !> may come from another variable), a string against its allowed words.
+   subroutine check_entry(c, e, error)
+      !> The case.
+      type(case_config), intent(inout) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      type(config_value) :: v, bound
+      type(schema_entry), allocatable :: t(:)
+      real(dp) :: upper, x
+      integer :: k, pos
+      character(:), allocatable :: item, name, prefix
+      logical :: ok
+
+      call access(c, e, v, .false.)
+      if (.not. v%found) then
+         call fatal_error(error, c%source//': &'//trim(e%group)//': '//trim(e%name)// &
+                          ': a variable of the schema that the reader does not know (io/input.f90 access)', stat_input)
+         return
+      end if
+      prefix = c%source//': &'//trim(e%group)//': '
+      select case (e%type)
+      case ('real', 'integer')
+         if (.not. e%bounded) return
+         if (len_trim(e%default_means) > 0 .and. .not. c%is_given(trim(e%group), trim(e%name))) return
+         upper = e%upper
+         if (len_trim(e%upper_from) > 0) then
+            t = schema_table()
+            k = index(e%upper_from, '%')
+            k = find_entry(t, e%upper_from(1:k - 1), trim(e%upper_from(k + 1:)))
+            bound = get_value(c, t(k))
+            upper = bound%reals(1)
+         end if
+         if (e%type == 'integer') v%reals = [real(v%int, dp)]
+         do k = 1, size(v%reals)
+            x = v%reals(k)
+            if (len_trim(e%zero_means) > 0 .and. x == 0) cycle
+            if (e%lower_open) then
+               ok = x > e%lower .and. x <= upper
+            else
+               ok = x >= e%lower .and. x <= upper
+            end if
+            if (ok) cycle
+            name = trim(e%name)
+            if (e%count > 1) name = name//'('//str(k)//')'
+            if (e%type == 'integer') then
+               item = str(v%int)
+            else
+               item = real_text(x)
+            end if
+            item = prefix//name//' = '//item//': must be '//allowed_text(e, upper)
+            if (len_trim(e%note) > 0) item = item//' ('//trim(e%note)//')'
+            call fatal_error(error, item, stat_input)
+            return
+         end do
+      case ('string')
+         if (len_trim(e%choices) == 0) return
+         if (.not. e%word_list) then
+            if (is_word(v%text, e%choices)) return
+            call fatal_error(error, prefix//trim(e%name)//" = '"//shown(v%text)//"': must be "//allowed_text(e), &
+                             stat_input)
+            return
+         end if
+         pos = 1
+         do
+            call next_item(v%text, pos, item)
+            if (len(item) == 0) exit
+            if (is_word(item, e%choices)) cycle
+            call fatal_error(error, prefix//trim(e%name)//" = '"//shown(v%text)//"': unknown word "//'"'//item// &
+                             '"; allowed: '//comma_words(e%choices), stat_input)
+            return
+         end do
+      end select
+   end subroutine check_entry
+
+   !> Whether word is one of the blank-separated words.
+   pure logical function is_word(word, words)
+      !> Word.
+      character(*), intent(in) :: word
+      !> Blank-separated words.
+      character(*), intent(in) :: words
+      is_word = len_trim(word) > 0 .and. index(' '//trim(words)//' ', ' '//trim(word)//' ') > 0
+   end function is_word
+
+   !> Blank-separated words as 'a, b, c'.
+   function comma_words(words) result(s)
+      !> Blank-separated words.
+      character(*), intent(in) :: words
+      character(:), allocatable :: s, item
+      integer :: pos
+      s = ''
+      pos = 1
+      do
+         call next_item(words, pos, item)
+         if (len(item) == 0) exit
+         if (len(s) > 0) s = s//', '
+         s = s//item
+      end do
+   end function comma_words
+
+   !> The conditions between variables: the tension or the end positions,
+   !> each end against its kind, a support, and a break where something holds.
+   subroutine check_scene(c, error)
+      !> The case (validated variables, derived values); motion directions normalised.
+      type(case_config), intent(inout) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: position, broken
+      type(end_config) :: e
+      logical :: held_a, held_b
+
+      if (c%is_given('static', 'tension') .and. (c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z'))) then
+         if (c%is_given('end_b', 'x')) then
+            position = 'x = '//real_text(c%end_b%x)
+         else
+            position = 'z = '//real_text(c%end_b%z)
+         end if
+         call fatal_error(error, c%source//': &static: tension = '//real_text(c%tension)//' and &end_b '//position// &
+                          ': both given; give one: the tension (the paper'//"'"//'s symmetric case: end b at the '// &
+                          'height of end a, the span from the tension) or the end positions', stat_input)
+         return
+      end if
+      e = c%end_a
+      call check_end(c, 'end_a', e, error)
+      if (allocated(error)) return
+      c%end_a = e
+      e = c%end_b
+      call check_end(c, 'end_b', e, error)
+      if (allocated(error)) return
+      c%end_b = e
+
+      held_a = is_word(c%end_a%kind, 'fixed motion')
+      held_b = is_word(c%end_b%kind, 'fixed motion')
+      if (.not. (held_a .or. held_b)) then
+         if (c%end_a%kind == 'free' .and. c%end_b%kind == 'free') then
+            call fatal_error(error, c%source//": &end_a: kind = 'free' and &end_b: kind = 'free': a cable with no "// &
+                             "support has no static state; make one end 'fixed' or 'motion'", stat_input)
+         else
+            call fatal_error(error, c%source//": &end_a: kind = '"//trim(c%end_a%kind)//"' and &end_b: kind = '"// &
+                             trim(c%end_b%kind)//"': nothing holds the cable (no 'fixed' or 'motion' end), so it "// &
+                             "has no static state; make one end 'fixed' or 'motion'", stat_input)
+         end if
+         return
+      end if
+
+      if (c%break_enabled .and. (c%s_break == 0 .or. c%s_break == c%length)) then
+         if (c%s_break == 0) then
+            broken = 'a'
+            if (held_a) return
+         else
+            broken = 'b'
+            if (held_b) return
+         end if
+         position = real_text(c%s_break)
+         if (.not. c%is_given('rupture', 's_break')) position = position//' (the default, L)'
+         if (broken == 'a') then
+            position = position//", at end a, whose kind = '"//trim(c%end_a%kind)//"'"
+         else
+            position = position//", at end b, whose kind = '"//trim(c%end_b%kind)//"'"
+         end if
+         call fatal_error(error, c%source//': &rupture: s_break = '//position//': nothing holds that end, so '// &
+                          "there is nothing to break; break at a 'fixed' or 'motion' end, inside the cable "// &
+                          '(0 < s_break < L), or set enabled = .false.', stat_input)
+      end if
+   end subroutine check_scene
+
+   !> The conditions of one end: no position where the statics give it, a
+   !> positive mass, ramp time and period, a direction (normalised here), and
+   !> a table of at least 2 rows with increasing times where one is used.
+   subroutine check_end(c, group, e, error)
+      !> The case (for its source and what was given).
+      type(case_config), intent(in) :: c
+      !> 'end_a' or 'end_b'.
+      character(*), intent(in) :: group
+      !> The end; its motion direction is normalised.
+      type(end_config), intent(inout) :: e
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: prefix, kind, uses
+      real(dp) :: norm
+      integer :: k
+
+      prefix = c%source//': &'//group//': '
+      kind = "kind = '"//trim(e%kind)//"'"
+      if (is_word(e%kind, 'free force mass')) then
+         if (c%is_given(group, 'x')) then
+            call fatal_error(error, prefix//'x = '//real_text(e%x)//': given for '//kind//': the position of a '// &
+                             "'free', 'force' or 'mass' end follows from the statics; leave x out", stat_input)
+            return
+         end if
+         if (c%is_given(group, 'z')) then
+            call fatal_error(error, prefix//'z = '//real_text(e%z)//': given for '//kind//': the position of a '// &
+                             "'free', 'force' or 'mass' end follows from the statics; leave z out", stat_input)
+            return
+         end if
+      end if
+      if (e%kind == 'mass' .and. .not. e%mass > 0) then
+         call fatal_error(error, prefix//'mass = '//real_text(e%mass)//': must be > 0 for '//kind, stat_input)
+         return
+      end if
+      if (e%kind == 'force' .and. e%history == 'ramp' .and. .not. e%ramp_time > 0) then
+         call fatal_error(error, prefix//'ramp_time = '//real_text(e%ramp_time)//": must be > 0 for history = 'ramp'", &
+                          stat_input)
+         return
+      end if
+      if (e%kind == 'motion' .and. e%motion == 'harmonic') then
+         if (.not. e%period > 0) then
+            call fatal_error(error, prefix//'period = '//real_text(e%period)//": must be > 0 for motion = 'harmonic'", &
+                             stat_input)
+            return
+         end if
+         if (e%direction_x == 0 .and. e%direction_z == 0) then
+            call fatal_error(error, prefix//'direction_x = 0, direction_z = 0: the direction of the harmonic motion '// &
+                             'must not be zero', stat_input)
+            return
+         end if
+      end if
+      norm = hypot(e%direction_x, e%direction_z)
+      if (norm > 0) then
+         e%direction_x = e%direction_x/norm
+         e%direction_z = e%direction_z/norm
+      end if
+
+      uses = ''
+      if (e%kind == 'force' .and. e%history == 'table') uses = "history = 'table'"
+      if (e%kind == 'motion' .and. e%motion == 'table') uses = "motion = 'table'"
+      if (len(uses) > 0 .and. e%table_rows == 0) then
+         call fatal_error(error, prefix//uses//' without a table: give table_time, table_x and table_z (at least 2 '// &
+                          'rows) or table_file', stat_input)
+         return
+      end if
+      if (e%table_rows == 1) then
+         call fatal_error(error, prefix//'table_time = '//real_text(e%table_time(1))//': the table has 1 row; it '// &
+                          'must have at least 2', stat_input)
+         return
+      end if
+      do k = 2, e%table_rows
+         if (.not. e%table_time(k) > e%table_time(k - 1)) then
+            call fatal_error(error, prefix//'table_time('//str(k)//') = '//real_text(e%table_time(k))// &
+                             ': not above table_time('//str(k - 1)//') = '//real_text(e%table_time(k - 1))// &
+                             '; the times must increase strictly', stat_input)
+            return
+         end if
+      end do
+   end subroutine check_end
+
+   !> Read an end's table_file, if given, into its table: two or three numbers
+   !> a line (t, x and z; z = 0 when absent), '#' starts a comment, blank
+   !> lines are skipped. A file and inline rows together are refused.
+   subroutine load_table(c, group, e, error)
+      !> The case (for its source).
+      type(case_config), intent(in) :: c
+      !> 'end_a' or 'end_b'.
+      character(*), intent(in) :: group
+      !> The end; its table and table_rows are filled from the file.
+      type(end_config), intent(inout) :: e
+      !> Error naming the case file, the group, the table file and its line.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=line_len), allocatable :: lines(:)
+      character(:), allocatable :: prefix, text, item
+      real(dp) :: values(3)
+      integer :: nlines, i, pos, n, columns, rows, ios
+      logical :: exists
+
+      if (len_trim(e%table_file) == 0) return
+      prefix = c%source//': &'//group//": table_file = '"//trim(e%table_file)//"': "
+      if (e%table_rows > 0) then
+         call fatal_error(error, prefix//'given together with the inline table (table_time, '//str(e%table_rows)// &
+                          ' rows); give one', stat_input)
+         return
+      end if
+      inquire (file=trim(e%table_file), exist=exists)
+      if (.not. exists) then
+         call fatal_error(error, prefix//'no such file (the path is relative to the working directory)', stat_input)
+         return
+      end if
+      call load_lines(trim(e%table_file), lines, nlines, error)
+      if (allocated(error)) then
+         error%message = prefix//error%message
+         return
+      end if
+      rows = 0
+      columns = 0
+      do i = 1, nlines
+         text = lines(i)
+         if (index(text, '#') > 0) text = text(1:index(text, '#') - 1)
+         n = 0
+         pos = 1
+         do
+            call next_item(text, pos, item)
+            if (len(item) == 0) exit
+            n = n + 1
+            if (n > 3) exit
+            read (item, *, iostat=ios) values(n)
+            if (ios == 0) then
+               if (.not. ieee_is_finite(values(n))) ios = 1
+            end if
+            if (ios == 0 .and. verify(item, '0123456789+-.eEdD') > 0) ios = 1
+            if (ios /= 0) then
+               call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": "'//shown(item)// &
+                                '" is not a finite real number', stat_input)
+               return
+            end if
+         end do
+         if (n == 0) cycle
+         if (n < 2 .or. n > 3) then
+            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": expected 2 or 3 '// &
+                             'numbers (t, x and optionally z)', stat_input)
+            return
+         end if
+         if (columns == 0) columns = n
+         if (n /= columns) then
+            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": '//str(n)// &
+                             ' numbers, but the lines before have '//str(columns), stat_input)
+            return
+         end if
+         if (rows == max_table_points) then
+            call fatal_error(error, prefix//'line '//str(i)//': more than '//str(max_table_points)//' rows', stat_input)
+            return
+         end if
+         rows = rows + 1
+         e%table_time(rows) = values(1)
+         e%table_x(rows) = values(2)
+         e%table_z(rows) = 0
+         if (n == 3) e%table_z(rows) = values(3)
+         if (rows > 1) then
+            if (.not. e%table_time(rows) > e%table_time(rows - 1)) then
+               call fatal_error(error, prefix//'line '//str(i)//': time '//real_text(e%table_time(rows))// &
+                                ' is not above the time before, '//real_text(e%table_time(rows - 1))// &
+                                '; the times must increase strictly', stat_input)
+               return
+            end if
+         end if
+      end do
+      if (rows < 2) then
+         call fatal_error(error, prefix//'has '//str(rows)//' rows; a table must have at least 2', stat_input)
+         return
+      end if
+      e%table_rows = rows
+   end subroutine load_table
+
+   !> The resolved case as namelist text (for provenance in the output): every
+   !> variable of the schema, group by group, except those that may not be
+   !> given together with others (the tension or the position of end b, the
+   !> positions of free, force and mass ends) and tables without rows; a
+   !> table read from a file is written inline, the file named in a comment.
+   !> Read back, it gives the same case.
    function config_text(c) result(text)
       !> The case.
       type(case_config), intent(in) :: c
       character(:), allocatable :: text
-      character(len=1024) :: line
+      integer, parameter :: width = 100
+      character(len=*), parameter :: nl = new_line('a')
+      type(schema_entry), allocatable :: t(:)
+      character(len=16), allocatable :: groups(:)
+      integer, allocatable :: mine(:)
+      type(config_value) :: v
+      character(:), allocatable :: block, comment, line, sep, token
+      integer :: ig, i, k, n
+      t = schema_table()
+      groups = schema_groups(t)
       text = ''
-      write (line, '(a,5(a,g0))') '&cable', ' length = ', c%length, ', diameter = ', c%diameter, &
-         ', density = ', c%density, ', young = ', c%young, ', gravity = ', c%gravity
-      text = text//trim(line)
-      write (line, '(2(a,g0),a)') ', area = ', c%area, ', bending_stiffness = ', c%bending_stiffness, ' /'
-      text = text//trim(line)//new_line('a')
-      write (line, '(3a,5(g0,:,", "))') "&material law = '", trim(c%law), "', p = ", c%p
-      text = text//trim(line)
-      write (line, '(2(a,g0),a)') ', ea = ', c%ea, ', strain_max = ', c%strain_max, ' /'
-      text = text//trim(line)//new_line('a')
-      write (line, '(a,g0,a)') '&static tension = ', c%tension, ' /'
-      text = text//trim(line)//new_line('a')
-      write (line, '(a,g0,a)') '&rupture t_break = ', c%t_break, ' /'
-      text = text//trim(line)//new_line('a')
-      write (line, '(a,i0,5(a,g0),a,i0,2(a,l1),2(a,g0),a)') '&numerics nodes = ', c%nodes, ', dt = ', c%dt, &
-         ', courant = ', c%courant, ', t_end = ', c%t_end, ', theta = ', c%theta, ', newton_tol = ', c%newton_tol, &
-         ', newton_max_iter = ', c%newton_max_iter, ', reuse_jacobian = ', c%reuse_jacobian, &
-         ', extrapolate = ', c%extrapolate, ', min_step_fraction = ', c%min_step_fraction, &
-         ', max_wall_time = ', c%max_wall_time, ' /'
-      text = text//trim(line)//new_line('a')
-      write (line, '(3a,g0,3a,3(a,l1),a)') "&output file = '", trim(c%file), "', interval = ", c%interval, &
-         ", fields = '", trim(c%fields), "'", ', quiet = ', c%quiet, ', energy = ', c%energy, &
-         ', gnuplot = ', c%gnuplot, ' /'
-      text = text//trim(line)//new_line('a')
+      do ig = 1, size(groups)
+         mine = group_entries(t, groups(ig))
+         block = ''
+         comment = ''
+         line = '&'//trim(groups(ig))
+         sep = ' '
+         do i = 1, size(mine)
+            associate (e => t(mine(i)))
+               if (.not. echoed(c, e)) cycle
+               if (e%name == 'table_file') then
+                  comment = comment//"! &"//trim(e%group)//": the table was read from table_file = '"// &
+                            get_text(c, e)//"'"//nl
+                  cycle
+               end if
+               v = get_value(c, e)
+               n = 1
+               if (e%type == 'real') n = size(v%reals)
+               do k = 1, n
+                  token = item_text(e, v, k)
+                  if (k == 1) token = trim(e%name)//' = '//token
+                  if (len(line) + len(sep) + len(token) > width) then
+                     block = block//line//trim(sep)//nl
+                     line = '   '//token
+                  else
+                     line = line//sep//token
+                  end if
+                  sep = ', '
+               end do
+            end associate
+         end do
+         text = text//comment//block//line//' /'//nl
+      end do
    end function config_text
 
-   !> Identifier starting at position i of a line.
+   !> The value of a variable in a case as the echo writes it ('' for a table without rows).
+   function value_text(c, e) result(text)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      character(:), allocatable :: text
+      type(config_value) :: v
+      integer :: k
+      v = get_value(c, e)
+      text = ''
+      if (.not. v%found) return
+      if (e%type /= 'real') then
+         text = item_text(e, v, 1)
+         return
+      end if
+      do k = 1, size(v%reals)
+         if (k > 1) text = text//', '
+         text = text//item_text(e, v, k)
+      end do
+   end function value_text
+
+   !> Element k of a value as namelist text.
+   function item_text(e, v, k) result(text)
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      !> Its value.
+      type(config_value), intent(in) :: v
+      !> Element (reals).
+      integer, intent(in) :: k
+      character(:), allocatable :: text
+      integer :: i
+      select case (e%type)
+      case ('real')
+         text = real_text(v%reals(k))
+      case ('integer')
+         text = str(v%int)
+      case ('logical')
+         text = merge('.true. ', '.false.', v%flag)
+         text = trim(text)
+      case default
+         ! Quoted, a quote inside doubled.
+         text = "'"
+         do i = 1, len(v%text)
+            text = text//v%text(i:i)
+            if (v%text(i:i) == "'") text = text//"'"
+         end do
+         text = text//"'"
+      end select
+   end function item_text
+
+   !> The text of a string variable.
+   function get_text(c, e) result(text)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      character(:), allocatable :: text
+      type(config_value) :: v
+      v = get_value(c, e)
+      text = v%text
+   end function get_text
+
+   !> Whether the echo writes a variable: not the tension when end b has a
+   !> position given, nor end b's position otherwise; not the position of a
+   !> free, force or mass end; no table without rows, and no table_file unless given.
+   logical function echoed(c, e)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      logical :: position_b
+      type(end_config) :: side
+      position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z')
+      echoed = .true.
+      if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b
+      if (e%group /= 'end_a' .and. e%group /= 'end_b') return
+      if (e%group == 'end_a') then
+         side = c%end_a
+      else
+         side = c%end_b
+      end if
+      select case (e%name)
+      case ('x', 'z')
+         echoed = .not. is_word(side%kind, 'free force mass')
+         if (e%group == 'end_b') echoed = echoed .and. position_b
+      case ('table_time', 'table_x', 'table_z')
+         echoed = side%table_rows > 0
+      case ('table_file')
+         echoed = len_trim(side%table_file) > 0
+      end select
+   end function echoed
+
+   !> Identifier starting at position i of a line, lower case.
    function word_at(line, i) result(word)
+      !> Line.
       character(*), intent(in) :: line
+      !> Where the identifier starts.
       integer, intent(in) :: i
       character(:), allocatable :: word
       integer :: j
@@ -896,14 +1585,19 @@ contains
       word = to_lower(line(i:j - 1))
    end function word_at
 
+   !> Whether a character may be part of a name.
    pure logical function is_name_char(ch)
+      !> Character.
       character, intent(in) :: ch
       is_name_char = (ch >= 'a' .and. ch <= 'z') .or. (ch >= 'A' .and. ch <= 'Z') .or. &
                      (ch >= '0' .and. ch <= '9') .or. ch == '_'
    end function is_name_char
 
+   !> Index of name in names (0: none).
    pure integer function findloc_name(names, name)
+      !> Names, blank-padded.
       character(len=*), intent(in) :: names(:)
+      !> Name.
       character(*), intent(in) :: name
       integer :: i
       findloc_name = 0
@@ -915,8 +1609,11 @@ contains
       end do
    end function findloc_name
 
+   !> Names as 'a, b, c', each after a prefix.
    function join_names(names, prefix) result(s)
+      !> Names, blank-padded.
       character(len=*), intent(in) :: names(:)
+      !> Put before each name ('&' for groups).
       character(*), intent(in) :: prefix
       character(:), allocatable :: s
       integer :: i

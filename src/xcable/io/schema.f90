@@ -1,0 +1,531 @@
+!> The namelist schema: one table that describes every group and variable of
+!> a case file (type, element count, string length, unit, default, allowed
+!> values or range, meaning). The reader (io/input.f90) takes from it the
+!> names and types the scanner checks, the range and allowed-value checks of
+!> the validation and the order and form of the echo; `write_schema` makes
+!> from it the input table of README.md and the sweep scripts' variable table
+!> (`xcable --schema markdown|tsv`).
+!>
+!> Adding a variable: a component with its default in io/config.f90, an
+!> entry here (the default written as the echo writes it), and in
+!> io/input.f90 one line of `access` plus the namelist read of its group
+!> (local, namelist statement, copy in and out); then `make schema`. The
+!> tests of suite input fail until all of these agree.
+module xcable_io_schema
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_strings, only: real_text
+   use xcable_io_config, only: max_table_points
+   implicit none
+   private
+   public :: schema_entry, schema_table, schema_groups, find_entry, group_entries
+   public :: schema_text, write_schema, allowed_text, bound_text, known_fields, is_table
+
+   !> Snapshot fields that &output fields may name.
+   character(len=*), parameter :: known_fields(8) = &
+      [character(len=9) :: 'tension', 'shear', 'strain', 'u', 'v', 'x', 'z', 'curvature']
+
+   !> One namelist variable.
+   type :: schema_entry
+      !> Group and variable name, lower case.
+      character(len=16) :: group = ''
+      character(len=24) :: name = ''
+      !> 'real', 'integer', 'logical' or 'string'.
+      character(len=8) :: type = 'real'
+      !> Number of elements (1 a scalar, 5 for p, max_table_points for a table).
+      integer :: count = 1
+      !> Length of a string variable.
+      integer :: length = 0
+      !> Unit ('-': none).
+      character(len=16) :: unit = '-'
+      !> Default, written as the echo writes it ('' for a table: no rows).
+      character(len=64) :: default = ''
+      !> Allowed words of a string, separated by blanks ('' : any text).
+      character(len=96) :: choices = ''
+      !> Whether the value is a list of such words (blanks or commas between).
+      logical :: word_list = .false.
+      !> Whether a number has a range: lower <= x (lower < x if lower_open) and x <= upper.
+      logical :: bounded = .false.
+      real(dp) :: lower = 0, upper = 0
+      logical :: lower_open = .false.
+      !> Upper bound taken from another variable, 'group%name' ('' : upper).
+      character(len=40) :: upper_from = ''
+      !> What 0 (or '' for a string) stands for; then 0 is allowed besides the range ('' : nothing).
+      character(len=40) :: zero_means = ''
+      !> What the default stands for when the variable is not given; a given value must be in range ('' : nothing).
+      character(len=40) :: default_means = ''
+      !> Added to a range error: why the range is what it is.
+      character(len=120) :: note = ''
+      !> Meaning, one line.
+      character(len=320) :: doc = ''
+   end type schema_entry
+
+contains
+
+   !> The table: every group and variable, in the order of the file and the echo.
+   function schema_table() result(t)
+      type(schema_entry), allocatable :: t(:)
+      character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
+      integer :: k
+      allocate (t(0))
+      ! &cable
+      call add(t, 'cable', 'length', 'real', 'm', '60', 'unstretched length L', 1.0e-2_dp, 1.0e5_dp)
+      call add(t, 'cable', 'diameter', 'real', 'm', '0.05', 'diameter d', 1.0e-4_dp, 10.0_dp)
+      call add(t, 'cable', 'density', 'real', 'kg/m^3', '1140', 'density rho (mass per length m = rho A)', &
+               1.0_dp, 1.0e5_dp)
+      call add(t, 'cable', 'young', 'real', 'Pa', '2.3e8', "Young's modulus E (for EI and for EA of the linear law)", &
+               1.0e3_dp, 1.0e13_dp)
+      call add(t, 'cable', 'gravity', 'real', 'm/s^2', '9.81', 'gravity g (weight per length w0 = m g)', &
+               1.0e-6_dp, 100.0_dp, note='without weight the static cable may turn freely: its direction is undetermined')
+      call add(t, 'cable', 'area', 'real', 'm^2', '0', 'cross-section area A', 1.0e-9_dp, 100.0_dp, &
+               zero_means='pi d^2 / 4')
+      call add(t, 'cable', 'bending_stiffness', 'real', 'N m^2', '0', 'bending stiffness EI (70.6 N m^2 for the paper)', &
+               1.0e-6_dp, 1.0e12_dp, zero_means='E pi d^4 / 64')
+      ! &material
+      call add(t, 'material', 'law', 'string', '-', "'tanh'", &
+               "'tanh': T = p1 tanh(p2 eps + p3) + p4 + p5 eps (eq. 17); 'linear': T = EA eps", length=16, &
+               choices='tanh linear')
+      call add(t, 'material', 'p', 'real', 'N, -, -, N, N', '270300, 10.2, -2.128, 262700, 135.5', &
+               'p1..p5 of eq. 17; for the tanh law p1, p5 in (0, 1e12], p2 in (0, 1e6], p3 in [-1e3, 1e3]', &
+               -1.0e12_dp, 1.0e12_dp, count=5)
+      call add(t, 'material', 'ea', 'real', 'N', '0', 'EA of the linear law', 1.0_dp, 1.0e13_dp, zero_means='young * area')
+      call add(t, 'material', 'strain_max', 'real', '-', '0.35', &
+               'largest static strain the law is used for (the tanh fit reaches about 504 kN there)', 0.0_dp, 10.0_dp, &
+               lower_open=.true.)
+      call add(t, 'material', 'compression', 'string', '-', "'law'", &
+               "behaviour in compression: 'law' (the law continued below zero strain) or 'none' (no compressive tension)", &
+               length=16, choices='law none')
+      ! &static
+      call add(t, 'static', 'tension', 'real', 'N', '315000', &
+               "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &
+               'exceed w0 L / 2 and need a strain below strain_max; not together with &end_b x or z', 0.0_dp, 1.0e9_dp, &
+               lower_open=.true.)
+      ! &end_a (s = 0) and &end_b (s = L): the same variables.
+      do k = 1, size(ends)
+         call add(t, ends(k), 'kind', 'string', '-', "'fixed'", &
+                  "'fixed' (held at x, z), 'free', 'force' (an applied force), 'motion' (moved about x, z) or 'mass' "// &
+                  '(a point mass); at least one end fixed or motion', length=16, choices='fixed free force motion mass')
+         call add(t, ends(k), 'x', 'real', 'm', '0', &
+                  'horizontal position of a fixed end, or mean position of a motion end (not for free, force and mass '// &
+                  'ends, whose position follows from the statics; &end_b: not together with &static tension)', &
+                  -1.0e5_dp, 1.0e5_dp)
+         call add(t, ends(k), 'z', 'real', 'm', '0', 'vertical position (up), as x', -1.0e5_dp, 1.0e5_dp)
+         call add(t, ends(k), 'force_x', 'real', 'N', '0', &
+                  'horizontal force on a force end (the constant value, or the value a ramp starts from)', &
+                  -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'force_z', 'real', 'N', '0', 'vertical force on a force end, as force_x', -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'history', 'string', '-', "'constant'", &
+                  "force history: 'constant', 'ramp' (cos^2 to zero over ramp_time) or 'table'", length=16, &
+                  choices='constant ramp table')
+         call add(t, ends(k), 'ramp_time', 'real', 's', '0', &
+                  'duration of the force ramp (> 0 for a ramp), or of the smooth start of a motion', 0.0_dp, 1.0e4_dp)
+         call add(t, ends(k), 'motion', 'string', '-', "'harmonic'", "motion of a motion end: 'harmonic' or 'table'", &
+                  length=16, choices='harmonic table')
+         call add(t, ends(k), 'amplitude', 'real', 'm', '0', 'amplitude of the harmonic motion', 0.0_dp, 1.0e5_dp)
+         call add(t, ends(k), 'period', 'real', 's', '1', 'period of the harmonic motion (> 0)', 0.0_dp, 1.0e4_dp)
+         call add(t, ends(k), 'phase', 'real', 'rad', '0', 'phase of the harmonic motion', -1.0e3_dp, 1.0e3_dp)
+         call add(t, ends(k), 'direction_x', 'real', '-', '0', &
+                  'direction of the harmonic motion, x component (the direction is normalised; not both zero)', &
+                  -1.0e6_dp, 1.0e6_dp)
+         call add(t, ends(k), 'direction_z', 'real', '-', '1', 'direction of the harmonic motion, z component', &
+                  -1.0e6_dp, 1.0e6_dp)
+         call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0)', 0.0_dp, 1.0e9_dp)
+         call add(t, ends(k), 'table_time', 'real', 's', '', &
+                  "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; the three "// &
+                  'columns have equal counts', -1.0e7_dp, 1.0e7_dp, count=max_table_points)
+         call add(t, ends(k), 'table_x', 'real', 'N or m', '', &
+                  'table: x column (force in N of a force end, displacement in m of a motion end)', &
+                  -1.0e9_dp, 1.0e9_dp, count=max_table_points)
+         call add(t, ends(k), 'table_z', 'real', 'N or m', '', 'table: z column', -1.0e9_dp, 1.0e9_dp, &
+                  count=max_table_points)
+         call add(t, ends(k), 'table_file', 'string', '-', "''", &
+                  'the table from a text file instead: columns t, x and optionally z (0 if absent), # starts a '// &
+                  'comment; the path is relative to the working directory', length=512)
+      end do
+      ! &rupture
+      call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', 'whether the cable breaks')
+      call add(t, 'rupture', 's_break', 'real', 'm', '-1', &
+               'unstretched arc length of the break from end a; a break at an end needs that end fixed or moving', &
+               0.0_dp, 0.0_dp, upper_from='cable%length', default_means='L, the end b')
+      call add(t, 'rupture', 't_break', 'real', 's', '0.05', &
+               'breaking time: the force across the break goes as cos^2(pi t / (2 t_break)) to zero (0: instantaneous)', &
+               0.0_dp, 1.0e4_dp)
+      call add(t, 'rupture', 'time', 'real', 's', '0', 'time at which the break starts', 0.0_dp, 1.0e4_dp)
+      ! &numerics
+      call add(t, 'numerics', 'scheme', 'string', '-', "'rod'", &
+               "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &
+               choices='rod box')
+      call add(t, 'numerics', 'nodes', 'integer', '-', '121', 'number of nodes, uniform in unstretched arc length', &
+               3.0_dp, 100001.0_dp)
+      call add(t, 'numerics', 'dt', 'real', 's', '0', 'time step; at most 1e6 steps to t_end', 0.0_dp, 0.0_dp, &
+               lower_open=.true., upper_from='numerics%t_end', zero_means='dt from courant')
+      call add(t, 'numerics', 'courant', 'real', '-', '1', &
+               'Courant number c(eps0) dt / ds used when dt = 0 (at most 1e6 steps to t_end)', 0.0_dp, 1.0e4_dp, &
+               lower_open=.true.)
+      call add(t, 'numerics', 't_end', 'real', 's', '0.16', 'end of the run', 0.0_dp, 1.0e4_dp, lower_open=.true.)
+      call add(t, 'numerics', 'theta', 'real', '-', '0.5', &
+               "time weight: 0.5 is the paper's (second order, no damping); up to 1 damps high frequencies "// &
+               '(first order); 0.55 for t_break below about 1 ms (see Numerical stability)', 0.5_dp, 1.0_dp)
+      call add(t, 'numerics', 'mass_matrix', 'string', '-', "'averaged'", &
+               "kinetic energy of the rod scheme: 'averaged' (cell-averaged velocities, as the box scheme) or 'lumped'", &
+               length=16, choices='averaged lumped')
+      call add(t, 'numerics', 'newton_tol', 'real', '-', '1e-7', &
+               'Newton converges when every update, divided by its scale (1 for strain and Euler parameters, T_s for '// &
+               'shear, c(eps0) for velocities, 1/L for curvature), is below this (in time steps: when the estimated '// &
+               'remaining error is); 1e-6 to 1e-10 give the same answers to the figures of docs/benchmark.md', &
+               1.0e-15_dp, 1.0e-3_dp)
+      call add(t, 'numerics', 'newton_max_iter', 'integer', '-', '25', 'iteration limit of one Newton solve', &
+               1.0_dp, 100.0_dp)
+      call add(t, 'numerics', 'reuse_jacobian', 'logical', '-', '.true.', &
+               'keep the factorised Jacobian while Newton contracts well')
+      call add(t, 'numerics', 'extrapolate', 'logical', '-', '.true.', &
+               'first guess of a step by linear extrapolation of the two previous levels')
+      call add(t, 'numerics', 'min_step_fraction', 'real', '-', '0.0009765625', &
+               'the step control halves a failed step down to this fraction of dt (1/1024), then stops with a named '// &
+               'error', 1.0e-9_dp, 1.0_dp)
+      call add(t, 'numerics', 'max_wall_time', 'real', 's', '0', &
+               'wall-clock limit of the dynamics; checked before every step attempt', 0.0_dp, 1.0e7_dp, &
+               lower_open=.true., zero_means='no limit')
+      ! &output
+      call add(t, 'output', 'file', 'string', '-', "''", 'HDF5 result file (its directory must exist)', length=512, &
+               zero_means='results/<namelist stem>.h5')
+      call add(t, 'output', 'interval', 'real', 's', '0.01', 'snapshot interval; at most 1e5 snapshots', 0.0_dp, 0.0_dp, &
+               lower_open=.true., upper_from='numerics%t_end', zero_means='snapshots at t = 0 and t_end only')
+      call add(t, 'output', 'fields', 'string', '-', "'"//join(known_fields)//"'", &
+               'snapshot fields to write, separated by blanks or commas', length=256, choices=join(known_fields), &
+               word_list=.true.)
+      call add(t, 'output', 'quiet', 'logical', '-', '.false.', 'no progress lines on stderr (use in batch)')
+      call add(t, 'output', 'energy', 'logical', '-', '.false.', 'keep the energy ledger in the history')
+      call add(t, 'output', 'gnuplot', 'logical', '-', '.false.', 'also write gnuplot-ready text beside the HDF5 file')
+   end function schema_table
+
+   !> Append an entry. A number is bounded when lower and upper are given.
+   subroutine add(t, group, name, type, unit, default, doc, lower, upper, count, length, choices, word_list, &
+                  lower_open, upper_from, zero_means, default_means, note)
+      !> The table.
+      type(schema_entry), allocatable, intent(inout) :: t(:)
+      !> Group, variable, type, unit, default (as the echo writes it) and meaning.
+      character(*), intent(in) :: group, name, type, unit, default, doc
+      !> Range of a number (both or neither).
+      real(dp), intent(in), optional :: lower, upper
+      !> Elements, and the length of a string.
+      integer, intent(in), optional :: count, length
+      !> Allowed words of a string.
+      character(*), intent(in), optional :: choices
+      !> Whether the string is a list of the allowed words.
+      logical, intent(in), optional :: word_list
+      !> Whether the lower bound is excluded.
+      logical, intent(in), optional :: lower_open
+      !> Variable that gives the upper bound, what 0 stands for, what the default stands for, why the range.
+      character(*), intent(in), optional :: upper_from, zero_means, default_means, note
+      type(schema_entry) :: e
+      e%group = group
+      e%name = name
+      e%type = type
+      e%unit = unit
+      e%default = default
+      e%doc = doc
+      if (present(lower) .and. present(upper)) then
+         e%bounded = .true.
+         e%lower = lower
+         e%upper = upper
+      end if
+      if (present(count)) e%count = count
+      if (present(length)) e%length = length
+      if (present(choices)) e%choices = choices
+      if (present(word_list)) e%word_list = word_list
+      if (present(lower_open)) e%lower_open = lower_open
+      if (present(upper_from)) e%upper_from = upper_from
+      if (present(zero_means)) e%zero_means = zero_means
+      if (present(default_means)) e%default_means = default_means
+      if (present(note)) e%note = note
+      t = [t, e]
+   end subroutine add
+
+   !> The groups of the table, in order.
+   function schema_groups(t) result(groups)
+      !> The table.
+      type(schema_entry), intent(in) :: t(:)
+      character(len=16), allocatable :: groups(:)
+      integer :: i
+      allocate (groups(0))
+      do i = 1, size(t)
+         if (.not. any(groups == t(i)%group)) groups = [groups, t(i)%group]
+      end do
+   end function schema_groups
+
+   !> The indices of the entries of a group, in order.
+   function group_entries(t, group) result(indices)
+      !> The table.
+      type(schema_entry), intent(in) :: t(:)
+      !> Group name.
+      character(*), intent(in) :: group
+      integer, allocatable :: indices(:)
+      integer :: i
+      allocate (indices(0))
+      do i = 1, size(t)
+         if (t(i)%group == group) indices = [indices, i]
+      end do
+   end function group_entries
+
+   !> Index of group%name in the table (0: none).
+   pure integer function find_entry(t, group, name)
+      !> The table.
+      type(schema_entry), intent(in) :: t(:)
+      !> Group and variable name, lower case.
+      character(*), intent(in) :: group, name
+      integer :: i
+      find_entry = 0
+      do i = 1, size(t)
+         if (t(i)%group == group .and. t(i)%name == name) then
+            find_entry = i
+            return
+         end if
+      end do
+   end function find_entry
+
+   !> Whether an entry is a table (an array too long to list or sweep).
+   pure logical function is_table(e)
+      !> Entry.
+      type(schema_entry), intent(in) :: e
+      is_table = e%count == max_table_points
+   end function is_table
+
+   !> A bound as text: an integer for an integer variable, else the shortest real.
+   function bound_text(e, x) result(s)
+      !> Entry.
+      type(schema_entry), intent(in) :: e
+      !> Bound.
+      real(dp), intent(in) :: x
+      character(:), allocatable :: s
+      character(len=24) :: buf
+      if (e%type == 'integer') then
+         write (buf, '(i0)') nint(x)
+         s = trim(buf)
+      else
+         s = real_text(x)
+      end if
+   end function bound_text
+
+   !> What a variable allows, as in 'must be ...': "in [0.01, 1e5]", "> 0 and <= 1e9",
+   !> "0 (for pi d^2 / 4) or in [...]", "an integer from 3 to 100001", "one of 'tanh', 'linear'".
+   !> upper gives the value of an upper bound taken from another variable (upper_from).
+   function allowed_text(e, upper) result(s)
+      !> Entry.
+      type(schema_entry), intent(in) :: e
+      !> Effective upper bound when e%upper_from is set.
+      real(dp), intent(in), optional :: upper
+      character(:), allocatable :: s, hi
+      if (len_trim(e%choices) > 0) then
+         if (e%word_list) then
+            s = 'words from: '//comma_list(e%choices, "")
+         else
+            s = 'one of '//comma_list(e%choices, "'")
+         end if
+         return
+      end if
+      if (.not. e%bounded) then
+         s = ''
+         return
+      end if
+      if (len_trim(e%upper_from) > 0) then
+         hi = upper_name(e)
+         if (present(upper)) hi = bound_text(e, upper)//' ('//hi//')'
+      else
+         hi = bound_text(e, e%upper)
+      end if
+      if (e%type == 'integer') then
+         s = 'an integer from '//bound_text(e, e%lower)//' to '//hi
+      else if (e%lower_open) then
+         s = '> '//bound_text(e, e%lower)//' and <= '//hi
+      else
+         s = 'in ['//bound_text(e, e%lower)//', '//hi//']'
+      end if
+      if (len_trim(e%zero_means) > 0) s = '0 ('//trim(e%zero_means)//') or '//s
+   end function allowed_text
+
+   !> The variable an upper bound is taken from, as '&group name'.
+   function upper_name(e) result(s)
+      type(schema_entry), intent(in) :: e
+      character(:), allocatable :: s
+      integer :: pct
+      pct = index(e%upper_from, '%')
+      s = '&'//e%upper_from(1:pct - 1)//' '//trim(e%upper_from(pct + 1:))
+   end function upper_name
+
+   !> The table as text: 'markdown' (the input table of README.md) or 'tsv'
+   !> (group, variable, type, count, with a header line; the sweep scripts'
+   !> table). Lines end with a new line; '' for an unknown format.
+   function schema_text(format) result(text)
+      !> 'markdown' or 'tsv'.
+      character(*), intent(in) :: format
+      character(:), allocatable :: text
+      type(schema_entry), allocatable :: t(:)
+      character(len=16), allocatable :: groups(:)
+      character(len=*), parameter :: nl = new_line('a'), tab = achar(9)
+      character(:), allocatable :: heading
+      integer :: i, ig, jg
+      integer, allocatable :: mine(:)
+      character(len=24) :: buf
+      t = schema_table()
+      text = ''
+      select case (format)
+      case ('tsv')
+         text = 'group'//tab//'variable'//tab//'type'//tab//'count'//nl
+         do i = 1, size(t)
+            write (buf, '(i0)') t(i)%count
+            text = text//trim(t(i)%group)//tab//trim(t(i)%name)//tab//trim(t(i)%type)//tab//trim(buf)//nl
+         end do
+      case ('markdown')
+         text = '| group | variable | type | unit | default | allowed | meaning |'//nl// &
+                '|---|---|---|---|---|---|---|'//nl
+         groups = schema_groups(t)
+         ig = 1
+         do while (ig <= size(groups))
+            ! Groups with the same variables (&end_a, &end_b) share their rows.
+            heading = '`&'//trim(groups(ig))//'`'
+            jg = ig
+            do while (jg < size(groups))
+               if (.not. same_variables(t, groups(ig), groups(jg + 1))) exit
+               jg = jg + 1
+               heading = heading//', `&'//trim(groups(jg))//'`'
+            end do
+            mine = group_entries(t, groups(ig))
+            do i = 1, size(mine)
+               if (i > 1) heading = ''
+               text = text//markdown_row(t(mine(i)), heading)//nl
+            end do
+            ig = jg + 1
+         end do
+      end select
+   end function schema_text
+
+   !> Write the table ('markdown' or 'tsv') to a unit.
+   subroutine write_schema(unit, format, error)
+      !> Open formatted unit.
+      integer, intent(in) :: unit
+      !> 'markdown' or 'tsv'.
+      character(*), intent(in) :: format
+      !> Error for an unknown format.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: text
+      if (format /= 'markdown' .and. format /= 'tsv') then
+         call fatal_error(error, "--schema "//format//": unknown format; allowed: markdown, tsv", stat_input)
+         return
+      end if
+      text = schema_text(format)
+      write (unit, '(a)', advance='no') text
+   end subroutine write_schema
+
+   !> One row of the markdown table.
+   function markdown_row(e, heading) result(row)
+      type(schema_entry), intent(in) :: e
+      character(*), intent(in) :: heading
+      character(:), allocatable :: row, type, default, allowed
+      character(len=24) :: buf
+      type = trim(e%type)
+      if (e%count > 1) then
+         write (buf, '(i0)') e%count
+         type = type//'('//trim(buf)//')'
+      else if (e%type == 'string') then
+         write (buf, '(i0)') e%length
+         type = type//'('//trim(buf)//')'
+      end if
+      if (len_trim(e%default) == 0) then
+         default = 'no rows'
+      else
+         default = '`'//trim(e%default)//'`'
+      end if
+      if (len_trim(e%zero_means) > 0 .and. (e%default == '0' .or. e%default == "''")) &
+         default = default//' ('//trim(e%zero_means)//')'
+      if (len_trim(e%default_means) > 0) default = default//' ('//trim(e%default_means)//')'
+      allowed = allowed_text(e)
+      if (len_trim(e%choices) > 0) then
+         if (e%word_list) then
+            allowed = 'words from `'//trim(e%choices)//'`'
+         else
+            allowed = comma_list(e%choices, '`'//"'", "'"//'`')
+         end if
+      else if (e%type == 'logical') then
+         allowed = '`.true.`, `.false.`'
+      else if (len(allowed) == 0) then
+         allowed = 'text'
+      end if
+      row = '| '//heading//' | `'//trim(e%name)//'` | '//type//' | '//trim(e%unit)//' | '//default//' | '// &
+            allowed//' | '//trim(e%doc)
+      if (len_trim(e%note) > 0) row = row//' ('//trim(e%note)//')'
+      row = escape_tags(row//' |')
+   end function markdown_row
+
+   !> '<' before a letter, outside `code`, as '&lt;' (markdown would take <namelist stem> for a tag).
+   function escape_tags(text) result(s)
+      character(*), intent(in) :: text
+      character(:), allocatable :: s
+      logical :: in_code
+      integer :: i
+      s = ''
+      in_code = .false.
+      do i = 1, len(text)
+         if (text(i:i) == '`') in_code = .not. in_code
+         if (text(i:i) == '<' .and. .not. in_code .and. verify(text(i + 1:min(i + 1, len(text))), &
+                                                                'abcdefghijklmnopqrstuvwxyzABCDEFGHIJKLMNOPQRSTUVWXYZ') == 0) then
+            s = s//'&lt;'
+         else
+            s = s//text(i:i)
+         end if
+      end do
+   end function escape_tags
+
+   !> Whether two groups have the same variables (names, types, defaults, meanings).
+   logical function same_variables(t, a, b)
+      type(schema_entry), intent(in) :: t(:)
+      character(*), intent(in) :: a, b
+      integer, allocatable :: ia(:), ib(:)
+      integer :: i
+      ia = group_entries(t, a)
+      ib = group_entries(t, b)
+      same_variables = size(ia) == size(ib)
+      if (.not. same_variables) return
+      do i = 1, size(ia)
+         same_variables = t(ia(i))%name == t(ib(i))%name .and. t(ia(i))%type == t(ib(i))%type .and. &
+                          t(ia(i))%default == t(ib(i))%default .and. t(ia(i))%doc == t(ib(i))%doc
+         if (.not. same_variables) return
+      end do
+   end function same_variables
+
+   !> Blank-separated words as "'a', 'b', 'c'" (with the given quotes).
+   function comma_list(words, open, close) result(s)
+      character(*), intent(in) :: words, open
+      character(*), intent(in), optional :: close
+      character(:), allocatable :: s, last
+      integer :: i, start
+      last = open
+      if (present(close)) last = close
+      s = ''
+      start = 0
+      do i = 1, len(words) + 1
+         if (i > len(words)) then
+            if (start > 0) s = s//open//words(start:i - 1)//last
+         else if (words(i:i) == ' ') then
+            if (start > 0) s = s//open//words(start:i - 1)//last//', '
+            start = 0
+         else if (start == 0) then
+            start = i
+         end if
+      end do
+      if (len(s) >= 2) then
+         if (s(len(s) - 1:) == ', ') s = s(1:len(s) - 2)
+      end if
+   end function comma_list
+
+   !> Names joined by blanks.
+   function join(names) result(s)
+      character(len=*), intent(in) :: names(:)
+      character(:), allocatable :: s
+      integer :: i
+      s = trim(names(1))
+      do i = 2, size(names)
+         s = s//' '//trim(names(i))
+      end do
+   end function join
+end module xcable_io_schema

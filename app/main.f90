@@ -1,38 +1,35 @@
-!> xcable: rupture dynamics of a highly extensible cable from a namelist.
+!> xcable: dynamics of a highly extensible cable from a namelist.
 !>
 !>   xcable case.nml
-!>   xcable --check case.nml   (validate the case and exit)
+!>   xcable --check case.nml        (validate the case, solve its statics, and exit)
 !>   xcable --schema markdown|tsv   (the input table: README's, or the sweep scripts')
 !>
-!> Exit codes: 0 complete; 1 numerical failure (the result file says 'failed',
-!> with the reason and time); 2 bad input or output path (no result file).
+!> Exit codes: 0 complete (warnings, if any, on stderr and in the file);
+!> 1 numerical failure (the result file says 'failed', with the reason and
+!> the time; or no file when the statics fails); 2 bad input or output path
+!> (no result file).
 program xcable_main
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, stat_input, stat_io
    use xcable_strings, only: str
    use xcable_io_input, only: case_config, read_config, config_text
    use xcable_io_schema, only: write_schema
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model
-   use xcable_solver_newton, only: newton_options
-   use xcable_statics, only: static_state, solve_statics
-   use xcable_dynamics, only: dynamics_options, run_history, run_summary, run_rupture
-   use xcable_io_output, only: result_file
+   use xcable_simulation, only: simulation
+   use xcable_run_records, only: run_summary, run_history, static_info
+   use xcable_app_output, only: app_output
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
 
    type(case_config) :: config
-   type(cable_model) :: model
-   real(dp), allocatable :: s(:)
-   type(newton_options) :: newton
-   type(dynamics_options) :: dynamics
-   type(static_state) :: state
-   type(run_history) :: history
-   type(run_summary) :: summary
-   type(result_file) :: output
+   type(simulation) :: sim
+   type(app_output) :: output
    type(error_type), allocatable :: error, write_error
+   type(run_summary), pointer :: summary
+   type(run_history), pointer :: history
+   type(static_info), pointer :: info
    character(len=4096) :: path
-   integer :: nargs
+   integer :: nargs, steps
+   real(dp) :: dt
    logical :: check_only
    character(len=*), parameter :: usage = 'usage: xcable [--check] <case.nml>   (--check: validate only; '// &
                                           'see README.md for the namelist groups); xcable --schema markdown|tsv'
@@ -56,39 +53,46 @@ program xcable_main
 
    call read_config(trim(path), config, error)
    if (allocated(error)) call fail_input(error)
-   call setup_case(config, model, s, newton, dynamics, error)
-   if (allocated(error)) call fail_input(error)
+   call sim%prepare(config, error)
+   if (allocated(error)) then
+      if (error%stat == stat_input .or. error%stat == stat_io) call fail_input(error)
+      write (error_unit, '(a)') 'xcable: failed before the dynamics (no result file): '//error%message
+      stop 1, quiet=.true.
+   end if
+   call sim%time_step(dt, steps)
    if (check_only) then
-      write (output_unit, '(a)') trim(path)//': ok'
+      write (output_unit, '(a)') trim(path)//': ok ('//trim(config%scheme)//' scheme, '//str(config%nodes)// &
+         ' nodes, dt '//str(dt)//' s, '//str(steps)//' steps)'
       stop
    end if
 
-   call output%create(trim(config%file), model, s, config%fields, config_text(config), trim(path), config%gnuplot, error)
+   output%quiet = config%quiet
+   call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), config%gnuplot, &
+                      trim(config%scheme), sim%terms, sim%piece_starts(), error)
    if (allocated(error)) then
       call output%finish('failed', error%message)
       call fail_input(error)
    end if
+   info => sim%static()
+   if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(info%span)// &
+      ' m, sag '//str(info%sag)//' m; dynamics with the '//trim(config%scheme)//' scheme, '// &
+      str(config%nodes)//' nodes, dt '//str(dt)//' s'
 
-   call solve_statics(model, s, config%tension, newton, state, error)
-   if (allocated(error)) call fail_run(error, 0.0_dp)
-   call output%write_static(state, error)
-   if (allocated(error)) call fail_run(error, 0.0_dp)
-   if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(state%span)//' m, sag '// &
-      str(state%sag)//' m, '//str(state%newton%iterations)//' Newton iterations; dynamics with '// &
-      str(config%nodes)//' nodes, dt '//str(dynamics%dt)//' s'
-
-   call run_rupture(model, s, state%y, dynamics, history, summary, error, output)
+   call sim%run(output, error)
+   summary => sim%summary()
+   history => sim%history()
    ! A failed run keeps its history and summary too; the first error is reported.
    call output%write_history(history, write_error)
    if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
-   call output%write_summary(summary, write_error)
+   call output%write_summary(summary, history%end_labels, write_error)
    if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
    if (allocated(error)) call fail_run(error, summary%time_reached)
-   call output%finish('complete', error=error)
+   call output%finish('complete', warnings=summary%warnings, error=error)
    if (allocated(error)) then
       write (error_unit, '(a)') 'xcable: error: '//error%message
       stop 1, quiet=.true.
    end if
+   call print_warnings(summary%warnings)
    if (.not. config%quiet) write (error_unit, '(a)') 'xcable: complete in '//str(summary%wall_time)//' s: '// &
       str(summary%steps)//' steps, peak end speed '//str(summary%peak_end_speed)//' m/s, results in '//trim(config%file)
 
@@ -106,6 +110,22 @@ contains
       stop
    end subroutine schema_option
 
+   !> One line per warning on stderr.
+   subroutine print_warnings(text)
+      character(*), intent(in) :: text
+      integer :: start, nl
+      start = 1
+      do while (start <= len(text))
+         nl = index(text(start:), new_line('a'))
+         if (nl == 0) then
+            write (error_unit, '(a)') 'xcable: warning: '//text(start:)
+            exit
+         end if
+         write (error_unit, '(a)') 'xcable: warning: '//text(start:start + nl - 2)
+         start = start + nl
+      end do
+   end subroutine print_warnings
+
    !> Bad input: one line on stderr, exit code 2.
    subroutine fail_input(err)
       type(error_type), intent(in) :: err
@@ -117,8 +137,9 @@ contains
    subroutine fail_run(err, time)
       type(error_type), intent(in) :: err
       real(dp), intent(in) :: time
-      call output%finish('failed', err%message, time)
+      call output%finish('failed', err%message, time, summary%warnings)
       write (error_unit, '(a)') 'xcable: failed at t = '//str(time)//' s: '//err%message
+      call print_warnings(summary%warnings)
       if (err%stat == stat_input .or. err%stat == stat_io) stop 2, quiet=.true.
       stop 1, quiet=.true.
    end subroutine fail_run

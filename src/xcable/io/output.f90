@@ -317,6 +317,7 @@ contains
       integer(hid_t) :: group
       integer :: hdferr, j
       logical :: ok
+      character(:), allocatable :: label
       call h5gcreate_f(self%file, 'summary', group, hdferr)
       ok = hdferr == 0
       if (ok) then
@@ -344,7 +345,8 @@ contains
          if (allocated(summary%warnings)) call put_text_attr(group, 'warnings', summary%warnings, ok)
          if (allocated(summary%ends)) then
             do j = 1, size(summary%ends)
-               associate (e => summary%ends(j), label => trim(end_labels(j)))
+               label = trim(end_labels(j))
+               associate (e => summary%ends(j))
                   call put_real_attr(group, label//'_peak_speed', e%peak_speed, ok)
                   call put_real_attr(group, label//'_peak_speed_time', e%peak_speed_time, ok)
                   call put_real_attr(group, label//'_min_tension', e%min_tension, ok)

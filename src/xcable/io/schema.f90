@@ -250,7 +250,7 @@ contains
       integer :: i
       allocate (groups(0))
       do i = 1, size(t)
-         if (.not. any(groups == t(i)%group)) groups = [groups, t(i)%group]
+         if (.not. any(groups == t(i)%group)) groups = [character(len=16) :: groups, t(i)%group]
       end do
    end function schema_groups
 

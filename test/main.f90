@@ -9,6 +9,10 @@ program xcable_tests
    use suite_input, only: collect_input
    use suite_stability, only: collect_stability
    use suite_output, only: collect_output
+   use suite_golden, only: collect_golden
+   use suite_rod, only: collect_rod
+   use suite_rod_statics, only: collect_rod_statics
+   use suite_rod_dynamics, only: collect_rod_dynamics
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -22,7 +26,11 @@ program xcable_tests
              new_testsuite('dynamics', collect_dynamics), &
              new_testsuite('input', collect_input), &
              new_testsuite('stability', collect_stability), &
-             new_testsuite('output', collect_output)]
+             new_testsuite('output', collect_output), &
+             new_testsuite('golden', collect_golden), &
+             new_testsuite('rod', collect_rod), &
+             new_testsuite('rod_statics', collect_rod_statics), &
+             new_testsuite('rod_dynamics', collect_rod_dynamics)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

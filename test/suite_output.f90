@@ -3,10 +3,7 @@
 module suite_output
    use xcable_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_fixtures, only: paper_case
-   use xcable_model_equations, only: cable_model
-   use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options, run_history, run_summary
+   use xcable_run_records, only: run_history, run_summary
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
                              put_text_attr
    use xcable_io_output, only: result_file
@@ -79,22 +76,18 @@ contains
    subroutine test_result_file(error)
       type(error_type), allocatable, intent(out) :: error
       character(*), parameter :: path = 'build/test_output_result.h5'
-      type(cable_model) :: model
-      real(dp), allocatable :: s(:)
-      type(newton_options) :: newton
-      type(dynamics_options) :: dynamics
       type(result_file) :: output
       type(run_history) :: history
       type(run_summary) :: summary
       type(error_type), allocatable :: write_error
       integer(hid_t) :: file
-      integer :: hdferr
+      integer :: hdferr, i
       character(:), allocatable :: text
-      call paper_case(180.0e3_dp, 11, model, s, newton, dynamics, error)
+      call output%create(path, [(real(i, dp), i=0, 10)], 'tension', '&static tension = 180000 /', 'test.nml', &
+                         .false., 'rod', 'strain', [integer ::], error)
       if (allocated(error)) return
-      call output%create(path, model, s, 'tension', '&static tension = 180000 /', 'test.nml', .false., error)
-      if (allocated(error)) return
-      call history%reserve(4, .false.)
+      call history%reserve(4, 2, .false.)
+      history%end_labels = [character(len=8) :: 'end_a', 'end_b']
       call output%write_history(history, write_error)
       call check(error, .not. allocated(write_error), 'the first /history failed')
       if (allocated(error)) return
@@ -103,7 +96,7 @@ contains
       if (allocated(error)) return
       call check(error, index(write_error%message, '/history') > 0, 'message: '//write_error%message)
       if (allocated(error)) return
-      call output%write_summary(summary, write_error)
+      call output%write_summary(summary, history%end_labels, write_error)
       call check(error, .not. allocated(write_error), 'the summary failed')
       if (allocated(error)) return
       ! Still running: read it while the result file is open (HDF5 allows a

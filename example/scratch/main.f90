@@ -30,6 +30,7 @@ program scratch
    opt%newton%tolerance = 1.0e-7_dp
    call get_command_argument(5, arg); read (arg, *) opt%newton%reuse_jacobian
    call get_command_argument(6, arg); read (arg, *) opt%mu
+   call get_command_argument(7, arg); read (arg, *) opt%mu2
    call run%prepare(scene, opt, err)
    if (allocated(err)) then
       print *, 'prepare: ', err%message

@@ -32,7 +32,7 @@ module xcable_rod_run
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
    use xcable_scene, only: scene_type, scene_grid
-   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, perp, cross2
+   use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2
    use xcable_ends_end, only: end_condition
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
@@ -61,8 +61,9 @@ module xcable_rod_run
       real(dp) :: dt = 0, courant = 1, t_end = 0.16_dp
       !> Time weight of the new level (1/2: energy-conserving).
       real(dp) :: theta = 0.5_dp
-      !> Share of the averaged mass matrix (1: averaged, 0: lumped).
-      real(dp) :: mu = 1
+      !> Share of the averaged mass matrix (1: averaged, 0: lumped), and the weight of the
+      !> second-difference kinetic energy (model/rod.f90).
+      real(dp) :: mu = 1, mu2 = 0
       !> Snapshot interval, s (0: only t_end).
       real(dp) :: interval = 0.01_dp
       !> Newton controls of a time step (tolerance, iteration limit, reuse).
@@ -179,7 +180,7 @@ contains
       end if
       allocate (self%pieces(1))
       call self%pieces(1)%problem%piece%init(self%s, scene%mass, scene%weight, scene%ei, scene%gravity, options%mu, &
-                                              scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp))
+                                              scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp), options%mu2)
       static_newton = options%newton
       call solve_rod_statics(scene, self%pieces(1)%problem, static_newton, self%static, error)
       if (allocated(error)) return
@@ -194,7 +195,7 @@ contains
                                                                   /piece%ds - 1))), 1.0_dp)
          c_max = 0
          do c = 1, n - 1
-            c_max = max(c_max, wave_speed(piece%law, piece%mass, norm2(self%static%r(:, c + 1) - self%static%r(:, c)) &
+            c_max = max(c_max, wave_speed(piece%law, piece%mass_per_length, norm2(self%static%r(:, c + 1) - self%static%r(:, c)) &
                                           /piece%ds(c) - 1))
          end do
          ds_max = maxval(piece%ds)
@@ -284,10 +285,14 @@ contains
             do k = 1, n
                col = cols(k)
                if (k == 1) then
-                  fields(col, 1) = ten(1); fields(col, 2) = shear(1); fields(col, 3) = eps(1)
+                  fields(col, 1) = end_value(ten, 1)
+                  fields(col, 2) = end_value(shear, 1)
+                  fields(col, 3) = end_value(eps, 1)
                   e = r(:, 2) - r(:, 1)
                else if (k == n) then
-                  fields(col, 1) = ten(n - 1); fields(col, 2) = shear(n - 1); fields(col, 3) = eps(n - 1)
+                  fields(col, 1) = end_value(ten, 2)
+                  fields(col, 2) = end_value(shear, 2)
+                  fields(col, 3) = end_value(eps, 2)
                   e = r(:, n) - r(:, n - 1)
                else
                   fields(col, 1) = 0.5_dp*(ten(k - 1) + ten(k))
@@ -310,6 +315,25 @@ contains
          end associate
       end do
    end subroutine run_fields
+
+   !> Value at an end node (side 1: node 1, side 2: node n) of a cell field:
+   !> linear extrapolation from the two nearest cells (second order; the
+   !> end cell's own value when the piece has one cell).
+   pure real(dp) function end_value(cells, side)
+      !> Cell values.
+      real(dp), intent(in) :: cells(:)
+      !> 1 or 2.
+      integer, intent(in) :: side
+      integer :: m
+      m = size(cells)
+      if (m < 2) then
+         end_value = cells(1)
+      else if (side == 1) then
+         end_value = 1.5_dp*cells(1) - 0.5_dp*cells(2)
+      else
+         end_value = 1.5_dp*cells(m) - 0.5_dp*cells(m - 1)
+      end if
+   end function end_value
 
    !> Integrate to t_end, sending snapshots to the observer. On error the
    !> history and summary hold what was done.
@@ -682,12 +706,7 @@ contains
                slot = run_piece%end_slot(side)
                if (slot == 0) cycle
                node = merge(1, piece%n, side == 1)
-               if (side == 1) then
-                  e = run_piece%r(:, 2) - run_piece%r(:, 1)
-               else
-                  e = run_piece%r(:, piece%n) - run_piece%r(:, piece%n - 1)
-               end if
-               ten = piece%law%tension(norm2(e)/piece%ds(merge(1, piece%n - 1, side == 1)) - 1)
+               ten = end_tension(piece, run_piece%r, side)
                if (side == 1) then
                   if (piece%end_a%held()) then
                      f = run_piece%reaction(:, 1)
@@ -716,6 +735,28 @@ contains
          self%history%energy(7, i) = sum(en) - self%work + self%dissipation
       end if
    end subroutine record
+
+   !> Tension at an end of a piece (side 1: node 1, side 2: node n), extrapolated from its two end cells.
+   function end_tension(piece, r, side) result(t_end)
+      type(rod_piece), intent(in) :: piece
+      real(dp), intent(in) :: r(:, :)
+      integer, intent(in) :: side
+      real(dp) :: t_end, cells(2)
+      integer :: n
+      n = piece%n
+      if (side == 1) then
+         cells(1) = piece%law%tension(norm2(r(:, 2) - r(:, 1))/piece%ds(1) - 1)
+         if (n > 2) cells(2) = piece%law%tension(norm2(r(:, 3) - r(:, 2))/piece%ds(2) - 1)
+      else
+         cells(1) = piece%law%tension(norm2(r(:, n) - r(:, n - 1))/piece%ds(n - 1) - 1)
+         if (n > 2) cells(2) = piece%law%tension(norm2(r(:, n - 1) - r(:, n - 2))/piece%ds(n - 2) - 1)
+      end if
+      if (n > 2) then
+         t_end = end_value(cells, 1)
+      else
+         t_end = cells(1)
+      end if
+   end function end_tension
 
    !> Fields at time ts inside the step just accepted (from self%t to the new
    !> level): cubic Hermite in the positions and velocities of its two ends.
@@ -802,10 +843,10 @@ contains
       call move_alloc(self%pieces, old)
       allocate (self%pieces(2))
       associate (whole => old(1)%problem%piece)
-         call self%pieces(1)%problem%piece%init(self%s(1:kb), whole%mass, whole%weight, whole%ei, whole%gravity, &
-                                                 whole%mu, whole%law, whole%end_a, cut_a, whole%tension_ref)
-         call self%pieces(2)%problem%piece%init(self%s(kb:n), whole%mass, whole%weight, whole%ei, whole%gravity, &
-                                                 whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref)
+         call self%pieces(1)%problem%piece%init(self%s(1:kb), whole%mass_per_length, whole%weight, whole%ei, whole%gravity, &
+                                                 whole%mu, whole%law, whole%end_a, cut_a, whole%tension_ref, whole%mu2)
+         call self%pieces(2)%problem%piece%init(self%s(kb:n), whole%mass_per_length, whole%weight, whole%ei, whole%gravity, &
+                                                 whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref, whole%mu2)
       end associate
       self%pieces(1)%r = old(1)%r(:, 1:kb)
       self%pieces(1)%v = old(1)%v(:, 1:kb)
@@ -852,11 +893,12 @@ contains
             end do
             held_end = end_is_held(self, j)
             if (held_end) then
-               f0 = norm2(self%history%ends(6:7, j, 0))
+               ! The 1 % drop of the tension at the end.
+               f0 = self%history%ends(5, j, 0)
                do i = 1, n
-                  fi = norm2(self%history%ends(6:7, j, i))
+                  fi = self%history%ends(5, j, i)
                   if (fi <= 0.99_dp*f0) then
-                     f1 = norm2(self%history%ends(6:7, j, i - 1))
+                     f1 = self%history%ends(5, j, i - 1)
                      e%front_arrival_time = self%history%time(i - 1) + (self%history%time(i) - self%history%time(i - 1)) &
                                             *(0.99_dp*f0 - f1)/(fi - f1)
                      exit

@@ -21,6 +21,10 @@ module xcable_simulation
    private
    public :: simulation, run_options_from_config
 
+   !> Inertia kept by the shortest wave (two cells) with the averaged mass
+   !> matrix, as a fraction of the lumped one (model/rod.f90, docs/numerics.md).
+   real(dp), parameter, public :: averaged_sawtooth_mass = 0.1_dp
+
    !> A run of a case.
    type :: simulation
       !> 'rod' or 'box'.
@@ -61,6 +65,7 @@ contains
       options%t_end = config%t_end
       options%theta = config%theta
       options%mu = merge(1.0_dp, 0.0_dp, trim(config%mass_matrix) == 'averaged')
+      options%mu2 = merge(averaged_sawtooth_mass, 0.0_dp, trim(config%mass_matrix) == 'averaged')
       options%interval = config%interval
       options%newton%tolerance = config%newton_tol
       options%newton%max_iterations = config%newton_max_iter
@@ -80,6 +85,11 @@ contains
       !> Error: stat_input for an inconsistent case, stat_numerics when the statics fails.
       type(error_type), allocatable, intent(out) :: error
       type(scene_type) :: scene
+      type(rod_run) :: fresh_rod
+      type(box_run) :: fresh_box
+      ! A simulation may be prepared again for another case.
+      self%rod = fresh_rod
+      self%box = fresh_box
       self%scheme = trim(config%scheme)
       select case (self%scheme)
       case ('box')

@@ -73,7 +73,7 @@ module xcable_model_rod
       !> h_k = mean length of the two cells at an interior node (0 at the ends), m.
       real(dp), allocatable :: dual(:)
       !> Mass and weight per unstretched length, kg/m and N/m; bending stiffness EI, N m^2; gravity, m/s^2.
-      real(dp) :: mass = 0, weight = 0, ei = 0, gravity = 0
+      real(dp) :: mass_per_length = 0, weight = 0, ei = 0, gravity = 0, mu2 = 0
       !> Share of the averaged mass matrix (1: averaged, 0: lumped).
       real(dp) :: mu = 1
       !> Tension-strain law.
@@ -85,12 +85,14 @@ module xcable_model_rod
       ! Work arrays, allocated once by init.
       !> Old level: positions, velocities, M V, cell vectors, lengths, turning angles.
       real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
-      !> New level: cell vectors, lengths, turning angles, cell forces.
-      real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :)
+      !> New level: cell vectors, lengths, turning angles, cell forces; work (2, n).
+      real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :)
       !> Cell quantities of the Jacobian: 2x2 blocks dN_c/de_c' for c' = c-1, c, c+1.
       real(dp), allocatable :: block(:, :, :, :)
-      !> Diagonal and off-diagonal (k, k+1) entries of the mass matrix, kg.
-      real(dp), allocatable :: mass_diag(:), mass_off(:)
+      !> Mass matrix, symmetric with two off-diagonals: mass(j, k) = M(k, k+j), kg.
+      real(dp), allocatable :: mass(:, :)
+      !> Velocities of the last evaluated new level (2, n), m/s.
+      real(dp), allocatable :: v1(:, :)
    contains
       !> Set up grid, material and work arrays.
       procedure :: init => rod_init
@@ -164,7 +166,7 @@ contains
    end function cross2
 
    !> Set up a piece on the node arc lengths s.
-   subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref)
+   subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref, mu2)
       !> Piece.
       class(rod_piece), intent(inout) :: self
       !> Node arc lengths, increasing, m.
@@ -179,7 +181,10 @@ contains
       class(end_condition), intent(in) :: end_a, end_b
       !> Reference tension of the row scaling, N.
       real(dp), intent(in) :: tension_ref
+      !> Weight of the second-difference kinetic energy (0 if absent).
+      real(dp), intent(in), optional :: mu2
       integer :: n, k
+      real(dp) :: w
       n = size(s)
       self%n = n
       self%s = s
@@ -192,11 +197,13 @@ contains
       do k = 2, n - 1
          self%dual(k) = 0.5_dp*(self%ds(k - 1) + self%ds(k))
       end do
-      self%mass = mass
+      self%mass_per_length = mass
       self%weight = weight
       self%ei = ei
       self%gravity = gravity
       self%mu = mu
+      self%mu2 = 0
+      if (present(mu2)) self%mu2 = mu2
       if (allocated(self%law)) deallocate (self%law)
       allocate (self%law, source=law)
       if (allocated(self%end_a)) deallocate (self%end_a)
@@ -206,16 +213,28 @@ contains
       self%tension_ref = tension_ref
       self%length_ref = sum(self%ds)/(n - 1)
       allocate (self%r0(2, n), self%v0(2, n), self%mv0(2, n), self%e0(2, n - 1), self%l0(n - 1), self%th0(n))
-      allocate (self%e1(2, n - 1), self%l1(n - 1), self%th1(n), self%force(2, n - 1))
-      allocate (self%block(2, 2, -1:1, n - 1), self%mass_diag(n), self%mass_off(n - 1))
+      allocate (self%e1(2, n - 1), self%l1(n - 1), self%th1(n), self%force(2, n - 1), self%force_node(2, n))
+      allocate (self%block(2, 2, -1:1, n - 1), self%mass(0:2, n), self%v1(2, n))
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
-      self%mass_diag = (1 - mu)*mass*self%lumped
-      self%mass_diag(1) = self%mass_diag(1) + end_a%point_mass()
-      self%mass_diag(n) = self%mass_diag(n) + end_b%point_mass()
-      self%mass_off = 0.25_dp*mu*mass*self%ds
-      self%mass_diag(1:n - 1) = self%mass_diag(1:n - 1) + 0.25_dp*mu*mass*self%ds
-      self%mass_diag(2:n) = self%mass_diag(2:n) + 0.25_dp*mu*mass*self%ds
+      self%v1 = 0
+      self%mass = 0
+      self%mass(0, :) = (1 - mu)*mass*self%lumped
+      self%mass(0, 1) = self%mass(0, 1) + end_a%point_mass()
+      self%mass(0, n) = self%mass(0, n) + end_b%point_mass()
+      self%mass(1, 1:n - 1) = 0.25_dp*mu*mass*self%ds
+      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mass*self%ds
+      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mass*self%ds
+      ! Kinetic energy of the second differences of velocity, w |V_k-1 - 2 V_k + V_k+1|^2 / 2 per interior node.
+      do k = 2, n - 1
+         w = mu2*mass*self%dual(k)/16
+         self%mass(0, k - 1) = self%mass(0, k - 1) + w
+         self%mass(0, k) = self%mass(0, k) + 4*w
+         self%mass(0, k + 1) = self%mass(0, k + 1) + w
+         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
+         self%mass(1, k) = self%mass(1, k) - 2*w
+         self%mass(2, k - 1) = self%mass(2, k - 1) + w
+      end do
    end subroutine rod_init
 
    !> Number of unknowns (two per node).
@@ -261,13 +280,15 @@ contains
       real(dp), intent(in) :: v(:, :)
       !> M V (2, n), kg m/s.
       real(dp), intent(out) :: mv(:, :)
-      integer :: k
+      integer :: k, j
       do k = 1, self%n
-         mv(:, k) = self%mass_diag(k)*v(:, k)
+         mv(:, k) = self%mass(0, k)*v(:, k)
       end do
-      do k = 1, self%n - 1
-         mv(:, k) = mv(:, k) + self%mass_off(k)*v(:, k + 1)
-         mv(:, k + 1) = mv(:, k + 1) + self%mass_off(k)*v(:, k)
+      do j = 1, 2
+         do k = 1, self%n - j
+            mv(:, k) = mv(:, k) + self%mass(j, k)*v(:, k + j)
+            mv(:, k + j) = mv(:, k + j) + self%mass(j, k)*v(:, k)
+         end do
       end do
    end subroutine rod_mass_times
 
@@ -287,11 +308,14 @@ contains
          en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
       end do
       do k = 1, self%n
-         en(2) = en(2) + 0.5_dp*self%mass_diag(k)*dot_product(v(:, k), v(:, k))
+         en(2) = en(2) + 0.5_dp*self%mass(0, k)*dot_product(v(:, k), v(:, k))
          en(4) = en(4) + node_weight(self, k)*r(2, k)
       end do
       do k = 1, self%n - 1
-         en(2) = en(2) + self%mass_off(k)*dot_product(v(:, k), v(:, k + 1))
+         en(2) = en(2) + self%mass(1, k)*dot_product(v(:, k), v(:, k + 1))
+      end do
+      do k = 1, self%n - 2
+         en(2) = en(2) + self%mass(2, k)*dot_product(v(:, k), v(:, k + 2))
       end do
       do k = 2, self%n - 1
          en(3) = en(3) + 0.5_dp*self%ei*th(k)**2/self%dual(k)
@@ -512,15 +536,9 @@ contains
          residual(2*n - 1:2*n) = residual(2*n - 1:2*n) - fext
          ! Inertia: [M (V^n+1 - V^n)] / dt with V^n+1 from the new positions.
          rate = 1/(theta*t2*t2)
-         do k = 1, n
-            vk = ((x(2*k - 1:2*k) - self%r0(:, k))/t2 - (1 - theta)*self%v0(:, k))/theta
-            mv = self%mass_diag(k)*vk
-            if (k > 1) mv = mv + self%mass_off(k - 1)*(((x(2*k - 3:2*k - 2) - self%r0(:, k - 1))/t2 &
-                                                         - (1 - theta)*self%v0(:, k - 1))/theta)
-            if (k < n) mv = mv + self%mass_off(k)*(((x(2*k + 1:2*k + 2) - self%r0(:, k + 1))/t2 &
-                                                     - (1 - theta)*self%v0(:, k + 1))/theta)
-            residual(2*k - 1:2*k) = residual(2*k - 1:2*k) + (mv - self%mv0(:, k))/t2
-         end do
+         self%v1 = ((reshape(x, [2, n]) - self%r0)/t2 - (1 - theta)*self%v0)/theta
+         call self%mass_times(self%v1, self%force_node)
+         residual = residual + reshape((self%force_node - self%mv0)/t2, [2*n])
       else
          t_new = t1
          residual(1:2) = residual(1:2) - self%end_a%applied_force(t1)
@@ -565,15 +583,13 @@ contains
             if (k == n .and. held_b) cycle
             do a = 1, 2
                row = 2*(k - 1) + a
-               jacobian%ab(band0, row) = jacobian%ab(band0, row) + self%mass_diag(k)*rate*scale
-               if (k > 1) then
-                  col = row - 2
-                  jacobian%ab(band0 + 2, col) = jacobian%ab(band0 + 2, col) + self%mass_off(k - 1)*rate*scale
-               end if
-               if (k < n) then
-                  col = row + 2
-                  jacobian%ab(band0 - 2, col) = jacobian%ab(band0 - 2, col) + self%mass_off(k)*rate*scale
-               end if
+               do j = -2, 2
+                  node = k + j
+                  if (node < 1 .or. node > n) cycle
+                  col = row + 2*j
+                  jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                        + self%mass(abs(j), min(k, node))*rate*scale
+               end do
             end do
          end do
       end if
@@ -606,19 +622,19 @@ contains
       real(dp), intent(in) :: x(:)
       !> Step (0: statics) and time weight.
       real(dp), intent(in) :: dt, theta
-      real(dp) :: f(2), vk(2), mv(2)
-      integer :: n
+      real(dp) :: f(2), mv(2)
+      integer :: n, j
       n = self%n
       f = [0.0_dp, node_weight(self, k)]
       if (k < n) f = f - self%force(:, k)
       if (k > 1) f = f + self%force(:, k - 1)
       if (dt > 0) then
-         vk = ((x(2*k - 1:2*k) - self%r0(:, k))/dt - (1 - theta)*self%v0(:, k))/theta
-         mv = self%mass_diag(k)*vk
-         if (k > 1) mv = mv + self%mass_off(k - 1)*(((x(2*k - 3:2*k - 2) - self%r0(:, k - 1))/dt &
-                                                      - (1 - theta)*self%v0(:, k - 1))/theta)
-         if (k < n) mv = mv + self%mass_off(k)*(((x(2*k + 1:2*k + 2) - self%r0(:, k + 1))/dt &
-                                                  - (1 - theta)*self%v0(:, k + 1))/theta)
+         ! (M V^n+1)_k with V^n+1 of the last evaluation.
+         mv = self%mass(0, k)*self%v1(:, k)
+         do j = 1, 2
+            if (k + j <= n) mv = mv + self%mass(j, k)*self%v1(:, k + j)
+            if (k - j >= 1) mv = mv + self%mass(j, k - j)*self%v1(:, k - j)
+         end do
          f = f + (mv - self%mv0(:, k))/dt
       end if
    end function rod_reaction

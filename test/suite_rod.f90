@@ -1,0 +1,153 @@
+!> The discrete rod (model/rod.f90): its analytic Jacobians (statics and time
+!> steps) against central differences entry by entry, through the generic
+!> check every model shares; and the discrete gradient, which must give the
+!> exact change of the stored energy for any two states.
+module suite_rod
+   use xcable_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
+   use xcable_strings, only: str
+   use xcable_material_law, only: tanh_law, linear_law
+   use xcable_material_tension_only, only: new_tension_only
+   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
+   use xcable_ends_fixed, only: fixed_end
+   use xcable_ends_force, only: force_end
+   use xcable_ends_mass, only: mass_end
+   use xcable_ends_motion, only: motion_end
+   use xcable_solver_banded, only: band_matrix
+   use xcable_fdcheck, only: check_jacobian
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   implicit none
+   private
+   public :: collect_rod
+
+   integer, parameter :: n = 9
+
+contains
+
+   subroutine collect_rod(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('jacobian_statics', test_static_jacobian), &
+               new_unittest('jacobian_step_averaged', test_step_averaged), &
+               new_unittest('jacobian_step_lumped_theta_0.7', test_step_lumped), &
+               new_unittest('jacobian_step_mass_ends_tension_only', test_step_mass_ends), &
+               new_unittest('discrete_gradient_exact', test_discrete_gradient)]
+   end subroutine collect_rod
+
+   !> A piece of 9 nodes: end a held (fixed or moving), end b loaded (force
+   !> ramp with a couple, or a point mass); a curved state with a strongly
+   !> compressed and rotated cell.
+   subroutine make_piece(p, x, r0, v0, mu, mu2, tension_only, mass_at_b)
+      type(rod_problem), intent(out) :: p
+      real(dp), allocatable, intent(out) :: x(:), r0(:, :), v0(:, :)
+      real(dp), intent(in) :: mu, mu2
+      logical, intent(in) :: tension_only, mass_at_b
+      type(force_end) :: fb
+      real(dp) :: s(n)
+      integer :: k
+      s = [(6.0_dp*(k - 1)/(n - 1), k=1, n)]
+      fb = force_end(history='ramp', force0=[1000.0_dp, 200.0_dp], couple0=3.0_dp, duration=0.01_dp)
+      if (mass_at_b) then
+         if (tension_only) then
+            call p%piece%init(s, 2.2_dp, 22.0_dp, 70.6_dp, 9.81_dp, mu, new_tension_only(tanh_law()), &
+                              motion_end(amplitude=0.3_dp, period=0.5_dp, direction=[0.6_dp, 0.8_dp]), &
+                              mass_end(mass=5.0_dp), 1.0e4_dp, mu2)
+         else
+            call p%piece%init(s, 2.2_dp, 22.0_dp, 70.6_dp, 9.81_dp, mu, linear_law(ea=4.5e5_dp), &
+                              motion_end(amplitude=0.3_dp, period=0.5_dp, direction=[0.6_dp, 0.8_dp]), &
+                              mass_end(mass=5.0_dp), 1.0e4_dp, mu2)
+         end if
+      else
+         call p%piece%init(s, 2.2_dp, 22.0_dp, 70.6_dp, 9.81_dp, mu, tanh_law(), fixed_end(point=[0.0_dp, 0.0_dp]), fb, &
+                           1.0e4_dp, mu2)
+      end if
+      allocate (x(2*n), r0(2, n), v0(2, n))
+      do k = 1, n
+         r0(:, k) = [s(k)*1.02_dp, 0.3_dp*sin(1.3_dp*s(k))]
+         v0(:, k) = [0.5_dp*cos(real(k, dp)), -0.2_dp*k]
+         x(2*k - 1:2*k) = r0(:, k) + [0.01_dp*sin(2.0_dp*k), 0.02_dp*cos(3.0_dp*k)]
+      end do
+      ! A cell squeezed to 30 % and turned by about 90 degrees, another stretched.
+      x(11:12) = x(11:12) + [-0.4_dp, 0.3_dp]
+      x(15:16) = x(15:16) + [0.1_dp, -0.05_dp]
+   end subroutine make_piece
+
+   subroutine test_static_jacobian(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :)
+      real(dp) :: worst
+      call make_piece(p, x, r0, v0, 1.0_dp, 0.0_dp, .false., .false.)
+      p%dt = 0
+      p%t0 = 0.003_dp
+      call check_jacobian(p, x, rod_kl, rod_ku, spread(1.0e-6_dp, 1, 2*n), 1.0e-6_dp, worst, error)
+      write (output_unit, '(4x,a,es9.2)') 'statics: largest deviation from central differences / row scale', worst
+   end subroutine test_static_jacobian
+
+   subroutine test_step_averaged(error)
+      type(error_type), allocatable, intent(out) :: error
+      call step_case(error, 1.0_dp, 0.0_dp, 0.5_dp, .false., .false., 'averaged mass, theta 0.5')
+   end subroutine test_step_averaged
+
+   subroutine test_step_lumped(error)
+      type(error_type), allocatable, intent(out) :: error
+      call step_case(error, 0.0_dp, 0.0_dp, 0.7_dp, .false., .false., 'lumped mass, theta 0.7')
+   end subroutine test_step_lumped
+
+   subroutine test_step_mass_ends(error)
+      type(error_type), allocatable, intent(out) :: error
+      call step_case(error, 1.0_dp, 0.3_dp, 0.5_dp, .true., .true., 'moving end a, point mass at b, tension only')
+      if (allocated(error)) return
+      call step_case(error, 0.5_dp, 0.0_dp, 0.5_dp, .false., .true., 'moving end a, point mass at b, linear law')
+   end subroutine test_step_mass_ends
+
+   subroutine step_case(error, mu, mu2, theta, tension_only, mass_at_b, what)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), intent(in) :: mu, mu2, theta
+      logical, intent(in) :: tension_only, mass_at_b
+      character(*), intent(in) :: what
+      type(rod_problem) :: p
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :)
+      real(dp) :: worst
+      call make_piece(p, x, r0, v0, mu, mu2, tension_only, mass_at_b)
+      call p%piece%prepare_step(r0, v0)
+      p%dt = 1.0e-3_dp
+      p%t0 = 0.002_dp
+      p%theta = theta
+      call check_jacobian(p, x, rod_kl, rod_ku, spread(1.0e-6_dp, 1, 2*n), 1.0e-6_dp, worst, error)
+      write (output_unit, '(4x,a,es9.2)') 'step, '//what//': largest deviation / row scale', worst
+   end subroutine step_case
+
+   !> For random pairs of states with large stretches and rotations, the
+   !> discrete gradient's work equals the change of the strain and bending
+   !> energy to round-off: sum_c ds_c N_c . (e1_c - e0_c) = U(R1) - U(R0).
+   subroutine test_discrete_gradient(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :), r1(:, :), res(:)
+      type(band_matrix) :: unused
+      real(dp) :: u0(4), u1(4), work, worst, scale, noise(2, n)
+      integer :: trial, c
+      worst = 0
+      do trial = 1, 20
+         call make_piece(p, x, r0, v0, 1.0_dp, 0.0_dp, mod(trial, 2) == 0, .false.)
+         call random_number(noise)
+         r1 = r0 + 0.4_dp*(noise - 0.5_dp)*trial/10
+         call p%piece%prepare_step(r0, v0)
+         p%dt = 1.0e-3_dp
+         p%t0 = 0.5_dp ! after the ramp: no applied force or couple
+         allocate (res(2*n))
+         call p%evaluate(reshape(r1, [2*n]), res, unused, .false.)
+         work = 0
+         do c = 1, n - 1
+            work = work + p%piece%ds(c)*dot_product(p%piece%force(:, c), p%piece%e1(:, c) - p%piece%e0(:, c))
+         end do
+         u0 = p%piece%energies(r0, v0, p%piece%l0, p%piece%th0)
+         u1 = p%piece%energies(r1, v0, p%piece%l1, p%piece%th1)
+         scale = abs(u0(1)) + abs(u1(1)) + abs(u0(3)) + abs(u1(3))
+         worst = max(worst, abs(work - ((u1(1) + u1(3)) - (u0(1) + u0(3))))/scale)
+         deallocate (res)
+      end do
+      write (output_unit, '(4x,a,es9.2)') 'discrete gradient: largest |work - dU| / |U| over 20 random steps', worst
+      call check(error, worst < 1.0e-13_dp, 'the discrete gradient misses the energy change by '//str(worst)//' of U')
+   end subroutine test_discrete_gradient
+end module suite_rod

@@ -1,0 +1,259 @@
+!> Scenes beyond the paper's against closed forms: a line parting in the
+!> middle (mirror symmetry, and simple-wave theory for each half), a hanging
+!> chain (Bessel-zero frequencies), a pendulum (a mass on a light stiff
+!> line), and a taut line whose end is moved harmonically (linear string
+!> theory, d'Alembert with the reflections).
+module suite_scenes
+   use xcable_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
+   use xcable_strings, only: str
+   use xcable_io_config, only: case_config
+   use xcable_simulation, only: simulation
+   use xcable_theory, only: wall_drop_time
+   use suite_rod_statics, only: statics_config
+   use suite_rod_dynamics, only: rupture_config, run_config
+   use suite_golden, only: snapshot_store
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   implicit none
+   private
+   public :: collect_scenes
+
+   real(dp), parameter :: pi = acos(-1.0_dp)
+
+contains
+
+   subroutine collect_scenes(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('break_in_the_middle', test_middle_break), &
+               new_unittest('hanging_chain_bessel', test_hanging_chain), &
+               new_unittest('pendulum', test_pendulum), &
+               new_unittest('harmonic_end_motion_string_theory', test_harmonic)]
+   end subroutine collect_scenes
+
+   !> The paper's cable at 180 kN parting at mid-span: the two halves mirror
+   !> each other, and each fixed end sees the 1 % drop when simple-wave theory
+   !> says for a cable of half the length released at its end.
+   subroutine test_middle_break(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(snapshot_store) :: store
+      type(case_config) :: c
+      real(dp) :: mirror, theory, span, err_a, err_b, speed_a, speed_b
+      integer :: n, k, last
+      c = rupture_config(180.0e3_dp, 0.005_dp, 0.04_dp, 241)
+      c%s_break = 30
+      c%interval = 0.01_dp
+      call run_config(c, sim, error, store)
+      if (allocated(error)) return
+      n = size(store%fields, 1)
+      last = store%n
+      span = store%fields(n, 6, 1)
+      mirror = 0
+      do k = 1, n
+         mirror = max(mirror, abs(store%fields(k, 6, last) + store%fields(n + 1 - k, 6, last) - span), &
+                      abs(store%fields(k, 7, last) - store%fields(n + 1 - k, 7, last)))
+      end do
+      associate (s => sim%rod%scene, e => sim%rod%summary%ends)
+         theory = wall_drop_time(s%law, s%mass, 0.5_dp*s%length, s%law%strain_at(180.0e3_dp), 0.005_dp, 0.01_dp)
+         err_a = e(1)%front_arrival_time - theory
+         err_b = e(2)%front_arrival_time - theory
+         speed_a = e(3)%peak_speed
+         speed_b = e(4)%peak_speed
+      end associate
+      write (output_unit, '(4x,a,es10.3,a,f9.6,a,2es11.3,a,2f10.4)') 'break at L/2: mirror mismatch of the positions ', &
+         mirror, ' m; 1 % drop theory ', theory, ' s, error at end a, b', err_a, err_b, ' s; new ends peak speeds', &
+         speed_a, speed_b
+      call check(error, mirror < 1.0e-9_dp, 'the halves do not mirror each other (mismatch '//str(mirror)//' m)')
+      if (allocated(error)) return
+      call check(error, abs(err_a) < 5.0e-6_dp .and. abs(err_b) < 5.0e-6_dp, 'front arrival off simple-wave theory')
+      if (allocated(error)) return
+      call check_close(error, speed_a, speed_b, 'peak speeds of the two new ends', rel_tol=1.0e-9_dp)
+   end subroutine test_middle_break
+
+   !> A chain (a 10 m line, nearly inextensible, EI 1e-3 N m^2) hanging from
+   !> end a, started in its first mode, J0(2 omega sqrt((L - s) / g)), swings
+   !> with omega = j0,1 / 2 sqrt(g / L): the period of the free end.
+   subroutine test_hanging_chain(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: j01 = 2.404825557695773_dp
+      real(dp) :: omega, period(2), exact
+      integer, parameter :: nodes(2) = [31, 61]
+      integer :: i
+      type(case_config) :: c
+      omega = 0
+      do i = 1, 2
+         c = statics_config(nodes(i))
+         c%length = 10
+         c%law = 'linear'
+         c%ea = 1.0e8_dp
+         c%bending_stiffness = 1.0e-3_dp
+         c%end_b%kind = 'free'
+         c%given = ''
+         c%dt = 0.005_dp
+         c%t_end = 11
+         omega = 0.5_dp*j01*sqrt(c%gravity/c%length)
+         call free_end_period(c, 'chain', omega, period(i), error)
+         if (allocated(error)) return
+      end do
+      exact = 2*pi/omega
+      write (output_unit, '(4x,a,f10.6,a,2es11.3)') 'hanging chain: period j0,1 theory ', exact, &
+         ' s; relative error on 31/61 nodes', (period - exact)/exact
+      call check(error, abs(period(2) - exact) < 1.5e-4_dp*exact, 'hanging-chain period off the Bessel-zero result')
+      if (allocated(error)) return
+      call check(error, abs(period(2) - exact) < abs(period(1) - exact), 'hanging-chain period error does not shrink')
+   end subroutine test_hanging_chain
+
+   !> Start the chain or pendulum with a small horizontal velocity of the
+   !> given shape and measure the period of the free end's swing from its
+   !> zero crossings (linear interpolation between steps).
+   subroutine free_end_period(c, shape, omega, period, error)
+      type(case_config), intent(in) :: c
+      character(*), intent(in) :: shape
+      real(dp), intent(in) :: omega
+      real(dp), intent(out) :: period
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      real(dp) :: crossings(20), y
+      integer :: k, nc
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      associate (piece => sim%rod%pieces(1), s => sim%rod%s)
+         do k = 1, size(s)
+            y = s(size(s)) - s(k)
+            if (shape == 'chain') then
+               piece%v(:, k) = [0.01_dp*bessel_j0(2*omega*sqrt(y/c%gravity)), 0.0_dp]
+            else
+               piece%v(:, k) = [0.01_dp*s(k)/s(size(s)), 0.0_dp]
+            end if
+         end do
+         piece%v(:, 1) = 0
+      end associate
+      call sim%run(error=error)
+      if (allocated(error)) return
+      nc = 0
+      associate (h => sim%rod%history)
+         do k = 2, h%n
+            if (h%ends(1, 2, k - 1) > 0 .and. h%ends(1, 2, k) <= 0 .or. h%ends(1, 2, k - 1) < 0 .and. h%ends(1, 2, k) >= 0) then
+               if (nc == size(crossings)) exit
+               nc = nc + 1
+               crossings(nc) = h%time(k - 1) + (h%time(k) - h%time(k - 1))*h%ends(1, 2, k - 1) &
+                               /(h%ends(1, 2, k - 1) - h%ends(1, 2, k))
+            end if
+         end do
+      end associate
+      call check(error, nc >= 3, 'fewer than three zero crossings of the free end')
+      if (allocated(error)) return
+      ! Crossings every half period.
+      period = 2*(crossings(nc) - crossings(1))/(nc - 1)
+   end subroutine free_end_period
+
+   !> A 100 kg mass on a light, stiff 10 m line swings with the period of a
+   !> compound pendulum, 2 pi sqrt(l / g (M + m_c / 3) / (M + m_c / 2)), l the
+   !> stretched length and m_c the line's mass (2e-4 of M: it shortens the
+   !> period by 1.6e-5).
+   subroutine test_pendulum(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      real(dp) :: period, exact, stretched, mass, line
+      c = statics_config(21)
+      c%length = 10
+      c%density = 1
+      c%law = 'linear'
+      c%ea = 1.0e8_dp
+      c%bending_stiffness = 1.0e-6_dp
+      c%end_b%kind = 'mass'
+      mass = 100
+      c%end_b%mass = mass
+      c%given = ''
+      c%dt = 0.005_dp
+      c%t_end = 13
+      stretched = c%length*(1 + mass*c%gravity/c%ea)
+      line = c%density*0.25_dp*pi*c%diameter**2*c%length
+      exact = 2*pi*sqrt(stretched/c%gravity*(mass + line/3)/(mass + line/2))
+      call free_end_period(c, 'rigid', 2*pi/exact, period, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,f10.6,a,es11.3)') 'pendulum: compound-pendulum period ', exact, ' s; relative error', &
+         (period - exact)/exact
+      call check(error, abs(period - exact) < 6.0e-6_dp*exact, 'pendulum period off the compound pendulum')
+   end subroutine test_pendulum
+
+   !> A taut line (linear law, 1 % strain, no weight) whose end a is moved
+   !> up and down by 1 mm with a smooth start: the transverse displacement at
+   !> mid-span against linear string theory (waves at c = sqrt(T / (m (1 + eps)))
+   !> per unstretched length, reflected at both ends), over three crossings.
+   subroutine test_harmonic(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      type(snapshot_store) :: store
+      integer, parameter :: nodes(2) = [101, 201]
+      real(dp) :: worst(2), amplitude, period, ramp, ea, tension, speed, mid, exact
+      integer :: i, k
+      ! 1 mm: the stretch of the moving line (its second-order coupling to the tension) stays negligible.
+      amplitude = 0.001_dp
+      ! Not a multiple of the fundamental period 2 L / c = 0.30 s: no resonance.
+      period = 0.13_dp
+      ramp = 0.13_dp
+      ea = 1.0e6_dp
+      do i = 1, 2
+         c = statics_config(nodes(i))
+         c%length = 10
+         c%law = 'linear'
+         c%ea = ea
+         c%gravity = 0
+         c%bending_stiffness = 1.0e-6_dp
+         c%end_a%kind = 'motion'
+         c%end_a%amplitude = amplitude
+         c%end_a%period = period
+         c%end_a%ramp_time = ramp
+         c%end_a%direction_x = 0
+         c%end_a%direction_z = 1
+         c%end_b%x = 10.1_dp
+         c%end_b%z = 0
+         c%given = 'end_b%x end_b%z'
+         c%t_end = 0.45_dp
+         c%interval = 0.005_dp
+         store = snapshot_store()
+         call run_config(c, sim, error, store)
+         if (allocated(error)) return
+         tension = ea*0.01_dp
+         speed = sqrt(tension/(sim%rod%scene%mass*1.01_dp))
+         mid = 0.5_dp*c%length
+         worst(i) = 0
+         do k = 1, store%n
+            exact = string(store%times(k), mid)
+            worst(i) = max(worst(i), abs(store%fields((nodes(i) + 1)/2, 7, k) - exact))
+         end do
+      end do
+      write (output_unit, '(4x,a,f8.3,a,2es11.3,a)') 'harmonic end motion: string speed ', speed, &
+         ' m/s; largest error of the mid-span displacement on 101/201 nodes', worst/amplitude, ' of the amplitude'
+      call check(error, worst(2) < 0.007_dp*amplitude, 'mid-span motion off linear string theory by more than 0.7 %')
+      if (allocated(error)) return
+      call check(error, worst(2) < 0.35_dp*worst(1), 'the error does not fall at second order')
+
+   contains
+
+      !> d'Alembert: the driven end's motion travelling right, reflected with a sign change at both ends.
+      real(dp) function string(t, s)
+         real(dp), intent(in) :: t, s
+         integer :: j
+         string = 0
+         do j = 0, 20
+            string = string + drive(t - (s + 2*j*c%length)/speed) - drive(t - (2*c%length - s + 2*j*c%length)/speed)
+         end do
+      end function string
+
+      !> The prescribed motion of end a (motion_end 'harmonic' with a smooth start).
+      real(dp) function drive(t)
+         real(dp), intent(in) :: t
+         real(dp) :: w
+         if (t <= 0) then
+            drive = 0
+            return
+         end if
+         w = 1
+         if (t < ramp) w = sin(0.5_dp*pi*t/ramp)**2
+         drive = amplitude*w*sin(2*pi*t/period)
+      end function drive
+   end subroutine test_harmonic
+end module suite_scenes

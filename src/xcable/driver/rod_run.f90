@@ -317,21 +317,32 @@ contains
    end subroutine run_fields
 
    !> Value at an end node (side 1: node 1, side 2: node n) of a cell field:
-   !> linear extrapolation from the two nearest cells (second order; the
-   !> end cell's own value when the piece has one cell).
+   !> the end cell's value extrapolated half a cell along the slope c1 - c2
+   !> of the two end cells (second order), unless the three end cells
+   !> zig-zag (c1 - c2 and c2 - c3 of opposite signs: a buckle at the grid
+   !> scale), where the extrapolation would overshoot and the end cell's own
+   !> value is used.
    pure real(dp) function end_value(cells, side)
       !> Cell values.
       real(dp), intent(in) :: cells(:)
       !> 1 or 2.
       integer, intent(in) :: side
       integer :: m
+      real(dp) :: c1, c2, c3
       m = size(cells)
-      if (m < 2) then
-         end_value = cells(1)
-      else if (side == 1) then
-         end_value = 1.5_dp*cells(1) - 0.5_dp*cells(2)
+      if (m < 3) then
+         end_value = merge(cells(1), cells(m), side == 1)
+         return
+      end if
+      if (side == 1) then
+         c1 = cells(1); c2 = cells(2); c3 = cells(3)
       else
-         end_value = 1.5_dp*cells(m) - 0.5_dp*cells(m - 1)
+         c1 = cells(m); c2 = cells(m - 1); c3 = cells(m - 2)
+      end if
+      if ((c1 - c2)*(c2 - c3) < 0) then
+         end_value = c1
+      else
+         end_value = c1 + 0.5_dp*(c1 - c2)
       end if
    end function end_value
 
@@ -736,26 +747,19 @@ contains
       end if
    end subroutine record
 
-   !> Tension at an end of a piece (side 1: node 1, side 2: node n), extrapolated from its two end cells.
+   !> Tension at an end of a piece (side 1: node 1, side 2: node n), from its end cells (end_value).
    function end_tension(piece, r, side) result(t_end)
       type(rod_piece), intent(in) :: piece
       real(dp), intent(in) :: r(:, :)
       integer, intent(in) :: side
-      real(dp) :: t_end, cells(2)
-      integer :: n
+      real(dp) :: t_end, cells(3)
+      integer :: n, j, c
       n = piece%n
-      if (side == 1) then
-         cells(1) = piece%law%tension(norm2(r(:, 2) - r(:, 1))/piece%ds(1) - 1)
-         if (n > 2) cells(2) = piece%law%tension(norm2(r(:, 3) - r(:, 2))/piece%ds(2) - 1)
-      else
-         cells(1) = piece%law%tension(norm2(r(:, n) - r(:, n - 1))/piece%ds(n - 1) - 1)
-         if (n > 2) cells(2) = piece%law%tension(norm2(r(:, n - 1) - r(:, n - 2))/piece%ds(n - 2) - 1)
-      end if
-      if (n > 2) then
-         t_end = end_value(cells, 1)
-      else
-         t_end = cells(1)
-      end if
+      do j = 1, min(3, n - 1)
+         c = merge(j, n - j, side == 1)
+         cells(j) = piece%law%tension(norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1)
+      end do
+      t_end = end_value(cells(1:min(3, n - 1)), 1)
    end function end_tension
 
    !> Fields at time ts inside the step just accepted (from self%t to the new

@@ -1,11 +1,16 @@
 # Shared definitions of the xcable figure scripts; loaded by each of them, not run on its own.
 #
 # Variables the caller may set (gnuplot -e "..."):
-#   stem   run output without extension, e.g. 'results/slow_315kN' (required)
-#   out    output file; '.png' gives pngcairo, '.pdf' gives pdfcairo (required for a whole figure)
-#   title  description of the case used in the title (default: the stem's basename and the static tension)
+#   stem     run output without extension, e.g. 'results/slow_315kN' (required)
+#   out      output file; '.png' gives pngcairo, '.pdf' gives pdfcairo (required for a whole figure)
+#   title    description of the case used in the title (default: the stem's basename and the
+#            tension at end a at t = 0)
+#   label_a, label_b   names of the two ends in the keys (default 'end a (s = 0)', 'end b (s = L)';
+#            plots/draw.sh gives the kind of each end, e.g. 'end a (fixed)', 'end b (200 kg mass)')
+#   maxlines most snapshot lines drawn in one panel (default 16; beyond it every n-th snapshot)
 # Set by a script that draws panels into its own multiplot (plots/pair.gp), never by hand:
 #   panel  when it exists, the script draws one panel only: no terminal, no output, title = 'title'
+#   vexag  vertical exaggeration of the motion panels (1, 10 or 100; default: chosen from the data)
 
 set encoding utf8
 
@@ -19,6 +24,37 @@ if (!exists("stem")) {
     exit error "no run given: call with gnuplot -e \"stem='results/slow_315kN'; out='motion.png'\" ".ARG0
 }
 casename = basename(stem)
+if (!exists("label_a")) { label_a = "end a (s = 0)" }
+if (!exists("label_b")) { label_b = "end b (s = L)" }
+if (!exists("maxlines")) { maxlines = 16 }
+
+# Units that suit the run: time in ms for runs up to 1 s, in s beyond; forces in kN from 2 kN up,
+# in N below; energies in kJ from 2 kJ up, in J below. Each gives (factor, unit name).
+tfac_for(tmax) = tmax <= 1.0 ? 1000.0 : 1.0
+tunit_for(tmax) = tmax <= 1.0 ? "ms" : "s"
+ffac_for(fmax) = fmax >= 2000.0 ? 1e-3 : 1.0
+funit_for(fmax) = fmax >= 2000.0 ? "kN" : "N"
+efac_for(emax) = emax >= 2000.0 ? 1e-3 : 1.0
+eunit_for(emax) = emax >= 2000.0 ? "kJ" : "J"
+amax(a, b) = abs(a) > abs(b) ? abs(a) : abs(b)
+# A time in the unit of the figure, with as many decimals as the unit needs.
+tfmt(t, unit) = unit eq "ms" ? sprintf("%.0f ms", 1000.0 * t) : sprintf("%.3g s", t)
+
+# Vertical exaggeration of a motion figure with horizontal extent xext and vertical extent zext
+# (m): the paper's 100 (z in cm, "1 cm drawn as 1 m") when the exaggerated height stays within
+# 3/4 of the width, else 10, else none (a swing, a hanging line: true shape).
+vexag_for(xext, zext) = 100 * zext <= 0.75 * xext ? 100 : (10 * zext <= 0.75 * xext ? 10 : 1)
+
+# Axis range [_lo, _hi] around [a, b], rounded outwards to a round step.
+_unit(r) = 10.0**floor(log10(r))
+_step(r) = r / _unit(r) < 2.5 ? _unit(r) / 4 : (r / _unit(r) < 5 ? _unit(r) / 2 : _unit(r))
+_lo(a, b) = floor(a / _step(b - a)) * _step(b - a)
+_hi(a, b) = ceil(b / _step(b - a)) * _step(b - a)
+
+# Names of the ends in the history header (end_a, end_b, break_a, break_b), colours and symbols.
+end_name(n) = n eq "end_a" ? label_a : (n eq "end_b" ? label_b : \
+              (n eq "break_a" ? "break, side of end a" : (n eq "break_b" ? "break, side of end b" : n)))
+end_colour(n) = n eq "end_a" ? 0x1f78b4 : (n eq "end_b" ? 0xd7301f : (n eq "break_a" ? 0x33a02c : 0xe08a00))
 
 # One palette for the snapshot time, from dark blue (t = 0, the static state) through green and
 # orange to dark red (the last snapshot); every colour dark enough to show on white.

@@ -126,7 +126,7 @@ contains
       end do
       write (output_unit, '(4x,a,f9.4,a,3es11.3)') 'peak breaking-end speed: theory ', theory, &
          ' m/s; relative error at 61/121/241 nodes', err
-      call check(error, abs(err(3)) < 1.0e-3_dp, 'peak end speed off simple-wave theory by more than 0.1 %')
+      call check(error, abs(err(3)) < 4.0e-4_dp, 'peak end speed off simple-wave theory by more than 4e-4')
       if (allocated(error)) return
       call check(error, abs(err(3)) <= abs(err(1)), 'end speed error does not shrink with refinement')
    end subroutine test_end_velocity
@@ -180,7 +180,7 @@ contains
          '; observed orders', log(drift(1:2)/drift(2:3))/log(2.0_dp)
       call check(error, drift(2) < 0.5_dp*drift(1) .and. drift(3) < 0.5_dp*drift(2), 'energy drift does not shrink')
       if (allocated(error)) return
-      call check(error, drift(3) < 1.0e-3_dp, 'energy drift above 0.1 % at 241 nodes')
+      call check(error, drift(3) < 1.0e-4_dp, 'energy drift above 1e-4 at 241 nodes')
    end subroutine test_energy
 
    !> A slack cable (2 kN, sag 5 m) released in 20 ms swings down under
@@ -209,7 +209,7 @@ contains
       call check(error, drift(2) < 0.33_dp*drift(1) .and. drift(3) < 0.33_dp*drift(2), &
                  'slack-swing energy drift does not fall at better than first order')
       if (allocated(error)) return
-      call check(error, drift(3) < 5.0e-3_dp, 'slack-swing energy drift above 0.5 % at 241 nodes')
+      call check(error, drift(3) < 4.0e-3_dp, 'slack-swing energy drift above 0.4 % at 241 nodes')
    end subroutine test_energy_slack
 
    !> A break much slower than L / c is quasi-static: the tension stays
@@ -232,6 +232,6 @@ contains
       end do
       write (output_unit, '(4x,a,es10.3,a,f6.3)') 'quasi-static (t_break = 4 s = 70 L/c): max |T - F(t)| / T_s =', dev, &
          ', final F / T_s =', rupture_factor(0.6_dp, t_break)
-      call check(error, dev < 0.01_dp, 'tension departs from the applied force by more than 1 % of T_s')
+      call check(error, dev < 2.0e-3_dp, 'tension departs from the applied force by more than 2e-3 T_s')
    end subroutine test_quasi_static
 end module suite_dynamics

@@ -265,7 +265,7 @@ def cases():
 # ---------------------------------------------------------------- output
 def write_tsv(path, rows):
     """rows: sequence of 11-tuples in COLUMNS order; one header line."""
-    fmt = ("%.5f", "%.6f", "%.6f", "%.5g", "%.6g", "%.7g", "%.6g", "%.5g",
+    fmt = ("%.5f", "%.6f", "%.6f", "%.7g", "%.7g", "%.7g", "%.7g", "%.5g",
            "%.7g", "%.7g", "%.8g")
     with open(path, "w") as f:
         f.write("\t".join(COLUMNS) + "\n")

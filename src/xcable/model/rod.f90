@@ -51,10 +51,17 @@ module xcable_model_rod
    use xcable_solver_newton, only: newton_problem
    implicit none
    private
-   public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2
+   public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
 
-   !> Band widths of the Jacobian.
-   integer, parameter :: rod_kl = 5, rod_ku = 5
+   !> The unknowns of a node, in their order in Newton's vector (node after node).
+   character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']
+   !> Unknowns per node.
+   integer, parameter :: rod_nodal = size(rod_unknown_names)
+   !> Nodes on either side whose unknowns enter a node's rows: the turning angles
+   !> of nodes k-1, k, k+1 reach nodes k-2 .. k+2.
+   integer, parameter :: rod_reach = 2
+   !> Band widths of the Jacobian, from the layout.
+   integer, parameter :: rod_kl = rod_nodal*(rod_reach + 1) - 1, rod_ku = rod_kl
    !> Strain differences below this use the Taylor form of the divided difference.
    real(dp), parameter :: small_strain_step = 1.0e-6_dp
    !> Rotations below this use the Taylor form of dphi / sin(dphi).
@@ -241,7 +248,7 @@ contains
    pure integer function rod_unknowns(self)
       !> Piece.
       class(rod_piece), intent(in) :: self
-      rod_unknowns = 2*self%n
+      rod_unknowns = rod_nodal*self%n
    end function rod_unknowns
 
    !> Cell vectors e_c, their lengths and the turning angles at the interior nodes.

@@ -64,5 +64,5 @@ plot for [i = 0:nsnap - 1:stride] snap index i using 2:(zf * $3):(tval(i)) with 
      ends using 4:(drawn($1) && $2 == 2 ? zf * $5 : NaN):(tval($1)) with points pt 9 ps 1.0 lc palette notitle, \
      NaN with points pt 5 ps 0.8 lc rgb '#404040' title label_a, \
      NaN with points pt 7 ps 0.9 lc rgb '#404040' title label_b, \
-     (npieces > 1 ? NaN : 1/0) with points pt 9 ps 1.0 lc rgb '#404040' title "ends at the break"
+     NaN with points pt 9 ps 1.0 lc rgb '#404040' title (npieces > 1 ? "ends at the break" : "")
 if (!exists("panel")) { unset output }

@@ -15,7 +15,7 @@ nsnap = words(snaptimes)
 if (nsnap == 0) {
     exit error sprintf("%s holds no snapshot (no '# t = ' block): the run wrote no snapshot text", snap)
 }
-t_s(i) = real(word(snaptimes, i + 1))
+t_s(i) = real(word(snaptimes, int(i) + 1))
 t_ms(i) = 1000.0 * t_s(i)
 tfac = tfac_for(t_s(nsnap - 1))
 tunit = tunit_for(t_s(nsnap - 1))
@@ -24,11 +24,21 @@ stats [*:*][*:*] snap index 0 using 1:4 nooutput
 nnode = STATS_records
 Ts = STATS_max_y
 Lcab = STATS_max_x
-npieces = 1 + int(system(sprintf("awk '/^# t = /{n++} n == 1 && NF == 0 {b++} n > 1 {exit} END {print b + 0}' '%s'", snap)))
+# Pieces: blank lines followed by data inside the first block, plus one.
+npieces = 1 + int(system(sprintf("awk '/^# t = / { n++; next } n > 1 { exit } n == 1 { if (NF == 0) gap = 1; else if (gap) { b++; gap = 0 } } END { print b + 0 }' '%s'", snap)))
 if (!exists("title")) { title = sprintf("%s: largest tension at t = 0 %.3g kN", casename, Ts / 1000) }
 
-# Draw every stride-th snapshot, at most maxlines of them (all of the paper's 10 ms snapshots).
+# Draw every stride-th snapshot, at most maxlines of them (all of the paper's 10 ms snapshots),
+# preferring a stride whose time step is a round number (1, 2, 2.5 or 5 times a power of ten).
+_dt = nsnap > 1 ? (t_s(nsnap - 1) - t_s(0)) / (nsnap - 1) : 1.0
+_target = nsnap > 1 ? (t_s(nsnap - 1) - t_s(0)) / (maxlines - 1) : 1.0
+_p10 = _target > 0 ? 10.0**floor(log10(_target)) : 1.0
+_nice = _target <= _p10 ? _p10 : (_target <= 2 * _p10 ? 2 * _p10 : (_target <= 2.5 * _p10 ? 2.5 * _p10 : \
+        (_target <= 5 * _p10 ? 5 * _p10 : 10 * _p10)))
 stride = nsnap <= maxlines ? 1 : int(ceil((nsnap - 1.0) / (maxlines - 1)))
+if (nsnap > maxlines && _dt > 0 && abs(_nice / _dt - floor(_nice / _dt + 0.5)) < 1e-6 * _nice / _dt) {
+    stride = int(floor(_nice / _dt + 0.5))
+}
 ndrawn = int((nsnap - 1) / stride) + 1
 drawn(i) = int(i) % stride == 0
 

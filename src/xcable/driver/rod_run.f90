@@ -285,14 +285,14 @@ contains
             do k = 1, n
                col = cols(k)
                if (k == 1) then
-                  fields(col, 1) = end_value(ten, 1)
+                  fields(col, 1) = max(end_value(ten, 1), piece%law%tension(-0.99_dp))
                   fields(col, 2) = end_value(shear, 1)
-                  fields(col, 3) = end_value(eps, 1)
+                  fields(col, 3) = max(end_value(eps, 1), -0.99_dp)
                   e = r(:, 2) - r(:, 1)
                else if (k == n) then
-                  fields(col, 1) = end_value(ten, 2)
+                  fields(col, 1) = max(end_value(ten, 2), piece%law%tension(-0.99_dp))
                   fields(col, 2) = end_value(shear, 2)
-                  fields(col, 3) = end_value(eps, 2)
+                  fields(col, 3) = max(end_value(eps, 2), -0.99_dp)
                   e = r(:, n) - r(:, n - 1)
                else
                   fields(col, 1) = 0.5_dp*(ten(k - 1) + ten(k))
@@ -747,7 +747,9 @@ contains
       end if
    end subroutine record
 
-   !> Tension at an end of a piece (side 1: node 1, side 2: node n), from its end cells (end_value).
+   !> Tension at an end of a piece (side 1: node 1, side 2: node n), from its
+   !> end cells by end_value, and not below the law's tension at the strain
+   !> -0.99 (a steep, buckled end would extrapolate past what the law can give).
    function end_tension(piece, r, side) result(t_end)
       type(rod_piece), intent(in) :: piece
       real(dp), intent(in) :: r(:, :)
@@ -759,7 +761,7 @@ contains
          c = merge(j, n - j, side == 1)
          cells(j) = piece%law%tension(norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1)
       end do
-      t_end = end_value(cells(1:min(3, n - 1)), 1)
+      t_end = max(end_value(cells(1:min(3, n - 1)), 1), piece%law%tension(-0.99_dp))
    end function end_tension
 
    !> Fields at time ts inside the step just accepted (from self%t to the new

@@ -53,8 +53,7 @@ fig_w = 1100; fig_h = 650
 load plotdir."/terminal.gp"
 set title sprintf("%s along the cable against time (from %d snapshots)\n%s", fname, nsnap, title)
 set view map
-set pm3d map corners2color mean
-unset surface
+set pm3d corners2color mean
 set xrange [tval(0) : tval(nsnap - 1)]
 set yrange [0 : Lcab]
 set xlabel sprintf("time, t [%s]", tunit)

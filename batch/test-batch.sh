@@ -147,6 +147,16 @@ check "summary.h5 holds the statuses and the swept values as numbers" \
            h5dump -d '/swept/static%tension' '$sweep/summary.h5' | grep -q 'H5T_IEEE_F64LE'"
 check "the summary figure was drawn" test -s "$sweep/sweep_summary.png"
 
+# A run that completes with a warning (a slack release on 21 nodes buckles at the grid scale).
+warned=$tmp/warned
+"$here/sweep-generate" "$repo/input/fast_180kN.nml" "$warned" static%tension=5000 numerics%nodes=21 \
+  numerics%t_end=1.0 output%gnuplot=.false. >/dev/null
+"$here/sweep-local" "$warned" >/dev/null 2>&1 || true
+"$here/sweep-collect" "$warned" >/dev/null
+check "a complete run's warning reaches the summary's warnings column" \
+  bash -c "test \"\$(awk -F, 'NR == 2 { print \$0 }' '$warned/summary.csv')\" != '' &&
+           grep -q 'complete,.*kink at the grid scale' '$warned/summary.csv'"
+
 echo "$PROG: --failed-only and sweep-submit's array lists"
 out=$("$here/sweep-submit" "$sweep" --dry-run --failed-only --limit 3 -- --time=00:05:00)
 check "sweep-submit --failed-only lists the 9 tasks that are not complete" \

@@ -13,7 +13,7 @@
 !> are NaN (reals) or -1 (counts).
 !>
 !> summary.h5 layout: one 1-D dataset per column (/task, /status, /peak_end_speed,
-!> ..., /failure_reason), each real one with a 'units' attribute; /swept/<group%variable>
+!> ..., /warnings, /failure_reason), each real one with a 'units' attribute; /swept/<group%variable>
 !> holds the swept values, as reals when they are all numbers and as strings
 !> otherwise; root attributes sweep, cases and the count of each status.
 !>
@@ -28,11 +28,12 @@ program sweep_collect
    implicit none
 
    !> Real figures: attributes of /summary, then failure_time of the root.
-   character(len=*), parameter :: real_names(9) = [character(len=26) :: 'peak_end_speed', &
+   character(len=*), parameter :: real_names(11) = [character(len=26) :: 'peak_end_speed', &
       'peak_end_speed_time', 'min_fixed_end_tension', 'min_fixed_end_tension_time', 'front_arrival_time', &
-      'energy_drift', 'time_reached', 'wall_time', 'failure_time']
+      'energy_drift', 'time_reached', 'wall_time', 'dt_used', 'courant_used', 'failure_time']
    !> Units of the real figures.
-   character(len=*), parameter :: real_units(9) = [character(len=4) :: 'm/s', 's', 'N', 's', 's', '-', 's', 's', 's']
+   character(len=*), parameter :: real_units(11) = [character(len=4) :: 'm/s', 's', 'N', 's', 's', '-', 's', 's', &
+                                                                         's', '-', 's']
    !> Integer figures: attributes of /summary.
    character(len=*), parameter :: int_names(5) = [character(len=21) :: 'steps', 'rejected_steps', &
       'newton_iterations', 'max_newton_iterations', 'factorisations']
@@ -50,6 +51,8 @@ program sweep_collect
       character(len=16) :: status = 'missing'
       !> Why the run failed ('' unless failed).
       character(len=reason_len) :: failure_reason = ''
+      !> The run's warnings, separated by '; ' ('' : none).
+      character(len=reason_len) :: warnings = ''
       !> Values of real_names (NaN when absent).
       real(dp) :: reals(size(real_names))
       !> Values of int_names (-1 when absent).
@@ -282,6 +285,8 @@ contains
       end if
       call read_text(file, 'failure_reason', text)
       if (allocated(text)) result%failure_reason = text
+      call read_text(file, 'warnings', text)
+      if (allocated(text)) result%warnings = one_line(text)
       call read_real(file, 'failure_time', result%reals(size(real_names)))
       call h5lexists_f(file, 'summary', exists, hdferr)
       if (exists .and. hdferr == 0) then
@@ -410,6 +415,21 @@ contains
       end if
    end function real_text
 
+   !> Warnings on one line: their line breaks become '; '.
+   function one_line(text) result(line)
+      character(*), intent(in) :: text
+      character(:), allocatable :: line
+      integer :: i
+      line = ''
+      do i = 1, len(text)
+         if (text(i:i) == new_line('a')) then
+            line = line//'; '
+         else
+            line = line//text(i:i)
+         end if
+      end do
+   end function one_line
+
    !> summary.csv: header, then one line per task.
    subroutine write_csv(path, names, values, results, ok)
       !> Output path.
@@ -439,7 +459,7 @@ contains
       do k = 1, size(int_names)
          line = line//','//trim(int_names(k))
       end do
-      write (unit, '(a)', iostat=ios) line//',failure_reason'
+      write (unit, '(a)', iostat=ios) line//',warnings,failure_reason'
       do i = 1, size(results)
          write (buffer, '(i0)') results(i)%task
          line = trim(buffer)
@@ -454,7 +474,7 @@ contains
             write (buffer, '(i0)') results(i)%ints(k)
             line = line//','//trim(buffer)
          end do
-         line = line//','//csv_field(trim(results(i)%failure_reason))
+         line = line//','//csv_field(trim(results(i)%warnings))//','//csv_field(trim(results(i)%failure_reason))
          write (unit, '(a)', iostat=ios) line
       end do
       ok = ios == 0
@@ -502,6 +522,8 @@ contains
       end do
       reasons = results%failure_reason
       call put_text_vector(file, 'failure_reason', reasons, ok)
+      reasons = results%warnings
+      call put_text_vector(file, 'warnings', reasons, ok)
       call h5gcreate_f(file, 'swept', group, hdferr)
       ok = ok .and. hdferr == 0
       if (.not. allocated(numbers)) allocate (numbers(n))

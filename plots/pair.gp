@@ -18,13 +18,10 @@ load plotdir."/common.gp"
 if (!exists("scale_stems")) { scale_stems = stem_a." ".stem_b }
 if (!exists("figtitle")) { figtitle = sprintf("%s: (a) %s, (b) %s", kind, basename(stem_a), basename(stem_b)) }
 
-# Common ranges over scale_stems, rounded outwards to a round step.
-_unit(r) = 10.0**floor(log10(r))
-_step(r) = r / _unit(r) < 2.5 ? _unit(r) / 4 : (r / _unit(r) < 5 ? _unit(r) / 2 : _unit(r))
-_lo(a, b) = floor(a / _step(b - a)) * _step(b - a)
-_hi(a, b) = ceil(b / _step(b - a)) * _step(b - a)
+# Common ranges over scale_stems, rounded outwards to a round step. Motion panels share one
+# vertical exaggeration (plots/common.gp, vexag_for: 100 for the paper's cases), unless vexag is given.
 xcol(x) = kind eq "motion" ? column(2) : column(1)
-ycol(x) = kind eq "motion" ? 100 * column(3) : (kind eq "tension" ? column(4) / 1000 : column(6))
+ycol(x) = kind eq "motion" ? column(3) : (kind eq "tension" ? column(4) : column(6))
 xmin = 1e30; xmax = -1e30; ymin = 1e30; ymax = -1e30
 do for [k = 1:words(scale_stems)] {
     _f = word(scale_stems, k).".snapshots.dat"
@@ -35,6 +32,14 @@ do for [k = 1:words(scale_stems)] {
     ymin = STATS_min_y < ymin ? STATS_min_y : ymin
     ymax = STATS_max_y > ymax ? STATS_max_y : ymax
 }
+# Scale of the y axis: z in cm at 100x exaggeration, in m otherwise; tension in kN from 2 kN up.
+if (kind eq "motion") {
+    if (!exists("vexag")) { vexag = vexag_for(xmax - xmin, ymax - ymin) }
+    _yf = vexag == 100 ? 100.0 : 1.0
+} else {
+    _yf = kind eq "tension" ? ffac_for(amax(ymin, ymax)) : 1.0
+}
+ymin = _yf * ymin; ymax = _yf * ymax
 set xrange [_lo(xmin, xmax) : _hi(xmin, xmax)]
 set yrange [_lo(ymin, ymax) : _hi(ymin, ymax)]
 

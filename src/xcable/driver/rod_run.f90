@@ -601,7 +601,7 @@ contains
                if (piece%l1(c) < 0.05_dp) then
                   call fatal_error(error, 'cell '//str(c)//' of piece '//str(p)//' squeezed to '// &
                                    str(100*piece%l1(c))//' % of its length (strain '//str(piece%l1(c) - 1)// &
-                                   '): the compressed zone has collapsed', stat_numerics)
+                                   '): the compressed zone has collapsed'//trim(squeeze_advice(piece)), stat_numerics)
                   return
                end if
             end do
@@ -617,6 +617,18 @@ contains
          end associate
       end do
    end subroutine check_state
+
+   !> What to try when a cell collapses.
+   function squeeze_advice(piece) result(advice)
+      type(rod_piece), intent(in) :: piece
+      character(:), allocatable :: advice
+      if (index(piece%law%name(), 'without compression') > 0) then
+         advice = ' (with compression = ''none'' nothing resists the shortening of the cable: the slack material '// &
+                  'piles up into the cells; the law''s compressive branch, compression = ''law'', resists it)'
+      else
+         advice = ' (more nodes resolve the buckling, or a smaller dt or courant)'
+      end if
+   end function squeeze_advice
 
    !> Accept the step of length h: new velocities, the reactions at held ends,
    !> the work and the dissipation of the step, and the resolution figures.

@@ -1426,7 +1426,7 @@ contains
    !> given together with others (the tension or the position of end b, the
    !> positions of free, force and mass ends) and tables without rows; a
    !> table read from a file is written inline, the file named in a comment.
-   !> Read back, it gives the same case.
+   !> Read back, it gives the same case (with the table inline, not from the file).
    function config_text(c) result(text)
       !> The case.
       type(case_config), intent(in) :: c
@@ -1472,6 +1472,8 @@ contains
                end do
             end associate
          end do
+         ! A group with nothing to write (&static beside the end positions) is left out.
+         if (sep == ' ') cycle
          text = text//comment//block//line//' /'//nl
       end do
    end function config_text

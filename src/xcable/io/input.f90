@@ -1191,6 +1191,15 @@ contains
       type(end_config) :: e
       logical :: held_a, held_b
 
+      e = c%end_a
+      call check_end(c, 'end_a', e, error)
+      if (allocated(error)) return
+      c%end_a = e
+      e = c%end_b
+      call check_end(c, 'end_b', e, error)
+      if (allocated(error)) return
+      c%end_b = e
+
       if (c%is_given('static', 'tension') .and. (c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z'))) then
          if (c%is_given('end_b', 'x')) then
             position = 'x = '//real_text(c%end_b%x)
@@ -1202,14 +1211,6 @@ contains
                           'height of end a, the span from the tension) or the end positions', stat_input)
          return
       end if
-      e = c%end_a
-      call check_end(c, 'end_a', e, error)
-      if (allocated(error)) return
-      c%end_a = e
-      e = c%end_b
-      call check_end(c, 'end_b', e, error)
-      if (allocated(error)) return
-      c%end_b = e
 
       held_a = is_word(c%end_a%kind, 'fixed motion')
       held_b = is_word(c%end_b%kind, 'fixed motion')

@@ -610,6 +610,10 @@ contains
       call expect_error(error, "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 1, "// &
                         'table_z(2) = 0 /'//nl, [character(40) :: path, '&end_a', 'table_time has 2 values', &
                                                  'table_x 1', 'table_z 2', 'equal counts'])
+      if (allocated(error)) return
+      call expect_error(error, "&end_b kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 1, 2, "// &
+                        'table_z = 0 /'//nl, [character(40) :: path, '&end_b', 'table_time has 2 values', &
+                                              'table_x 2', 'table_z 1', 'equal counts'])
    end subroutine test_table_columns
 
    subroutine test_table_inline_and_file(error)

@@ -115,7 +115,9 @@ contains
 
    !> Put the value of a string variable with allowed words in lower case, without leading blanks.
    subroutine lower_words(c, e)
+      !> The case.
       type(case_config), intent(inout) :: c
+      !> A string variable with allowed words.
       type(schema_entry), intent(in) :: e
       type(config_value) :: v
       call access(c, e, v, .false.)
@@ -126,10 +128,13 @@ contains
    !> The number of rows of each end's inline table: the number of values
    !> given to table_time, which table_x and table_z must match.
    subroutine count_table_rows(c, t, counts, error)
+      !> The case; table_rows of each end set.
       type(case_config), intent(inout) :: c
+      !> The schema.
       type(schema_entry), intent(in) :: t(:)
       !> Values given to each entry (its highest index assigned).
       integer, intent(in) :: counts(:)
+      !> Error naming the columns and their counts.
       type(error_type), allocatable, intent(out) :: error
       character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
       integer :: k, n_time, n_x, n_z
@@ -741,8 +746,9 @@ contains
       character(*), intent(in) :: group
       !> The end: defaults in, values given out.
       type(end_config), intent(inout) :: e
-      !> iostat and iomsg of the read.
+      !> iostat of the read.
       integer, intent(out) :: ios
+      !> iomsg of the read.
       character(len=*), intent(inout) :: msg
       character(len=16) :: kind, history, motion
       real(dp) :: x, z, force_x, force_z, ramp_time, amplitude, period, phase, direction_x, direction_z, mass
@@ -1061,8 +1067,11 @@ contains
 
       !> A coefficient of the tanh law in its range.
       subroutine coefficient(k, lower, upper, open)
+         !> Which coefficient.
          integer, intent(in) :: k
+         !> Its range.
          real(dp), intent(in) :: lower, upper
+         !> Whether the lower bound is excluded.
          logical, intent(in) :: open
          if (open) then
             if (c%p(k) > lower .and. c%p(k) <= upper) return

@@ -143,19 +143,19 @@ contains
 
    subroutine test_misspelled(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&numerics nodez = 11 /'//nl, [character(16) :: path, '&numerics', 'nodez', 'allowed'])
+      call expect_error(error, '&numerics nodez = 11 /'//nl, [character(24) :: path, '&numerics', 'nodez', 'allowed'])
    end subroutine test_misspelled
 
    subroutine test_wrong_type(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&numerics nodes = 12.5 /'//nl, [character(16) :: path, '&numerics', 'nodes', '12.5', &
+      call expect_error(error, '&numerics nodes = 12.5 /'//nl, [character(24) :: path, '&numerics', 'nodes', '12.5', &
                                                                  'integer'])
    end subroutine test_wrong_type
 
    subroutine test_missing_slash(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, '&static tension = 1.8e5'//nl//'&rupture t_break = 0.005 /'//nl, &
-                        [character(16) :: path, '&static', '/'])
+                        [character(24) :: path, '&static', '/'])
    end subroutine test_missing_slash
 
    subroutine test_missing_file(error)
@@ -171,57 +171,57 @@ contains
 
    subroutine test_negative_length(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&cable length = -60 /'//nl, [character(16) :: path, '&cable', 'length = -60', 'in [0.01'])
+      call expect_error(error, '&cable length = -60 /'//nl, [character(24) :: path, '&cable', 'length = -60', 'in [0.01'])
    end subroutine test_negative_length
 
    subroutine test_nodes(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&numerics nodes = 2 /'//nl, [character(16) :: path, '&numerics', 'nodes = 2', 'from 3'])
+      call expect_error(error, '&numerics nodes = 2 /'//nl, [character(24) :: path, '&numerics', 'nodes = 2', 'from 3'])
    end subroutine test_nodes
 
    subroutine test_tension_zero(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&static tension = 0 /'//nl, [character(16) :: path, '&static', 'tension', '> 0'])
+      call expect_error(error, '&static tension = 0 /'//nl, [character(24) :: path, '&static', 'tension', '> 0'])
    end subroutine test_tension_zero
 
    !> 600 kN needs a strain beyond the tanh law's documented range.
    subroutine test_tension_range(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&static tension = 600000 /'//nl, [character(16) :: path, '&static', 'tension', &
+      call expect_error(error, '&static tension = 600000 /'//nl, [character(24) :: path, '&static', 'tension', &
                                                                    'strain_max'])
    end subroutine test_tension_range
 
    subroutine test_unknown_group(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, '&static tension = 1.8e5 /'//nl//'&solver tol = 1 /'//nl, &
-                        [character(16) :: path, '&solver', 'allowed'])
+                        [character(24) :: path, '&solver', 'allowed'])
    end subroutine test_unknown_group
 
    subroutine test_no_group(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '! only a comment'//nl//nl, [character(16) :: path, 'no namelist group'])
+      call expect_error(error, '! only a comment'//nl//nl, [character(24) :: path, 'no namelist group'])
    end subroutine test_no_group
 
    subroutine test_duplicate(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, '&static tension = 1.8e5 /'//nl//'&static tension = 2e5 /'//nl, &
-                        [character(16) :: path, '&static', 'twice'])
+                        [character(24) :: path, '&static', 'twice'])
    end subroutine test_duplicate
 
    subroutine test_nan(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&rupture t_break = NaN /'//nl, [character(16) :: path, '&rupture', 't_break', 'finite'])
+      call expect_error(error, '&rupture t_break = NaN /'//nl, [character(24) :: path, '&rupture', 't_break', 'finite'])
    end subroutine test_nan
 
    subroutine test_unknown_field(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, "&output fields = 'tension speed' /"//nl, [character(16) :: path, '&output', 'fields', &
+      call expect_error(error, "&output fields = 'tension speed' /"//nl, [character(24) :: path, '&output', 'fields', &
                                                                            'speed', 'allowed'])
    end subroutine test_unknown_field
 
    subroutine test_unknown_law(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, "&material law = 'cubic' /"//nl, [character(16) :: path, '&material', 'cubic', 'tanh'])
+      call expect_error(error, "&material law = 'cubic' /"//nl, [character(24) :: path, '&material', 'cubic', 'tanh'])
    end subroutine test_unknown_law
    !> The input table of README.md is the schema's (make schema rewrites it).
    subroutine test_readme_table(error)
@@ -502,7 +502,7 @@ contains
 
    subroutine test_s_break_outside(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&rupture s_break = 70 /'//nl, [character(24) :: path, '&rupture', 's_break = 70', &
+      call expect_error(error, '&rupture s_break = 70 /'//nl, [character(32) :: path, '&rupture', 's_break = 70', &
                                                                  'in [0, 60 (&cable length)]'])
       if (allocated(error)) return
       ! A negative s_break is the default's way to say L; given, it is refused.

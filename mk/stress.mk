@@ -2,7 +2,7 @@
 #   make stress        the stress-test sweep (example/stress, in process, about a minute on one core):
 #                      writes docs/stress.md and docs/stress.csv; docs/stability.md reads them
 #   make stress-quick  a smoke test of the sweep (21 nodes only), tables in build/stress-quick/
-#   make test-fuzz     bad-input fuzzing of bin/xcable (test/test_fuzz.sh, 99 malformed namelists)
+#   make test-fuzz     bad-input fuzzing of bin/xcable (test/test_fuzz.sh, 133 malformed namelists)
 
 .PHONY: stress stress-quick test-fuzz
 

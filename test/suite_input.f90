@@ -1,11 +1,14 @@
-!> Namelist input: the paper's cases read back, and one test per class of bad
-!> input, each checking that the message names the file, the group, the
-!> variable and what is allowed.
+!> Namelist input: the paper's cases read back, the schema against the reader
+!> (every variable read, echoed and read back; the defaults; the README
+!> table), and one test per class of bad input, each checking that the
+!> message names the file, the group, the variable and what is allowed.
 module suite_input
    use xcable_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
    use xcable_error, only: fatal_error, stat_input
-   use xcable_io_input, only: case_config, read_config
+   use xcable_io_input, only: case_config, read_config, read_values, config_text, value_text
+   use xcable_io_schema, only: schema_entry, schema_table, schema_text, is_table
+   use xcable_strings, only: real_text, to_lower
    use xcable_case, only: setup_case
    use xcable_model_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
@@ -17,6 +20,7 @@ module suite_input
 
    character(len=*), parameter :: path = 'build/test_input.nml'
    character(len=*), parameter :: nl = new_line('a')
+   character(len=*), parameter :: table_path = 'build/test_input_table.dat'
 
 contains
 
@@ -37,7 +41,34 @@ contains
                new_unittest('duplicated_group', test_duplicate), &
                new_unittest('nan_value', test_nan), &
                new_unittest('unknown_field', test_unknown_field), &
-               new_unittest('unknown_law', test_unknown_law)]
+               new_unittest('unknown_law', test_unknown_law), &
+               new_unittest('readme_table', test_readme_table), &
+               new_unittest('schema_defaults', test_schema_defaults), &
+               new_unittest('schema_round_trip', test_schema_round_trip), &
+               new_unittest('echo_round_trip', test_echo_round_trip), &
+               new_unittest('given_variables', test_given), &
+               new_unittest('s_break_default', test_s_break_default), &
+               new_unittest('direction_normalised', test_direction_normalised), &
+               new_unittest('table_file_read', test_table_file_read), &
+               new_unittest('tension_and_end_position', test_tension_and_position), &
+               new_unittest('s_break_outside_cable', test_s_break_outside), &
+               new_unittest('mass_end_without_mass', test_mass_not_positive), &
+               new_unittest('unknown_end_kind', test_unknown_kind), &
+               new_unittest('unknown_words', test_unknown_words), &
+               new_unittest('two_free_ends', test_two_free_ends), &
+               new_unittest('nothing_holds_cable', test_nothing_holds), &
+               new_unittest('position_of_loose_end', test_position_of_loose_end), &
+               new_unittest('ramp_without_time', test_ramp_without_time), &
+               new_unittest('harmonic_period', test_harmonic_period), &
+               new_unittest('harmonic_direction', test_harmonic_direction), &
+               new_unittest('table_missing', test_table_missing), &
+               new_unittest('table_too_short', test_table_too_short), &
+               new_unittest('table_not_increasing', test_table_not_increasing), &
+               new_unittest('table_columns_unequal', test_table_columns), &
+               new_unittest('table_inline_and_file', test_table_inline_and_file), &
+               new_unittest('table_file_missing', test_table_file_missing), &
+               new_unittest('table_file_malformed', test_table_file_malformed), &
+               new_unittest('rupture_at_loose_end', test_rupture_at_loose_end)]
    end subroutine collect_input
 
    !> Read text as a case (validation and the law-dependent checks) and expect
@@ -112,19 +143,19 @@ contains
 
    subroutine test_misspelled(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&numerics nodez = 11 /'//nl, [character(16) :: path, '&numerics', 'nodez', 'allowed'])
+      call expect_error(error, '&numerics nodez = 11 /'//nl, [character(24) :: path, '&numerics', 'nodez', 'allowed'])
    end subroutine test_misspelled
 
    subroutine test_wrong_type(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&numerics nodes = 12.5 /'//nl, [character(16) :: path, '&numerics', 'nodes', '12.5', &
+      call expect_error(error, '&numerics nodes = 12.5 /'//nl, [character(24) :: path, '&numerics', 'nodes', '12.5', &
                                                                  'integer'])
    end subroutine test_wrong_type
 
    subroutine test_missing_slash(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, '&static tension = 1.8e5'//nl//'&rupture t_break = 0.005 /'//nl, &
-                        [character(16) :: path, '&static', '/'])
+                        [character(24) :: path, '&static', '/'])
    end subroutine test_missing_slash
 
    subroutine test_missing_file(error)
@@ -140,56 +171,496 @@ contains
 
    subroutine test_negative_length(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&cable length = -60 /'//nl, [character(16) :: path, '&cable', 'length = -60', 'in [0.01'])
+      call expect_error(error, '&cable length = -60 /'//nl, [character(24) :: path, '&cable', 'length = -60', 'in [0.01'])
    end subroutine test_negative_length
 
    subroutine test_nodes(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&numerics nodes = 2 /'//nl, [character(16) :: path, '&numerics', 'nodes = 2', 'from 3'])
+      call expect_error(error, '&numerics nodes = 2 /'//nl, [character(24) :: path, '&numerics', 'nodes = 2', 'from 3'])
    end subroutine test_nodes
 
    subroutine test_tension_zero(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&static tension = 0 /'//nl, [character(16) :: path, '&static', 'tension', '> 0'])
+      call expect_error(error, '&static tension = 0 /'//nl, [character(24) :: path, '&static', 'tension', '> 0'])
    end subroutine test_tension_zero
 
    !> 600 kN needs a strain beyond the tanh law's documented range.
    subroutine test_tension_range(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&static tension = 600000 /'//nl, [character(16) :: path, '&static', 'tension', &
+      call expect_error(error, '&static tension = 600000 /'//nl, [character(24) :: path, '&static', 'tension', &
                                                                    'strain_max'])
    end subroutine test_tension_range
 
    subroutine test_unknown_group(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, '&static tension = 1.8e5 /'//nl//'&solver tol = 1 /'//nl, &
-                        [character(16) :: path, '&solver', 'allowed'])
+                        [character(24) :: path, '&solver', 'allowed'])
    end subroutine test_unknown_group
 
    subroutine test_no_group(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '! only a comment'//nl//nl, [character(16) :: path, 'no namelist group'])
+      call expect_error(error, '! only a comment'//nl//nl, [character(24) :: path, 'no namelist group'])
    end subroutine test_no_group
 
    subroutine test_duplicate(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, '&static tension = 1.8e5 /'//nl//'&static tension = 2e5 /'//nl, &
-                        [character(16) :: path, '&static', 'twice'])
+                        [character(24) :: path, '&static', 'twice'])
    end subroutine test_duplicate
 
    subroutine test_nan(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, '&rupture t_break = NaN /'//nl, [character(16) :: path, '&rupture', 't_break', 'finite'])
+      call expect_error(error, '&rupture t_break = NaN /'//nl, [character(24) :: path, '&rupture', 't_break', 'finite'])
    end subroutine test_nan
 
    subroutine test_unknown_field(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, "&output fields = 'tension speed' /"//nl, [character(16) :: path, '&output', 'fields', &
+      call expect_error(error, "&output fields = 'tension speed' /"//nl, [character(24) :: path, '&output', 'fields', &
                                                                            'speed', 'allowed'])
    end subroutine test_unknown_field
 
    subroutine test_unknown_law(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, "&material law = 'cubic' /"//nl, [character(16) :: path, '&material', 'cubic', 'tanh'])
+      call expect_error(error, "&material law = 'cubic' /"//nl, [character(24) :: path, '&material', 'cubic', 'tanh'])
    end subroutine test_unknown_law
+   !> The input table of README.md is the schema's (make schema rewrites it).
+   subroutine test_readme_table(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: readme = 'README.md', begin = '<!-- schema:begin -->', finish = '<!-- schema:end -->'
+      character(:), allocatable :: table, expected
+      character(len=4096) :: line
+      integer :: unit, ios, lineno, at, first
+      logical :: inside, ended
+      open (newunit=unit, file=readme, status='old', action='read', iostat=ios)
+      call check(error, ios == 0, readme//' not found in the working directory (fpm test runs in the project root)')
+      if (allocated(error)) return
+      table = ''
+      inside = .false.
+      ended = .false.
+      lineno = 0
+      first = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         lineno = lineno + 1
+         if (trim(line) == finish .and. inside) then
+            ended = .true.
+            exit
+         end if
+         if (inside) table = table//trim(line)//nl
+         if (trim(line) == begin) then
+            inside = .true.
+            first = lineno + 1
+         end if
+      end do
+      close (unit)
+      call check(error, ended, readme//' lacks the markers '//begin//' and '//finish//' around the input table')
+      if (allocated(error)) return
+      expected = schema_text('markdown')
+      if (table == expected) return
+      ! Name the first line that differs.
+      at = 1
+      do while (at <= min(len(table), len(expected)))
+         if (table(at:at) /= expected(at:at)) exit
+         at = at + 1
+      end do
+      call fatal_error(error, readme//' line '//str_count(table(1:at - 1), nl, first)//': the input table differs '// &
+                       'from xcable --schema markdown (src/xcable/io/schema.f90); run make schema')
+   end subroutine test_readme_table
+
+   !> Line number in a file of the end of a text that starts on line first.
+   function str_count(text, newline, first) result(s)
+      character(*), intent(in) :: text, newline
+      integer, intent(in) :: first
+      character(:), allocatable :: s
+      character(len=12) :: buf
+      integer :: i, n
+      n = first
+      do i = 1, len(text)
+         if (text(i:i) == newline) n = n + 1
+      end do
+      write (buf, '(i0)') n
+      s = trim(buf)
+   end function str_count
+
+   !> The schema's defaults are those of case_config (io/config.f90).
+   subroutine test_schema_defaults(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(schema_entry), allocatable :: t(:)
+      type(case_config) :: config
+      integer :: i
+      t = schema_table()
+      do i = 1, size(t)
+         call check(error, value_text(config, t(i)) == trim(t(i)%default), '&'//trim(t(i)%group)//' '// &
+                    trim(t(i)%name)//': schema default "'//trim(t(i)%default)//'", case_config default "'// &
+                    value_text(config, t(i))//'"')
+         if (allocated(error)) return
+      end do
+   end subroutine test_schema_defaults
+
+   !> Every variable of the schema, given a value of its own in a namelist,
+   !> is read (the namelist reads know it) into its own component (access
+   !> maps it there): the schema and the two compile-time lists agree.
+   subroutine test_schema_round_trip(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(schema_entry), allocatable :: t(:)
+      type(case_config) :: config
+      character(len=16) :: group
+      character(:), allocatable :: text, expected(:), value
+      integer :: i
+      t = schema_table()
+      allocate (character(len=200) :: expected(size(t)))
+      text = ''
+      group = ''
+      do i = 1, size(t)
+         if (t(i)%group /= group) then
+            if (len(text) > 0) text = text//' /'//nl
+            group = t(i)%group
+            text = text//'&'//trim(group)
+         end if
+         call own_value(t(i), i, value, expected(i))
+         text = text//nl//'   '//trim(t(i)%name)//' = '//value
+      end do
+      text = text//' /'//nl
+      call write_text(path, text)
+      call read_values(path, config, error)
+      if (allocated(error)) return
+      do i = 1, size(t)
+         call check(error, value_text(config, t(i)) == trim(expected(i)), '&'//trim(t(i)%group)//' '// &
+                    trim(t(i)%name)//': wrote '//trim(expected(i))//', read back "'//value_text(config, t(i))//'"')
+         if (allocated(error)) return
+      end do
+   end subroutine test_schema_round_trip
+
+   !> A value of entry i unlike any default and any other entry's: as written
+   !> in the namelist, and as value_text should give it back.
+   subroutine own_value(e, i, written, expected)
+      type(schema_entry), intent(in) :: e
+      integer, intent(in) :: i
+      character(:), allocatable, intent(out) :: written
+      character(*), intent(out) :: expected
+      character(len=16) :: buf
+      integer :: k, n
+      select case (e%type)
+      case ('real')
+         n = e%count
+         if (is_table(e)) n = 3
+         written = ''
+         do k = 1, n
+            if (k > 1) written = written//', '
+            written = written//real_text(1000.0_dp*i + k + 0.25_dp)
+         end do
+         expected = written
+      case ('integer')
+         write (buf, '(i0)') 1000 + i
+         written = trim(buf)
+         expected = written
+      case ('logical')
+         written = merge('.false.', '.true. ', e%default == '.true.')
+         written = trim(written)
+         expected = written
+      case default
+         if (len_trim(e%choices) > 0 .and. e%word_list) then
+            written = "'Z, U'"
+            expected = "'z, u'"
+         else if (len_trim(e%choices) > 0) then
+            ! The last allowed word (not the default, which is the first), in capitals.
+            k = index(trim(e%choices), ' ', back=.true.)
+            written = "'"//upper(trim(e%choices(k + 1:)))//"'"
+            expected = "'"//trim(e%choices(k + 1:))//"'"
+         else
+            write (buf, '(a,i0,a)') "'f", i, ".dat'"
+            written = trim(buf)
+            expected = written
+         end if
+      end select
+   end subroutine own_value
+
+   !> Upper-case copy.
+   pure function upper(s) result(t)
+      character(*), intent(in) :: s
+      character(len(s)) :: t
+      integer :: i
+      t = s
+      do i = 1, len(s)
+         if (s(i:i) >= 'a' .and. s(i:i) <= 'z') t(i:i) = achar(iachar(s(i:i)) - 32)
+      end do
+   end function upper
+
+   !> The echo of a case reads back to the same case.
+   subroutine test_echo_round_trip(error)
+      type(error_type), allocatable, intent(out) :: error
+      call write_text(table_path, '# t x z'//nl//'0 0 0'//nl//'0.5 0.1 0.2  # comment'//nl//'1.25 0.3 -0.1'//nl)
+      call echo_case(error, 'paper', '&static tension = 180000 /'//nl)
+      if (allocated(error)) return
+      call echo_case(error, 'scene', "&material law = 'linear', compression = 'none' /"//nl// &
+                     "&end_a kind = 'motion', x = 1.5, z = -2, amplitude = 0.3, period = 0.7, phase = 1, "// &
+                     'direction_x = 3, direction_z = 4, ramp_time = 0.1 /'//nl// &
+                     "&end_b kind = 'force', force_x = 1e4, force_z = -500, history = 'ramp', ramp_time = 0.02 /"//nl// &
+                     '&rupture s_break = 20, t_break = 0.01, time = 0.003 /'//nl// &
+                     "&numerics scheme = 'box', mass_matrix = 'lumped', dt = 1e-4, t_end = 0.01 /"//nl// &
+                     "&output file = 'it''s.h5', fields = 'tension, u' /"//nl)
+      if (allocated(error)) return
+      call echo_case(error, 'tables', "&end_a kind = 'motion', motion = 'table', table_file = '"//table_path//"' /"//nl// &
+                     "&end_b x = 50, z = 1, kind = 'motion', motion = 'table', table_time = 0, 0.25, 2, "// &
+                     'table_x = 3*0.5, table_z = 1, 2, 3 /'//nl)
+   end subroutine test_echo_round_trip
+
+   !> Read a case, write its echo, read that: every variable the same
+   !> (table_file aside: the echo writes the table inline).
+   subroutine echo_case(error, name, text)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), intent(in) :: name, text
+      character(len=*), parameter :: echo_path = 'build/test_input_echo.nml'
+      type(case_config) :: first, second
+      type(schema_entry), allocatable :: t(:)
+      integer :: i
+      call write_text(path, text)
+      call read_config(path, first, error)
+      if (allocated(error)) then
+         error%message = name//': '//error%message
+         return
+      end if
+      call write_text(echo_path, config_text(first))
+      call read_config(echo_path, second, error)
+      if (allocated(error)) then
+         error%message = name//': the echo is refused: '//error%message//nl//config_text(first)
+         return
+      end if
+      t = schema_table()
+      do i = 1, size(t)
+         if (t(i)%name == 'table_file') cycle
+         call check(error, value_text(first, t(i)) == value_text(second, t(i)), name//': &'//trim(t(i)%group)//' '// &
+                    trim(t(i)%name)//' read "'//value_text(first, t(i))//'", echoed and read back "'// &
+                    value_text(second, t(i))//'"')
+         if (allocated(error)) return
+      end do
+      call check(error, config_text(first) == config_text(second) .or. index(config_text(first), 'table_file') > 0, &
+                 name//': the echo of the echo differs')
+   end subroutine echo_case
+
+   !> config%given lists the variables assigned, an element of p as p.
+   subroutine test_given(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(path, '&material p(2) = 10.5 /'//nl//'&static tension = 2e5 /'//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check(error, config%is_given('material', 'p') .and. config%is_given('static', 'tension') .and. &
+                 .not. config%is_given('cable', 'length') .and. .not. config%is_given('material', 'law'), &
+                 'given: "'//config%given//'"')
+   end subroutine test_given
+
+   !> s_break left out is the end b, s = L; given, it is kept.
+   subroutine test_s_break_default(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(path, '&cable length = 40 /'//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check_close(error, config%s_break, 40.0_dp, 's_break left out', rel_tol=1.0e-15_dp)
+      if (allocated(error)) return
+      call write_text(path, '&cable length = 40 /'//nl//'&rupture s_break = 0 /'//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check_close(error, config%s_break, 0.0_dp, 's_break = 0', abs_tol=0.0_dp)
+   end subroutine test_s_break_default
+
+   !> The direction of a harmonic motion is normalised.
+   subroutine test_direction_normalised(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(path, "&end_a kind = 'motion', direction_x = 3, direction_z = -4 /"//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check_close(error, config%end_a%direction_x, 0.6_dp, 'direction_x', rel_tol=1.0e-15_dp)
+      if (allocated(error)) return
+      call check_close(error, config%end_a%direction_z, -0.8_dp, 'direction_z', rel_tol=1.0e-15_dp)
+   end subroutine test_direction_normalised
+
+   !> A table file of two columns (z = 0), with comments and blank lines, fills the table.
+   subroutine test_table_file_read(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(table_path, '# force history'//nl//nl//'0 100'//nl//'  0.5, 200 # half'//nl//'1 50'//nl)
+      call write_text(path, "&end_b kind = 'force', history = 'table', table_file = '"//table_path//"' /"//nl// &
+                      '&rupture enabled = .false. /'//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check(error, config%end_b%table_rows == 3, 'table_rows')
+      if (allocated(error)) return
+      call check(error, all(config%end_b%table_time(1:3) == [0.0_dp, 0.5_dp, 1.0_dp]) .and. &
+                 all(config%end_b%table_x(1:3) == [100.0_dp, 200.0_dp, 50.0_dp]) .and. &
+                 all(config%end_b%table_z(1:3) == 0), 'table values')
+   end subroutine test_table_file_read
+
+   subroutine test_tension_and_position(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, '&static tension = 2e5 /'//nl//'&end_b x = 50 /'//nl, &
+                        [character(24) :: path, '&static', 'tension = 200000', '&end_b x = 50', 'both given', 'give one'])
+   end subroutine test_tension_and_position
+
+   subroutine test_s_break_outside(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, '&rupture s_break = 70 /'//nl, [character(32) :: path, '&rupture', 's_break = 70', &
+                                                                 'in [0, 60 (&cable length)]'])
+      if (allocated(error)) return
+      ! A negative s_break is the default's way to say L; given, it is refused.
+      call expect_error(error, '&rupture s_break = -1 /'//nl, [character(24) :: path, '&rupture', 's_break = -1', &
+                                                                 'in [0, 60'])
+   end subroutine test_s_break_outside
+
+   subroutine test_mass_not_positive(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'mass' /"//nl, [character(24) :: path, '&end_b', 'mass = 0', '> 0', &
+                                                               "kind = 'mass'"])
+   end subroutine test_mass_not_positive
+
+   subroutine test_unknown_kind(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'pinned' /"//nl, [character(24) :: path, '&end_a', "kind = 'pinned'", &
+                                                                 "'fixed', 'free', 'force'", "'motion', 'mass'"])
+   end subroutine test_unknown_kind
+
+   !> Every variable with allowed words refuses another word, naming the words.
+   subroutine test_unknown_words(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: cases(5) = [character(len=40) :: &
+                                                 'end_b history constant ramp', 'end_a motion harmonic table', &
+                                                 'numerics scheme rod box', 'numerics mass_matrix averaged lumped', &
+                                                 'material compression law none']
+      character(len=40) :: line, group, name, first, second
+      integer :: i
+      do i = 1, size(cases)
+         line = cases(i)
+         read (line, *) group, name, first, second
+         call expect_error(error, '&'//trim(group)//' '//trim(name)//" = 'bogus' /"//nl, &
+                           [character(40) :: path, '&'//trim(group), trim(name)//" = 'bogus'", 'must be one of', &
+                            "'"//trim(first)//"'", "'"//trim(second)//"'"])
+         if (allocated(error)) return
+      end do
+   end subroutine test_unknown_words
+
+   subroutine test_two_free_ends(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'free' /"//nl//"&end_b kind = 'free' /"//nl, &
+                        [character(32) :: path, "&end_a: kind = 'free'", "&end_b: kind = 'free'", 'no support', &
+                         'no static state'])
+   end subroutine test_two_free_ends
+
+   subroutine test_nothing_holds(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'free' /"//nl//"&end_b kind = 'force' /"//nl, &
+                        [character(32) :: path, "&end_a: kind = 'free'", "&end_b: kind = 'force'", &
+                         'nothing holds the cable', "'fixed' or 'motion'"])
+      if (allocated(error)) return
+      call expect_error(error, "&end_a kind = 'mass', mass = 10 /"//nl//"&end_b kind = 'force' /"//nl, &
+                        [character(32) :: path, "&end_a: kind = 'mass'", 'nothing holds the cable'])
+   end subroutine test_nothing_holds
+
+   subroutine test_position_of_loose_end(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'force', x = 5 /"//nl, &
+                        [character(32) :: path, '&end_b', 'x = 5', "kind = 'force'", 'follows from the statics'])
+      if (allocated(error)) return
+      call expect_error(error, "&end_a kind = 'free', z = -3 /"//nl, &
+                        [character(32) :: path, '&end_a', 'z = -3', "kind = 'free'", 'follows from the statics'])
+   end subroutine test_position_of_loose_end
+
+   subroutine test_ramp_without_time(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'force', history = 'ramp' /"//nl//'&rupture s_break = 30 /'//nl, &
+                        [character(32) :: path, '&end_b', 'ramp_time = 0', '> 0', "history = 'ramp'"])
+   end subroutine test_ramp_without_time
+
+   subroutine test_harmonic_period(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'motion', period = 0 /"//nl, &
+                        [character(32) :: path, '&end_a', 'period = 0', '> 0', "motion = 'harmonic'"])
+   end subroutine test_harmonic_period
+
+   subroutine test_harmonic_direction(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'motion', direction_z = 0 /"//nl, &
+                        [character(40) :: path, '&end_a', 'direction_x = 0, direction_z = 0', 'must not be zero'])
+   end subroutine test_harmonic_direction
+
+   subroutine test_table_missing(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'force', history = 'table' /"//nl//'&rupture s_break = 30 /'//nl, &
+                        [character(40) :: path, '&end_b', "history = 'table' without a table", 'table_file'])
+   end subroutine test_table_missing
+
+   subroutine test_table_too_short(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'motion', motion = 'table', table_time = 0.5, table_x = 1, "// &
+                        'table_z = 0 /'//nl, [character(40) :: path, '&end_a', 'table_time = 0.5', '1 row', &
+                                              'at least 2'])
+   end subroutine test_table_too_short
+
+   subroutine test_table_not_increasing(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, 1, table_x = 3*0, "// &
+                        'table_z = 3*0 /'//nl, [character(40) :: path, '&end_a', 'table_time(3) = 1', &
+                                                'table_time(2) = 1', 'increase strictly'])
+   end subroutine test_table_not_increasing
+
+   subroutine test_table_columns(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 1, "// &
+                        'table_z(2) = 0 /'//nl, [character(40) :: path, '&end_a', 'table_time has 2 values', &
+                                                 'table_x 1', 'table_z 2', 'equal counts'])
+      if (allocated(error)) return
+      call expect_error(error, "&end_b kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 1, 2, "// &
+                        'table_z = 0 /'//nl, [character(40) :: path, '&end_b', 'table_time has 2 values', &
+                                              'table_x 2', 'table_z 1', 'equal counts'])
+   end subroutine test_table_columns
+
+   subroutine test_table_inline_and_file(error)
+      type(error_type), allocatable, intent(out) :: error
+      call write_text(table_path, '0 1'//nl//'1 2'//nl)
+      call expect_error(error, "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 1, 2, "// &
+                        "table_z = 0, 0, table_file = '"//table_path//"' /"//nl, &
+                        [character(48) :: path, '&end_a', "table_file = '"//table_path//"'", 'inline table', &
+                         'give one'])
+   end subroutine test_table_inline_and_file
+
+   subroutine test_table_file_missing(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_a kind = 'motion', motion = 'table', table_file = 'build/no_such_table.dat' /"// &
+                        nl, [character(48) :: path, '&end_a', "table_file = 'build/no_such_table.dat'", 'no such file'])
+   end subroutine test_table_file_missing
+
+   !> A bad line of a table file is named by its number.
+   subroutine test_table_file_malformed(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: text = "&end_a kind = 'motion', motion = 'table', table_file = '"// &
+                                            table_path//"' /"//nl
+      call write_text(table_path, '# t x'//nl//'0 1'//nl//'0.5 abc'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', "table_file = '"//table_path//"'", 'line 3', &
+                                      '"abc" is not a finite real number'])
+      if (allocated(error)) return
+      call write_text(table_path, '0 1 2 3'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'line 1', 'expected 2 or 3 numbers'])
+      if (allocated(error)) return
+      call write_text(table_path, '0 1 2'//nl//'1 2'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'line 2', 'the lines before have 3'])
+      if (allocated(error)) return
+      call write_text(table_path, '0 1'//nl//'# x'//nl//'0 2'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'line 3', 'increase strictly'])
+      if (allocated(error)) return
+      call write_text(table_path, '# only a comment'//nl//'0 1'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 rows', 'at least 2'])
+   end subroutine test_table_file_malformed
+
+   subroutine test_rupture_at_loose_end(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'free' /"//nl, &
+                        [character(40) :: path, '&rupture', 's_break = 60 (the default, L)', "kind = 'free'", &
+                         'nothing to break', 'enabled = .false.'])
+      if (allocated(error)) return
+      call expect_error(error, "&end_a kind = 'force' /"//nl//'&rupture s_break = 0 /'//nl, &
+                        [character(40) :: path, '&rupture', 's_break = 0, at end a', "kind = 'force'", &
+                         'nothing to break'])
+   end subroutine test_rupture_at_loose_end
 end module suite_input

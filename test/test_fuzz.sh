@@ -10,8 +10,9 @@
 # that has an empty results/ (so a case that slipped through would write its
 # result file there). Every case must end with
 #   - exit code 2 (no signal, no timeout),
-#   - exactly one line on stderr, 'xcable: error: ...', containing the word
-#     the case expects (the group, the variable or the file at fault),
+#   - exactly one line on stderr, 'xcable: error: ...', containing every
+#     word the case expects: the variable (or group) at fault with its value
+#     where it has one, and the specific reason (not merely the file name),
 #   - no 'Backtrace', 'Fortran runtime error' or 'Segmentation' anywhere,
 #   - no file created (the scratch directory and any absolute output path
 #     are checked).
@@ -33,11 +34,13 @@ failed=0
 failures=()
 
 # --- case construction ------------------------------------------------------
-# begin NAME EXPECT: a new scratch directory; the case file is $f.
+# begin NAME EXPECT...: a new scratch directory; the case file is $f. The
+# message must contain every EXPECT (case-insensitive).
 begin() {
    n=$((n + 1))
    name=$1
-   expect=$2
+   shift
+   expect=("$@")
    dir=$work/$(printf 'case%03d' "$n")
    mkdir -p "$dir/results"
    f=$dir/case.nml
@@ -81,8 +84,10 @@ check() {
       problem="${problem:+$problem; }$lines lines on stderr, expected 1"
    elif ! grep -q '^xcable: error: ' "$err"; then
       problem="${problem:+$problem; }stderr does not start with 'xcable: error: '"
-   elif ! grep -q -i -F -- "$expect" "$err"; then
-      problem="${problem:+$problem; }message does not name '$expect'"
+   else
+      for p in "${expect[@]}"; do
+         grep -q -i -F -- "$p" "$err" || problem="${problem:+$problem; }message does not name '$p'"
+      done
    fi
    if [[ $before != "$after" ]]; then
       problem="${problem:+$problem; }created: $(comm -13 <(echo "$before") <(echo "$after") | tr '\n' ' ')"
@@ -149,7 +154,7 @@ begin 'truncated inside a quoted file name' '&output'
 from slow_315kN; cut_after "file = '" 5; check
 begin 'truncated to the comment header' 'no namelist group'
 from fast_180kN; cut_after '&static' 0; check
-begin 'truncated to zero bytes' 'case.nml'
+begin 'truncated to zero bytes' 'case.nml' 'no namelist group found'
 from fast_180kN; : >"$f"; check
 begin 'truncated inside a value (no /)' '&static'
 from slow_180kN; cut_after '&static' 22; check
@@ -173,7 +178,7 @@ begin 'string without quotes' 'file'
 from slow_180kN; edit "s|file = 'results/slow_180kN.h5'|file = results/slow_180kN.h5|"; check
 begin 'law given as a number' 'law'
 from slow_180kN; add '&material law = 5 /'; check
-begin 'array with a word' 'p'
+begin 'array with a word' 'p = 2.703e5, ten' '"ten" is not a finite real number'
 from slow_180kN; add '&material p = 2.703e5, ten, -2.128, 2.627e5, 135.5 /'; check
 begin 'fields given as a number' 'fields'
 from slow_180kN; set_in output 'fields = 3'; check
@@ -189,7 +194,7 @@ begin 't_end = +inf' 't_end'
 from slow_315kN; edit 's/t_end = [0-9.]*/t_end = +inf/'; check
 begin 'interval = nan' 'interval'
 from slow_315kN; edit 's/interval = 0.01/interval = nan/'; check
-begin 'p(2) = NaN' 'p'
+begin 'p(2) = NaN' 'p(2) = NaN' 'not a finite real number'
 from slow_315kN; add '&material p(2) = NaN /'; check
 begin 'theta = NaN' 'theta'
 from slow_315kN; set_in numerics 'theta = NaN'; check
@@ -251,9 +256,9 @@ begin 'min_step_fraction = 0' 'min_step_fraction'
 from slow_315kN; set_in numerics 'min_step_fraction = 0'; check
 begin 'interval = 1e-300' 'interval'
 from slow_315kN; edit 's/interval = 0.01/interval = 1e-300/'; check
-begin 'p(1) = 1e300' 'p'
+begin 'p(1) = 1e300' 'p(1) = 1e300' 'in [-1e12, 1e12]'
 from slow_315kN; add '&material p(1) = 1e300 /'; check
-begin 'p(5) = -135.5 (f decreasing)' 'p'
+begin 'p(5) = -135.5 (f decreasing)' 'p(5) = -135.5' '> 0' 'tanh law'
 from slow_315kN; add '&material p(5) = -135.5 /'; check
 begin 'strain_max = 1e-300' 'tension'
 from slow_315kN; add '&material strain_max = 1e-300 /'; check
@@ -277,11 +282,11 @@ begin 'duplicated group &static' '&static'
 from fast_180kN; add '&static tension = 100000 /'; check
 begin 'duplicated group &numerics' '&numerics'
 from slow_315kN; add '&numerics nodes = 121 /'; check
-begin 'subscript out of range p(7)' 'p'
+begin 'subscript out of range p(7)' 'p(7)' 'index from 1 to 5'
 from slow_315kN; add '&material p(7) = 1 /'; check
-begin 'subscript zero p(0)' 'p'
+begin 'subscript zero p(0)' 'p(0)' 'index from 1 to 5'
 from slow_315kN; add '&material p(0) = 1 /'; check
-begin 'too many values for p' 'p'
+begin 'too many values for p' 'p = 1, 2, 3, 4, 5, 6' 'p takes at most 5'
 from slow_315kN; add '&material p = 1, 2, 3, 4, 5, 6 /'; check
 begin 'subscript on a scalar' 'tension'
 from slow_315kN; edit 's/tension = 315000/tension(2) = 315000/'; check
@@ -292,40 +297,120 @@ from slow_315kN; add "&material law = 'rubber' /"; check
 begin 'unknown snapshot field' 'fields'
 from slow_315kN; set_in output "fields = 'tension torque'"; check
 
+# --- scenes: ends, tables, the rupture position ----------------------------------
+begin 'unknown end kind' "kind = 'pinned'" "'fixed', 'free', 'force', 'motion', 'mass'"
+from slow_315kN; add "&end_a kind = 'pinned' /"; check
+begin 'end kind given as a number' 'kind = 1' 'must be a quoted string'
+from slow_315kN; add '&end_b kind = 1 /'; check
+begin 'unknown force history' "history = 'sudden'" "'constant', 'ramp', 'table'"
+from slow_315kN; add "&end_b kind = 'force', history = 'sudden' /"; check
+begin 'unknown motion' "motion = 'circle'" "'harmonic', 'table'"
+from slow_315kN; add "&end_a kind = 'motion', motion = 'circle' /"; check
+begin 'unknown scheme' "scheme = 'fem'" "'rod', 'box'"
+from slow_315kN; set_in numerics "scheme = 'fem'"; check
+begin 'unknown mass_matrix' "mass_matrix = 'full'" "'averaged', 'lumped'"
+from slow_315kN; set_in numerics "mass_matrix = 'full'"; check
+begin 'unknown compression' "compression = 'slack'" "'law', 'none'"
+from slow_315kN; add "&material compression = 'slack' /"; check
+begin 'mass end with mass = 0' '&end_b' 'mass = 0' "must be > 0 for kind = 'mass'"
+from slow_315kN; add "&end_b kind = 'mass' /"; set_in rupture 's_break = 30'; check
+begin 'mass end with mass = -5' '&end_b' 'mass = -5' 'in [0, 1e9]'
+from slow_315kN; add "&end_b kind = 'mass', mass = -5 /"; set_in rupture 's_break = 30'; check
+begin 'break beyond the length' 's_break = 70' 'in [0, 60 (&cable length)]'
+from slow_315kN; set_in rupture 's_break = 70'; check
+begin 'break at a negative position' 's_break = -5' 'in [0, 60'
+from slow_315kN; set_in rupture 's_break = -5'; check
+begin 'break beyond a shorter cable' 's_break = 50' 'in [0, 40 (&cable length)]'
+from slow_315kN; set_in rupture 's_break = 50'; add '&cable length = 40 /'; check
+begin 'two free ends' "kind = 'free'" 'no support' 'no static state'
+from slow_315kN; add "&end_a kind = 'free' /"; add "&end_b kind = 'free' /"; check
+begin 'a free end and a force end' "&end_b: kind = 'force'" 'nothing holds the cable'
+from slow_315kN; add "&end_a kind = 'free' /"; add "&end_b kind = 'force' /"; check
+begin 'tension and end position both given' 'tension = 315000' '&end_b x = 50' 'both given'
+from slow_315kN; add '&end_b x = 50 /'; check
+begin 'position of a force end' '&end_b' 'z = 1' "kind = 'force'" 'follows from the statics'
+from slow_315kN; add "&end_b kind = 'force', z = 1 /"; set_in rupture 's_break = 30'; check
+begin 'force ramp without ramp_time' 'ramp_time = 0' "history = 'ramp'"
+from slow_315kN; add "&end_b kind = 'force', history = 'ramp' /"; set_in rupture 's_break = 30'; check
+begin 'harmonic motion with period = 0' 'period = 0' "motion = 'harmonic'"
+from slow_315kN; add "&end_a kind = 'motion', period = 0 /"; check
+begin 'harmonic motion without direction' 'direction_x = 0, direction_z = 0' 'must not be zero'
+from slow_315kN; add "&end_a kind = 'motion', direction_z = 0 /"; check
+begin 'break at a free end (the default s_break)' 's_break = 60 (the default, L)' "kind = 'free'" 'nothing to break'
+from slow_315kN; add "&end_b kind = 'free' /"; check
+begin 'table motion without a table' "motion = 'table' without a table"
+from slow_315kN; add "&end_a kind = 'motion', motion = 'table' /"; check
+begin 'table of one row' 'table_time = 0' '1 row' 'at least 2'
+from slow_315kN; add "&end_a kind = 'motion', motion = 'table', table_time = 0, table_x = 0, table_z = 0 /"; check
+begin 'table times not increasing' 'table_time(3) = 0.5' 'increase strictly'
+from slow_315kN
+add "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, 0.5, table_x = 3*0, table_z = 3*0 /"; check
+begin 'table columns of unequal counts' 'table_time has 3 values' 'table_x 2' 'equal counts'
+from slow_315kN
+add "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, 2, table_x = 0, 0, table_z = 3*0 /"; check
+begin 'table longer than 1000 rows' 'table_time = 1001*0' 'takes at most 1000'
+from slow_315kN; add "&end_a table_time = 1001*0 /"; check
+begin 'table value NaN' 'table_x = 0, NaN' '"NaN" is not a finite real number'
+from slow_315kN; add "&end_a table_time = 0, 1, table_x = 0, NaN, table_z = 0, 0 /"; check
+begin 'table both inline and in a file' "table_file = 't.dat'" 'inline table' 'give one'
+from slow_315kN; printf '0 0\n1 1\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 0, 1, table_z = 0, 0, table_file = 't.dat' /"
+check
+begin 'missing table file' "table_file = 'no_such.dat'" 'no such file'
+from slow_315kN; add "&end_a kind = 'motion', motion = 'table', table_file = 'no_such.dat' /"; check
+begin 'table file with a word' "table_file = 't.dat'" 'line 3' '"x" is not a finite real number'
+from slow_315kN; printf '# t x z\n0 0 0\n1 x 0\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+begin 'table file with four columns' "table_file = 't.dat'" 'line 1' 'expected 2 or 3 numbers'
+from slow_315kN; printf '0 0 0 0\n1 1 1 1\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+begin 'table file times not increasing' "table_file = 't.dat'" 'line 3' 'increase strictly'
+from slow_315kN; printf '0 0\n1 1\n1 2\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+begin 'table file with a NUL byte' "table_file = 't.dat'" 'line 2, column 1' 'byte 0 is not printable'
+from slow_315kN; printf '0 0\n\0001 1\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+begin 'table file is a directory' "table_file = 'tdir'" 'not a regular text file'
+from slow_315kN; mkdir "$dir/tdir"
+add "&end_a kind = 'motion', motion = 'table', table_file = 'tdir' /"; check
+begin 'table file longer than 1000 rows' "table_file = 't.dat'" 'line 1001' 'more than 1000 rows'
+from slow_315kN; seq 0 1000 | awk '{ print $1, 0 }' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'
 from fast_180kN; edit 's/tension = 180000/tension 180000/'; check
 begin 'assignment without value' 'tension'
 from fast_180kN; edit 's/tension = 180000/tension = /'; check
-begin 'group without a name' 'case.nml'
+begin 'group without a name' 'line 16' '"&" without a group name'
 from fast_180kN; add '& tension = 1 /'; check
-begin 'old-style $group ... $end' 'case.nml'
+begin 'old-style $group ... $end' '"$static tension = 1 $end"' 'outside any namelist group'
 from fast_180kN; add '$static tension = 1 $end'; check
-begin 'text after the closing /' 'case.nml'
+begin 'text after the closing /' 't_break = 0.005 / junk' 'outside any namelist group'
 from fast_180kN; edit 's|t_break = 0.005 /|t_break = 0.005 / junk|'; check
 begin 'missing closing / (next group starts)' '&rupture'
 from fast_180kN; edit 's|t_break = 0.005 /|t_break = 0.005|'; check
 begin 'unterminated quote' '&output'
 from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'results/fast_180kN.h5|"; check
-begin 'line longer than 1024 characters' 'case.nml'
+begin 'line longer than 1024 characters' 'line 16 is longer than 1024 characters'
 from fast_180kN; add "! $(printf 'x%.0s' {1..1500})"; check
 begin 'file name longer than the variable holds' 'file'
 from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'results/$(printf 'd%.0s' {1..600}).h5'|"; check
-begin 'CR-only line ends (old Mac text)' 'case.nml'
+begin 'CR-only line ends (old Mac text)' 'line 1, column' 'carriage return without line feed'
 from fast_180kN; tr '\n' '\r' <"$f" >"$f.tmp"; mv "$f.tmp" "$f"; check
 
 # --- binary junk ---------------------------------------------------------------------
-begin 'NUL byte inside a group' 'case.nml'
+begin 'NUL byte inside a group' 'line 16, column 18' 'byte 0 is not printable'
 from fast_180kN; printf '&cable length = 6\0000 /\n' >>"$f"; check
-begin 'junk bytes appended' 'case.nml'
+begin 'junk bytes appended' 'line 16, column 1' 'byte 137 is not printable'
 from slow_315kN; printf '\x89HDF\r\n\x1a\n\x00\x00\xff\xfe\x01' >>"$f"; check
-begin 'UTF-8 in a comment' 'case.nml'
+begin 'UTF-8 in a comment' 'line 16, column 59' 'byte 195 is not printable'
 from slow_315kN; add '! Zugfestigkeit in kN, Dehnung in % (Kabel aus Polyamid, Länge 60 m)'; check
-begin 'the executable as input' 'case.nml'
+begin 'the executable as input' 'line 1, column 1' 'byte 127 is not printable'
 cp "$exe" "$f"; check
-begin 'an HDF5 file as input' 'case.nml'
+begin 'an HDF5 file as input' 'line 1, column 1' 'byte 137 is not printable'
 printf '\x89HDF\r\n\x1a\n' >"$f"; head -c 2000 /dev/zero >>"$f"; check
-begin 'input is a directory' 'case.nml'
+begin 'input is a directory' 'case.nml' 'not a regular text file'
 rm -rf "$f"; mkdir "$f"; check
 begin 'input does not exist' 'missing.nml'
 args=(missing.nml); check

@@ -115,7 +115,9 @@ contains
 
    !> Put the value of a string variable with allowed words in lower case, without leading blanks.
    subroutine lower_words(c, e)
+      !> The case.
       type(case_config), intent(inout) :: c
+      !> A string variable with allowed words.
       type(schema_entry), intent(in) :: e
       type(config_value) :: v
       call access(c, e, v, .false.)
@@ -126,10 +128,13 @@ contains
    !> The number of rows of each end's inline table: the number of values
    !> given to table_time, which table_x and table_z must match.
    subroutine count_table_rows(c, t, counts, error)
+      !> The case; table_rows of each end set.
       type(case_config), intent(inout) :: c
+      !> The schema.
       type(schema_entry), intent(in) :: t(:)
       !> Values given to each entry (its highest index assigned).
       integer, intent(in) :: counts(:)
+      !> Error naming the columns and their counts.
       type(error_type), allocatable, intent(out) :: error
       character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
       integer :: k, n_time, n_x, n_z
@@ -741,8 +746,9 @@ contains
       character(*), intent(in) :: group
       !> The end: defaults in, values given out.
       type(end_config), intent(inout) :: e
-      !> iostat and iomsg of the read.
+      !> iostat of the read.
       integer, intent(out) :: ios
+      !> iomsg of the read.
       character(len=*), intent(inout) :: msg
       character(len=16) :: kind, history, motion
       real(dp) :: x, z, force_x, force_z, ramp_time, amplitude, period, phase, direction_x, direction_z, mass
@@ -1061,8 +1067,11 @@ contains
 
       !> A coefficient of the tanh law in its range.
       subroutine coefficient(k, lower, upper, open)
+         !> Which coefficient.
          integer, intent(in) :: k
+         !> Its range.
          real(dp), intent(in) :: lower, upper
+         !> Whether the lower bound is excluded.
          logical, intent(in) :: open
          if (open) then
             if (c%p(k) > lower .and. c%p(k) <= upper) return
@@ -1191,6 +1200,15 @@ contains
       type(end_config) :: e
       logical :: held_a, held_b
 
+      e = c%end_a
+      call check_end(c, 'end_a', e, error)
+      if (allocated(error)) return
+      c%end_a = e
+      e = c%end_b
+      call check_end(c, 'end_b', e, error)
+      if (allocated(error)) return
+      c%end_b = e
+
       if (c%is_given('static', 'tension') .and. (c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z'))) then
          if (c%is_given('end_b', 'x')) then
             position = 'x = '//real_text(c%end_b%x)
@@ -1202,14 +1220,6 @@ contains
                           'height of end a, the span from the tension) or the end positions', stat_input)
          return
       end if
-      e = c%end_a
-      call check_end(c, 'end_a', e, error)
-      if (allocated(error)) return
-      c%end_a = e
-      e = c%end_b
-      call check_end(c, 'end_b', e, error)
-      if (allocated(error)) return
-      c%end_b = e
 
       held_a = is_word(c%end_a%kind, 'fixed motion')
       held_b = is_word(c%end_b%kind, 'fixed motion')
@@ -1426,7 +1436,7 @@ contains
    !> given together with others (the tension or the position of end b, the
    !> positions of free, force and mass ends) and tables without rows; a
    !> table read from a file is written inline, the file named in a comment.
-   !> Read back, it gives the same case.
+   !> Read back, it gives the same case (with the table inline, not from the file).
    function config_text(c) result(text)
       !> The case.
       type(case_config), intent(in) :: c
@@ -1472,6 +1482,8 @@ contains
                end do
             end associate
          end do
+         ! A group with nothing to write (&static beside the end positions) is left out.
+         if (sep == ' ') cycle
          text = text//comment//block//line//' /'//nl
       end do
    end function config_text

@@ -346,6 +346,7 @@ contains
 
    !> The variable an upper bound is taken from, as '&group name'.
    function upper_name(e) result(s)
+      !> Entry with upper_from set.
       type(schema_entry), intent(in) :: e
       character(:), allocatable :: s
       integer :: pct
@@ -419,7 +420,9 @@ contains
 
    !> One row of the markdown table.
    function markdown_row(e, heading) result(row)
+      !> Entry.
       type(schema_entry), intent(in) :: e
+      !> Text of the group column ('' after the first row of a group).
       character(*), intent(in) :: heading
       character(:), allocatable :: row, type, default, allowed
       character(len=24) :: buf
@@ -459,6 +462,7 @@ contains
 
    !> '<' before a letter, outside `code`, as '&lt;' (markdown would take <namelist stem> for a tag).
    function escape_tags(text) result(s)
+      !> A row of the table.
       character(*), intent(in) :: text
       character(:), allocatable :: s
       logical :: in_code
@@ -478,7 +482,9 @@ contains
 
    !> Whether two groups have the same variables (names, types, defaults, meanings).
    logical function same_variables(t, a, b)
+      !> The table.
       type(schema_entry), intent(in) :: t(:)
+      !> Two groups.
       character(*), intent(in) :: a, b
       integer, allocatable :: ia(:), ib(:)
       integer :: i
@@ -495,7 +501,9 @@ contains
 
    !> Blank-separated words as "'a', 'b', 'c'" (with the given quotes).
    function comma_list(words, open, close) result(s)
+      !> Blank-separated words, and what goes before each.
       character(*), intent(in) :: words, open
+      !> What goes after each (open if absent).
       character(*), intent(in), optional :: close
       character(:), allocatable :: s, last
       integer :: i, start
@@ -520,6 +528,7 @@ contains
 
    !> Names joined by blanks.
    function join(names) result(s)
+      !> Names, blank-padded.
       character(len=*), intent(in) :: names(:)
       character(:), allocatable :: s
       integer :: i

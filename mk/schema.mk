@@ -1,0 +1,17 @@
+# The input table of README.md (section "Input reference", between the
+# markers <!-- schema:begin --> and <!-- schema:end -->) is written from the
+# schema (src/xcable/io/schema.f90) by `xcable --schema markdown`.
+#   make schema   rewrite that section of README.md (fpm test checks that it is current)
+
+.PHONY: schema
+
+schema: build
+	@grep -q '^<!-- schema:begin -->$$' README.md && grep -q '^<!-- schema:end -->$$' README.md || \
+		{ echo "make schema: README.md lacks the markers <!-- schema:begin --> / <!-- schema:end -->" >&2; exit 2; }
+	@mkdir -p build
+	./bin/xcable --schema markdown >build/schema.md
+	awk -v table=build/schema.md \
+		'/^<!-- schema:begin -->$$/ { print; while ((getline line < table) > 0) print line; skip = 1; next } \
+		 /^<!-- schema:end -->$$/ { skip = 0 } !skip' README.md >build/README.md.new
+	mv build/README.md.new README.md
+	@echo "README.md: input table rewritten from bin/xcable --schema markdown"

@@ -2,6 +2,7 @@
 !> attribute reads 'complete' only after finish('complete').
 module suite_output
    use xcable_kinds, only: dp
+   use xcable_strings, only: str
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_run_records, only: run_history, run_summary
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
@@ -17,7 +18,8 @@ contains
    subroutine collect_output(tests)
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('hdf5_writers_report_errors', test_writers), &
-               new_unittest('result_file_status_and_errors', test_result_file)]
+               new_unittest('result_file_status_and_errors', test_result_file), &
+               new_unittest('echo_above_64_kb', test_large_echo)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -118,6 +120,31 @@ contains
       call check(error, text == 'complete', 'status after finish: "'//text//'"')
       call delete_file(path)
    end subroutine test_result_file
+
+   !> The echo of a case with long tables (above the 64 KB of a compact HDF5
+   !> attribute) is written and reads back whole.
+   subroutine test_large_echo(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: path = 'build/test_output_echo.h5'
+      type(result_file) :: output
+      character(len=200000) :: echo
+      character(:), allocatable :: text
+      integer(hid_t) :: file
+      integer :: hdferr, i
+      do i = 1, len(echo)
+         echo(i:i) = achar(iachar('a') + mod(i, 26))
+      end do
+      call output%create(path, [0.0_dp, 1.0_dp], 'tension', echo, 'test.nml', .false., 'rod', 'strain', [integer ::], &
+                         error)
+      if (allocated(error)) return
+      call output%finish('complete')
+      call h5open_f(hdferr)
+      call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+      call read_text_attr(file, 'namelist', text)
+      call h5fclose_f(file, hdferr)
+      call check(error, text == echo, 'the 200 kB echo did not read back whole (length '//str(len(text))//')')
+      call delete_file(path)
+   end subroutine test_large_echo
 
    !> A string attribute of loc ('' when it cannot be read).
    subroutine read_text_attr(loc, name, text)

@@ -189,6 +189,16 @@ contains
          allocate (self%scene%end_b, source=fixed_end(point=self%static%end_b_point))
          self%scene%end_b%label = 'end_b'
       end if
+      ! The static state must stay within the law's documented range.
+      associate (r => self%static%r, piece => self%pieces(1)%problem%piece)
+         if (maxval(norm2(r(:, 2:n) - r(:, 1:n - 1), 1)/piece%ds - 1) > piece%law%strain_max) then
+            call fatal_error(error, scene%source//': the static state needs strain '// &
+                             str(maxval(norm2(r(:, 2:n) - r(:, 1:n - 1), 1)/piece%ds - 1))// &
+                             ', above the range of the law (&material strain_max = '//str(piece%law%strain_max)// &
+                             '): the ends are too far apart or the loads too large', stat_input)
+            return
+         end if
+      end associate
       ! Row scale: the largest static tension (1 N at least).
       associate (piece => self%pieces(1)%problem%piece)
          piece%tension_ref = max(maxval(abs(piece%law%tension(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1) &
@@ -359,7 +369,7 @@ contains
       integer(i8) :: clock_start, clock_now, clock_rate
       real(dp) :: h, h_try, wall, last_report, t_stop, max_rejections
       integer :: snapshot_index, rejected_here, n_good, p, iterations, capacity
-      logical :: newton_failed, kept, any_kept
+      logical :: newton_failed, kept, any_kept, landing
       real(dp), allocatable :: buffer(:, :)
       character(:), allocatable :: reason
 
@@ -411,7 +421,8 @@ contains
          if (self%scene%breaks .and. .not. self%broken .and. self%scene%break_time > self%t) &
             t_stop = min(t_stop, self%scene%break_time)
          h_try = h
-         if (self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*h) h_try = t_stop - self%t
+         landing = self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*h
+         if (landing) h_try = t_stop - self%t
          if (.not. (self%t + h_try > self%t)) then
             call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
                              str(self%t)//' s', stat_numerics)
@@ -461,7 +472,8 @@ contains
          if (allocated(error)) exit
          self%t = self%t + h_try
          if (abs(self%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) self%t = t_stop
-         self%summary%dt_used = max(self%summary%dt_used, h_try)
+         ! The step taken: a step shortened only to land on t_end or the break is not a change of dt.
+         if (.not. landing) self%summary%dt_used = max(self%summary%dt_used, h_try)
          if (h < self%dt) then
             n_good = n_good + 1
             if (n_good >= 4) then
@@ -936,8 +948,8 @@ contains
          end associate
       end do
       if (self%summary%min_fixed_end_tension == huge(1.0_dp)) self%summary%min_fixed_end_tension = 0
-      self%summary%courant_used = self%summary%courant_requested*max(self%summary%dt_used, tiny(1.0_dp))/self%dt
-      if (self%summary%dt_used == 0) self%summary%courant_used = self%summary%courant_requested
+      if (self%summary%dt_used == 0) self%summary%dt_used = self%dt
+      self%summary%courant_used = self%summary%courant_requested*self%summary%dt_used/self%dt
       self%summary%dissipated = self%dissipation
       if (self%options%energy) then
          reference = self%history%energy(1, 0)

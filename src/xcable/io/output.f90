@@ -82,7 +82,8 @@ contains
       integer, intent(in) :: piece_starts(:)
       !> Error when the file cannot be created.
       type(error_type), allocatable, intent(out) :: error
-      integer :: hdferr, i, dot, ios
+      integer :: hdferr, i, dot, ios, status
+      integer(hid_t) :: access
       character(len=256) :: msg
       logical :: ok
       self%path = path
@@ -93,7 +94,12 @@ contains
       end do
       call h5open_f(hdferr)
       call h5eset_auto_f(0, hdferr)
-      call h5fcreate_f(path, H5F_ACC_TRUNC_F, self%file, hdferr)
+      ! The file format of HDF5 1.8 and later stores attributes above 64 KB (the
+      ! echo of a case with 1000-row tables) in dense storage.
+      call h5pcreate_f(H5P_FILE_ACCESS_F, access, hdferr)
+      call h5pset_libver_bounds_f(access, H5F_LIBVER_V18_F, H5F_LIBVER_LATEST_F, hdferr)
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, self%file, hdferr, access_prp=access)
+      call h5pclose_f(access, status)
       if (hdferr /= 0) then
          call fatal_error(error, "cannot create the output file '"//path// &
                           "' (&output file): does its directory exist and is it writable?", stat_io)

@@ -106,6 +106,15 @@ contains
       scene%from_tension = trim(config%end_a%kind) == 'fixed' .and. trim(config%end_b%kind) == 'fixed' .and. &
                            .not. (config%is_given('end_b', 'x') .or. config%is_given('end_b', 'z'))
       scene%tension = config%tension
+      if (scene%from_tension) then
+         if (scene%law%strain_at(config%tension) > config%strain_max) then
+            call fatal_error(error, config%source//': &static: tension = '//str(config%tension)//': needs strain '// &
+                             str(scene%law%strain_at(config%tension))//', above the range of the '//trim(config%law)// &
+                             ' law (strain_max = '//str(config%strain_max)//', tension '// &
+                             str(scene%law%tension(config%strain_max))//' N)', stat_input)
+            return
+         end if
+      end if
       if (scene%from_tension .and. config%tension <= 1.001_dp*0.5_dp*scene%weight*scene%length) then
          call fatal_error(error, config%source//': &static: tension = '//str(config%tension)// &
                           ': must exceed half the weight of the cable, w0 L / 2 = '// &

@@ -236,8 +236,10 @@ begin 'diameter = 1e300' 'diameter'
 from slow_315kN; add '&cable diameter = 1e300 /'; check
 begin 'young = 1e-300' 'young'
 from slow_315kN; add '&cable young = 1e-300 /'; check
-begin 'gravity = 0 (static direction undetermined)' 'gravity'
-from slow_315kN; add '&cable gravity = 0 /'; check
+begin 'gravity = 0, the box scheme (static direction undetermined)' 'gravity' 'box'
+from slow_315kN; add '&cable gravity = 0 /'; set_in numerics "scheme = 'box'"; check
+begin 'gravity = 0, a cable held at one end only (no static shape)' 'gravity = 0' 'held at one end'
+from slow_315kN; add '&cable gravity = 0 /'; add "&end_b kind = 'free' /"; set_in rupture 'enabled = .false.'; check
 begin 'gravity = 1e300' 'gravity'
 from slow_315kN; add '&cable gravity = 1e300 /'; check
 begin 'bending_stiffness = 1e-300' 'bending_stiffness'

@@ -70,6 +70,8 @@ contains
          why = 'the box scheme breaks the cable at end b only (s_break = L)'
       else if (config%break_time /= 0) then
          why = 'the box scheme starts the break at t = 0 only'
+      else if (config%gravity < 1.0e-6_dp) then
+         why = 'the box scheme needs gravity >= 1e-6 (without weight its static cable may turn freely)'
       else if (trim(config%compression) /= 'law') then
          why = 'the box scheme has the law''s compression only (compression = ''law'')'
       end if

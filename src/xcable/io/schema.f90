@@ -76,7 +76,8 @@ contains
       call add(t, 'cable', 'young', 'real', 'Pa', '2.3e8', "Young's modulus E (for EI and for EA of the linear law)", &
                1.0e3_dp, 1.0e13_dp)
       call add(t, 'cable', 'gravity', 'real', 'm/s^2', '9.81', 'gravity g (weight per length w0 = m g)', &
-               1.0e-6_dp, 100.0_dp, note='without weight the static cable may turn freely: its direction is undetermined')
+               0.0_dp, 100.0_dp, note='0 only for the rod scheme with both ends held: without weight a cable held '// &
+               'at one end has no static shape')
       call add(t, 'cable', 'area', 'real', 'm^2', '0', 'cross-section area A', 1.0e-9_dp, 100.0_dp, &
                zero_means='pi d^2 / 4')
       call add(t, 'cable', 'bending_stiffness', 'real', 'N m^2', '0', 'bending stiffness EI (70.6 N m^2 for the paper)', &
@@ -155,31 +156,36 @@ contains
       call add(t, 'numerics', 'scheme', 'string', '-', "'rod'", &
                "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &
                choices='rod box')
-      call add(t, 'numerics', 'nodes', 'integer', '-', '121', 'number of nodes, uniform in unstretched arc length', &
+      call add(t, 'numerics', 'nodes', 'integer', '-', '121', 'number of nodes, uniform in unstretched arc length '// &
+               '(uniform on each side of a break inside the cable, the break point a node)', &
                3.0_dp, 100001.0_dp)
       call add(t, 'numerics', 'dt', 'real', 's', '0', 'time step; at most 1e6 steps to t_end', 0.0_dp, 0.0_dp, &
                lower_open=.true., upper_from='numerics%t_end', zero_means='dt from courant')
       call add(t, 'numerics', 'courant', 'real', '-', '1', &
-               'Courant number c(eps0) dt / ds used when dt = 0 (at most 1e6 steps to t_end)', 0.0_dp, 1.0e4_dp, &
+               'Courant number c dt / ds giving dt when dt = 0: c the largest axial wave speed of the static state '// &
+               '(rod; box: at the end strain), ds the longest cell; at most 1e6 steps to t_end', 0.0_dp, 1.0e4_dp, &
                lower_open=.true.)
       call add(t, 'numerics', 't_end', 'real', 's', '0.16', 'end of the run', 0.0_dp, 1.0e4_dp, lower_open=.true.)
       call add(t, 'numerics', 'theta', 'real', '-', '0.5', &
-               "time weight: 0.5 is the paper's (second order, no damping); up to 1 damps high frequencies "// &
-               '(first order); 0.55 for t_break below about 1 ms (see Numerical stability)', 0.5_dp, 1.0_dp)
+               "time weight: 0.5 conserves energy (rod) and is the paper's scheme (box), second order; up to 1 damps "// &
+               '(first order; the rod books the energy removed in the ledger column dissipation)', 0.5_dp, 1.0_dp)
       call add(t, 'numerics', 'mass_matrix', 'string', '-', "'averaged'", &
-               "kinetic energy of the rod scheme: 'averaged' (cell-averaged velocities, as the box scheme) or 'lumped'", &
+               "kinetic energy of the rod scheme: 'averaged' (cell-averaged velocities, exact axial waves at Courant 1 "// &
+               "as the box scheme, with a tenth of the shortest wave's inertia kept) or 'lumped' (half a cell's mass "// &
+               'at each node)', &
                length=16, choices='averaged lumped')
       call add(t, 'numerics', 'newton_tol', 'real', '-', '1e-7', &
-               'Newton converges when every update, divided by its scale (1 for strain and Euler parameters, T_s for '// &
-               'shear, c(eps0) for velocities, 1/L for curvature), is below this (in time steps: when the estimated '// &
-               'remaining error is); 1e-6 to 1e-10 give the same answers to the figures of docs/benchmark.md', &
+               'Newton converges when every update, divided by its scale, is below this (in time steps: when the '// &
+               'estimated remaining error is); scales: rod, the cell length for positions; box, 1 for strain and '// &
+               'Euler parameters, T_s for shear, c(eps0) for velocities, 1/L for curvature; the statics always to 1e-10', &
                1.0e-15_dp, 1.0e-3_dp)
       call add(t, 'numerics', 'newton_max_iter', 'integer', '-', '25', 'iteration limit of one Newton solve', &
                1.0_dp, 100.0_dp)
       call add(t, 'numerics', 'reuse_jacobian', 'logical', '-', '.true.', &
-               'keep the factorised Jacobian while Newton contracts well')
+               'keep the factorised Jacobian while Newton contracts well; not given: .true. for the box scheme, '// &
+               '.false. for the rod (its factorisation is cheap and full Newton takes 2-5 iterations)')
       call add(t, 'numerics', 'extrapolate', 'logical', '-', '.true.', &
-               'first guess of a step by linear extrapolation of the two previous levels')
+               'first guess of a step by extrapolation (rod: R + dt V; box: linearly from the two previous levels)')
       call add(t, 'numerics', 'min_step_fraction', 'real', '-', '0.0009765625', &
                'the step control halves a failed step down to this fraction of dt (1/1024), then stops with a named '// &
                'error', 1.0e-9_dp, 1.0_dp)

@@ -1,7 +1,13 @@
 #!/usr/bin/env bash
-# Test of the figure scripts (plots/): runs a short case, then every script, and fails unless
-# each one writes a non-empty PNG (or PDF) and gnuplot prints no warning.
+# Test of the figure scripts (plots/): runs short cases, then every script on each, and fails
+# unless each one writes a non-empty PNG (or PDF) and gnuplot prints no warning.
 #   test/test_figures.sh            (needs bin/xcable: make build; XCABLE=<path> to use another)
+# The runs and figures go to build/test-figures/ (kept for a look; cleared at the start):
+#   short_180, short_315   the paper's layout: end b released, 41 nodes, 30 ms
+#   break_middle           an inclined line (end b 60 m across, 20 m up) parting at s = 30 m:
+#                          two pieces in the snapshots, four ends in the history; 41 nodes, 30 ms
+#   heave                  a hanging 200 kg mass, the top moved up and down (a line that stays
+#                          on one vertical; a moving end and a mass end); 21 nodes, 1.5 s
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -14,23 +20,29 @@ pass() { echo "test_figures: ok: $*"; }
 command -v gnuplot >/dev/null 2>&1 || { echo "test_figures: gnuplot not found (apt-get install gnuplot-nox)" >&2; exit 1; }
 [ -x "$xcable" ] || { echo "test_figures: $xcable not found: run make build first" >&2; exit 1; }
 
-tmp=$(mktemp -d "${TMPDIR:-/tmp}/xcable-figures.XXXXXX")
-trap 'rm -rf "$tmp"' EXIT
+tmp=$root/build/test-figures
+rm -rf "$tmp"
+mkdir -p "$tmp"
 
-# Two short cases (180 and 315 kN, fast rupture): 41 nodes, 30 ms, snapshots every 10 ms, with
-# the energy ledger. In 30 ms the front has not reached the fixed end: flat fixed-end tension.
-for kN in 180 315; do
-  cat > "$tmp/short_$kN.nml" <<NML
-&static   tension = ${kN}000 /
-&rupture  t_break = 0.005 /
-&numerics nodes = 41, courant = 1.0, t_end = 0.03 /
-&output   file = '$tmp/short_$kN.h5', interval = 0.01, energy = .true., gnuplot = .true., quiet = .true. /
-NML
-  if ! "$xcable" "$tmp/short_$kN.nml" > "$tmp/xcable.log" 2>&1; then
-    cat "$tmp/xcable.log" >&2
-    echo "test_figures: FAIL: xcable could not run the short case $tmp/short_$kN.nml" >&2
+# run <name> <namelist body>: runs xcable on the namelist (output to $tmp/<name>.h5), or stops.
+run() {
+  local name=$1 body=$2
+  printf '%s\n' "$body" > "$tmp/$name.nml"
+  printf "&output file = '%s', energy = .true., gnuplot = .true., quiet = .true., %s /\n" \
+    "$tmp/$name.h5" "${3:-interval = 0.01}" >> "$tmp/$name.nml"
+  if ! "$xcable" "$tmp/$name.nml" > "$tmp/$name.log" 2>&1; then
+    cat "$tmp/$name.log" >&2
+    echo "test_figures: FAIL: xcable could not run $tmp/$name.nml" >&2
     exit 1
   fi
+}
+
+# The paper's layout: two short cases (180 and 315 kN, fast rupture), snapshots every 10 ms. In
+# 30 ms the front has not reached the fixed end: flat fixed-end tension.
+for kN in 180 315; do
+  run "short_$kN" "&static   tension = ${kN}000 /
+&rupture  t_break = 0.005 /
+&numerics nodes = 41, courant = 1.0, t_end = 0.03 /"
   blocks=$(grep -c '^# t = ' "$tmp/short_$kN.snapshots.dat" || true)
   if [ "$blocks" -ne 4 ]; then
     echo "test_figures: FAIL: xcable wrote $blocks snapshot blocks to $tmp/short_$kN.snapshots.dat," \
@@ -39,6 +51,38 @@ NML
   fi
 done
 stem_a=$tmp/short_180 stem_b=$tmp/short_315
+
+# A break in the middle of an inclined line, snapshots every 1 ms (31: enough for the map).
+run break_middle "&end_b    x = 60.0, z = 20.0 /
+&rupture  s_break = 30.0, t_break = 0.005 /
+&numerics nodes = 41, courant = 1.0, t_end = 0.03 /" "interval = 0.001"
+# A heaved hanging mass, snapshots every 50 ms.
+run heave "&end_a    kind = 'motion', amplitude = 0.5, period = 1.0, ramp_time = 0.5 /
+&end_b    kind = 'mass', mass = 200.0 /
+&rupture  enabled = .false. /
+&numerics nodes = 21, courant = 1.0, t_end = 1.5 /" "interval = 0.05"
+stem_m=$tmp/break_middle stem_h=$tmp/heave
+
+# What the scripts read from the files: the pieces of the snapshots and the ends of the history.
+# probe <stem>: prints "npieces nsnap nends Lcab" as the plot scripts see them.
+probe() {
+  gnuplot -e "stem='$1'" -e "plotdir='$plots'; load '$plots/common.gp'; load '$plots/snapshots.gp'; \
+    load '$plots/history.gp'; print sprintf('%d %d %d %g', npieces, nsnap, nends, Lcab)" 2>&1
+}
+expect_probe() {
+  local stem=$1 want=$2 got
+  got=$(probe "$stem")
+  if [ "$got" = "$want" ]; then pass "$(basename "$stem"): pieces, snapshots, ends, length = $want"
+  else fail "$(basename "$stem"): the scripts read '$got' (pieces snapshots ends length), expected '$want'"; fi
+}
+expect_probe "$stem_b" "1 4 2 60"
+expect_probe "$stem_m" "2 31 4 60"
+expect_probe "$stem_h" "1 31 2 60"
+if grep -q 'break_a:speed' "$stem_m.history.dat" && grep -q 'break_b:force' "$stem_m.history.dat"; then
+  pass "break_middle: the history header names the ends at the break"
+else
+  fail "break_middle: the history header lacks break_a/break_b: $(head -n 1 "$stem_m.history.dat")"
+fi
 
 # check <name> <file> <stderr file> <exit status>: the figure exists, is non-empty, has the right
 # signature, and gnuplot's messages hold no warning.
@@ -51,33 +95,68 @@ check() {
     *.pdf) magic=$(head -c 4 "$file"); [ "$magic" = "%PDF" ] || { fail "$name: $file is not a PDF"; return; } ;;
   esac
   if grep -qi warning "$err"; then fail "$name: gnuplot warned: $(grep -i warning "$err" | head -n 3)"; return; fi
+  if [ -s "$err" ]; then fail "$name: gnuplot said: $(head -c 600 "$err")"; return; fi
   pass "$name"
 }
 
-# Each single-run script, on both runs.
-for stem in "$stem_a" "$stem_b"; do
-  for kind in motion tension velocity ends energy; do
+# Each single-run script on each run (the paper's layout, the break in the middle, the heave).
+for stem in "$stem_a" "$stem_b" "$stem_m" "$stem_h"; do
+  for kind in motion tension velocity ends energy map; do
     out=$stem.$kind.png rc=0
     gnuplot -e "stem='$stem'; out='$out'" "$plots/$kind.gp" 2> "$stem.$kind.err" || rc=$?
     check "$kind.gp ($(basename "$stem"))" "$out" "$stem.$kind.err" "$rc"
   done
 done
-stem=$stem_b
+# The other fields of the map.
+for field in strain u v; do
+  out=$stem_m.map_$field.png rc=0
+  gnuplot -e "stem='$stem_m'; out='$out'; field='$field'" "$plots/map.gp" 2> "$stem_m.map_$field.err" || rc=$?
+  check "map.gp field=$field (break_middle)" "$out" "$stem_m.map_$field.err" "$rc"
+done
 
-# The paired panels: (a) 180 kN beside (b) 315 kN.
+# The paired panels: (a) 180 kN beside (b) 315 kN, and two scenes side by side.
 for kind in motion tension velocity; do
   out=$tmp/pair_$kind.png rc=0
   gnuplot -e "kind='$kind'; stem_a='$stem_a'; stem_b='$stem_b'; out='$out'" "$plots/pair.gp" 2> "$tmp/pair_$kind.err" || rc=$?
   check "pair.gp kind=$kind" "$out" "$tmp/pair_$kind.err" "$rc"
+  out=$tmp/pair_scenes_$kind.png rc=0
+  gnuplot -e "kind='$kind'; stem_a='$stem_m'; stem_b='$stem_b'; out='$out'" "$plots/pair.gp" 2> "$tmp/pair_scenes_$kind.err" || rc=$?
+  check "pair.gp kind=$kind (break_middle beside short_315)" "$out" "$tmp/pair_scenes_$kind.err" "$rc"
 done
 
-# The drivers: draw.sh on the run, in PNG and in PDF.
+# The drivers: draw.sh on each kind of run, in PNG, and in PDF; draw.sh's messages are not
+# warnings (it says which figures it skips and why).
+for stem in "$stem_b" "$stem_m" "$stem_h"; do
+  name=$(basename "$stem") rc=0
+  "$plots/draw.sh" "$stem" "$tmp/draw_$name" > "$tmp/draw_$name.log" 2> "$tmp/draw_$name.err" || rc=$?
+  for kind in motion tension velocity ends energy; do
+    check "draw.sh $kind.png ($name)" "$tmp/draw_$name/$kind.png" "$tmp/draw_$name.err" "$rc"
+  done
+done
+check "draw.sh map.png (break_middle)" "$tmp/draw_break_middle/map.png" "$tmp/draw_break_middle.err" 0
+if [ ! -e "$tmp/draw_short_315/map.png" ] && grep -q "map not drawn" "$tmp/draw_short_315.log"; then
+  pass "draw.sh skips the map of a run with few snapshots, and says so"
+else
+  fail "draw.sh on short_315 (4 snapshots): expected no map and a message; got $(ls "$tmp/draw_short_315")"
+fi
 rc=0
-"$plots/draw.sh" "$stem" "$tmp/case" > /dev/null 2> "$tmp/draw.err" || rc=$?
-for kind in motion tension velocity ends energy; do check "draw.sh $kind.png" "$tmp/case/$kind.png" "$tmp/draw.err" "$rc"; done
-rc=0
-"$plots/draw.sh" "$stem" "$tmp/casepdf" pdf > /dev/null 2> "$tmp/drawpdf.err" || rc=$?
-check "draw.sh tension.pdf" "$tmp/casepdf/tension.pdf" "$tmp/drawpdf.err" "$rc"
+"$plots/draw.sh" "$stem_m" "$tmp/draw_pdf" pdf > /dev/null 2> "$tmp/draw_pdf.err" || rc=$?
+for kind in motion tension velocity ends energy map; do check "draw.sh $kind.pdf (break_middle)" "$tmp/draw_pdf/$kind.pdf" "$tmp/draw_pdf.err" "$rc"; done
+
+# Titles and key labels from the stored namelist (needs h5dump).
+if command -v h5dump >/dev/null 2>&1; then
+  # shellcheck source=plots/caseinfo.sh
+  source "$plots/caseinfo.sh"
+  want="break_middle: end a fixed, end b fixed; break at s = 30 m of 60 m in 5 ms"
+  got=$(case_title "$stem_m")
+  [ "$got" = "$want" ] && pass "case_title: $got" || fail "case_title of break_middle: '$got', expected '$want'"
+  want="short_315: static tension 315 kN, breaking time 5 ms"
+  got=$(case_title "$stem_b")
+  [ "$got" = "$want" ] && pass "case_title: $got" || fail "case_title of short_315: '$got', expected '$want'"
+  got="$(end_label "$(nml_text "$stem_h")" a) / $(end_label "$(nml_text "$stem_h")" b)"
+  want="end a (moved ±0.5 m, 1 s) / end b (200 kg mass)"
+  [ "$got" = "$want" ] && pass "end_label: $got" || fail "end_label of heave: '$got', expected '$want'"
+fi
 
 # draw-paper.sh reads the four paper cases by name: give it the short runs under those names.
 mkdir -p "$tmp/results"
@@ -91,18 +170,23 @@ for f in fig2_motion_fast fig3_tension_fast fig4_velocity_fast fig5_motion_slow 
   check "draw-paper.sh $f.png" "$tmp/paper/$f.png" "$tmp/paper.err" "$rc"
 done
 
-# Without energy columns the energy figure is skipped with a message, not an error.
+# Without the energy ledger the energy figure is skipped with a message, not an error: a run
+# without &output energy (the header ends '(no energy ledger)'), and the old 4-column layout.
 mkdir -p "$tmp/noenergy"
-cp "$stem.snapshots.dat" "$tmp/noenergy/run.snapshots.dat"
+sed "s/energy = .true./energy = .false./; s|$tmp/short_180.h5|$tmp/noenergy/run.h5|" "$tmp/short_180.nml" > "$tmp/noenergy/run.nml"
+"$xcable" "$tmp/noenergy/run.nml" > /dev/null 2>&1 || fail "xcable could not run $tmp/noenergy/run.nml"
 awk 'NR == 1 { print "# columns: t[s] end_velocity[m/s] fixed_end_tension[N] newton_iterations"; next }
-     { print $1, $2, $3, $4 }' "$stem.history.dat" > "$tmp/noenergy/run.history.dat"
-rc=0
-gnuplot -e "stem='$tmp/noenergy/run'; out='$tmp/noenergy/energy.png'" "$plots/energy.gp" 2> "$tmp/noenergy.err" || rc=$?
-if [ "$rc" -eq 0 ] && [ ! -e "$tmp/noenergy/energy.png" ] && grep -q "no energy columns" "$tmp/noenergy.err"; then
-  pass "energy.gp skips a run without energy columns"
-else
-  fail "energy.gp without energy columns: exit $rc, output $(ls "$tmp/noenergy"), messages: $(cat "$tmp/noenergy.err")"
-fi
+     { print $1, $2, $3, $4 }' "$stem_a.history.dat" > "$tmp/noenergy/old.history.dat"
+cp "$stem_a.snapshots.dat" "$tmp/noenergy/old.snapshots.dat"
+for run in run old; do
+  rc=0
+  gnuplot -e "stem='$tmp/noenergy/$run'; out='$tmp/noenergy/$run.energy.png'" "$plots/energy.gp" 2> "$tmp/noenergy/$run.err" || rc=$?
+  if [ "$rc" -eq 0 ] && [ ! -e "$tmp/noenergy/$run.energy.png" ] && grep -q "no energy columns" "$tmp/noenergy/$run.err"; then
+    pass "energy.gp skips a run without energy columns ($run)"
+  else
+    fail "energy.gp without energy columns ($run): exit $rc, output $(ls "$tmp/noenergy"), messages: $(cat "$tmp/noenergy/$run.err")"
+  fi
+done
 
 # A missing run is a clear error.
 rc=0
@@ -114,7 +198,7 @@ else
 fi
 
 if [ "$failures" -gt 0 ]; then
-  echo "test_figures: $failures check(s) failed" >&2
+  echo "test_figures: $failures check(s) failed (runs and figures in $tmp)" >&2
   exit 1
 fi
-echo "test_figures: all checks passed"
+echo "test_figures: all checks passed (runs and figures in $tmp)"

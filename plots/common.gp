@@ -7,7 +7,7 @@
 #            tension at end a at t = 0)
 #   label_a, label_b   names of the two ends in the keys (default 'end a (s = 0)', 'end b (s = L)';
 #            plots/draw.sh gives the kind of each end, e.g. 'end a (fixed)', 'end b (200 kg mass)')
-#   maxlines most snapshot lines drawn in one panel (default 16; beyond it every n-th snapshot)
+#   maxlines most snapshot lines drawn in one panel (default 20; beyond it every n-th snapshot)
 # Set by a script that draws panels into its own multiplot (plots/pair.gp), never by hand:
 #   panel  when it exists, the script draws one panel only: no terminal, no output, title = 'title'
 #   vexag  vertical exaggeration of the motion panels (1, 10 or 100; default: chosen from the data)
@@ -26,7 +26,7 @@ if (!exists("stem")) {
 casename = basename(stem)
 if (!exists("label_a")) { label_a = "end a (s = 0)" }
 if (!exists("label_b")) { label_b = "end b (s = L)" }
-if (!exists("maxlines")) { maxlines = 16 }
+if (!exists("maxlines")) { maxlines = 20 }
 
 # Units that suit the run: time in ms for runs up to 1 s, in s beyond; forces in kN from 2 kN up,
 # in N below; energies in kJ from 2 kJ up, in J below. Each gives (factor, unit name).

@@ -54,7 +54,8 @@ for speed in fast slow; do
     title_b="(b) $(basename "$b"): static tension $(static_kN "$b") kN"
     rm -f "$out"
     if gnuplot -e "kind='$kind'; stem_a='$a'; stem_b='$b'; title_a='$title_a'; title_b='$title_b'; \
-                   figtitle='$figtitle'; scale_stems='${all_stems% }'; out='$out'" "$here/pair.gp"; then
+                   figtitle='$figtitle'; scale_stems='${all_stems% }'; out='$out'; \
+                   label_a='fixed end'; label_b='breaking end'; vexag=100" "$here/pair.gp"; then
       echo "draw-paper.sh: wrote $out"
     else
       failed+=("$(basename "$out")")

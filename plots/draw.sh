@@ -3,7 +3,11 @@
 #   plots/draw.sh <stem> <outdir> [png|pdf]
 # <stem> is the run's output without extension (results/slow_315kN for results/slow_315kN.h5);
 # the run must have written gnuplot text (&output gnuplot = .true.; energy = .true. for the energy
-# figure). Writes <outdir>/{motion,tension,velocity,ends,energy}.<png|pdf>.
+# figure). Works for any scene (ends held, free, loaded, moved or carrying a mass; a break at an
+# end or inside the cable). Writes <outdir>/{motion,tension,velocity,ends,energy,map}.<png|pdf>;
+# the map (tension against s and t) only from 30 snapshots up (&output interval), the energy
+# figure only for a run with the energy ledger. The titles and the names of the ends in the keys
+# come from the namelist in <stem>.h5 when h5dump is installed.
 set -euo pipefail
 
 here=$(cd "$(dirname "${BASH_SOURCE[0]}")" && pwd)
@@ -30,11 +34,21 @@ fi
 mkdir -p "$outdir"
 
 title=$(case_title "$stem")
+text=$(nml_text "$stem")
+labels=""
+if [ -n "$text" ]; then
+  labels="label_a='$(end_label "$text" a)'; label_b='$(end_label "$text" b)'; "
+fi
+nsnap=$(grep -c '^# t = ' "$stem.snapshots.dat" || true)
 failed=()
-for kind in motion tension velocity ends energy; do
+for kind in motion tension velocity ends energy map; do
   out="$outdir/$kind.$ext"
   rm -f "$out"
-  if gnuplot -e "stem='$stem'; out='$out'; title='$title'" "$here/$kind.gp"; then
+  if [ "$kind" = map ] && [ "$nsnap" -lt 30 ]; then
+    echo "draw.sh: $stem.snapshots.dat holds $nsnap snapshots (fewer than 30): map not drawn (a smaller &output interval gives it)"
+    continue
+  fi
+  if gnuplot -e "stem='$stem'; out='$out'; title='$title'; $labels" "$here/$kind.gp"; then
     [ -s "$out" ] && echo "draw.sh: wrote $out"
   else
     failed+=("$kind")

@@ -49,15 +49,16 @@ fig_w = 1150; fig_h = 800
 load plotdir."/terminal.gp"
 set multiplot layout 2, 1 title sprintf("Speed and tension of the ends\n%s", title)
 set lmargin 12
-set rmargin at screen 0.74
-set key at screen 0.755, graph 1 left top Left reverse box opaque samplen 2 spacing 1.1 width 1
+set rmargin at screen 0.72
+set key at screen 0.735, graph 1 left top Left reverse box opaque samplen 2 spacing 1.1 width 1
 # Both quantities start from or fall to zero: the zero line (a plotted 0) keeps zero in view, and
 # keeps a short run, whose held ends have not felt the release yet, from giving an empty range.
 
-set label 1 (vmax > 0 ? sprintf("largest speed %.3g m/s (%s, t = %s)", vmax, end_name(vend), tfmt(vt, tunit)) \
+set label 1 (vmax > 0 ? sprintf("largest speed %.4g m/s (%s, t = %s)", vmax, end_name(vend), tfmt(vt, tunit)) \
                       : "no end moves") at graph 0.02, graph 0.92 left front
 set ylabel "speed of the end [m/s]"
-set yrange [0:*]
+# Head room above the curves for the label.
+set yrange [0 : (vmax > 0 ? 1.3 * vmax : 1)]
 plot for [j = 1:nends] hist using (tfac * $1):(moving(j) ? column(speed_col(j)) : NaN) \
          with lines lw 2 lc rgb end_colour(end_label(j)) title (moving(j) ? end_name(end_label(j)) : ""), \
      0 with lines lt -1 lw 0.5 notitle
@@ -71,11 +72,15 @@ if (tmax > 1.05 * tmax0) {
         at graph 0.02, graph 0.82 left front
 }
 set ylabel sprintf("tension of the end [%s]", funit)
+# Zero in view, and head room above the curves for the labels.
+_ylo = ffac * (tmin < 0 ? tmin : 0)
+_yhi = ffac * (fmax > 0 ? fmax : 1)
+set yrange [_ylo - 0.05 * (_yhi - _ylo) : _yhi + (tmax > 1.05 * tmax0 ? 0.4 : 0.3) * (_yhi - _ylo)]
 plot for [j = 1:nends] hist using (tfac * $1):(ffac * column(speed_col(j) + 1)) \
          with lines lw 2 lc rgb end_colour(end_label(j)) title end_name(end_label(j)), \
      for [j = 1:nends] hist using (tfac * $1):(showforce(j) ? ffac * column(speed_col(j) + 2) : NaN) \
          with lines lw 1.5 dt 2 lc rgb end_colour(end_label(j)) notitle, \
-     NaN with lines lw 1.5 dt 2 lc rgb '#404040' title (anyforce ? "external force" : ""), \
+     NaN with lines lw 1.5 dt 2 lc rgb '#404040' title (anyforce ? "external force (magnitude)" : ""), \
      0 with lines lt -1 lw 0.5 notitle
 unset multiplot
 unset output

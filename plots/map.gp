@@ -47,13 +47,14 @@ set palette maxcolors 0
 set cbrange [_lo_c : _hi_c]
 set cbtics auto out nomirror
 set mcbtics default
-set cblabel vname
+set cblabel vname offset 1.5, 0
 
 fig_w = 1100; fig_h = 650
 load plotdir."/terminal.gp"
-set title sprintf("%s along the cable against time (from %d snapshots)\n%s", fname, nsnap, title)
+set title sprintf("%s along the cable against time (from %d snapshots)\n%s", fname, nsnap, title) offset 0, 1.5
 set view map
-set pm3d corners2color mean
+set pm3d corners2color mean interpolate 1,4
+set tmargin 4
 set xrange [tval(0) : tval(nsnap - 1)]
 set yrange [0 : Lcab]
 set xlabel sprintf("time, t [%s]", tunit)

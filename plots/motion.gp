@@ -5,64 +5,106 @@
 # when the motion is much flatter than it is wide: 100 times, as in the paper, with z in cm
 # ("1 cm drawn as 1 m"), or 10 times; a swing or a hanging line is drawn to scale. The axis label
 # says which. A broken cable is drawn as its pieces; symbols mark the ends of every piece.
+# An inclined line (its chord from end a to end b at t = 0 at more than 3 degrees) whose motion
+# is flat along that chord gets a second panel: the deflection from the chord, normal to it,
+# exaggerated in the same way, against the distance along the chord. A line that stays on a
+# vertical (a hanging line heaved at its top) is drawn as the heights of its ends against time.
 _lastslash(p, i) = i < 1 ? 0 : (p[i:i] eq "/" ? i : _lastslash(p, i - 1))
 if (!exists("plotdir")) { plotdir = _lastslash(ARG0, strlen(ARG0)) ? ARG0[1:_lastslash(ARG0, strlen(ARG0)) - 1] : "." }
 load plotdir."/common.gp"
 load plotdir."/snapshots.gp"
 
-# Extent of the motion (all snapshots), and the vertical exaggeration it calls for.
-stats [*:*][*:*] snap using 2:3 nooutput
-_x0 = STATS_min_x; _x1 = STATS_max_x; _z0 = STATS_min_y; _z1 = STATS_max_y
-_vx = exists("vexag") ? vexag : vexag_for(_x1 - _x0, _z1 - _z0)
-# z is plotted in cm at 100x (the paper's figures), in m otherwise.
-zf = _vx == 100 ? 100.0 : 1.0
-zunit = _vx == 100 ? "cm" : "m"
+# The chord at t = 0: from the first point of the first snapshot (end a) to its last (end b).
+_chord = system(sprintf("awk '/^# t = / { if (n++) exit; next } /^#/ || NF == 0 { next } { if (!k++) { print $2, $3 } x = $2; z = $3 } END { print x, z }' '%s'", snap))
+ca_x = real(word(_chord, 1)); ca_z = real(word(_chord, 2))
+_dx = real(word(_chord, 3)) - ca_x; _dz = real(word(_chord, 4)) - ca_z
+_len = sqrt(_dx**2 + _dz**2)
+c_cos = _len > 0 ? _dx / _len : 1.0
+c_sin = _len > 0 ? _dz / _len : 0.0
+# View 0: x, z. View 1: along the chord, and normal to it (positive on the upper side).
+px(x, z) = _view == 0 ? x : (x - ca_x) * c_cos + (z - ca_z) * c_sin
+pz(x, z) = _view == 0 ? z : -(x - ca_x) * c_sin + (z - ca_z) * c_cos
+
+# Extents in a view, its exaggeration (vexag_for: 100 with z in cm, 10, or 1) and rounded ranges
+# (in metres drawn): sets v<k>_x0, v<k>_x1 (x range), v<k>_z0, v<k>_z1 (z range, in metres times
+# the exaggeration) and v<k>_ex.
+_view = 0
+stats [*:*][*:*] snap using (px($2, $3)):(pz($2, $3)) nooutput
+v0_ex = exists("vexag") ? vexag : vexag_for(STATS_max_x - STATS_min_x, STATS_max_y - STATS_min_y)
+_ex = v0_ex
+load plotdir."/motion_range.gp"
+v0_x0 = _xa; v0_x1 = _xb; v0_z0 = _za; v0_z1 = _zb
+
+# A line that stays on one vertical (a hanging line heaved at its top) has no shape to draw:
+# its motion is drawn as the heights of its ends against time instead.
+if (!exists("panel") && STATS_max_x - STATS_min_x <= 1e-6 * (STATS_max_y - STATS_min_y)) {
+    load plotdir."/motion_vertical.gp"
+    exit
+}
+
+two_views = 0
+if (!exists("panel") && v0_ex == 1 && abs(c_sin) > 0.05 && _len > 0) {
+    _view = 1
+    stats [*:*][*:*] snap using (px($2, $3)):(pz($2, $3)) nooutput
+    if (STATS_max_y - STATS_min_y > 1e-6 * _len) {
+        v1_ex = vexag_for(STATS_max_x - STATS_min_x, STATS_max_y - STATS_min_y)
+        if (v1_ex > 1) {
+            two_views = 1
+            _ex = v1_ex
+            load plotdir."/motion_range.gp"
+            v1_x0 = _xa; v1_x1 = _xb; v1_z0 = _za; v1_z1 = _zb
+        }
+    }
+}
 
 if (!exists("panel")) {
-    # Ranges rounded outwards; a line much taller than wide (a hanging line) gets a box at least
-    # 0.6 times as wide as it is tall, so the figure keeps a readable shape.
-    _pad = 0.04 * ((_x1 - _x0) > _vx * (_z1 - _z0) ? (_x1 - _x0) : _vx * (_z1 - _z0))
-    _pad = _pad > 0 ? _pad : 1.0
-    _xa = _x0 - _pad; _xb = _x1 + _pad
-    _za = _vx * _z0 - _pad; _zb = _vx * _z1 + _pad
-    if ((_xb - _xa) < 0.6 * (_zb - _za)) {
-        _xc = 0.5 * (_xa + _xb); _xa = _xc - 0.3 * (_zb - _za); _xb = _xc + 0.3 * (_zb - _za)
-    }
-    set xrange [_lo(_xa, _xb) : _hi(_xa, _xb)]
-    set yrange [_lo(_za, _zb) * zf / _vx : _hi(_za, _zb) * zf / _vx]
-    # Canvas shaped to the drawing: plot area about 760 px wide, or 700 px tall for tall scenes.
-    _aspect = (_hi(_za, _zb) - _lo(_za, _zb)) / (_hi(_xa, _xb) - _lo(_xa, _xb))
-    if (_aspect <= 700.0 / 760) {
-        fig_w = 1100; fig_h = int(760 * _aspect) + 200
-        fig_h = fig_h < 420 ? 420 : fig_h
+    # Canvas shaped to the drawing: plot areas about 760 px wide, or 700 px tall for tall scenes.
+    _aspect0 = (v0_z1 - v0_z0) / (v0_x1 - v0_x0)
+    if (two_views) {
+        _aspect1 = (v1_z1 - v1_z0) / (v1_x1 - v1_x0)
+        _h0 = int(760 * _aspect0) + 110; _h0 = _h0 < 300 ? 300 : _h0
+        _h1 = int(760 * _aspect1) + 110; _h1 = _h1 < 300 ? 300 : _h1
+        fig_w = 1100; fig_h = _h0 + _h1 + 70
     } else {
-        fig_h = 900; fig_w = int(700 / _aspect) + 380
-        fig_w = fig_w < 760 ? 760 : fig_w
+        if (_aspect0 <= 700.0 / 760) {
+            fig_w = 1100; fig_h = int(760 * _aspect0) + 200
+            fig_h = fig_h < 420 ? 420 : fig_h
+        } else {
+            fig_h = 900; fig_w = int(700 / _aspect0) + 380
+            fig_w = fig_w < 760 ? 760 : fig_w
+        }
     }
     load plotdir."/terminal.gp"
-    set title sprintf("Motion of the cable in the vertical plane%s\n%s", \
-        _vx == 1 ? " (drawn to scale)" : sprintf(" (vertical scale exaggerated %d×)", _vx), title)
+    _what = v0_ex == 1 ? " (drawn to scale)" : sprintf(" (vertical scale exaggerated %d×)", v0_ex)
+    if (two_views) {
+        set multiplot title sprintf("Motion of the cable in the vertical plane%s, and its deflection from the chord a–b (exaggerated %d×)\n%s", \
+            _what, v1_ex, title)
+        set lmargin 12
+        set rmargin 18
+        set size 1, (_h0 + 0.0) / fig_h
+        set origin 0, (_h1 + 0.0) / fig_h
+    } else {
+        set title sprintf("Motion of the cable in the vertical plane%s\n%s", _what, title)
+    }
 } else {
     set title title
 }
-if (_vx == 1) {
-    set size ratio -1
-    set ylabel "z, height above end a [m]"
-} else {
-    set size ratio -(_vx / zf)
-    set ylabel _vx == 100 ? "z, height above end a [cm]  (1 cm drawn as 1 m)" : \
-                            "z, height above end a [m]  (vertical scale ×10)"
+_view = 0
+_ex = v0_ex
+if (!exists("panel")) {
+    set xrange [v0_x0 : v0_x1]
+    set yrange [v0_z0 * (_ex == 100 ? 1 : 1.0 / _ex) : v0_z1 * (_ex == 100 ? 1 : 1.0 / _ex)]
 }
-set xlabel "x, horizontal distance from end a [m]"
-set key top left box opaque samplen 1 spacing 1.1
-if (_vx == 1 && _z1 - _z0 > _x1 - _x0) { set key top right }
-# Pieces: a single blank line inside a block ends a line in gnuplot, so a broken cable is drawn
-# as two lines. End symbols: square end a, circle end b, triangles the two new ends at a break.
-plot for [i = 0:nsnap - 1:stride] snap index i using 2:(zf * $3):(tval(i)) with lines lw 1.5 lc palette notitle, \
-     ends using 4:(drawn($1) && $2 == 0 ? zf * $5 : NaN):(tval($1)) with points pt 5 ps 0.8 lc palette notitle, \
-     ends using 4:(drawn($1) && $2 == 1 ? zf * $5 : NaN):(tval($1)) with points pt 7 ps 0.9 lc palette notitle, \
-     ends using 4:(drawn($1) && $2 == 2 ? zf * $5 : NaN):(tval($1)) with points pt 9 ps 1.0 lc palette notitle, \
-     NaN with points pt 5 ps 0.8 lc rgb '#404040' title label_a, \
-     NaN with points pt 7 ps 0.9 lc rgb '#404040' title label_b, \
-     NaN with points pt 9 ps 1.0 lc rgb '#404040' title (npieces > 1 ? "ends at the break" : "")
+load plotdir."/motion_view.gp"
+if (two_views) {
+    _view = 1
+    _ex = v1_ex
+    set size 1, (_h1 + 0.0) / fig_h
+    set origin 0, 0
+    unset title
+    set xrange [v1_x0 : v1_x1]
+    set yrange [v1_z0 * (_ex == 100 ? 1 : 1.0 / _ex) : v1_z1 * (_ex == 100 ? 1 : 1.0 / _ex)]
+    load plotdir."/motion_view.gp"
+    unset multiplot
+}
 if (!exists("panel")) { unset output }

@@ -38,6 +38,7 @@ if (kind eq "motion") {
     _yf = vexag == 100 ? 100.0 : 1.0
 } else {
     _yf = kind eq "tension" ? ffac_for(amax(ymin, ymax)) : 1.0
+    if (kind eq "tension") { tension_fac = _yf }
 }
 ymin = _yf * ymin; ymax = _yf * ymax
 set xrange [_lo(xmin, xmax) : _hi(xmin, xmax)]

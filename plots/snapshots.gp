@@ -29,15 +29,20 @@ npieces = 1 + int(system(sprintf("awk '/^# t = / { n++; next } n > 1 { exit } n 
 if (!exists("title")) { title = sprintf("%s: largest tension at t = 0 %.3g kN", casename, Ts / 1000) }
 
 # Draw every stride-th snapshot, at most maxlines of them (all of the paper's 10 ms snapshots),
-# preferring a stride whose time step is a round number (1, 2, 2.5 or 5 times a power of ten).
+# preferring a stride whose time step is a round number (1, 2, 2.5 or 5 times a power of ten)
+# and a whole number of snapshot intervals.
 _dt = nsnap > 1 ? (t_s(nsnap - 1) - t_s(0)) / (nsnap - 1) : 1.0
 _target = nsnap > 1 ? (t_s(nsnap - 1) - t_s(0)) / (maxlines - 1) : 1.0
 _p10 = _target > 0 ? 10.0**floor(log10(_target)) : 1.0
-_nice = _target <= _p10 ? _p10 : (_target <= 2 * _p10 ? 2 * _p10 : (_target <= 2.5 * _p10 ? 2.5 * _p10 : \
-        (_target <= 5 * _p10 ? 5 * _p10 : 10 * _p10)))
 stride = nsnap <= maxlines ? 1 : int(ceil((nsnap - 1.0) / (maxlines - 1)))
-if (nsnap > maxlines && _dt > 0 && abs(_nice / _dt - floor(_nice / _dt + 0.5)) < 1e-6 * _nice / _dt) {
-    stride = int(floor(_nice / _dt + 0.5))
+_found = nsnap <= maxlines || _dt <= 0
+_round = "1 2 2.5 5 10 20 25 50 100"
+do for [_k = 1:words(_round)] {
+    _nice = real(word(_round, _k)) * _p10
+    _m = _nice / _dt
+    if (!_found && _nice >= _target * (1 - 1e-9) && abs(_m - floor(_m + 0.5)) < 1e-6 * _m) {
+        stride = int(floor(_m + 0.5)); _found = 1
+    }
 }
 ndrawn = int((nsnap - 1) / stride) + 1
 drawn(i) = int(i) % stride == 0

@@ -8,9 +8,10 @@ if (!exists("plotdir")) { plotdir = _lastslash(ARG0, strlen(ARG0)) ? ARG0[1:_las
 load plotdir."/common.gp"
 load plotdir."/snapshots.gp"
 
+# Unit from this run, or the one plots/pair.gp chose for both panels (tension_fac).
 stats [*:*][*:*] snap using 4 nooutput
-ffac = ffac_for(amax(STATS_min, STATS_max))
-funit = funit_for(amax(STATS_min, STATS_max))
+ffac = exists("tension_fac") ? tension_fac : ffac_for(amax(STATS_min, STATS_max))
+funit = ffac == 1.0 ? "N" : "kN"
 if (exists("panel")) {
     set title title
 } else {
@@ -19,6 +20,7 @@ if (exists("panel")) {
     set title sprintf("Tension along the cable\n%s", title)
 }
 set xlabel "s, unstretched arc length from end a [m]"
+if (!exists("panel")) { set xrange [0 : Lcab] }
 set ylabel sprintf("tension T [%s]  (negative: compression)", funit)
 set xzeroaxis lt -1 lw 0.5
 set key top right box opaque samplen 1 spacing 1.1

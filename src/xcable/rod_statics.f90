@@ -23,7 +23,7 @@ module xcable_rod_statics
    use xcable_theory, only: catenary_from_force, catenary_between, catenary_summary
    implicit none
    private
-   public :: rod_static_state, solve_rod_statics, static_tolerance
+   public :: rod_static_state, solve_rod_statics, static_tolerance, sag_below_chord
 
    !> Scaled update at which the static solve stops.
    real(dp), parameter :: static_tolerance = 1.0e-10_dp
@@ -36,7 +36,7 @@ module xcable_rod_statics
       real(dp) :: end_b_point(2) = 0
       !> Force the supports exert at the two ends (held ends), N.
       real(dp) :: reaction_a(2) = 0, reaction_b(2) = 0
-      !> Horizontal distance between the ends and depth of the lowest point below the higher end, m.
+      !> Horizontal distance between the ends, and the sag below their chord (sag_below_chord), m.
       real(dp) :: span = 0, sag = 0
       !> Newton iterations (all solves) and secant iterations on the span.
       integer :: newton_iterations = 0, span_iterations = 0
@@ -206,7 +206,27 @@ contains
          state%reaction_a = problem%piece%reaction(1, x, 0.0_dp, 0.5_dp)
          state%reaction_b = problem%piece%reaction(n, x, 0.0_dp, 0.5_dp)
          state%span = abs(state%r(1, n) - state%r(1, 1))
-         state%sag = max(state%r(2, 1), state%r(2, n)) - minval(state%r(2, :))
+         state%sag = sag_below_chord(state%r)
       end subroutine finish
    end subroutine solve_rod_statics
+   !> Sag: the largest vertical distance of the line below the chord joining its
+   !> ends (for ends one above the other, the largest horizontal distance from it).
+   pure real(dp) function sag_below_chord(r)
+      !> Positions (2, n), m.
+      real(dp), intent(in) :: r(:, :)
+      real(dp) :: d(2), zc
+      integer :: k, n
+      n = size(r, 2)
+      d = r(:, n) - r(:, 1)
+      sag_below_chord = 0
+      do k = 1, n
+         if (abs(d(1)) > 1.0e-9_dp*max(norm2(d), 1.0_dp)) then
+            zc = r(2, 1) + d(2)*(r(1, k) - r(1, 1))/d(1)
+            sag_below_chord = max(sag_below_chord, zc - r(2, k))
+         else
+            sag_below_chord = max(sag_below_chord, abs(r(1, k) - r(1, 1)))
+         end if
+      end do
+   end function sag_below_chord
+
 end module xcable_rod_statics

@@ -89,7 +89,7 @@ module xcable_run_records
       real(dp), allocatable :: s(:)
       !> Fields (nodes, n_fields), in the order of field_names.
       real(dp), allocatable :: fields(:, :)
-      !> Horizontal distance between the ends and depth of the lowest point below the higher end, m.
+      !> Horizontal distance between the ends, and the largest vertical distance below their chord, m.
       real(dp) :: span = 0, sag = 0
       !> Angle of the tangent at end a below the horizontal, rad.
       real(dp) :: end_angle = 0

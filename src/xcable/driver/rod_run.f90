@@ -763,6 +763,20 @@ contains
             end if
          end associate
       end do
+      ! Before a break inside the cable, its two ends are the break node: the
+      ! pull of the cable on either side (mean tension of the node's two cells).
+      if (size(self%pieces) == 1 .and. self%break_node > 0) then
+         associate (r => self%pieces(1)%r, v => self%pieces(1)%v, k => self%break_node, &
+                    piece => self%pieces(1)%problem%piece)
+            e = r(:, k + 1) - r(:, k)
+            f = piece%law%tension(norm2(e)/piece%ds(k) - 1)*e/norm2(e)
+            ten = 0.5_dp*(norm2(f) + piece%law%tension(norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
+            self%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
+            e = r(:, k) - r(:, k - 1)
+            f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
+            self%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
+         end associate
+      end if
       if (self%options%energy) then
          self%history%energy(1:4, i) = en
          self%history%energy(5, i) = self%work

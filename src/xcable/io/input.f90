@@ -1551,9 +1551,10 @@ contains
       text = v%text
    end function get_text
 
-   !> Whether the echo writes a variable: not the tension when end b has a
-   !> position given, nor end b's position otherwise; not the position of a
-   !> free, force or mass end; no table without rows, and no table_file unless given.
+   !> Whether the echo writes a variable: the tension only for the paper's
+   !> symmetric case (both ends fixed, no position given for end b), end b's
+   !> position only when given; not the position of a free, force or mass end;
+   !> no table without rows, and no table_file unless given.
    logical function echoed(c, e)
       !> The case.
       type(case_config), intent(in) :: c
@@ -1563,7 +1564,8 @@ contains
       type(end_config) :: side
       position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z')
       echoed = .true.
-      if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b
+      if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
+         is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
       if (e%group /= 'end_a' .and. e%group /= 'end_b') return
       if (e%group == 'end_a') then
          side = c%end_a

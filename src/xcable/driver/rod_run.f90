@@ -32,7 +32,8 @@ module xcable_rod_run
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
    use xcable_scene, only: scene_type, scene_grid
-   use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2
+   use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
+                               bend_curvature
    use xcable_ends_end, only: end_condition
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
@@ -317,7 +318,7 @@ contains
                fields(col, 6) = r(1, k)
                fields(col, 7) = r(2, k)
                fields(col, 8) = 0
-               if (k > 1 .and. k < n) fields(col, 8) = -mom(k)/piece%ei
+               if (k > 1 .and. k < n) fields(col, 8) = -bend_curvature(piece, k, piece%th1(k))
             end do
             ! Before a break inside the cable the break node fills both of its columns.
             if (size(self%pieces) == 1 .and. self%break_node > 0) fields(self%break_node + 1, :) = fields(self%break_node, :)
@@ -874,13 +875,13 @@ contains
          call piece%static_system(x, self%t, res, unused, .false.)
          w_a = 0.5_dp*piece%weight*piece%ds(kb - 1)
          w_b = 0.5_dp*piece%weight*piece%ds(kb)
-         m_b = piece%ei*piece%th1(kb)/piece%dual(kb)
+         m_b = bend_moment(piece, kb, piece%th1(kb))
          cut_a = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
                            force0=piece%force(:, kb - 1) + [0.0_dp, w_a], couple0=m_b)
          cut_b = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
                            force0=-piece%force(:, kb) + [0.0_dp, w_b], couple0=-m_b)
          ! The bending energy at the break node leaves with the cut: booked as work.
-         self%work = self%work - 0.5_dp*piece%ei*piece%th1(kb)**2/piece%dual(kb)
+         self%work = self%work - bend_energy(piece, kb, piece%th1(kb))
       end associate
       cut_a%label = 'break_a'
       cut_b%label = 'break_b'

@@ -52,6 +52,7 @@ module xcable_model_rod
    implicit none
    private
    public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
+   public :: bend_energy, bend_moment, bend_curvature
 
    !> The unknowns of a node, in their order in Newton's vector (node after node).
    character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']
@@ -96,6 +97,10 @@ module xcable_model_rod
       real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :)
       !> Cell quantities of the Jacobian: 2x2 blocks dN_c/de_c' for c' = c-1, c, c+1.
       real(dp), allocatable :: block(:, :, :, :)
+      !> Per node in the last evaluation: the moment (statics: dB/dtheta; a step: the divided
+      !> difference of B between the two levels), N m, and its derivative with respect to the
+      !> new turning angle, N m.
+      real(dp), allocatable :: mom(:), dmom(:)
       !> Mass matrix, symmetric with two off-diagonals: mass(j, k) = M(k, k+j), kg.
       real(dp), allocatable :: mass(:, :)
       !> Velocities of the last evaluated new level (2, n), m/s.
@@ -221,7 +226,9 @@ contains
       self%length_ref = sum(self%ds)/(n - 1)
       allocate (self%r0(2, n), self%v0(2, n), self%mv0(2, n), self%e0(2, n - 1), self%l0(n - 1), self%th0(n))
       allocate (self%e1(2, n - 1), self%l1(n - 1), self%th1(n), self%force(2, n - 1), self%force_node(2, n))
-      allocate (self%block(2, 2, -1:1, n - 1), self%mass(0:2, n), self%v1(2, n))
+      allocate (self%block(2, 2, -1:1, n - 1), self%mass(0:2, n), self%v1(2, n), self%mom(n), self%dmom(n))
+      self%mom = 0
+      self%dmom = 0
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
       self%v1 = 0
@@ -325,7 +332,7 @@ contains
          en(2) = en(2) + self%mass(2, k)*dot_product(v(:, k), v(:, k + 2))
       end do
       do k = 2, self%n - 1
-         en(3) = en(3) + 0.5_dp*self%ei*th(k)**2/self%dual(k)
+         en(3) = en(3) + bend_energy(self, k, th(k))
       end do
    end function rod_energies
 
@@ -345,19 +352,23 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n
+      integer :: c, n, k
       real(dp) :: f, fp, t_c(2), pvec(2), moment_diff, couple, stiff(2, 2), dp_de(2, 2)
       real(dp) :: dmom(2, -1:1), jm(2, 2)
       n = self%n
       call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
       jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      do k = 2, n - 1
+         self%mom(k) = bend_moment(self, k, self%th1(k))
+         self%dmom(k) = bend_stiffness(self, k, self%th1(k))
+      end do
       do c = 1, n - 1
          associate (e => self%e1(:, c), l => self%l1(c))
             call self%law%tension_stiffness(l - 1, f, fp)
             t_c = e/l
             pvec = perp(e)/l**2
             couple = cell_couple(self, c, t, t)
-            moment_diff = moment(self, self%th1, c) - moment(self, self%th1, c + 1) - couple
+            moment_diff = self%mom(c) - self%mom(c + 1) - couple
             self%force(:, c) = f*t_c + moment_diff/self%ds(c)*pvec
             if (.not. with_jacobian) cycle
             stiff = fp*outer(t_c, t_c) + f/l*(identity2() - outer(t_c, t_c))
@@ -365,12 +376,12 @@ contains
             ! d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1.
             dmom = 0
             if (c >= 2) then
-               dmom(:, 0) = dmom(:, 0) + self%ei/self%dual(c)*pvec
-               dmom(:, -1) = -self%ei/self%dual(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+               dmom(:, 0) = dmom(:, 0) + self%dmom(c)*pvec
+               dmom(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
             end if
             if (c + 1 <= n - 1) then
-               dmom(:, 0) = dmom(:, 0) + self%ei/self%dual(c + 1)*pvec
-               dmom(:, 1) = -self%ei/self%dual(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+               dmom(:, 0) = dmom(:, 0) + self%dmom(c + 1)*pvec
+               dmom(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
             end if
             self%block(:, :, 0, c) = stiff + moment_diff/self%ds(c)*dp_de + outer(pvec, dmom(:, 0))/self%ds(c)
             self%block(:, :, -1, c) = outer(pvec, dmom(:, -1))/self%ds(c)
@@ -422,12 +433,15 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n
+      integer :: c, n, k
       real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
       real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
       n = self%n
       call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
       jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      do k = 2, n - 1
+         call bend_divided(self, k, self%th0(k), self%th1(k), self%mom(k), self%dmom(k))
+      end do
       do c = 1, n - 1
          associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
             ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
@@ -459,8 +473,7 @@ contains
             g = rho/(l0*l1)
             gvec = perp(em)*g
             couple = cell_couple(self, c, t0, t0 + dt)
-            s_c = 0.5_dp*(moment(self, self%th0, c) + moment(self, self%th1, c) &
-                          - moment(self, self%th0, c + 1) - moment(self, self%th1, c + 1)) - couple
+            s_c = self%mom(c) - self%mom(c + 1) - couple
             self%force(:, c) = self%force(:, c) + s_c/self%ds(c)*gvec
             if (.not. with_jacobian) cycle
             ds_dq = dq*e1/l1
@@ -470,12 +483,12 @@ contains
             dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
             ds_de = 0
             if (c >= 2) then
-               ds_de(:, 0) = ds_de(:, 0) + 0.5_dp*self%ei/self%dual(c)*dphi_de
-               ds_de(:, -1) = -0.5_dp*self%ei/self%dual(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+               ds_de(:, 0) = ds_de(:, 0) + self%dmom(c)*dphi_de
+               ds_de(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
             end if
             if (c + 1 <= n - 1) then
-               ds_de(:, 0) = ds_de(:, 0) + 0.5_dp*self%ei/self%dual(c + 1)*dphi_de
-               ds_de(:, 1) = -0.5_dp*self%ei/self%dual(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+               ds_de(:, 0) = ds_de(:, 0) + self%dmom(c + 1)*dphi_de
+               ds_de(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
             end if
             self%block(:, :, 0, c) = dstrain + s_c/self%ds(c)*dgvec + outer(gvec, ds_de(:, 0))/self%ds(c)
             self%block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/self%ds(c)
@@ -485,17 +498,69 @@ contains
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
    end subroutine rod_step_system
 
-   !> Moment M_k = EI theta_k / h_k of interior node k from turning angles th (0 outside 2..n-1).
-   pure real(dp) function moment(self, th, k)
+   !> Bending energy of interior node k at turning angle th: B = 2 EI tan^2(th / 2) / h_k,
+   !> that is EI kappa^2 h_k / 2 with the discrete curvature kappa = 2 tan(th / 2) / h_k
+   !> (the curvature of discrete elastic rods). It is EI th^2 / (2 h_k) to O(th^4) and grows
+   !> without bound as two cells fold onto each other (th -> +-pi), which keeps the
+   !> turning angle inside (-pi, pi). 0 at the ends of the piece.
+   pure real(dp) function bend_energy(self, k, th)
       class(rod_piece), intent(in) :: self
-      real(dp), intent(in) :: th(:)
       integer, intent(in) :: k
-      if (k >= 2 .and. k <= self%n - 1) then
-         moment = self%ei*th(k)/self%dual(k)
+      real(dp), intent(in) :: th
+      bend_energy = 0
+      if (k >= 2 .and. k <= self%n - 1) bend_energy = 2*self%ei*tan(0.5_dp*th)**2/self%dual(k)
+   end function bend_energy
+
+   !> The discrete curvature 2 tan(th / 2) / h_k of node k, 1/m (counter-clockwise positive).
+   pure real(dp) function bend_curvature(self, k, th)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th
+      bend_curvature = 2*tan(0.5_dp*th)/self%dual(k)
+   end function bend_curvature
+
+   !> Moment dB/dth of node k, N m.
+   pure real(dp) function bend_moment(self, k, th)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th
+      real(dp) :: t
+      t = tan(0.5_dp*th)
+      bend_moment = 2*self%ei*t*(1 + t*t)/self%dual(k)
+   end function bend_moment
+
+   !> d2B/dth2 of node k, N m.
+   pure real(dp) function bend_stiffness(self, k, th)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th
+      real(dp) :: t
+      t = tan(0.5_dp*th)
+      bend_stiffness = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual(k)
+   end function bend_stiffness
+
+   !> The discrete gradient of the bending energy of node k between the turning
+   !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
+   !> (Taylor forms when the two are close).
+   pure subroutine bend_divided(self, k, th0, th1, m, dm)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th0, th1
+      real(dp), intent(out) :: m, dm
+      real(dp) :: h, mid, t, third
+      h = th1 - th0
+      if (abs(h) < small_rotation) then
+         mid = 0.5_dp*(th0 + th1)
+         t = tan(0.5_dp*mid)
+         ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
+         third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
+         m = bend_moment(self, k, mid) + third*h*h/24
+         dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12
       else
-         moment = 0
+         m = (bend_energy(self, k, th1) - bend_energy(self, k, th0))/h
+         dm = (bend_moment(self, k, th1) - m)/h
       end if
-   end function moment
+   end subroutine bend_divided
 
    !> Applied couple on cell c (the end cells), averaged over [ta, tb].
    pure real(dp) function cell_couple(self, c, ta, tb)
@@ -654,12 +719,13 @@ contains
       real(dp), intent(in) :: r(:, :)
       !> Tension (N), strain, shear force (N; along the normal n of the paper, -perp(t)) per cell (n - 1).
       real(dp), intent(out) :: tension(:), strain(:), shear(:)
-      !> Moment per node, N m (0 at the ends).
+      !> Moment per node, dB/dtheta, N m (0 at the ends).
       real(dp), intent(out) :: moment_node(:)
       integer :: c, k
       call self%geometry(r, self%e1, self%l1, self%th1)
-      do k = 1, self%n
-         moment_node(k) = moment(self, self%th1, k)
+      moment_node = 0
+      do k = 2, self%n - 1
+         moment_node(k) = bend_moment(self, k, self%th1(k))
       end do
       do c = 1, self%n - 1
          strain(c) = self%l1(c) - 1

@@ -69,6 +69,14 @@ module xcable_io_config
       real(dp) :: strain_max = 0.35_dp
       !> Behaviour in compression: 'law' (the law continued below zero) or 'none' (no compressive tension).
       character(len=16) :: compression = 'law'
+      !> Rows of the 'table' law: strains and tensions (N), inline (&material table_strain, table_tension).
+      real(dp) :: material_table_strain(max_table_points) = 0, material_table_tension(max_table_points) = 0
+      !> Number of rows given inline or read from the file (0: none).
+      integer :: material_table_rows = 0
+      !> File with the rows of the 'table' law: columns strain, tension ('' : none; &material table_file).
+      character(len=512) :: material_table_file = ''
+      !> Internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt, N s (&material damping).
+      real(dp) :: damping = 0
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp

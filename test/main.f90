@@ -14,6 +14,7 @@ program xcable_tests
    use suite_rod_statics, only: collect_rod_statics
    use suite_rod_dynamics, only: collect_rod_dynamics
    use suite_scenes, only: collect_scenes
+   use suite_laws, only: collect_laws
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -32,7 +33,8 @@ program xcable_tests
              new_testsuite('rod', collect_rod), &
              new_testsuite('rod_statics', collect_rod_statics), &
              new_testsuite('rod_dynamics', collect_rod_dynamics), &
-             new_testsuite('scenes', collect_scenes)]
+             new_testsuite('scenes', collect_scenes), &
+             new_testsuite('laws', collect_laws)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -8,6 +8,7 @@ module suite_rod
    use xcable_strings, only: str
    use xcable_material_law, only: tanh_law, linear_law
    use xcable_material_tension_only, only: new_tension_only
+   use xcable_material_table, only: table_law, new_table_law
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
@@ -30,6 +31,7 @@ contains
                new_unittest('jacobian_step_averaged', test_step_averaged), &
                new_unittest('jacobian_step_lumped_theta_0.7', test_step_lumped), &
                new_unittest('jacobian_step_mass_ends_tension_only', test_step_mass_ends), &
+               new_unittest('jacobian_step_table_law_damping', test_step_table_damping), &
                new_unittest('discrete_gradient_exact', test_discrete_gradient)]
    end subroutine collect_rod
 
@@ -99,6 +101,29 @@ contains
       if (allocated(error)) return
       call step_case(error, 0.5_dp, 0.0_dp, 0.5_dp, .false., .true., 'moving end a, point mass at b, linear law')
    end subroutine test_step_mass_ends
+
+   !> A table law sampled from the tanh law, and Kelvin-Voigt damping.
+   subroutine test_step_table_damping(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p, plain
+      type(table_law) :: table
+      type(tanh_law) :: tanh
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :), strain(:)
+      real(dp) :: worst
+      integer :: k
+      call make_piece(plain, x, r0, v0, 1.0_dp, 0.1_dp, .false., .false.)
+      strain = [(-0.8_dp + 1.2_dp*(k - 1)/40, k=1, 41)]
+      call new_table_law(strain, tanh%tension(strain), 0.35_dp, table, error)
+      if (allocated(error)) return
+      call p%piece%init(plain%piece%s, 2.2_dp, 22.0_dp, 70.6_dp, 9.81_dp, 1.0_dp, table, plain%piece%end_a, &
+                        plain%piece%end_b, 1.0e4_dp, 0.1_dp, 500.0_dp)
+      call p%piece%prepare_step(r0, v0)
+      p%dt = 1.0e-3_dp
+      p%t0 = 0.002_dp
+      p%theta = 0.5_dp
+      call check_jacobian(p, x, rod_kl, rod_ku, spread(1.0e-6_dp, 1, 2*n), 1.0e-6_dp, worst, error)
+      write (output_unit, '(4x,a,es9.2)') 'step, table law, damping 500 N s: largest deviation / row scale', worst
+   end subroutine test_step_table_damping
 
    subroutine step_case(error, mu, mu2, theta, tension_only, mass_at_b, what)
       type(error_type), allocatable, intent(out) :: error

@@ -72,6 +72,10 @@ contains
          why = 'the box scheme starts the break at t = 0 only'
       else if (config%gravity < 1.0e-6_dp) then
          why = 'the box scheme needs gravity >= 1e-6 (without weight its static cable may turn freely)'
+      else if (trim(config%law) /= 'tanh' .and. trim(config%law) /= 'linear') then
+         why = 'the box scheme has the tanh and linear laws only'
+      else if (config%damping /= 0) then
+         why = 'the box scheme has no internal damping'
       else if (trim(config%compression) /= 'law') then
          why = 'the box scheme has the law''s compression only (compression = ''law'')'
       end if

@@ -65,6 +65,8 @@ module xcable_rod_run
       !> Share of the averaged mass matrix (1: averaged, 0: lumped), and the weight of the
       !> second-difference kinetic energy (model/rod.f90).
       real(dp) :: mu = 1, mu2 = 0
+      !> Kelvin-Voigt damping c, N s.
+      real(dp) :: damping = 0
       !> Snapshot interval, s (0: only t_end).
       real(dp) :: interval = 0.01_dp
       !> Newton controls of a time step (tolerance, iteration limit, reuse).
@@ -181,7 +183,8 @@ contains
       end if
       allocate (self%pieces(1))
       call self%pieces(1)%problem%piece%init(self%s, scene%mass, scene%weight, scene%ei, scene%gravity, options%mu, &
-                                              scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp), options%mu2)
+                                              scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp), options%mu2, &
+                                              options%damping)
       static_newton = options%newton
       call solve_rod_statics(scene, self%pieces(1)%problem, static_newton, self%static, error)
       if (allocated(error)) return
@@ -292,7 +295,7 @@ contains
                r = self%pieces(p)%r
                v = self%pieces(p)%v
             end if
-            call piece%cell_fields(r, ten, eps, shear, mom)
+            call piece%cell_fields(r, ten, eps, shear, mom, v)
             do k = 1, n
                col = cols(k)
                if (k == 1) then
@@ -664,6 +667,9 @@ contains
                ! Work of the ends: applied force (mean over the step) or reaction, times the displacement.
                call end_work(piece%end_a, 1, 1)
                call end_work(piece%end_b, n, 2)
+               ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt.
+               if (piece%damping > 0) self%dissipation = self%dissipation + &
+                  piece%damping*sum(piece%ds*(piece%l1 - piece%l0)**2)/h
                if (theta /= 0.5_dp) then
                   dv = v1 - run_piece%v
                   allocate (mdv(2, n))
@@ -889,9 +895,11 @@ contains
       allocate (self%pieces(2))
       associate (whole => old(1)%problem%piece)
          call self%pieces(1)%problem%piece%init(self%s(1:kb), whole%mass_per_length, whole%weight, whole%ei, whole%gravity, &
-                                                 whole%mu, whole%law, whole%end_a, cut_a, whole%tension_ref, whole%mu2)
+                                                 whole%mu, whole%law, whole%end_a, cut_a, whole%tension_ref, whole%mu2, &
+                                                 whole%damping)
          call self%pieces(2)%problem%piece%init(self%s(kb:n), whole%mass_per_length, whole%weight, whole%ei, whole%gravity, &
-                                                 whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref, whole%mu2)
+                                                 whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref, whole%mu2, &
+                                                 whole%damping)
       end associate
       self%pieces(1)%r = old(1)%r(:, 1:kb)
       self%pieces(1)%v = old(1)%v(:, 1:kb)

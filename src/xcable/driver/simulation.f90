@@ -66,6 +66,7 @@ contains
       options%theta = config%theta
       options%mu = merge(1.0_dp, 0.0_dp, trim(config%mass_matrix) == 'averaged')
       options%mu2 = merge(averaged_sawtooth_mass, 0.0_dp, trim(config%mass_matrix) == 'averaged')
+      options%damping = config%damping
       options%interval = config%interval
       options%newton%tolerance = config%newton_tol
       options%newton%max_iterations = config%newton_max_iter
@@ -100,6 +101,7 @@ contains
          if (allocated(error)) return
          call self%rod%prepare(scene, run_options_from_config(config), error)
          self%terms = terms_of(scene)
+         if (config%damping > 0) self%terms = self%terms//' damping'
       end select
    end subroutine sim_prepare
 
@@ -114,6 +116,7 @@ contains
       if (scene%end_a%kind() == 'motion' .or. scene%end_b%kind() == 'motion') terms = terms//' end_motion'
       if (scene%breaks) terms = terms//' break'
       if (index(scene%law%name(), 'without compression') > 0) terms = terms//' tension_only'
+      if (scene%law%name() == 'table' .or. index(scene%law%name(), 'table ') == 1) terms = terms//' table_law'
    end function terms_of
 
    !> The dynamics.

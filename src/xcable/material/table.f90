@@ -115,8 +115,6 @@ contains
          law%energy(i) = law%energy(i - 1) + 0.5_dp*h(i - 1)*(tension(i - 1) + tension(i)) &
                          + h(i - 1)**2*(law%slope(i - 1) - law%slope(i))/12
       end do
-      ! The strain energy is the integral from strain 0.
-      law%energy_at_zero = table_energy_raw(law, 0.0_dp)
       ! Bucket index over [strain(1), strain(n)].
       nb = 4*(n - 1)
       law%bucket_width = (strain(n) - strain(1))/nb
@@ -130,6 +128,8 @@ contains
          end do
          law%bucket(b) = i
       end do
+      ! The strain energy is the integral from strain 0.
+      law%energy_at_zero = table_energy_raw(law, 0.0_dp)
 
    contains
 

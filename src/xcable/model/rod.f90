@@ -82,6 +82,8 @@ module xcable_model_rod
       real(dp), allocatable :: dual(:)
       !> Mass and weight per unstretched length, kg/m and N/m; bending stiffness EI, N m^2; gravity, m/s^2.
       real(dp) :: mass_per_length = 0, weight = 0, ei = 0, gravity = 0, mu2 = 0
+      !> Internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt, N s.
+      real(dp) :: damping = 0
       !> Share of the averaged mass matrix (1: averaged, 0: lumped).
       real(dp) :: mu = 1
       !> Tension-strain law.
@@ -178,7 +180,7 @@ contains
    end function cross2
 
    !> Set up a piece on the node arc lengths s.
-   subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref, mu2)
+   subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref, mu2, damping)
       !> Piece.
       class(rod_piece), intent(inout) :: self
       !> Node arc lengths, increasing, m.
@@ -195,6 +197,8 @@ contains
       real(dp), intent(in) :: tension_ref
       !> Weight of the second-difference kinetic energy (0 if absent).
       real(dp), intent(in), optional :: mu2
+      !> Kelvin-Voigt damping c, N s (0 if absent).
+      real(dp), intent(in), optional :: damping
       integer :: n, k
       real(dp) :: w
       n = size(s)
@@ -216,6 +220,8 @@ contains
       self%mu = mu
       self%mu2 = 0
       if (present(mu2)) self%mu2 = mu2
+      self%damping = 0
+      if (present(damping)) self%damping = damping
       if (allocated(self%law)) deallocate (self%law)
       allocate (self%law, source=law)
       if (allocated(self%end_a)) deallocate (self%end_a)
@@ -458,6 +464,10 @@ contains
             end if
             lsum = l0 + l1
             wsum = e0 + e1
+            ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
+            ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
+            q = q + self%damping*h/dt
+            dq = dq + self%damping/dt
             self%force(:, c) = q*wsum/lsum
             ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
             em = 0.5_dp*wsum
@@ -712,12 +722,15 @@ contains
    end function rod_reaction
 
    !> Tension, strain and shear force of each cell and the moment of each node of positions R.
-   subroutine rod_cell_fields(self, r, tension, strain, shear, moment_node)
+   subroutine rod_cell_fields(self, r, tension, strain, shear, moment_node, v)
       !> Piece.
       class(rod_piece), intent(inout) :: self
       !> Positions (2, n).
       real(dp), intent(in) :: r(:, :)
-      !> Tension (N), strain, shear force (N; along the normal n of the paper, -perp(t)) per cell (n - 1).
+      !> Velocities (2, n): with them the tension includes the damping c d(eps)/dt.
+      real(dp), intent(in), optional :: v(:, :)
+      !> Tension (N; with the damping when v is given), strain, shear force (N; along the normal n of the
+      !> paper, -perp(t)) per cell (n - 1).
       real(dp), intent(out) :: tension(:), strain(:), shear(:)
       !> Moment per node, dB/dtheta, N m (0 at the ends).
       real(dp), intent(out) :: moment_node(:)
@@ -730,6 +743,8 @@ contains
       do c = 1, self%n - 1
          strain(c) = self%l1(c) - 1
          tension(c) = self%law%tension(strain(c))
+         if (present(v) .and. self%damping > 0) tension(c) = tension(c) + self%damping* &
+            dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c))
          ! Sn along the paper's normal n = -perp(t): EI Omega' + (1 + eps) Sn = 0.
          shear(c) = (moment_node(c + 1) - moment_node(c))/(self%ds(c)*self%l1(c))
       end do

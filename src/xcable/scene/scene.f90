@@ -14,6 +14,7 @@ module xcable_scene
    use xcable_io_config, only: case_config
    use xcable_material_law, only: material_law, new_law
    use xcable_material_tension_only, only: tension_only_law, new_tension_only
+   use xcable_material_table, only: table_law, new_table_law
    use xcable_ends_end, only: end_condition
    use xcable_ends_factory, only: new_end
    implicit none
@@ -66,6 +67,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: pi = acos(-1.0_dp)
       class(material_law), allocatable :: law
+      type(table_law) :: table
       real(dp) :: area, ei, ea, rel
       scene%source = config%source
       area = config%area
@@ -74,7 +76,13 @@ contains
       if (ei == 0) ei = config%young*pi*config%diameter**4/64
       ea = config%ea
       if (ea == 0) ea = config%young*area
-      call new_law(law, trim(config%law), config%p, ea, config%strain_max, error)
+      if (trim(config%law) == 'table') then
+         call new_table_law(config%material_table_strain(1:config%material_table_rows), &
+                            config%material_table_tension(1:config%material_table_rows), config%strain_max, table, error)
+         if (.not. allocated(error)) allocate (law, source=table)
+      else
+         call new_law(law, trim(config%law), config%p, ea, config%strain_max, error)
+      end if
       if (allocated(error)) then
          call prefix_error(error, config%source//': &material: ')
          return

@@ -1,0 +1,311 @@
+!> Rope laws from data and internal damping: the tabulated law's f, f', f''
+!> and strain energy consistent with each other; a table sampled from the
+!> tanh law reproducing the tanh results, with the error falling at the
+!> interpolant's order; bad tables refused; Kelvin-Voigt damping against
+!> closed forms (the decay of the first axial mode of a taut line, the speed
+!> of a released end) and its dissipation against the integral of c eps_t^2.
+module suite_laws
+   use xcable_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
+   use xcable_error, only: stat_input
+   use xcable_strings, only: str
+   use xcable_io_config, only: case_config
+   use xcable_material_law, only: tanh_law
+   use xcable_material_table, only: table_law, new_table_law
+   use xcable_simulation, only: simulation
+   use suite_rod_statics, only: statics_config
+   use suite_rod_dynamics, only: rupture_config, run_config
+   use suite_golden, only: snapshot_store
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
+   implicit none
+   private
+   public :: collect_laws
+
+   real(dp), parameter :: pi = acos(-1.0_dp)
+
+contains
+
+   subroutine collect_laws(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('table_consistent', test_table_consistent), &
+               new_unittest('table_refuses_bad_rows', test_table_bad), &
+               new_unittest('table_converges_to_tanh', test_table_converges), &
+               new_unittest('damping_axial_mode_decay', test_mode_decay), &
+               new_unittest('damping_released_end_speed', test_released_speed), &
+               new_unittest('damping_dissipation_integral', test_dissipation)]
+   end subroutine collect_laws
+
+   !> Rows of the tanh law at nrow strains spread over [-0.9, 0.4].
+   subroutine tanh_rows(nrow, strain, tension)
+      integer, intent(in) :: nrow
+      real(dp), allocatable, intent(out) :: strain(:), tension(:)
+      type(tanh_law) :: tanh
+      integer :: k
+      strain = [(-0.9_dp + 1.3_dp*(k - 1)/(nrow - 1), k=1, nrow)]
+      tension = tanh%tension(strain)
+   end subroutine tanh_rows
+
+   !> f' and f'' against central differences of f and f', W' against f, at
+   !> strains inside and beyond the table; the rows reproduced; f' > 0.
+   subroutine test_table_consistent(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(table_law) :: law
+      real(dp), allocatable :: strain(:), tension(:)
+      real(dp) :: e, h, worst(3), scale
+      integer :: k
+      call tanh_rows(14, strain, tension)
+      call new_table_law(strain, tension, 0.35_dp, law, error)
+      if (allocated(error)) return
+      worst = 0
+      h = 1.0e-6_dp
+      do k = 0, 300
+         e = -1.2_dp + 1.8_dp*k/300 + 1.0e-4_dp
+         scale = maxval(abs(law%stiffness([-0.9_dp, 0.0_dp, 0.4_dp])))
+         worst(1) = max(worst(1), abs(law%stiffness(e) - (law%tension(e + h) - law%tension(e - h))/(2*h))/scale)
+         worst(2) = max(worst(2), abs(law%stiffness_slope(e) - (law%stiffness(e + h) - law%stiffness(e - h))/(2*h)) &
+                        /(scale/0.1_dp))
+         worst(3) = max(worst(3), abs(law%tension(e) - (law%strain_energy(e + h) - law%strain_energy(e - h))/(2*h)) &
+                        /maxval(abs(tension)))
+         call check(error, law%stiffness(e) > 0, 'table law: f'' = '//str(law%stiffness(e))//' at strain '//str(e))
+         if (allocated(error)) return
+      end do
+      write (output_unit, '(4x,a,3es10.2)') 'table law: largest |f'' - df|, |f'''' - df''|, |f - dW| (scaled):', worst
+      call check(error, all(worst < 1.0e-6_dp), 'table law: f, f'', f'''' and W are not consistent')
+      if (allocated(error)) return
+      do k = 1, size(strain)
+         call check_close(error, law%tension(strain(k)), tension(k), 'row '//str(k), rel_tol=1.0e-14_dp, abs_tol=1.0e-9_dp)
+         if (allocated(error)) return
+      end do
+      call check_close(error, law%strain_energy(0.0_dp), 0.0_dp, 'W(0)', abs_tol=1.0e-12_dp)
+   end subroutine test_table_consistent
+
+   !> Non-monotone strains, a decreasing tension, NaN and a single row are refused.
+   subroutine test_table_bad(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: nan
+      nan = ieee_value(0.0_dp, ieee_quiet_nan)
+      call refused([0.0_dp, 0.2_dp, 0.1_dp], [0.0_dp, 1.0_dp, 2.0_dp], 'strains must increase', error)
+      if (allocated(error)) return
+      call refused([0.0_dp, 0.1_dp, 0.2_dp], [0.0_dp, 2.0_dp, 1.0_dp], 'tensions must increase', error)
+      if (allocated(error)) return
+      call refused([0.0_dp, nan], [0.0_dp, 1.0_dp], 'not a finite number', error)
+      if (allocated(error)) return
+      call refused([0.0_dp], [0.0_dp], 'at least 2 rows', error)
+
+   contains
+
+      subroutine refused(strain, tension, words, err)
+         real(dp), intent(in) :: strain(:), tension(:)
+         character(*), intent(in) :: words
+         type(error_type), allocatable, intent(out) :: err
+         type(table_law) :: law
+         type(error_type), allocatable :: why
+         call new_table_law(strain, tension, 0.35_dp, law, why)
+         call check(err, allocated(why), 'a bad table was accepted ('//words//')')
+         if (allocated(err)) return
+         call check(err, why%stat == stat_input .and. index(why%message, words) > 0, 'unexpected refusal: '//why%message)
+      end subroutine refused
+   end subroutine test_table_bad
+
+   !> The paper's fast 180 kN break with the tanh law tabulated at 14, 27, 53
+   !> and 105 rows: the static span, the released end's mean speed and the
+   !> tension field at 40 ms approach those of the tanh law. The interpolant is
+   !> third order in f but second order in f' (Steffen's slopes): the span and
+   !> the speed, integrals of f, fall at order 3 or more; the field, whose front
+   !> moves at the wave speed sqrt(f' / m), at order 2.
+   subroutine test_table_converges(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: rows(4) = [14, 27, 53, 105]
+      real(dp) :: ref(3), err(3, 4), order(3)
+      real(dp), allocatable :: ref_field(:), field(:), strain(:), tension(:)
+      type(case_config) :: c
+      integer :: i, q
+      c = rupture_config(180.0e3_dp, 0.005_dp, 0.04_dp, 121)
+      c%interval = 0.04_dp
+      call figures(c, ref, ref_field, error)
+      if (allocated(error)) return
+      do i = 1, size(rows)
+         call tanh_rows(rows(i), strain, tension)
+         c%law = 'table'
+         c%material_table_rows = rows(i)
+         c%material_table_strain(1:rows(i)) = strain
+         c%material_table_tension(1:rows(i)) = tension
+         call figures(c, err(:, i), field, error)
+         if (allocated(error)) return
+         err(1:2, i) = abs(err(1:2, i) - ref(1:2))/abs(ref(1:2))
+         err(3, i) = maxval(abs(field - ref_field))/180.0e3_dp
+      end do
+      write (output_unit, '(4x,a)') 'tanh law tabulated: relative errors against the tanh law (fast 180 kN, 121 nodes)'
+      write (output_unit, '(4x,a6,3a14)') 'rows', 'span', 'end speed', 'field/T_s'
+      do i = 1, size(rows)
+         write (output_unit, '(4x,i6,3es14.3)') rows(i), err(:, i)
+      end do
+      do q = 1, 3
+         order(q) = log(err(q, 2)/err(q, 4))/log(4.0_dp)
+      end do
+      write (output_unit, '(4x,a,3f7.2)') 'observed orders (27 -> 105 rows):', order
+      call check(error, all(order > [3.0_dp, 3.0_dp, 1.8_dp]), 'the tabulated law does not converge at its order')
+      if (allocated(error)) return
+      call check(error, all(err(:, 4) < [1.0e-5_dp, 5.0e-5_dp, 5.0e-3_dp]), 'the finest table is too far from the tanh law')
+
+   contains
+
+      !> Span, mean speed of the released end after 10 ms, and the tension field
+      !> at the last snapshot.
+      subroutine figures(cc, values, field, err)
+         type(case_config), intent(in) :: cc
+         real(dp), intent(out) :: values(3)
+         real(dp), allocatable, intent(out) :: field(:)
+         type(error_type), allocatable, intent(out) :: err
+         type(simulation) :: sim
+         type(snapshot_store) :: store
+         real(dp) :: total, weight
+         integer :: k
+         call run_config(cc, sim, err, store)
+         if (allocated(err)) return
+         total = 0
+         weight = 0
+         do k = 1, sim%rod%history%n
+            if (sim%rod%history%time(k) < 0.01_dp) cycle
+            total = total + norm2(sim%rod%history%ends(3:4, 2, k))*sim%rod%history%step(k)
+            weight = weight + sim%rod%history%step(k)
+         end do
+         values = [sim%rod%static%span, total/weight, 0.0_dp]
+         field = store%fields(:, 1, store%n)
+      end subroutine figures
+   end subroutine test_table_converges
+
+   !> A taut line (linear law, no weight) started in its first axial mode:
+   !> with T = EA eps + c eps_t its amplitude decays as exp(-c k^2 t / (2 m)),
+   !> k = pi / L; the displacement of the middle node at its extremes.
+   subroutine test_mode_decay(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      real(dp) :: ea, m, k, sigma, rate, peaks(40), times(40), u(3)
+      integer :: i, n, np
+      c = statics_config(61)
+      c%law = 'linear'
+      ea = 1.0e6_dp
+      c%ea = ea
+      c%gravity = 0
+      c%bending_stiffness = 1.0e-6_dp
+      c%end_b%x = 61.2_dp
+      c%end_b%z = 0
+      c%given = 'end_b%x end_b%z'
+      c%damping = 200
+      c%t_end = 1.2_dp
+      c%interval = 0
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      m = sim%rod%scene%mass
+      k = pi/c%length
+      np = c%nodes
+      do i = 1, np
+         sim%rod%pieces(1)%v(:, i) = [0.1_dp*sin(k*sim%rod%s(i)), 0.0_dp]
+      end do
+      sim%rod%pieces(1)%v(:, [1, np]) = 0
+      call sim%run(error=error)
+      if (allocated(error)) return
+      ! At the fixed end the strain is u_s(0) = k A(t) sin(omega t): the tension there oscillates with the
+      ! mode's amplitude, so its peaks above the static tension decay at the mode's rate.
+      n = 0
+      do i = 2, sim%rod%history%n - 1
+         u = sim%rod%history%ends(5, 1, i - 1:i + 1)
+         if ((u(2) - u(1))*(u(3) - u(2)) < 0 .and. u(2) > sim%rod%history%ends(5, 1, 0) .and. n < size(peaks)) then
+            n = n + 1
+            peaks(n) = u(2) - sim%rod%history%ends(5, 1, 0)
+            times(n) = sim%rod%history%time(i)
+         end if
+      end do
+      call check(error, n >= 4, 'fewer than four tension peaks at the fixed end')
+      if (allocated(error)) return
+      rate = -log(peaks(n)/peaks(1))/(times(n) - times(1))
+      sigma = c%damping*k*k/(2*m)
+      write (output_unit, '(4x,a,f9.5,a,f9.5,a,es10.2)') 'axial mode decay: rate ', rate, ' 1/s, theory c k^2 / (2 m) = ', &
+         sigma, ' 1/s; relative error', (rate - sigma)/sigma
+      call check_close(error, rate, sigma, 'decay rate of the first axial mode', rel_tol=1.0e-3_dp)
+   end subroutine test_mode_decay
+
+   !> A straight taut line (linear law, no weight) released at once at end b:
+   !> for T = EA eps + c eps_t the end's speed is (T0 / (m c_w)) erf(sqrt(EA t / c))
+   !> (a semi-infinite Kelvin-Voigt string under a step), from 5 ms (the erf's
+   !> square-root start is resolved at first order only) to 50 ms (before the
+   !> diffused precursor of the wave reflected at end a arrives).
+   subroutine test_released_speed(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      integer, parameter :: nodes(2) = [241, 481]
+      real(dp), parameter :: steps(2) = [2.0e-4_dp, 1.0e-4_dp]
+      real(dp) :: ea, m, t0, cw, worst(2), exact, speed
+      integer :: i, k
+      ea = 1.0e6_dp
+      do i = 1, 2
+         c = rupture_config(1.0e4_dp, 0.0_dp, 0.05_dp, nodes(i))
+         c%dt = steps(i)
+         c%law = 'linear'
+         c%ea = ea
+         c%gravity = 0
+         c%bending_stiffness = 1.0e-6_dp
+         c%tension = 0
+         c%end_b%x = 60.6_dp
+         c%end_b%z = 0
+         c%given = 'end_b%x end_b%z'
+         c%damping = 1.0e4_dp
+         call run_config(c, sim, error)
+         if (allocated(error)) return
+         m = sim%rod%scene%mass
+         t0 = ea*0.01_dp
+         cw = sqrt(ea/m)
+         worst(i) = 0
+         do k = 1, sim%rod%history%n
+            if (sim%rod%history%time(k) < 5.0e-3_dp) cycle
+            exact = t0/(m*cw)*erf(sqrt(ea*sim%rod%history%time(k)/c%damping))
+            speed = norm2(sim%rod%history%ends(3:4, 2, k))
+            worst(i) = max(worst(i), abs(speed - exact)/(t0/(m*cw)))
+         end do
+      end do
+      write (output_unit, '(4x,a,f8.3,a,2es10.2)') 'released end with damping: final speed ', t0/(m*cw), &
+         ' m/s; largest error against the erf law / final speed (241, 481 nodes)', worst
+      call check(error, worst(2) < 5.0e-3_dp .and. worst(2) < 0.6_dp*worst(1), 'released end speed off the Kelvin-Voigt law')
+   end subroutine test_released_speed
+
+   !> The ledger's dissipation column against the integral of c eps_t^2 over the
+   !> cable and the run, taken from snapshots at every step (trapezoid rule), on a
+   !> slack release; and the ledger closes with it.
+   subroutine test_dissipation(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      type(snapshot_store) :: store
+      real(dp) :: integral, rate_prev, rate, ds
+      integer :: k, j
+      real(dp), allocatable :: strain_rate(:)
+      c = rupture_config(2.0e4_dp, 0.01_dp, 0.1_dp, 61)
+      c%damping = 2.0e3_dp
+      c%energy = .true.
+      c%dt = 1.0e-4_dp
+      c%interval = 1.0e-4_dp
+      call run_config(c, sim, error, store)
+      if (allocated(error)) return
+      ds = c%length/(c%nodes - 1)
+      integral = 0
+      rate_prev = 0
+      do k = 2, store%n
+         strain_rate = (store%fields(:, 3, k) - store%fields(:, 3, k - 1))/(store%times(k) - store%times(k - 1))
+         rate = 0
+         do j = 1, size(strain_rate) - 1
+            rate = rate + 0.5_dp*ds*c%damping*(strain_rate(j)**2 + strain_rate(j + 1)**2)
+         end do
+         integral = integral + rate*(store%times(k) - store%times(k - 1))
+      end do
+      write (output_unit, '(4x,a,es12.4,a,es12.4,a,es10.2)') 'damping: dissipation column ', sim%rod%summary%dissipated, &
+         ' J, integral of c eps_t^2 from the snapshots ', integral, ' J; ledger drift', sim%rod%summary%energy_drift
+      call check_close(error, integral, sim%rod%summary%dissipated, 'dissipation against the integral of c eps_t^2', &
+                       rel_tol=2.0e-4_dp)
+      if (allocated(error)) return
+      call check(error, sim%rod%summary%energy_drift < 1.0e-9_dp, 'the ledger does not close with the dissipation')
+   end subroutine test_dissipation
+end module suite_laws

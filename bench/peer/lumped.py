@@ -157,6 +157,8 @@ def run(tension, t_break, t_end, sample, n=400, courant=0.5, law=None,
     theta_max = float(np.abs(theta).max())
     ledger0 = None
     speed_max = 0.0
+    eps_low = []          # lowest strain since the previous sample
+    low = [eps_min]
 
     def record():
         nonlocal ledger0
@@ -166,6 +168,8 @@ def run(tension, t_break, t_end, sample, n=400, courant=0.5, law=None,
             ledger0 = led
         rows.append((t, x[-1], z[-1], math.hypot(vx[-1], vz[-1]), ta,
                      es, ek, eb, eg, work, led))
+        eps_low.append(low[0])
+        low[0] = math.inf
         if snapshot_every and (len(rows) - 1) % snapshot_every == 0:
             snaps.append((t, x.copy(), z.copy(), vx.copy(), vz.copy()))
 
@@ -210,6 +214,8 @@ def run(tension, t_break, t_end, sample, n=400, courant=0.5, law=None,
                 em = float(eps.min())
                 if em < eps_min:
                     eps_min = em
+                if em < low[0]:
+                    low[0] = em
                 tm = float(np.abs(theta).max())
                 if tm > theta_max:
                     theta_max = tm
@@ -246,6 +252,7 @@ def run(tension, t_break, t_end, sample, n=400, courant=0.5, law=None,
                         if ta_prev != ta else t
                 ta_prev = ta
                 eps_min = min(eps_min, float(eps.min()))
+                low[0] = min(low[0], float(eps.min()))
                 theta_max = max(theta_max, float(np.abs(theta).max()))
             speed_max = max(speed_max, math.hypot(vx[-1], vz[-1]))
             record()
@@ -269,6 +276,7 @@ def run(tension, t_break, t_end, sample, n=400, courant=0.5, law=None,
         "ledger_drift_rel_strain0": float(np.max(np.abs(led - led[0])) / es0),
         "E_strain0": es0,
         "eps_min": eps_min, "theta_max": theta_max, "speed_max_sampled": speed_max,
+        "eps_min_per_sample": [round(v, 5) for v in eps_low],
         "t_drop_1pct": t_drop, "wall_s": wall,
         "steps": steps if integrator == "verlet" else nsub * nsamples,
         "dt_min": dt_min if integrator == "verlet" else dt,

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Run every peer computation and fill bench/peer/runs/ and bench/peer/data/.
 
-  python3 run_all.py                 # everything (about 45 min on one core)
+  python3 run_all.py                 # everything (about an hour on one core)
   python3 run_all.py --only slack_5kN_slow
   python3 run_all.py --groups lumped moordyn
 
@@ -13,8 +13,9 @@ so an interrupted run_all resumes; --force reruns):
   nocomp    lumped.py with the law cut at T = 0 and with MoorDyn's table
             (N = 400), the same physics as MoorDyn
   moordyn   moordyn_run.py at N = 400 and 800
-  free      t_break = 0 release of slack_5kN (to 1 s): MoorDyn with a Free
-            point vs MoorDyn with the coupled end vs lumped.py (table law)
+  free      t_break = 0 release at 5 kN (to 0.04 s), Courant 0.5, 0.25,
+            0.1: MoorDyn with a Free point vs MoorDyn with the coupled end
+            vs lumped.py (table law)
 Then data/: the finest lumped run of every case (data/<case>.tsv) and the
 N = 800 MoorDyn run (data/moordyn_<case>.tsv, cut where MoorDyn's results
 stop being meaningful), and data/manifest.tsv.
@@ -128,13 +129,16 @@ def main():
             for c in cases:
                 moordyn_run("moordyn_%s_N%d" % (c, n), c, a.force, n=n)
     if "free" in g and (not a.only or "slack_5kN_slow" in a.only):
+        # until 0.04 s: later the end node, released at once and with no
+        # compression to hold it back, overruns its neighbour in all three
         c = "slack_5kN_slow"
-        moordyn_run("moordyn_release0_free_N400", c, a.force, n=400,
-                    t_break=0.0, t_end=1.0, free=True)
-        moordyn_run("moordyn_release0_coupled_N400", c, a.force, n=400,
-                    t_break=0.0, t_end=1.0)
-        lumped_run("table_release0_N400", c, a.force, n=400, t_break=0.0,
-                   t_end=1.0, law=table_law(c))
+        for cr in (0.5, 0.25, 0.1):
+            moordyn_run("moordyn_release0_free_N400_c%g" % cr, c, a.force,
+                        n=400, courant=cr, t_break=0.0, t_end=0.04, free=True)
+            moordyn_run("moordyn_release0_coupled_N400_c%g" % cr, c, a.force,
+                        n=400, courant=cr, t_break=0.0, t_end=0.04)
+            lumped_run("table_release0_N400_c%g" % cr, c, a.force, n=400,
+                       courant=cr, t_break=0.0, t_end=0.04, law=table_law(c))
     collect()
 
 
@@ -160,10 +164,10 @@ def collect():
                         "%.4g" % info["dt"], "%g" % info["tension"],
                         "%g" % info["t_break"], "%.4g" % rows[-1, 0],
                         "%.6f" % info["span"],
-                        "%.3g" % info["ledger_drift_rel_strain0"
-                                      if tv is None else
-                                      info.get("ledger_drift_rel_strain0_valid",
-                                               float("nan"))],
+                        "%.3g" % (info["ledger_drift_rel_strain0"]
+                                  if tv is None else
+                                  info.get("ledger_drift_rel_strain0_valid",
+                                           float("nan"))),
                         "%.1f" % info["wall_s"]))
     with open(os.path.join(DATA, "manifest.tsv"), "w") as f:
         f.write("file\tcode\tmodel\tN\tdt\tT_s\tt_break\tt_last\tspan\t"

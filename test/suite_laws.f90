@@ -32,6 +32,7 @@ contains
                new_unittest('table_refuses_bad_rows', test_table_bad), &
                new_unittest('table_converges_to_tanh', test_table_converges), &
                new_unittest('damping_axial_mode_decay', test_mode_decay), &
+               new_unittest('warning_beyond_law_range', test_range_warning), &
                new_unittest('damping_released_end_speed', test_released_speed), &
                new_unittest('damping_dissipation_integral', test_dissipation)]
    end subroutine collect_laws
@@ -55,7 +56,7 @@ contains
       real(dp) :: e, h, worst(3), scale
       integer :: k
       call tanh_rows(14, strain, tension)
-      call new_table_law(strain, tension, 0.35_dp, law, error)
+      call new_table_law(strain, tension, law, error)
       if (allocated(error)) return
       worst = 0
       h = 1.0e-6_dp
@@ -101,7 +102,7 @@ contains
          type(error_type), allocatable, intent(out) :: err
          type(table_law) :: law
          type(error_type), allocatable :: why
-         call new_table_law(strain, tension, 0.35_dp, law, why)
+         call new_table_law(strain, tension, law, why)
          call check(err, allocated(why), 'a bad table was accepted ('//words//')')
          if (allocated(err)) return
          call check(err, why%stat == stat_input .and. index(why%message, words) > 0, 'unexpected refusal: '//why%message)
@@ -178,40 +179,58 @@ contains
       end subroutine figures
    end subroutine test_table_converges
 
-   !> A taut line (linear law, no weight) started in its first axial mode:
-   !> with T = EA eps + c eps_t its amplitude decays as exp(-c k^2 t / (2 m)),
-   !> k = pi / L; the displacement of the middle node at its extremes.
-   subroutine test_mode_decay(error)
+   !> A taut line (linear law, no weight, 61 nodes, L = 60 m, ends 61.2 m apart) started
+   !> in its first axial mode with 0.1 m/s at mid-span, with damping c.
+   subroutine mode_case(damping, t_end, sim, error)
+      real(dp), intent(in) :: damping, t_end
+      type(simulation), intent(inout) :: sim
       type(error_type), allocatable, intent(out) :: error
+      call sim%prepare(mode_config(damping, t_end), error)
+      if (allocated(error)) return
+      call start_mode(sim)
+      call sim%run(error=error)
+   end subroutine mode_case
+
+   function mode_config(damping, t_end) result(c)
+      real(dp), intent(in) :: damping, t_end
       type(case_config) :: c
-      type(simulation) :: sim
-      real(dp) :: ea, m, k, sigma, rate, peaks(40), times(40), u(3)
-      integer :: i, n, np
       c = statics_config(61)
       c%law = 'linear'
-      ea = 1.0e6_dp
-      c%ea = ea
+      c%ea = 1.0e6_dp
       c%gravity = 0
       c%bending_stiffness = 1.0e-6_dp
       c%end_b%x = 61.2_dp
       c%end_b%z = 0
       c%given = 'end_b%x end_b%z'
-      c%damping = 200
-      c%t_end = 1.2_dp
+      c%damping = damping
+      c%t_end = t_end
       c%interval = 0
-      call sim%prepare(c, error)
-      if (allocated(error)) return
-      m = sim%rod%scene%mass
-      k = pi/c%length
-      np = c%nodes
+   end function mode_config
+
+   subroutine start_mode(sim)
+      type(simulation), intent(inout) :: sim
+      integer :: i, np
+      np = size(sim%rod%s)
       do i = 1, np
-         sim%rod%pieces(1)%v(:, i) = [0.1_dp*sin(k*sim%rod%s(i)), 0.0_dp]
+         sim%rod%pieces(1)%v(:, i) = [0.1_dp*sin(pi/sim%rod%scene%length*sim%rod%s(i)), 0.0_dp]
       end do
       sim%rod%pieces(1)%v(:, [1, np]) = 0
-      call sim%run(error=error)
+   end subroutine start_mode
+
+   !> The first axial mode of the taut line: with T = EA eps + c eps_t its
+   !> amplitude decays as exp(-c k^2 t / (2 m)), k = pi / L. At the fixed end
+   !> the strain is k A(t) sin(omega t): the peaks of the tension there above
+   !> the static one decay at the mode's rate.
+   subroutine test_mode_decay(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      real(dp), parameter :: c = 200
+      real(dp) :: m, k, sigma, rate, peaks(40), times(40), u(3)
+      integer :: i, n
+      call mode_case(c, 1.2_dp, sim, error)
       if (allocated(error)) return
-      ! At the fixed end the strain is u_s(0) = k A(t) sin(omega t): the tension there oscillates with the
-      ! mode's amplitude, so its peaks above the static tension decay at the mode's rate.
+      m = sim%rod%scene%mass
+      k = pi/sim%rod%scene%length
       n = 0
       do i = 2, sim%rod%history%n - 1
          u = sim%rod%history%ends(5, 1, i - 1:i + 1)
@@ -224,11 +243,37 @@ contains
       call check(error, n >= 4, 'fewer than four tension peaks at the fixed end')
       if (allocated(error)) return
       rate = -log(peaks(n)/peaks(1))/(times(n) - times(1))
-      sigma = c%damping*k*k/(2*m)
+      sigma = c*k*k/(2*m)
       write (output_unit, '(4x,a,f9.5,a,f9.5,a,es10.2)') 'axial mode decay: rate ', rate, ' 1/s, theory c k^2 / (2 m) = ', &
          sigma, ' 1/s; relative error', (rate - sigma)/sigma
       call check_close(error, rate, sigma, 'decay rate of the first axial mode', rel_tol=1.0e-3_dp)
    end subroutine test_mode_decay
+
+   !> A run whose cells stretch beyond the law's range (strain_max) says so in
+   !> its warnings; one that stays inside does not. The mode's strain swings
+   !> from 2.0e-2 by about 1.5e-4.
+   subroutine test_range_warning(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp), parameter :: limits(2) = [2.01e-2_dp, 2.03e-2_dp]
+      integer :: i
+      do i = 1, 2
+         c = mode_config(0.0_dp, 0.2_dp)
+         c%strain_max = limits(i)
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         call start_mode(sim)
+         call sim%run(error=error)
+         if (allocated(error)) return
+         write (output_unit, '(4x,a,es10.3,a,es11.4,a,l2)') 'strain_max', limits(i), ': largest strain', &
+            sim%rod%summary%max_strain, ', warned', index(sim%rod%summary%warnings, 'beyond the range') > 0
+         call check(error, (index(sim%rod%summary%warnings, 'beyond the range of the linear law') > 0) .eqv. (i == 1), &
+                    'strain_max '//str(limits(i))//', largest strain '//str(sim%rod%summary%max_strain)// &
+                    ': the warning is wrong: "'//sim%rod%summary%warnings//'"')
+         if (allocated(error)) return
+      end do
+   end subroutine test_range_warning
 
    !> A straight taut line (linear law, no weight) released at once at end b:
    !> for T = EA eps + c eps_t the end's speed is (T0 / (m c_w)) erf(sqrt(EA t / c))

@@ -113,7 +113,7 @@ contains
       integer :: k
       call make_piece(plain, x, r0, v0, 1.0_dp, 0.1_dp, .false., .false.)
       strain = [(-0.8_dp + 1.2_dp*(k - 1)/40, k=1, 41)]
-      call new_table_law(strain, tanh%tension(strain), 0.35_dp, table, error)
+      call new_table_law(strain, tanh%tension(strain), table, error)
       if (allocated(error)) return
       call p%piece%init(plain%piece%s, 2.2_dp, 22.0_dp, 70.6_dp, 9.81_dp, 1.0_dp, table, plain%piece%end_a, &
                         plain%piece%end_b, 1.0e4_dp, 0.1_dp, 500.0_dp)

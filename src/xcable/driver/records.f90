@@ -77,8 +77,8 @@ module xcable_run_records
       real(dp) :: dt_requested = 0, dt_used = 0, courant_requested = 0, courant_used = 0
       !> Box scheme: largest |b0^2 + b3^2 - 1|. Rod: largest turning angle between two cells (rad).
       real(dp) :: max_unit_norm_error = 0, max_turning_angle = 0
-      !> Smallest strain reached.
-      real(dp) :: min_strain = 0
+      !> Smallest and largest strain reached.
+      real(dp) :: min_strain = 0, max_strain = 0
       !> Warnings: one line each ('' : none).
       character(:), allocatable :: warnings
    end type run_summary

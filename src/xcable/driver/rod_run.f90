@@ -680,6 +680,7 @@ contains
             end if
             self%summary%max_turning_angle = max(self%summary%max_turning_angle, maxval(abs(piece%th1)))
             self%summary%min_strain = min(self%summary%min_strain, minval(piece%l1) - 1)
+            self%summary%max_strain = max(self%summary%max_strain, maxval(piece%l1) - 1)
             run_piece%r_prev = run_piece%r
             run_piece%v_prev = run_piece%v
             run_piece%r = r1
@@ -986,6 +987,11 @@ contains
       if (self%summary%max_turning_angle > warn_turning_angle) call warn('neighbouring cells turned by up to '// &
          str(self%summary%max_turning_angle)//' rad (more than '//str(warn_turning_angle)// &
          ' rad): a kink at the grid scale, the buckled zone is not resolved; more nodes resolve it')
+      associate (law => self%pieces(1)%problem%piece%law)
+         if (self%summary%max_strain > law%strain_max) call warn('cells were stretched to strain '// &
+            str(self%summary%max_strain)//', beyond the range of the '//law%name()//' law (strain '// &
+            str(law%strain_max)//'): the law was extrapolated there')
+      end associate
       if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
          str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &
          ' accepted): the step control struggled; a smaller dt or courant may be more economical')

@@ -343,6 +343,7 @@ contains
          call put_real_attr(group, 'max_unit_norm_error', summary%max_unit_norm_error, ok)
          call put_real_attr(group, 'max_turning_angle', summary%max_turning_angle, ok)
          call put_real_attr(group, 'min_strain', summary%min_strain, ok)
+         call put_real_attr(group, 'max_strain', summary%max_strain, ok)
          call put_int_attr(group, 'steps', summary%steps, ok)
          call put_int_attr(group, 'rejected_steps', summary%rejected_steps, ok)
          call put_int_attr(group, 'newton_iterations', summary%newton_iterations, ok)

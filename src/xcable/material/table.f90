@@ -49,14 +49,13 @@ module xcable_material_table
 contains
 
    !> Build the law from its rows; error (stat_input) unless there are at least
-   !> two finite rows with strictly increasing strain and tension.
-   subroutine new_table_law(strain, tension, strain_max, law, error)
+   !> two finite rows with strictly increasing strain and tension. The law's
+   !> range (strain_max) is the last row's strain: beyond it the law is extrapolated.
+   subroutine new_table_law(strain, tension, law, error)
       !> Strains of the rows.
       real(dp), intent(in) :: strain(:)
       !> Tensions of the rows, N.
       real(dp), intent(in) :: tension(:)
-      !> Largest documented strain.
-      real(dp), intent(in) :: strain_max
       !> The law.
       type(table_law), intent(out) :: law
       !> Error naming the bad row.
@@ -88,7 +87,7 @@ contains
             return
          end if
       end do
-      law%strain_max = strain_max
+      law%strain_max = strain(n)
       law%strain = strain
       law%tension_rows = tension
       h = strain(2:n) - strain(1:n - 1)

@@ -78,7 +78,7 @@ contains
       if (ea == 0) ea = config%young*area
       if (trim(config%law) == 'table') then
          call new_table_law(config%material_table_strain(1:config%material_table_rows), &
-                            config%material_table_tension(1:config%material_table_rows), config%strain_max, table, error)
+                            config%material_table_tension(1:config%material_table_rows), table, error)
          if (.not. allocated(error)) allocate (law, source=table)
       else
          call new_law(law, trim(config%law), config%p, ea, config%strain_max, error)

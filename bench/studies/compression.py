@@ -84,8 +84,18 @@ def main():
                                  f"{r['end'][0]:.3f}, {r['end'][1]:.3f} | {r['wall']:.1f} |")
                     print(lines[-1], flush=True)
         lines.append("")
+    # Keep the hand-written text above the marker of an existing page.
+    marker = "<!-- generated tables below"
+    if os.path.exists(a.out) and marker in open(a.out).read():
+        text = open(a.out).read()
+        keep = text[:text.index(marker)]
+        keep += text[text.index(marker):].split("\n", 1)[0] + "\n\n"
+        lines = lines[lines.index(next(l for l in lines if l.startswith("## "))):]
+        text = keep + "\n".join(lines) + "\n"
+    else:
+        text = "\n".join(lines) + "\n"
     with open(a.out, "w") as f:
-        f.write("\n".join(lines) + "\n")
+        f.write(text)
 
 
 if __name__ == "__main__":

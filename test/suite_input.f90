@@ -650,7 +650,7 @@ contains
       call expect_error(error, text, [character(48) :: path, '&end_a', 'line 3', 'increase strictly'])
       if (allocated(error)) return
       call write_text(table_path, '# only a comment'//nl//'0 1'//nl)
-      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 rows', 'at least 2'])
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 row;', 'at least 2'])
    end subroutine test_table_file_malformed
 
    subroutine test_rupture_at_loose_end(error)

@@ -40,6 +40,9 @@ module xcable_io_input
    !> Values longer than this are cut in messages.
    integer, parameter :: shown_length = 60
 
+   !> Why the times of an end's table must increase (the end of the messages on their order).
+   character(len=*), parameter :: time_order = 'the times must increase strictly'
+
    !> The value of one variable, on its way between case_config and the generic code.
    type :: config_value
       !> Whether the variable is known to `access`.
@@ -125,8 +128,9 @@ contains
       call access(c, e, v, .true.)
    end subroutine lower_words
 
-   !> The number of rows of each end's inline table: the number of values
-   !> given to table_time, which table_x and table_z must match.
+   !> The number of rows of each inline table: the number of values given to
+   !> its first column (an end's table_time), which the other columns must
+   !> match.
    subroutine count_table_rows(c, t, counts, error)
       !> The case; table_rows of each end set.
       type(case_config), intent(inout) :: c
@@ -136,22 +140,44 @@ contains
       integer, intent(in) :: counts(:)
       !> Error naming the columns and their counts.
       type(error_type), allocatable, intent(out) :: error
-      character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
-      integer :: k, n_time, n_x, n_z
-      do k = 1, size(ends)
-         n_time = counts(find_entry(t, ends(k), 'table_time'))
-         n_x = counts(find_entry(t, ends(k), 'table_x'))
-         n_z = counts(find_entry(t, ends(k), 'table_z'))
-         if (n_x /= n_time .or. n_z /= n_time) then
-            call fatal_error(error, c%source//': &'//ends(k)//': table_time has '//str(n_time)//' values, table_x '// &
-                             str(n_x)//', table_z '//str(n_z)//': the three columns of a table must have equal counts', &
-                             stat_input)
-            return
-         end if
-         if (k == 1) c%end_a%table_rows = n_time
-         if (k == 2) c%end_b%table_rows = n_time
-      end do
+      character(len=*), parameter :: end_columns(3) = [character(len=10) :: 'table_time', 'table_x', 'table_z']
+      call inline_rows(c, t, counts, 'end_a', end_columns, c%end_a%table_rows, error)
+      if (allocated(error)) return
+      call inline_rows(c, t, counts, 'end_b', end_columns, c%end_b%table_rows, error)
    end subroutine count_table_rows
+
+   !> The rows of one inline table: the count of its first column, refused
+   !> unless every column has that count.
+   subroutine inline_rows(c, t, counts, group, columns, rows, error)
+      !> The case (for its source).
+      type(case_config), intent(in) :: c
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> Values given to each entry (its highest index assigned).
+      integer, intent(in) :: counts(:)
+      !> Group of the table.
+      character(*), intent(in) :: group
+      !> Names of its columns, the first giving the count.
+      character(len=*), intent(in) :: columns(:)
+      !> Number of rows.
+      integer, intent(out) :: rows
+      !> Error naming the columns and their counts.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: how_many(3) = [character(len=5) :: 'one', 'two', 'three']
+      character(:), allocatable :: found
+      integer :: n(size(columns)), k
+      do k = 1, size(columns)
+         n(k) = counts(find_entry(t, group, trim(columns(k))))
+      end do
+      rows = n(1)
+      if (all(n == rows)) return
+      found = trim(columns(1))//' has '//str(n(1))//' values'
+      do k = 2, size(columns)
+         found = found//', '//trim(columns(k))//' '//str(n(k))
+      end do
+      call fatal_error(error, c%source//': &'//group//': '//found//': the '//trim(how_many(size(columns)))// &
+                       ' columns of a table must have equal counts', stat_input)
+   end subroutine inline_rows
 
    !> Read the file into lines, refusing what is not plain text.
    !>
@@ -1270,7 +1296,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(:), allocatable :: prefix, kind, uses
       real(dp) :: norm
-      integer :: k
 
       prefix = c%source//': &'//group//': '
       kind = "kind = '"//trim(e%kind)//"'"
@@ -1321,24 +1346,11 @@ contains
                           'rows) or table_file', stat_input)
          return
       end if
-      if (e%table_rows == 1) then
-         call fatal_error(error, prefix//'table_time = '//real_text(e%table_time(1))//': the table has 1 row; it '// &
-                          'must have at least 2', stat_input)
-         return
-      end if
-      do k = 2, e%table_rows
-         if (.not. e%table_time(k) > e%table_time(k - 1)) then
-            call fatal_error(error, prefix//'table_time('//str(k)//') = '//real_text(e%table_time(k))// &
-                             ': not above table_time('//str(k - 1)//') = '//real_text(e%table_time(k - 1))// &
-                             '; the times must increase strictly', stat_input)
-            return
-         end if
-      end do
+      call check_column(prefix, 'table_time', e%table_time(1:e%table_rows), time_order, error)
    end subroutine check_end
 
    !> Read an end's table_file, if given, into its table: two or three numbers
-   !> a line (t, x and z; z = 0 when absent), '#' starts a comment, blank
-   !> lines are skipped. A file and inline rows together are refused.
+   !> a line (t, x and z; z = 0 when absent), the times strictly increasing.
    subroutine load_table(c, group, e, error)
       !> The case (for its source).
       type(case_config), intent(in) :: c
@@ -1348,33 +1360,80 @@ contains
       type(end_config), intent(inout) :: e
       !> Error naming the case file, the group, the table file and its line.
       type(error_type), allocatable, intent(out) :: error
-      character(len=line_len), allocatable :: lines(:)
-      character(:), allocatable :: prefix, text, item
-      real(dp) :: values(3)
-      integer :: nlines, i, pos, n, columns, rows, ios
-      logical :: exists
+      real(dp), allocatable :: values(:, :)
+      integer, allocatable :: lines(:)
+      character(:), allocatable :: prefix
+      integer :: rows
 
       if (len_trim(e%table_file) == 0) return
       prefix = c%source//': &'//group//": table_file = '"//trim(e%table_file)//"': "
-      if (e%table_rows > 0) then
-         call fatal_error(error, prefix//'given together with the inline table (table_time, '//str(e%table_rows)// &
-                          ' rows); give one', stat_input)
+      call read_table_file(prefix, trim(e%table_file), 'table_time', e%table_rows, 2, 3, 't, x and optionally z', &
+                           values, lines, rows, error)
+      if (allocated(error)) return
+      call check_column(prefix, 'time', values(1:rows, 1), time_order, error, lines(1:rows))
+      if (allocated(error)) return
+      e%table_time(1:rows) = values(1:rows, 1)
+      e%table_x(1:rows) = values(1:rows, 2)
+      e%table_z(1:rows) = values(1:rows, 3)
+      e%table_rows = rows
+   end subroutine load_table
+
+   !> Read a table file: min_columns to
+   !> size(values, 2) numbers a line, the same number on every line, '#'
+   !> starts a comment, blank lines are skipped; at least 2 and at most
+   !> max_table_points rows. A file given together with inline rows is refused.
+   subroutine read_table_file(prefix, file, first_column, inline_rows, min_columns, max_columns, layout, values, &
+                              lines, rows, error)
+      !> Start of every message: the case file, the group and the table_file.
+      character(*), intent(in) :: prefix
+      !> The table file (relative to the working directory).
+      character(*), intent(in) :: file
+      !> Name of the first inline column (for the message on inline rows and a file together).
+      character(*), intent(in) :: first_column
+      !> Number of rows given inline.
+      integer, intent(in) :: inline_rows
+      !> Fewest and most numbers a line.
+      integer, intent(in) :: min_columns, max_columns
+      !> What the columns are, for messages ('strain and tension').
+      character(*), intent(in) :: layout
+      !> The rows (max_table_points by max_columns); columns a line does not give are 0.
+      real(dp), allocatable, intent(out) :: values(:, :)
+      !> The line of the file each row is on.
+      integer, allocatable, intent(out) :: lines(:)
+      !> Number of rows read.
+      integer, intent(out) :: rows
+      !> Error naming the table file and the line at fault.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=line_len), allocatable :: text_lines(:)
+      character(:), allocatable :: text, item, expected
+      real(dp) :: x
+      integer :: nlines, i, pos, n, columns, ios
+      logical :: exists
+
+      allocate (values(max_table_points, max_columns), lines(max_table_points))
+      values = 0
+      lines = 0
+      rows = 0
+      if (inline_rows > 0) then
+         call fatal_error(error, prefix//'given together with the inline table ('//first_column//', '// &
+                          rows_text(inline_rows)//'); give one', stat_input)
          return
       end if
-      inquire (file=trim(e%table_file), exist=exists)
+      inquire (file=file, exist=exists)
       if (.not. exists) then
          call fatal_error(error, prefix//'no such file (the path is relative to the working directory)', stat_input)
          return
       end if
-      call load_lines(trim(e%table_file), lines, nlines, error)
+      call load_lines(file, text_lines, nlines, error)
       if (allocated(error)) then
          error%message = prefix//error%message
          return
       end if
-      rows = 0
+      expected = str(min_columns)
+      if (max_columns > min_columns) expected = expected//' or '//str(max_columns)
       columns = 0
       do i = 1, nlines
-         text = lines(i)
+         text = text_lines(i)
          if (index(text, '#') > 0) text = text(1:index(text, '#') - 1)
          n = 0
          pos = 1
@@ -1382,27 +1441,28 @@ contains
             call next_item(text, pos, item)
             if (len(item) == 0) exit
             n = n + 1
-            if (n > 3) exit
-            read (item, *, iostat=ios) values(n)
+            if (n > max_columns) cycle
+            read (item, *, iostat=ios) x
             if (ios == 0) then
-               if (.not. ieee_is_finite(values(n))) ios = 1
+               if (.not. ieee_is_finite(x)) ios = 1
             end if
             if (ios == 0 .and. verify(item, '0123456789+-.eEdD') > 0) ios = 1
             if (ios /= 0) then
-               call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": "'//shown(item)// &
-                                '" is not a finite real number', stat_input)
+               call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(text_lines(i)))//'": "'// &
+                                shown(item)//'" is not a finite real number', stat_input)
                return
             end if
+            if (rows < max_table_points) values(rows + 1, n) = x
          end do
          if (n == 0) cycle
-         if (n < 2 .or. n > 3) then
-            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": expected 2 or 3 '// &
-                             'numbers (t, x and optionally z)', stat_input)
+         if (n < min_columns .or. n > max_columns) then
+            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(text_lines(i)))//'": expected '// &
+                             expected//' numbers ('//layout//')', stat_input)
             return
          end if
          if (columns == 0) columns = n
          if (n /= columns) then
-            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": '//str(n)// &
+            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(text_lines(i)))//'": '//str(n)// &
                              ' numbers, but the lines before have '//str(columns), stat_input)
             return
          end if
@@ -1411,25 +1471,59 @@ contains
             return
          end if
          rows = rows + 1
-         e%table_time(rows) = values(1)
-         e%table_x(rows) = values(2)
-         e%table_z(rows) = 0
-         if (n == 3) e%table_z(rows) = values(3)
-         if (rows > 1) then
-            if (.not. e%table_time(rows) > e%table_time(rows - 1)) then
-               call fatal_error(error, prefix//'line '//str(i)//': time '//real_text(e%table_time(rows))// &
-                                ' is not above the time before, '//real_text(e%table_time(rows - 1))// &
-                                '; the times must increase strictly', stat_input)
-               return
-            end if
-         end if
+         lines(rows) = i
       end do
       if (rows < 2) then
-         call fatal_error(error, prefix//'has '//str(rows)//' rows; a table must have at least 2', stat_input)
+         call fatal_error(error, prefix//'has '//rows_text(rows)//'; a table must have at least 2', stat_input)
          return
       end if
-      e%table_rows = rows
-   end subroutine load_table
+   end subroutine read_table_file
+
+   !> Error unless a table column has at least 2 rows and increases strictly,
+   !> naming the first value that does not: as name(k) = value for an inline
+   !> column, or by its line for a column read from a table file (lines given).
+   subroutine check_column(prefix, name, x, reason, error, lines)
+      !> Start of the message: the case file and the group (and the table_file).
+      character(*), intent(in) :: prefix
+      !> The column: its variable ('table_time'), or with lines what it holds ('time').
+      character(*), intent(in) :: name
+      !> Its rows.
+      real(dp), intent(in) :: x(:)
+      !> Why the order matters, ending the message ('the times must increase strictly').
+      character(*), intent(in) :: reason
+      !> Error naming the row or line at fault.
+      type(error_type), allocatable, intent(out) :: error
+      !> The line of the table file each row is on.
+      integer, intent(in), optional :: lines(:)
+      character(:), allocatable :: what
+      integer :: k
+      if (size(x) == 1) then
+         call fatal_error(error, prefix//name//' = '//real_text(x(1))//': the table has 1 row; it must have at '// &
+                          'least 2', stat_input)
+         return
+      end if
+      do k = 2, size(x)
+         if (x(k) > x(k - 1)) cycle
+         if (present(lines)) then
+            what = 'line '//str(lines(k))//': '//name//' '//real_text(x(k))//' is not above the '//name// &
+                   ' before, '//real_text(x(k - 1))
+         else
+            what = name//'('//str(k)//') = '//real_text(x(k))//': not above '//name//'('//str(k - 1)//') = '// &
+                   real_text(x(k - 1))
+         end if
+         call fatal_error(error, prefix//what//'; '//reason, stat_input)
+         return
+      end do
+   end subroutine check_column
+
+   !> A number of rows as '1 row' or 'n rows'.
+   function rows_text(n) result(s)
+      !> Number of rows.
+      integer, intent(in) :: n
+      character(:), allocatable :: s
+      s = str(n)//' rows'
+      if (n == 1) s = '1 row'
+   end function rows_text
 
    !> The resolved case as namelist text (for provenance in the output): every
    !> variable of the schema, group by group, except those that may not be

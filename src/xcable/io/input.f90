@@ -40,8 +40,11 @@ module xcable_io_input
    !> Values longer than this are cut in messages.
    integer, parameter :: shown_length = 60
 
-   !> Why the times of an end's table must increase (the end of the messages on their order).
-   character(len=*), parameter :: time_order = 'the times must increase strictly'
+   !> Why the columns of the tables must increase (ends of the messages on their order).
+   character(len=*), parameter :: time_order = 'the times must increase strictly', &
+                                  strain_order = 'the strains must increase strictly', &
+                                  tension_order = "the tensions must increase strictly (a zero or negative slope f' "// &
+                                                  'leaves the law without a real wave speed)'
 
    !> The value of one variable, on its way between case_config and the generic code.
    type :: config_value
@@ -129,10 +132,10 @@ contains
    end subroutine lower_words
 
    !> The number of rows of each inline table: the number of values given to
-   !> its first column (an end's table_time), which the other columns must
-   !> match.
+   !> its first column (an end's table_time, the material's table_strain),
+   !> which the other columns must match.
    subroutine count_table_rows(c, t, counts, error)
-      !> The case; table_rows of each end set.
+      !> The case; table_rows of each end and material_table_rows set.
       type(case_config), intent(inout) :: c
       !> The schema.
       type(schema_entry), intent(in) :: t(:)
@@ -141,9 +144,12 @@ contains
       !> Error naming the columns and their counts.
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: end_columns(3) = [character(len=10) :: 'table_time', 'table_x', 'table_z']
+      character(len=*), parameter :: material_columns(2) = [character(len=13) :: 'table_strain', 'table_tension']
       call inline_rows(c, t, counts, 'end_a', end_columns, c%end_a%table_rows, error)
       if (allocated(error)) return
       call inline_rows(c, t, counts, 'end_b', end_columns, c%end_b%table_rows, error)
+      if (allocated(error)) return
+      call inline_rows(c, t, counts, 'material', material_columns, c%material_table_rows, error)
    end subroutine count_table_rows
 
    !> The rows of one inline table: the count of its first column, refused
@@ -687,13 +693,14 @@ contains
       real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness
       character(len=16) :: law, compression, scheme, mass_matrix
       real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
-      real(dp) :: min_step_fraction, max_wall_time, interval
+      real(dp) :: min_step_fraction, max_wall_time, interval, damping
+      real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
       integer :: nodes, newton_max_iter
       logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot
-      character(len=512) :: file
+      character(len=512) :: file, table_file
       character(len=256) :: fields
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness
-      namelist /material/ law, p, ea, strain_max, compression
+      namelist /material/ law, p, ea, table_strain, table_tension, table_file, strain_max, compression, damping
       namelist /static/ tension
       namelist /rupture/ enabled, s_break, t_break, time
       namelist /numerics/ scheme, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
@@ -705,6 +712,8 @@ contains
       length = c%length; diameter = c%diameter; density = c%density; young = c%young
       gravity = c%gravity; area = c%area; bending_stiffness = c%bending_stiffness
       law = c%law; p = c%p; ea = c%ea; strain_max = c%strain_max; compression = c%compression
+      table_strain = c%material_table_strain; table_tension = c%material_table_tension
+      table_file = c%material_table_file; damping = c%damping
       tension = c%tension
       enabled = c%break_enabled; s_break = c%s_break; t_break = c%t_break; time = c%break_time
       scheme = c%scheme; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
@@ -754,6 +763,8 @@ contains
       c%length = length; c%diameter = diameter; c%density = density; c%young = young
       c%gravity = gravity; c%area = area; c%bending_stiffness = bending_stiffness
       c%law = law; c%p = p; c%ea = ea; c%strain_max = strain_max; c%compression = compression
+      c%material_table_strain = table_strain; c%material_table_tension = table_tension
+      c%material_table_file = table_file; c%damping = damping
       c%tension = tension
       c%break_enabled = enabled; c%s_break = s_break; c%t_break = t_break; c%break_time = time
       c%scheme = scheme; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
@@ -835,6 +846,10 @@ contains
       case ('material%ea'); call move(c%ea, v, store)
       case ('material%strain_max'); call move(c%strain_max, v, store)
       case ('material%compression'); call move(c%compression, v, store)
+      case ('material%table_strain'); call move_rows(c%material_table_strain, c%material_table_rows, v, store)
+      case ('material%table_tension'); call move_rows(c%material_table_tension, c%material_table_rows, v, store)
+      case ('material%table_file'); call move(c%material_table_file, v, store)
+      case ('material%damping'); call move(c%damping, v, store)
       case ('static%tension'); call move(c%tension, v, store)
       case ('rupture%enabled'); call move(c%break_enabled, v, store)
       case ('rupture%s_break'); call move(c%s_break, v, store)
@@ -1018,7 +1033,7 @@ contains
    end subroutine derive_defaults
 
    !> The checks of a case read: the tables from files, every variable
-   !> against its schema entry, the law's coefficients, the derived values,
+   !> against its schema entry, the law's table or coefficients, the derived values,
    !> the conditions between variables, and the default output file.
    subroutine validate(c, error)
       !> The case; derived values and table files filled in.
@@ -1039,10 +1054,19 @@ contains
       call load_table(c, 'end_b', e, error)
       if (allocated(error)) return
       c%end_b = e
+      ! The law first: its table file is read only for law = 'table' (checked after the ranges).
+      call check_entry(c, t(find_entry(t, 'material', 'law')), error)
+      if (allocated(error)) return
+      if (c%law == 'table') then
+         call load_material_table(c, error)
+         if (allocated(error)) return
+      end if
       do i = 1, size(t)
          call check_entry(c, t(i), error)
          if (allocated(error)) return
       end do
+      call check_material_table(c, error)
+      if (allocated(error)) return
       ! Lower bounds (issue 6, bad-input fuzzing): a value that is positive but
       ! tiny (1e-300) passed "> 0" and gave a zero mass, an infinite wave
       ! speed, a zero step or a singular Jacobian; the schema's ranges are
@@ -1378,7 +1402,33 @@ contains
       e%table_rows = rows
    end subroutine load_table
 
-   !> Read a table file: min_columns to
+   !> Read the material's table_file, if given, into the rows of the table
+   !> law: two numbers a line (strain and tension), both strictly increasing.
+   subroutine load_material_table(c, error)
+      !> The case; material_table_strain, material_table_tension and material_table_rows filled from the file.
+      type(case_config), intent(inout) :: c
+      !> Error naming the case file, the table file and its line.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: values(:, :)
+      integer, allocatable :: lines(:)
+      character(:), allocatable :: prefix
+      integer :: rows
+
+      if (len_trim(c%material_table_file) == 0) return
+      prefix = c%source//": &material: table_file = '"//trim(c%material_table_file)//"': "
+      call read_table_file(prefix, trim(c%material_table_file), 'table_strain', c%material_table_rows, 2, 2, &
+                           'strain and tension', values, lines, rows, error)
+      if (allocated(error)) return
+      call check_column(prefix, 'strain', values(1:rows, 1), strain_order, error, lines(1:rows))
+      if (allocated(error)) return
+      call check_column(prefix, 'tension', values(1:rows, 2), tension_order, error, lines(1:rows))
+      if (allocated(error)) return
+      c%material_table_strain(1:rows) = values(1:rows, 1)
+      c%material_table_tension(1:rows) = values(1:rows, 2)
+      c%material_table_rows = rows
+   end subroutine load_material_table
+
+   !> Read a table file (of an end or of the material): min_columns to
    !> size(values, 2) numbers a line, the same number on every line, '#'
    !> starts a comment, blank lines are skipped; at least 2 and at most
    !> max_table_points rows. A file given together with inline rows is refused.
@@ -1515,6 +1565,44 @@ contains
          return
       end do
    end subroutine check_column
+
+   !> The rows of the table law: only for law = 'table', and there given
+   !> (inline or from table_file), at least 2, with strains and tensions
+   !> strictly increasing (a table_file is read into the rows before, by load_material_table).
+   subroutine check_material_table(c, error)
+      !> The case (law word and rows checked against the schema).
+      type(case_config), intent(in) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: prefix, rows, law
+      integer :: k, n
+      prefix = c%source//': &material: '
+      n = c%material_table_rows
+      law = "law = '"//trim(c%law)//"'"
+      if (c%law /= 'table') then
+         if (n > 0) then
+            rows = real_text(c%material_table_strain(1))
+            do k = 2, n
+               rows = rows//', '//real_text(c%material_table_strain(k))
+               if (len(rows) > shown_length) exit
+            end do
+            call fatal_error(error, prefix//'table_strain = '//shown(rows)//': rows of the table law given for '// &
+                             law//"; set law = 'table' or leave table_strain and table_tension out", stat_input)
+         else if (len_trim(c%material_table_file) > 0) then
+            call fatal_error(error, prefix//"table_file = '"//trim(c%material_table_file)//"': rows of the table "// &
+                             'law given for '//law//"; set law = 'table' or leave table_file out", stat_input)
+         end if
+         return
+      end if
+      if (n == 0) then
+         call fatal_error(error, prefix//law//' without a table: give table_strain and table_tension (at least '// &
+                          '2 rows) or table_file', stat_input)
+         return
+      end if
+      call check_column(prefix, 'table_strain', c%material_table_strain(1:n), strain_order, error)
+      if (allocated(error)) return
+      call check_column(prefix, 'table_tension', c%material_table_tension(1:n), tension_order, error)
+   end subroutine check_material_table
 
    !> A number of rows as '1 row' or 'n rows'.
    function rows_text(n) result(s)
@@ -1660,6 +1748,15 @@ contains
       echoed = .true.
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
+      if (e%group == 'material') then
+         select case (e%name)
+         case ('table_strain', 'table_tension')
+            echoed = c%material_table_rows > 0
+         case ('table_file')
+            echoed = len_trim(c%material_table_file) > 0
+         end select
+         return
+      end if
       if (e%group /= 'end_a' .and. e%group /= 'end_b') return
       if (e%group == 'end_a') then
          side = c%end_a

@@ -670,7 +670,10 @@ contains
       call expect_error(error, text, [character(48) :: path, '&end_a', 'line 3', 'increase strictly'])
       if (allocated(error)) return
       call write_text(table_path, '# only a comment'//nl//'0 1'//nl)
-      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 row;', 'at least 2'])
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 row; a table must have at least 2'])
+      if (allocated(error)) return
+      call write_text(table_path, '# only a comment'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 0 rows; a table must have at least 2'])
    end subroutine test_table_file_malformed
 
    subroutine test_rupture_at_loose_end(error)
@@ -828,7 +831,10 @@ contains
       call expect_error(error, text, [character(48) :: path, '&material', 'line 1', '"NaN" is not a finite'])
       if (allocated(error)) return
       call write_text(material_path, '# one row'//nl//'0.1 2e4'//nl)
-      call expect_error(error, text, [character(48) :: path, '&material', 'has 1 row;', 'at least 2'])
+      call expect_error(error, text, [character(48) :: path, '&material', 'has 1 row; a table must have at least 2'])
+      if (allocated(error)) return
+      call write_text(material_path, nl//'# no rows'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'has 0 rows; a table must have at least 2'])
       if (allocated(error)) return
       rows = ''
       do i = 0, 1000

@@ -425,8 +425,11 @@ begin 'law table file tension decreasing' "table_file = 't.dat'" 'line 3' 'tensi
    'tensions must increase strictly'
 from slow_315kN; printf '0 0\n0.1 1e4\n0.2 5e3\n' >"$dir/t.dat"
 add "&material law = 'table', table_file = 't.dat' /"; check
-begin 'law table file with one row' "table_file = 't.dat'" 'has 1 row;' 'at least 2'
+begin 'law table file with one row' "table_file = 't.dat'" 'has 1 row; a table must have at least 2'
 from slow_315kN; printf '# only\n0.1 1e4\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file without rows' "table_file = 't.dat'" 'has 0 rows; a table must have at least 2'
+from slow_315kN; printf '# strain tension\n\n' >"$dir/t.dat"
 add "&material law = 'table', table_file = 't.dat' /"; check
 begin 'law table file longer than 1000 rows' "table_file = 't.dat'" 'line 1001' 'more than 1000 rows'
 from slow_315kN; seq 0 1000 | awk '{ print $1 / 1000, $1 * 10 }' >"$dir/t.dat"

@@ -21,6 +21,7 @@ module suite_input
    character(len=*), parameter :: path = 'build/test_input.nml'
    character(len=*), parameter :: nl = new_line('a')
    character(len=*), parameter :: table_path = 'build/test_input_table.dat'
+   character(len=*), parameter :: material_path = 'build/test_input_material.dat'
 
 contains
 
@@ -68,7 +69,19 @@ contains
                new_unittest('table_inline_and_file', test_table_inline_and_file), &
                new_unittest('table_file_missing', test_table_file_missing), &
                new_unittest('table_file_malformed', test_table_file_malformed), &
-               new_unittest('rupture_at_loose_end', test_rupture_at_loose_end)]
+               new_unittest('rupture_at_loose_end', test_rupture_at_loose_end), &
+               new_unittest('material_table_read', test_material_table_read), &
+               new_unittest('material_table_missing', test_material_table_missing), &
+               new_unittest('material_table_too_short', test_material_table_too_short), &
+               new_unittest('material_table_not_finite', test_material_table_not_finite), &
+               new_unittest('material_strain_not_increasing', test_material_strain_order), &
+               new_unittest('material_tension_not_increasing', test_material_tension_order), &
+               new_unittest('material_table_columns_unequal', test_material_table_columns), &
+               new_unittest('material_table_without_table_law', test_material_table_other_law), &
+               new_unittest('material_table_inline_and_file', test_material_table_inline_and_file), &
+               new_unittest('material_table_file_missing', test_material_table_file_missing), &
+               new_unittest('material_table_file_malformed', test_material_table_file_malformed), &
+               new_unittest('damping_out_of_range', test_damping)]
    end subroutine collect_input
 
    !> Read text as a case (validation and the law-dependent checks) and expect
@@ -404,6 +417,13 @@ contains
       call echo_case(error, 'tables', "&end_a kind = 'motion', motion = 'table', table_file = '"//table_path//"' /"//nl// &
                      "&end_b x = 50, z = 1, kind = 'motion', motion = 'table', table_time = 0, 0.25, 2, "// &
                      'table_x = 3*0.5, table_z = 1, 2, 3 /'//nl)
+      if (allocated(error)) return
+      call echo_case(error, 'material table', "&material law = 'table', table_strain = -0.01, 0, 0.05, 0.3, "// &
+                     'table_tension = -2e3, 0, 1.2e5, 4.5e5, damping = 250 /'//nl)
+      if (allocated(error)) return
+      call write_text(material_path, '# strain tension'//nl//'0 0'//nl//'0.1 1e5 # a comment'//nl//'0.35 5e5'//nl)
+      call echo_case(error, 'material table file', "&material law = 'table', table_file = '"//material_path// &
+                     "', damping = 1.5 /"//nl)
    end subroutine test_echo_round_trip
 
    !> Read a case, write its echo, read that: every variable the same
@@ -650,7 +670,10 @@ contains
       call expect_error(error, text, [character(48) :: path, '&end_a', 'line 3', 'increase strictly'])
       if (allocated(error)) return
       call write_text(table_path, '# only a comment'//nl//'0 1'//nl)
-      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 rows', 'at least 2'])
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 1 row; a table must have at least 2'])
+      if (allocated(error)) return
+      call write_text(table_path, '# only a comment'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'has 0 rows; a table must have at least 2'])
    end subroutine test_table_file_malformed
 
    subroutine test_rupture_at_loose_end(error)
@@ -663,4 +686,174 @@ contains
                         [character(40) :: path, '&rupture', 's_break = 0, at end a', "kind = 'force'", &
                          'nothing to break'])
    end subroutine test_rupture_at_loose_end
+
+   !> The rows of the table law, inline or from a file (comments and blank
+   !> lines skipped), and the damping coefficient are read into the case.
+   subroutine test_material_table_read(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(path, "&material law = 'table', table_strain = 0, 0.1, 0.3, table_tension = 0, 8e4, 4e5, "// &
+                      'damping = 120 /'//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check(error, config%material_table_rows == 3, 'inline rows: material_table_rows')
+      if (allocated(error)) return
+      call check(error, all(config%material_table_strain(1:3) == [0.0_dp, 0.1_dp, 0.3_dp]) .and. &
+                 all(config%material_table_tension(1:3) == [0.0_dp, 8.0e4_dp, 4.0e5_dp]), 'inline rows: values')
+      if (allocated(error)) return
+      call check_close(error, config%damping, 120.0_dp, 'damping', rel_tol=0.0_dp)
+      if (allocated(error)) return
+      call write_text(material_path, '# strain  tension (N)'//nl//nl//'-0.01 -1500'//nl//'0 0'//nl// &
+                      '  0.05, 60000  # knee'//nl//'   '//nl//'0.35 5.04e5'//nl)
+      call write_text(path, "&material law = 'table', table_file = '"//material_path//"' /"//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check(error, config%material_table_rows == 4, 'file rows: material_table_rows')
+      if (allocated(error)) return
+      call check(error, all(config%material_table_strain(1:4) == [-0.01_dp, 0.0_dp, 0.05_dp, 0.35_dp]) .and. &
+                 all(config%material_table_tension(1:4) == [-1500.0_dp, 0.0_dp, 6.0e4_dp, 5.04e5_dp]), &
+                 'file rows: values')
+      if (allocated(error)) return
+      call check(error, trim(config%material_table_file) == material_path .and. config%damping == 0, &
+                 'table_file kept, damping default 0')
+   end subroutine test_material_table_read
+
+   subroutine test_material_table_missing(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table' /"//nl, &
+                        [character(48) :: path, '&material', "law = 'table' without a table", 'table_strain', &
+                         'table_file'])
+   end subroutine test_material_table_missing
+
+   subroutine test_material_table_too_short(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table', table_strain = 0.1, table_tension = 1e4 /"//nl, &
+                        [character(40) :: path, '&material', 'table_strain = 0.1', '1 row', 'at least 2'])
+   end subroutine test_material_table_too_short
+
+   !> NaN and Inf are refused by the scan (naming the value); a strain of the
+   !> table at or below -1 (a cell of no length) by the range.
+   subroutine test_material_table_not_finite(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table', table_strain = 0, NaN, table_tension = 0, 1e4 /"//nl, &
+                        [character(40) :: path, '&material', 'table_strain = 0, NaN', '"NaN" is not a finite real'])
+      if (allocated(error)) return
+      call expect_error(error, "&material law = 'table', table_strain = 0, 0.1, table_tension = 0, Inf /"//nl, &
+                        [character(40) :: path, '&material', 'table_tension = 0, Inf', '"Inf" is not a finite real'])
+      if (allocated(error)) return
+      call expect_error(error, "&material law = 'table', table_strain = -1, 0.1, table_tension = 0, 1e4 /"//nl, &
+                        [character(40) :: path, '&material', 'table_strain(1) = -1', '> -1 and <= 10'])
+   end subroutine test_material_table_not_finite
+
+   subroutine test_material_strain_order(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table', table_strain = 0, 0.1, 0.1, table_tension = 0, 1e4, 2e4 /"// &
+                        nl, [character(40) :: path, '&material', 'table_strain(3) = 0.1', &
+                             'not above table_strain(2) = 0.1', 'strains must increase strictly'])
+      if (allocated(error)) return
+      call expect_error(error, "&material law = 'table', table_strain = 0.2, 0.1, table_tension = 0, 1e4 /"//nl, &
+                        [character(40) :: path, '&material', 'table_strain(2) = 0.1', 'strains must increase'])
+   end subroutine test_material_strain_order
+
+   !> A zero or negative slope of the law: a flat or decreasing tension.
+   subroutine test_material_tension_order(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table', table_strain = 0, 0.1, 0.2, table_tension = 0, 2e4, 1.5e4 /"// &
+                        nl, [character(48) :: path, '&material', 'table_tension(3) = 15000', &
+                             'not above table_tension(2) = 20000', 'tensions must increase strictly', 'negative slope'])
+      if (allocated(error)) return
+      call expect_error(error, "&material law = 'table', table_strain = 0, 0.1, table_tension = 2*1e4 /"//nl, &
+                        [character(48) :: path, '&material', 'table_tension(2) = 10000', 'tensions must increase'])
+   end subroutine test_material_tension_order
+
+   subroutine test_material_table_columns(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table', table_strain = 0, 0.1, 0.2, table_tension = 0, 1e4 /"//nl, &
+                        [character(40) :: path, '&material', 'table_strain has 3 values', 'table_tension 2', &
+                         'two columns', 'equal counts'])
+   end subroutine test_material_table_columns
+
+   !> Rows of the table law (inline or a file) with another law are refused.
+   subroutine test_material_table_other_law(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, '&material table_strain = 0, 0.1, table_tension = 0, 1e4 /'//nl, &
+                        [character(48) :: path, '&material', 'table_strain = 0, 0.1', "law = 'tanh'", &
+                         "set law = 'table'"])
+      if (allocated(error)) return
+      call write_text(material_path, '0 0'//nl//'0.1 1e4'//nl)
+      call expect_error(error, "&material law = 'linear', table_file = '"//material_path//"' /"//nl, &
+                        [character(48) :: path, '&material', "table_file = '"//material_path//"'", "law = 'linear'", &
+                         "set law = 'table'"])
+   end subroutine test_material_table_other_law
+
+   subroutine test_material_table_inline_and_file(error)
+      type(error_type), allocatable, intent(out) :: error
+      call write_text(material_path, '0 0'//nl//'0.1 1e4'//nl)
+      call expect_error(error, "&material law = 'table', table_strain = 0, 0.1, table_tension = 0, 1e4, "// &
+                        "table_file = '"//material_path//"' /"//nl, &
+                        [character(48) :: path, '&material', "table_file = '"//material_path//"'", &
+                         'inline table (table_strain, 2 rows)', 'give one'])
+   end subroutine test_material_table_inline_and_file
+
+   subroutine test_material_table_file_missing(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&material law = 'table', table_file = 'build/no_such_law.dat' /"//nl, &
+                        [character(64) :: path, '&material', "table_file = 'build/no_such_law.dat'", &
+                         'no such file (the path is relative to the working directory)'])
+   end subroutine test_material_table_file_missing
+
+   !> A bad table file of the law: its line named.
+   subroutine test_material_table_file_malformed(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: text = "&material law = 'table', table_file = '"//material_path//"' /"//nl
+      character(:), allocatable :: rows
+      integer :: i
+      call write_text(material_path, '# strain tension'//nl//'0 0'//nl//'0.1 x'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', "table_file = '"//material_path//"'", &
+                                      'line 3', '"x" is not a finite real number'])
+      if (allocated(error)) return
+      call write_text(material_path, '0 0'//nl//'0.1 1e4 2e4'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'line 2', &
+                                      'expected 2 numbers (strain and tension)'])
+      if (allocated(error)) return
+      call write_text(material_path, '0 0'//nl//'0.1'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'line 2', 'expected 2 numbers'])
+      if (allocated(error)) return
+      call write_text(material_path, '0 0'//nl//'# knee'//nl//'0.2 1e4'//nl//'0.1 2e4'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'line 4', 'strain 0.1 is not above', &
+                                      'strains must increase strictly'])
+      if (allocated(error)) return
+      call write_text(material_path, '0 0'//nl//'0.1 2e4'//nl//'0.2 2e4'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'line 3', 'tension 20000 is not above', &
+                                      'tensions must increase strictly'])
+      if (allocated(error)) return
+      call write_text(material_path, '0 NaN'//nl//'0.1 2e4'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'line 1', '"NaN" is not a finite'])
+      if (allocated(error)) return
+      call write_text(material_path, '# one row'//nl//'0.1 2e4'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'has 1 row; a table must have at least 2'])
+      if (allocated(error)) return
+      call write_text(material_path, nl//'# no rows'//nl)
+      call expect_error(error, text, [character(48) :: path, '&material', 'has 0 rows; a table must have at least 2'])
+      if (allocated(error)) return
+      rows = ''
+      do i = 0, 1000
+         rows = rows//real_text(0.001_dp*i)//' '//real_text(10.0_dp*i)//nl
+      end do
+      call write_text(material_path, rows)
+      call expect_error(error, text, [character(48) :: path, '&material', 'line 1001', 'more than 1000 rows'])
+   end subroutine test_material_table_file_malformed
+
+   !> The damping coefficient is >= 0 and finite (at most 1e12 N s).
+   subroutine test_damping(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, '&material damping = -1 /'//nl, [character(40) :: path, '&material', 'damping = -1', &
+                                                                  'in [0, 1e12]'])
+      if (allocated(error)) return
+      call expect_error(error, '&material damping = 1e300 /'//nl, [character(40) :: path, '&material', &
+                                                                     'damping = 1e300', 'in [0, 1e12]'])
+      if (allocated(error)) return
+      call expect_error(error, '&material damping = Inf /'//nl, [character(40) :: path, '&material', 'damping = Inf', &
+                                                                   'not a finite real number'])
+   end subroutine test_damping
 end module suite_input

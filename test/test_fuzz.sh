@@ -132,6 +132,7 @@ control_ok 'an element and a range of p' "&material p(2) = 10.2, p(3:4) = -2.128
 control_ok 'p filled from element 4' "&material p(4) = 2.627e5, 135.5 /\n"
 control_ok 'repeat counts' "&material p = 2.703e5, 10.2, -2.128, 2*2.627e5 /\n"
 control_ok 'tabs and trailing blanks' "&static\ttension = 180000   /  \n"
+control_ok 'internal damping' "&material damping = 250 /\n"
 begin control_run ''
 from fast_180kN
 edit 's/nodes = [0-9]*/nodes = 21/; s/t_end = [0-9.]*/t_end = 0.002/; s/interval = [0-9.]*/interval = 0.001/'
@@ -378,6 +379,67 @@ add "&end_a kind = 'motion', motion = 'table', table_file = 'tdir' /"; check
 begin 'table file longer than 1000 rows' "table_file = 't.dat'" 'line 1001' 'more than 1000 rows'
 from slow_315kN; seq 0 1000 | awk '{ print $1, 0 }' >"$dir/t.dat"
 add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+
+# --- the table law and damping (&material) ------------------------------------------
+begin 'table law without a table' "law = 'table' without a table" 'table_file'
+from slow_315kN; add "&material law = 'table' /"; check
+begin 'table law with one row' 'table_strain = 0.1' '1 row' 'at least 2'
+from slow_315kN; add "&material law = 'table', table_strain = 0.1, table_tension = 1e4 /"; check
+begin 'table law strains not increasing' 'table_strain(3) = 0.1' 'not above table_strain(2) = 0.2' \
+   'strains must increase strictly'
+from slow_315kN; add "&material law = 'table', table_strain = 0, 0.2, 0.1, table_tension = 0, 1e4, 2e4 /"; check
+begin 'table law tension decreasing' 'table_tension(3) = 10000' 'not above table_tension(2) = 20000' \
+   'tensions must increase strictly' 'negative slope'
+from slow_315kN; add "&material law = 'table', table_strain = 0, 0.1, 0.2, table_tension = 0, 2e4, 1e4 /"; check
+begin 'table law tension flat' 'table_tension(2) = 0' 'tensions must increase strictly'
+from slow_315kN; add "&material law = 'table', table_strain = 0, 0.1, table_tension = 2*0 /"; check
+begin 'table law tension NaN' 'table_tension = 0, NaN' '"NaN" is not a finite real number'
+from slow_315kN; add "&material law = 'table', table_strain = 0, 0.1, table_tension = 0, NaN /"; check
+begin 'table law strain -Inf' 'table_strain = -Inf, 0' '"-Inf" is not a finite real number'
+from slow_315kN; add "&material law = 'table', table_strain = -Inf, 0, table_tension = 0, 1e4 /"; check
+begin 'table law strain at -1' 'table_strain(1) = -1' '> -1 and <= 10'
+from slow_315kN; add "&material law = 'table', table_strain = -1, 0, table_tension = 0, 1e4 /"; check
+begin 'table law columns of unequal counts' 'table_strain has 3 values' 'table_tension 2' 'equal counts'
+from slow_315kN; add "&material law = 'table', table_strain = 0, 0.1, 0.2, table_tension = 0, 1e4 /"; check
+begin 'table law longer than 1000 rows' 'table_tension = 1001*0' 'takes at most 1000'
+from slow_315kN; add "&material law = 'table', table_tension = 1001*0 /"; check
+begin "table rows with law = 'tanh'" 'table_strain = 0, 0.1' "law = 'tanh'" "set law = 'table'"
+from slow_315kN; add '&material table_strain = 0, 0.1, table_tension = 0, 1e4 /'; check
+begin "table file with law = 'linear'" "table_file = 't.dat'" "law = 'linear'" "set law = 'table'"
+from slow_315kN; printf '0 0\n0.1 1e4\n' >"$dir/t.dat"; add "&material law = 'linear', table_file = 't.dat' /"; check
+begin 'table law both inline and in a file' "table_file = 't.dat'" 'inline table (table_strain, 2 rows)' 'give one'
+from slow_315kN; printf '0 0\n0.1 1e4\n' >"$dir/t.dat"
+add "&material law = 'table', table_strain = 0, 0.1, table_tension = 0, 1e4, table_file = 't.dat' /"; check
+begin 'missing table file of the law' "table_file = 'no_such.dat'" 'no such file (the path is relative'
+from slow_315kN; add "&material law = 'table', table_file = 'no_such.dat' /"; check
+begin 'law table file with a word' "table_file = 't.dat'" 'line 3' '"1e4x" is not a finite real number'
+from slow_315kN; printf '# strain tension\n0 0\n0.1 1e4x\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file with three columns' "table_file = 't.dat'" 'line 1' 'expected 2 numbers (strain and tension)'
+from slow_315kN; printf '0 0 0\n0.1 1e4 0\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file strains not increasing' "table_file = 't.dat'" 'line 4' 'strains must increase strictly'
+from slow_315kN; printf '0 0\n0.2 1e4\n\n0.1 2e4\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file tension decreasing' "table_file = 't.dat'" 'line 3' 'tension 5000 is not above' \
+   'tensions must increase strictly'
+from slow_315kN; printf '0 0\n0.1 1e4\n0.2 5e3\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file with one row' "table_file = 't.dat'" 'has 1 row; a table must have at least 2'
+from slow_315kN; printf '# only\n0.1 1e4\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file without rows' "table_file = 't.dat'" 'has 0 rows; a table must have at least 2'
+from slow_315kN; printf '# strain tension\n\n' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'law table file longer than 1000 rows' "table_file = 't.dat'" 'line 1001' 'more than 1000 rows'
+from slow_315kN; seq 0 1000 | awk '{ print $1 / 1000, $1 * 10 }' >"$dir/t.dat"
+add "&material law = 'table', table_file = 't.dat' /"; check
+begin 'damping = -5' 'damping = -5' 'in [0, 1e12]'
+from slow_315kN; add '&material damping = -5 /'; check
+begin 'damping = NaN' 'damping = NaN' 'not a finite real number'
+from slow_315kN; add '&material damping = NaN /'; check
+begin 'damping = 1e300' 'damping = 1e300' 'in [0, 1e12]'
+from slow_315kN; add '&material damping = 1e300 /'; check
 
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'

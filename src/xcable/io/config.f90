@@ -59,7 +59,7 @@ module xcable_io_config
       !> Bending stiffness EI, N m^2 (0: E pi d^4 / 64).
       real(dp) :: bending_stiffness = 0
       ! &material
-      !> 'tanh' (eq. 17) or 'linear'.
+      !> 'tanh' (eq. 17), 'linear' or 'table' (rows of strain and tension).
       character(len=16) :: law = 'tanh'
       !> Coefficients of eq. 17.
       real(dp) :: p(5) = paper_tanh_coefficients

@@ -40,6 +40,12 @@ module xcable_io_input
    !> Values longer than this are cut in messages.
    integer, parameter :: shown_length = 60
 
+   !> Why the columns of the tables must increase (ends of the messages on their order).
+   character(len=*), parameter :: time_order = 'the times must increase strictly', &
+                                  strain_order = 'the strains must increase strictly', &
+                                  tension_order = "the tensions must increase strictly (a zero or negative slope f' "// &
+                                                  'leaves the law without a real wave speed)'
+
    !> The value of one variable, on its way between case_config and the generic code.
    type :: config_value
       !> Whether the variable is known to `access`.
@@ -125,10 +131,11 @@ contains
       call access(c, e, v, .true.)
    end subroutine lower_words
 
-   !> The number of rows of each end's inline table: the number of values
-   !> given to table_time, which table_x and table_z must match.
+   !> The number of rows of each inline table: the number of values given to
+   !> its first column (an end's table_time, the material's table_strain),
+   !> which the other columns must match.
    subroutine count_table_rows(c, t, counts, error)
-      !> The case; table_rows of each end set.
+      !> The case; table_rows of each end and material_table_rows set.
       type(case_config), intent(inout) :: c
       !> The schema.
       type(schema_entry), intent(in) :: t(:)
@@ -136,22 +143,47 @@ contains
       integer, intent(in) :: counts(:)
       !> Error naming the columns and their counts.
       type(error_type), allocatable, intent(out) :: error
-      character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
-      integer :: k, n_time, n_x, n_z
-      do k = 1, size(ends)
-         n_time = counts(find_entry(t, ends(k), 'table_time'))
-         n_x = counts(find_entry(t, ends(k), 'table_x'))
-         n_z = counts(find_entry(t, ends(k), 'table_z'))
-         if (n_x /= n_time .or. n_z /= n_time) then
-            call fatal_error(error, c%source//': &'//ends(k)//': table_time has '//str(n_time)//' values, table_x '// &
-                             str(n_x)//', table_z '//str(n_z)//': the three columns of a table must have equal counts', &
-                             stat_input)
-            return
-         end if
-         if (k == 1) c%end_a%table_rows = n_time
-         if (k == 2) c%end_b%table_rows = n_time
-      end do
+      character(len=*), parameter :: end_columns(3) = [character(len=10) :: 'table_time', 'table_x', 'table_z']
+      character(len=*), parameter :: material_columns(2) = [character(len=13) :: 'table_strain', 'table_tension']
+      call inline_rows(c, t, counts, 'end_a', end_columns, c%end_a%table_rows, error)
+      if (allocated(error)) return
+      call inline_rows(c, t, counts, 'end_b', end_columns, c%end_b%table_rows, error)
+      if (allocated(error)) return
+      call inline_rows(c, t, counts, 'material', material_columns, c%material_table_rows, error)
    end subroutine count_table_rows
+
+   !> The rows of one inline table: the count of its first column, refused
+   !> unless every column has that count.
+   subroutine inline_rows(c, t, counts, group, columns, rows, error)
+      !> The case (for its source).
+      type(case_config), intent(in) :: c
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> Values given to each entry (its highest index assigned).
+      integer, intent(in) :: counts(:)
+      !> Group of the table.
+      character(*), intent(in) :: group
+      !> Names of its columns, the first giving the count.
+      character(len=*), intent(in) :: columns(:)
+      !> Number of rows.
+      integer, intent(out) :: rows
+      !> Error naming the columns and their counts.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: how_many(3) = [character(len=5) :: 'one', 'two', 'three']
+      character(:), allocatable :: found
+      integer :: n(size(columns)), k
+      do k = 1, size(columns)
+         n(k) = counts(find_entry(t, group, trim(columns(k))))
+      end do
+      rows = n(1)
+      if (all(n == rows)) return
+      found = trim(columns(1))//' has '//str(n(1))//' values'
+      do k = 2, size(columns)
+         found = found//', '//trim(columns(k))//' '//str(n(k))
+      end do
+      call fatal_error(error, c%source//': &'//group//': '//found//': the '//trim(how_many(size(columns)))// &
+                       ' columns of a table must have equal counts', stat_input)
+   end subroutine inline_rows
 
    !> Read the file into lines, refusing what is not plain text.
    !>
@@ -661,13 +693,14 @@ contains
       real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness
       character(len=16) :: law, compression, scheme, mass_matrix
       real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
-      real(dp) :: min_step_fraction, max_wall_time, interval
+      real(dp) :: min_step_fraction, max_wall_time, interval, damping
+      real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
       integer :: nodes, newton_max_iter
       logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot
-      character(len=512) :: file
+      character(len=512) :: file, table_file
       character(len=256) :: fields
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness
-      namelist /material/ law, p, ea, strain_max, compression
+      namelist /material/ law, p, ea, table_strain, table_tension, table_file, strain_max, compression, damping
       namelist /static/ tension
       namelist /rupture/ enabled, s_break, t_break, time
       namelist /numerics/ scheme, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
@@ -679,6 +712,8 @@ contains
       length = c%length; diameter = c%diameter; density = c%density; young = c%young
       gravity = c%gravity; area = c%area; bending_stiffness = c%bending_stiffness
       law = c%law; p = c%p; ea = c%ea; strain_max = c%strain_max; compression = c%compression
+      table_strain = c%material_table_strain; table_tension = c%material_table_tension
+      table_file = c%material_table_file; damping = c%damping
       tension = c%tension
       enabled = c%break_enabled; s_break = c%s_break; t_break = c%t_break; time = c%break_time
       scheme = c%scheme; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
@@ -728,6 +763,8 @@ contains
       c%length = length; c%diameter = diameter; c%density = density; c%young = young
       c%gravity = gravity; c%area = area; c%bending_stiffness = bending_stiffness
       c%law = law; c%p = p; c%ea = ea; c%strain_max = strain_max; c%compression = compression
+      c%material_table_strain = table_strain; c%material_table_tension = table_tension
+      c%material_table_file = table_file; c%damping = damping
       c%tension = tension
       c%break_enabled = enabled; c%s_break = s_break; c%t_break = t_break; c%break_time = time
       c%scheme = scheme; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
@@ -809,6 +846,10 @@ contains
       case ('material%ea'); call move(c%ea, v, store)
       case ('material%strain_max'); call move(c%strain_max, v, store)
       case ('material%compression'); call move(c%compression, v, store)
+      case ('material%table_strain'); call move_rows(c%material_table_strain, c%material_table_rows, v, store)
+      case ('material%table_tension'); call move_rows(c%material_table_tension, c%material_table_rows, v, store)
+      case ('material%table_file'); call move(c%material_table_file, v, store)
+      case ('material%damping'); call move(c%damping, v, store)
       case ('static%tension'); call move(c%tension, v, store)
       case ('rupture%enabled'); call move(c%break_enabled, v, store)
       case ('rupture%s_break'); call move(c%s_break, v, store)
@@ -992,7 +1033,7 @@ contains
    end subroutine derive_defaults
 
    !> The checks of a case read: the tables from files, every variable
-   !> against its schema entry, the law's coefficients, the derived values,
+   !> against its schema entry, the law's table or coefficients, the derived values,
    !> the conditions between variables, and the default output file.
    subroutine validate(c, error)
       !> The case; derived values and table files filled in.
@@ -1013,10 +1054,19 @@ contains
       call load_table(c, 'end_b', e, error)
       if (allocated(error)) return
       c%end_b = e
+      ! The law first: its table file is read only for law = 'table' (checked after the ranges).
+      call check_entry(c, t(find_entry(t, 'material', 'law')), error)
+      if (allocated(error)) return
+      if (c%law == 'table') then
+         call load_material_table(c, error)
+         if (allocated(error)) return
+      end if
       do i = 1, size(t)
          call check_entry(c, t(i), error)
          if (allocated(error)) return
       end do
+      call check_material_table(c, error)
+      if (allocated(error)) return
       ! Lower bounds (issue 6, bad-input fuzzing): a value that is positive but
       ! tiny (1e-300) passed "> 0" and gave a zero mass, an infinite wave
       ! speed, a zero step or a singular Jacobian; the schema's ranges are
@@ -1270,7 +1320,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(:), allocatable :: prefix, kind, uses
       real(dp) :: norm
-      integer :: k
 
       prefix = c%source//': &'//group//': '
       kind = "kind = '"//trim(e%kind)//"'"
@@ -1321,24 +1370,11 @@ contains
                           'rows) or table_file', stat_input)
          return
       end if
-      if (e%table_rows == 1) then
-         call fatal_error(error, prefix//'table_time = '//real_text(e%table_time(1))//': the table has 1 row; it '// &
-                          'must have at least 2', stat_input)
-         return
-      end if
-      do k = 2, e%table_rows
-         if (.not. e%table_time(k) > e%table_time(k - 1)) then
-            call fatal_error(error, prefix//'table_time('//str(k)//') = '//real_text(e%table_time(k))// &
-                             ': not above table_time('//str(k - 1)//') = '//real_text(e%table_time(k - 1))// &
-                             '; the times must increase strictly', stat_input)
-            return
-         end if
-      end do
+      call check_column(prefix, 'table_time', e%table_time(1:e%table_rows), time_order, error)
    end subroutine check_end
 
    !> Read an end's table_file, if given, into its table: two or three numbers
-   !> a line (t, x and z; z = 0 when absent), '#' starts a comment, blank
-   !> lines are skipped. A file and inline rows together are refused.
+   !> a line (t, x and z; z = 0 when absent), the times strictly increasing.
    subroutine load_table(c, group, e, error)
       !> The case (for its source).
       type(case_config), intent(in) :: c
@@ -1348,33 +1384,106 @@ contains
       type(end_config), intent(inout) :: e
       !> Error naming the case file, the group, the table file and its line.
       type(error_type), allocatable, intent(out) :: error
-      character(len=line_len), allocatable :: lines(:)
-      character(:), allocatable :: prefix, text, item
-      real(dp) :: values(3)
-      integer :: nlines, i, pos, n, columns, rows, ios
-      logical :: exists
+      real(dp), allocatable :: values(:, :)
+      integer, allocatable :: lines(:)
+      character(:), allocatable :: prefix
+      integer :: rows
 
       if (len_trim(e%table_file) == 0) return
       prefix = c%source//': &'//group//": table_file = '"//trim(e%table_file)//"': "
-      if (e%table_rows > 0) then
-         call fatal_error(error, prefix//'given together with the inline table (table_time, '//str(e%table_rows)// &
-                          ' rows); give one', stat_input)
+      call read_table_file(prefix, trim(e%table_file), 'table_time', e%table_rows, 2, 3, 't, x and optionally z', &
+                           values, lines, rows, error)
+      if (allocated(error)) return
+      call check_column(prefix, 'time', values(1:rows, 1), time_order, error, lines(1:rows))
+      if (allocated(error)) return
+      e%table_time(1:rows) = values(1:rows, 1)
+      e%table_x(1:rows) = values(1:rows, 2)
+      e%table_z(1:rows) = values(1:rows, 3)
+      e%table_rows = rows
+   end subroutine load_table
+
+   !> Read the material's table_file, if given, into the rows of the table
+   !> law: two numbers a line (strain and tension), both strictly increasing.
+   subroutine load_material_table(c, error)
+      !> The case; material_table_strain, material_table_tension and material_table_rows filled from the file.
+      type(case_config), intent(inout) :: c
+      !> Error naming the case file, the table file and its line.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: values(:, :)
+      integer, allocatable :: lines(:)
+      character(:), allocatable :: prefix
+      integer :: rows
+
+      if (len_trim(c%material_table_file) == 0) return
+      prefix = c%source//": &material: table_file = '"//trim(c%material_table_file)//"': "
+      call read_table_file(prefix, trim(c%material_table_file), 'table_strain', c%material_table_rows, 2, 2, &
+                           'strain and tension', values, lines, rows, error)
+      if (allocated(error)) return
+      call check_column(prefix, 'strain', values(1:rows, 1), strain_order, error, lines(1:rows))
+      if (allocated(error)) return
+      call check_column(prefix, 'tension', values(1:rows, 2), tension_order, error, lines(1:rows))
+      if (allocated(error)) return
+      c%material_table_strain(1:rows) = values(1:rows, 1)
+      c%material_table_tension(1:rows) = values(1:rows, 2)
+      c%material_table_rows = rows
+   end subroutine load_material_table
+
+   !> Read a table file (of an end or of the material): min_columns to
+   !> size(values, 2) numbers a line, the same number on every line, '#'
+   !> starts a comment, blank lines are skipped; at least 2 and at most
+   !> max_table_points rows. A file given together with inline rows is refused.
+   subroutine read_table_file(prefix, file, first_column, inline_rows, min_columns, max_columns, layout, values, &
+                              lines, rows, error)
+      !> Start of every message: the case file, the group and the table_file.
+      character(*), intent(in) :: prefix
+      !> The table file (relative to the working directory).
+      character(*), intent(in) :: file
+      !> Name of the first inline column (for the message on inline rows and a file together).
+      character(*), intent(in) :: first_column
+      !> Number of rows given inline.
+      integer, intent(in) :: inline_rows
+      !> Fewest and most numbers a line.
+      integer, intent(in) :: min_columns, max_columns
+      !> What the columns are, for messages ('strain and tension').
+      character(*), intent(in) :: layout
+      !> The rows (max_table_points by max_columns); columns a line does not give are 0.
+      real(dp), allocatable, intent(out) :: values(:, :)
+      !> The line of the file each row is on.
+      integer, allocatable, intent(out) :: lines(:)
+      !> Number of rows read.
+      integer, intent(out) :: rows
+      !> Error naming the table file and the line at fault.
+      type(error_type), allocatable, intent(out) :: error
+      character(len=line_len), allocatable :: text_lines(:)
+      character(:), allocatable :: text, item, expected
+      real(dp) :: x
+      integer :: nlines, i, pos, n, columns, ios
+      logical :: exists
+
+      allocate (values(max_table_points, max_columns), lines(max_table_points))
+      values = 0
+      lines = 0
+      rows = 0
+      if (inline_rows > 0) then
+         call fatal_error(error, prefix//'given together with the inline table ('//first_column//', '// &
+                          rows_text(inline_rows)//'); give one', stat_input)
          return
       end if
-      inquire (file=trim(e%table_file), exist=exists)
+      inquire (file=file, exist=exists)
       if (.not. exists) then
          call fatal_error(error, prefix//'no such file (the path is relative to the working directory)', stat_input)
          return
       end if
-      call load_lines(trim(e%table_file), lines, nlines, error)
+      call load_lines(file, text_lines, nlines, error)
       if (allocated(error)) then
          error%message = prefix//error%message
          return
       end if
-      rows = 0
+      expected = str(min_columns)
+      if (max_columns > min_columns) expected = expected//' or '//str(max_columns)
       columns = 0
       do i = 1, nlines
-         text = lines(i)
+         text = text_lines(i)
          if (index(text, '#') > 0) text = text(1:index(text, '#') - 1)
          n = 0
          pos = 1
@@ -1382,27 +1491,28 @@ contains
             call next_item(text, pos, item)
             if (len(item) == 0) exit
             n = n + 1
-            if (n > 3) exit
-            read (item, *, iostat=ios) values(n)
+            if (n > max_columns) cycle
+            read (item, *, iostat=ios) x
             if (ios == 0) then
-               if (.not. ieee_is_finite(values(n))) ios = 1
+               if (.not. ieee_is_finite(x)) ios = 1
             end if
             if (ios == 0 .and. verify(item, '0123456789+-.eEdD') > 0) ios = 1
             if (ios /= 0) then
-               call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": "'//shown(item)// &
-                                '" is not a finite real number', stat_input)
+               call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(text_lines(i)))//'": "'// &
+                                shown(item)//'" is not a finite real number', stat_input)
                return
             end if
+            if (rows < max_table_points) values(rows + 1, n) = x
          end do
          if (n == 0) cycle
-         if (n < 2 .or. n > 3) then
-            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": expected 2 or 3 '// &
-                             'numbers (t, x and optionally z)', stat_input)
+         if (n < min_columns .or. n > max_columns) then
+            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(text_lines(i)))//'": expected '// &
+                             expected//' numbers ('//layout//')', stat_input)
             return
          end if
          if (columns == 0) columns = n
          if (n /= columns) then
-            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(lines(i)))//'": '//str(n)// &
+            call fatal_error(error, prefix//'line '//str(i)//': "'//shown(trim(text_lines(i)))//'": '//str(n)// &
                              ' numbers, but the lines before have '//str(columns), stat_input)
             return
          end if
@@ -1411,25 +1521,97 @@ contains
             return
          end if
          rows = rows + 1
-         e%table_time(rows) = values(1)
-         e%table_x(rows) = values(2)
-         e%table_z(rows) = 0
-         if (n == 3) e%table_z(rows) = values(3)
-         if (rows > 1) then
-            if (.not. e%table_time(rows) > e%table_time(rows - 1)) then
-               call fatal_error(error, prefix//'line '//str(i)//': time '//real_text(e%table_time(rows))// &
-                                ' is not above the time before, '//real_text(e%table_time(rows - 1))// &
-                                '; the times must increase strictly', stat_input)
-               return
-            end if
-         end if
+         lines(rows) = i
       end do
       if (rows < 2) then
-         call fatal_error(error, prefix//'has '//str(rows)//' rows; a table must have at least 2', stat_input)
+         call fatal_error(error, prefix//'has '//rows_text(rows)//'; a table must have at least 2', stat_input)
          return
       end if
-      e%table_rows = rows
-   end subroutine load_table
+   end subroutine read_table_file
+
+   !> Error unless a table column has at least 2 rows and increases strictly,
+   !> naming the first value that does not: as name(k) = value for an inline
+   !> column, or by its line for a column read from a table file (lines given).
+   subroutine check_column(prefix, name, x, reason, error, lines)
+      !> Start of the message: the case file and the group (and the table_file).
+      character(*), intent(in) :: prefix
+      !> The column: its variable ('table_time'), or with lines what it holds ('time').
+      character(*), intent(in) :: name
+      !> Its rows.
+      real(dp), intent(in) :: x(:)
+      !> Why the order matters, ending the message ('the times must increase strictly').
+      character(*), intent(in) :: reason
+      !> Error naming the row or line at fault.
+      type(error_type), allocatable, intent(out) :: error
+      !> The line of the table file each row is on.
+      integer, intent(in), optional :: lines(:)
+      character(:), allocatable :: what
+      integer :: k
+      if (size(x) == 1) then
+         call fatal_error(error, prefix//name//' = '//real_text(x(1))//': the table has 1 row; it must have at '// &
+                          'least 2', stat_input)
+         return
+      end if
+      do k = 2, size(x)
+         if (x(k) > x(k - 1)) cycle
+         if (present(lines)) then
+            what = 'line '//str(lines(k))//': '//name//' '//real_text(x(k))//' is not above the '//name// &
+                   ' before, '//real_text(x(k - 1))
+         else
+            what = name//'('//str(k)//') = '//real_text(x(k))//': not above '//name//'('//str(k - 1)//') = '// &
+                   real_text(x(k - 1))
+         end if
+         call fatal_error(error, prefix//what//'; '//reason, stat_input)
+         return
+      end do
+   end subroutine check_column
+
+   !> The rows of the table law: only for law = 'table', and there given
+   !> (inline or from table_file), at least 2, with strains and tensions
+   !> strictly increasing (a table_file is read into the rows before, by load_material_table).
+   subroutine check_material_table(c, error)
+      !> The case (law word and rows checked against the schema).
+      type(case_config), intent(in) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: prefix, rows, law
+      integer :: k, n
+      prefix = c%source//': &material: '
+      n = c%material_table_rows
+      law = "law = '"//trim(c%law)//"'"
+      if (c%law /= 'table') then
+         if (n > 0) then
+            rows = real_text(c%material_table_strain(1))
+            do k = 2, n
+               rows = rows//', '//real_text(c%material_table_strain(k))
+               if (len(rows) > shown_length) exit
+            end do
+            call fatal_error(error, prefix//'table_strain = '//shown(rows)//': rows of the table law given for '// &
+                             law//"; set law = 'table' or leave table_strain and table_tension out", stat_input)
+         else if (len_trim(c%material_table_file) > 0) then
+            call fatal_error(error, prefix//"table_file = '"//trim(c%material_table_file)//"': rows of the table "// &
+                             'law given for '//law//"; set law = 'table' or leave table_file out", stat_input)
+         end if
+         return
+      end if
+      if (n == 0) then
+         call fatal_error(error, prefix//law//' without a table: give table_strain and table_tension (at least '// &
+                          '2 rows) or table_file', stat_input)
+         return
+      end if
+      call check_column(prefix, 'table_strain', c%material_table_strain(1:n), strain_order, error)
+      if (allocated(error)) return
+      call check_column(prefix, 'table_tension', c%material_table_tension(1:n), tension_order, error)
+   end subroutine check_material_table
+
+   !> A number of rows as '1 row' or 'n rows'.
+   function rows_text(n) result(s)
+      !> Number of rows.
+      integer, intent(in) :: n
+      character(:), allocatable :: s
+      s = str(n)//' rows'
+      if (n == 1) s = '1 row'
+   end function rows_text
 
    !> The resolved case as namelist text (for provenance in the output): every
    !> variable of the schema, group by group, except those that may not be
@@ -1566,6 +1748,15 @@ contains
       echoed = .true.
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
+      if (e%group == 'material') then
+         select case (e%name)
+         case ('table_strain', 'table_tension')
+            echoed = c%material_table_rows > 0
+         case ('table_file')
+            echoed = len_trim(c%material_table_file) > 0
+         end select
+         return
+      end if
       if (e%group /= 'end_a' .and. e%group /= 'end_b') return
       if (e%group == 'end_a') then
          side = c%end_a

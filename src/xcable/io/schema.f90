@@ -84,18 +84,31 @@ contains
                1.0e-6_dp, 1.0e12_dp, zero_means='E pi d^4 / 64')
       ! &material
       call add(t, 'material', 'law', 'string', '-', "'tanh'", &
-               "'tanh': T = p1 tanh(p2 eps + p3) + p4 + p5 eps (eq. 17); 'linear': T = EA eps", length=16, &
-               choices='tanh linear')
+               "'tanh': T = p1 tanh(p2 eps + p3) + p4 + p5 eps (eq. 17); 'linear': T = EA eps; 'table': T from "// &
+               'rows of strain and tension (table_strain and table_tension, or table_file)', length=16, &
+               choices='tanh linear table')
       call add(t, 'material', 'p', 'real', 'N, -, -, N, N', '270300, 10.2, -2.128, 262700, 135.5', &
                'p1..p5 of eq. 17; for the tanh law p1, p5 in (0, 1e12], p2 in (0, 1e6], p3 in [-1e3, 1e3]', &
                -1.0e12_dp, 1.0e12_dp, count=5)
       call add(t, 'material', 'ea', 'real', 'N', '0', 'EA of the linear law', 1.0_dp, 1.0e13_dp, zero_means='young * area')
+      call add(t, 'material', 'table_strain', 'real', '-', '', &
+               "rows of the 'table' law: engineering strain of the unstretched length, strictly increasing, at "// &
+               'least 2 rows; table_tension has as many (only with law = '//"'table')", -1.0_dp, 10.0_dp, &
+               lower_open=.true., count=max_table_points)
+      call add(t, 'material', 'table_tension', 'real', 'N', '', &
+               "rows of the 'table' law: tension, strictly increasing (a positive slope)", -1.0e12_dp, 1.0e12_dp, &
+               count=max_table_points)
+      call add(t, 'material', 'table_file', 'string', '-', "''", &
+               "the rows of the 'table' law from a text file instead: columns strain and tension, # starts a "// &
+               'comment; the path is relative to the working directory', length=512)
       call add(t, 'material', 'strain_max', 'real', '-', '0.35', &
                'largest static strain the law is used for (the tanh fit reaches about 504 kN there)', 0.0_dp, 10.0_dp, &
                lower_open=.true.)
       call add(t, 'material', 'compression', 'string', '-', "'law'", &
                "behaviour in compression: 'law' (the law continued below zero strain) or 'none' (no compressive tension)", &
                length=16, choices='law none')
+      call add(t, 'material', 'damping', 'real', 'N s', '0', &
+               'internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt', 0.0_dp, 1.0e12_dp)
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &

@@ -10,6 +10,7 @@ module suite_laws
    use xcable_error, only: stat_input
    use xcable_strings, only: str
    use xcable_io_config, only: case_config
+   use xcable_io_input, only: read_config
    use xcable_material_law, only: tanh_law
    use xcable_material_table, only: table_law, new_table_law
    use xcable_simulation, only: simulation
@@ -34,7 +35,8 @@ contains
                new_unittest('damping_axial_mode_decay', test_mode_decay), &
                new_unittest('warning_beyond_law_range', test_range_warning), &
                new_unittest('damping_released_end_speed', test_released_speed), &
-               new_unittest('damping_dissipation_integral', test_dissipation)]
+               new_unittest('damping_dissipation_integral', test_dissipation), &
+               new_unittest('shipped_polyester_break', test_polyester)]
    end subroutine collect_laws
 
    !> Rows of the tanh law at nrow strains spread over [-0.9, 0.4].
@@ -249,28 +251,37 @@ contains
       call check_close(error, rate, sigma, 'decay rate of the first axial mode', rel_tol=1.0e-3_dp)
    end subroutine test_mode_decay
 
-   !> A run whose cells stretch beyond the law's range (strain_max) says so in
-   !> its warnings; one that stays inside does not. The mode's strain swings
-   !> from 2.0e-2 by about 1.5e-4.
+   !> A run whose cells stretch beyond the law's range (strain_max) or, for a
+   !> table, are compressed below its first row says so in its warnings; one that
+   !> stays inside does not. The mode's strain swings from 2.0e-2 by about 1.5e-4.
    subroutine test_range_warning(error)
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: sim
       type(case_config) :: c
-      real(dp), parameter :: limits(2) = [2.01e-2_dp, 2.03e-2_dp]
+      real(dp), parameter :: limits(2) = [2.01e-2_dp, 2.03e-2_dp], firsts(2) = [1.99e-2_dp, 1.97e-2_dp]
       integer :: i
-      do i = 1, 2
+      do i = 1, 4
          c = mode_config(0.0_dp, 0.2_dp)
-         c%strain_max = limits(i)
+         if (i <= 2) then
+            c%strain_max = limits(i)
+         else
+            c%law = 'table'
+            c%material_table_rows = 2
+            c%material_table_strain(1:2) = [firsts(i - 2), 0.05_dp]
+            c%material_table_tension(1:2) = c%ea*[firsts(i - 2), 0.05_dp]
+         end if
          call sim%prepare(c, error)
          if (allocated(error)) return
          call start_mode(sim)
          call sim%run(error=error)
          if (allocated(error)) return
-         write (output_unit, '(4x,a,es10.3,a,es11.4,a,l2)') 'strain_max', limits(i), ': largest strain', &
-            sim%rod%summary%max_strain, ', warned', index(sim%rod%summary%warnings, 'beyond the range') > 0
+         write (output_unit, '(4x,a,i2,a,2es11.4,a,l2)') 'range case', i, ': strain from', sim%rod%summary%min_strain, &
+            sim%rod%summary%max_strain, ', warned', len(sim%rod%summary%warnings) > 0
          call check(error, (index(sim%rod%summary%warnings, 'beyond the range of the linear law') > 0) .eqv. (i == 1), &
-                    'strain_max '//str(limits(i))//', largest strain '//str(sim%rod%summary%max_strain)// &
-                    ': the warning is wrong: "'//sim%rod%summary%warnings//'"')
+                    'case '//str(i)//': the warning on strain_max is wrong: "'//sim%rod%summary%warnings//'"')
+         if (allocated(error)) return
+         call check(error, (index(sim%rod%summary%warnings, 'below the range of the table law') > 0) .eqv. (i == 3), &
+                    'case '//str(i)//': the warning on the first row is wrong: "'//sim%rod%summary%warnings//'"')
          if (allocated(error)) return
       end do
    end subroutine test_range_warning
@@ -355,4 +366,38 @@ contains
       if (allocated(error)) return
       call check(error, sim%rod%summary%energy_drift < 1.0e-9_dp, 'the ledger does not close with the dissipation')
    end subroutine test_dissipation
+
+   !> The shipped polyester scene (input/polyester_break.nml, its table from
+   !> input/laws/): the released end's mean speed between the end of the break
+   !> and the front's return against the simple-wave speed of the curve the file
+   !> was built from, T = (11.6 / 40) MBL (exp(40 eps) - 1), integrated in closed
+   !> form: sqrt(11.6 MBL / m) (2 / 40) (exp(20 eps0) - 1).
+   subroutine test_polyester(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      real(dp) :: mbl, eps0, theory, total, weight, m
+      integer :: k
+      call read_config('input/polyester_break.nml', c, error)
+      if (allocated(error)) return
+      c%t_end = 0.035_dp
+      c%interval = 0
+      c%gnuplot = .false.
+      call run_config(c, sim, error)
+      if (allocated(error)) return
+      mbl = 308.0e6_dp*0.05_dp**2
+      m = sim%rod%scene%mass
+      eps0 = log(1 + c%tension/(11.6_dp/40*mbl))/40
+      theory = sqrt(11.6_dp*mbl/m)*(2.0_dp/40)*(exp(20*eps0) - 1)
+      total = 0
+      weight = 0
+      do k = 1, sim%rod%history%n
+         if (sim%rod%history%time(k) < 0.01_dp) cycle
+         total = total + norm2(sim%rod%history%ends(3:4, 2, k))*sim%rod%history%step(k)
+         weight = weight + sim%rod%history%step(k)
+      end do
+      write (output_unit, '(4x,a,f8.3,a,f8.3,a,es10.2)') 'polyester break: released end at ', total/weight, &
+         ' m/s, simple-wave theory ', theory, ' m/s; relative error', (total/weight - theory)/theory
+      call check_close(error, total/weight, theory, 'released end speed of the polyester line', rel_tol=5.0e-3_dp)
+   end subroutine test_polyester
 end module suite_laws

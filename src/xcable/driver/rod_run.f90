@@ -221,6 +221,11 @@ contains
       end if
       self%summary%dt_requested = self%dt
       self%summary%courant_requested = self%dt*c_max/ds_max
+      ! The strains reached start with those of the static state.
+      associate (piece => self%pieces(1)%problem%piece)
+         self%summary%min_strain = minval(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
+         self%summary%max_strain = maxval(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
+      end associate
       if (.not. (options%t_end/self%dt <= max_steps)) then
          call fatal_error(error, scene%source//': &numerics: the time step '//str(self%dt)//' s (courant = '// &
                           str(options%courant)//', ds = '//str(ds_max)//' m, largest wave speed '//str(c_max)// &
@@ -991,6 +996,10 @@ contains
          if (self%summary%max_strain > law%strain_max) call warn('cells were stretched to strain '// &
             str(self%summary%max_strain)//', beyond the range of the '//law%name()//' law (strain '// &
             str(law%strain_max)//'): the law was extrapolated there')
+         if (self%summary%min_strain < law%strain_min) call warn('cells were compressed to strain '// &
+            str(self%summary%min_strain)//', below the range of the '//law%name()//' law (strain '// &
+            str(law%strain_min)//'): it was continued there along its first tangent, as stiff in compression '// &
+            'as at the first row (give rows for compression, or compression = ''none'')')
       end associate
       if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
          str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &

@@ -21,6 +21,9 @@ module xcable_material_law
    type, abstract :: material_law
       !> Largest strain for which the law is documented (static states above it are refused).
       real(dp) :: strain_max = 0.35_dp
+      !> Smallest strain for which the law is given (a table's first row); a run that
+      !> compresses cells below it is warned.
+      real(dp) :: strain_min = -huge(1.0_dp)
    contains
       !> Tension f(eps), N.
       procedure(law_function), deferred :: tension

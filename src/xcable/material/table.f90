@@ -50,7 +50,7 @@ contains
 
    !> Build the law from its rows; error (stat_input) unless there are at least
    !> two finite rows with strictly increasing strain and tension. The law's
-   !> range (strain_max) is the last row's strain: beyond it the law is extrapolated.
+   !> range is that of its rows (strain_min, strain_max): beyond them it is extrapolated.
    subroutine new_table_law(strain, tension, law, error)
       !> Strains of the rows.
       real(dp), intent(in) :: strain(:)
@@ -88,6 +88,7 @@ contains
          end if
       end do
       law%strain_max = strain(n)
+      law%strain_min = strain(1)
       law%strain = strain
       law%tension_rows = tension
       h = strain(2:n) - strain(1:n - 1)

@@ -3,7 +3,8 @@
 !>
 !> Below the strain eps_z where the law gives zero tension the tension is 0.
 !> So that Newton's method sees a continuous stiffness, the law is blended
-!> into zero over a band of strain 2 delta around eps_z (delta = 1e-3): a
+!> into zero over a band of strain 2 delta around eps_z, delta = 1e-3 or, for a
+!> stiffer law whose range strain_max is below 0.35, 0.3 % of strain_max: a
 !> cubic Hermite from (eps_z - delta, 0, slope 0) to (eps_z + delta, f, f'),
 !> monotone and C1; above eps_z + delta it is the law itself. The strain
 !> energy is the exact integral of this tension from 0, so the energy ledger
@@ -15,8 +16,8 @@ module xcable_material_tension_only
    private
    public :: tension_only_law, new_tension_only
 
-   !> Half width of the blend, in strain.
-   real(dp), parameter, public :: blend_half_width = 1.0e-3_dp
+   !> Half width of the blend, in strain, and as a fraction of the law's range.
+   real(dp), parameter, public :: blend_half_width = 1.0e-3_dp, blend_fraction = 3.0e-3_dp
 
    !> The law without compression.
    type, extends(material_law) :: tension_only_law
@@ -39,12 +40,13 @@ contains
       !> The law in tension.
       class(material_law), intent(in) :: base
       type(tension_only_law) :: law
-      real(dp) :: eps_z
+      real(dp) :: eps_z, delta
       allocate (law%base, source=base)
       law%strain_max = base%strain_max
       eps_z = base%strain_at(0.0_dp)
-      law%a = eps_z - blend_half_width
-      law%b = eps_z + blend_half_width
+      delta = min(blend_half_width, blend_fraction*base%strain_max)
+      law%a = eps_z - delta
+      law%b = eps_z + delta
       law%fb = base%tension(law%b)
       law%fpb = base%stiffness(law%b)
       ! Antiderivative G with G = 0 below a; W(eps) = G(eps) - G(0).

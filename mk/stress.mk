@@ -1,17 +1,24 @@
 # Numerical stability (issue 6). Included by the main Makefile.
-#   make stress        the stress-test sweep (example/stress, in process, about a minute on one core):
+#   make stress        the stress-test sweep (example/stress, in process through the simulation driver, one
+#                      thread, both schemes, the slack releases to 2 s; about 25 minutes on one free core):
 #                      writes docs/stress.md and docs/stress.csv; docs/stability.md reads them
-#   make stress-quick  a smoke test of the sweep (21 nodes only), tables in build/stress-quick/
-#   make test-fuzz     bad-input fuzzing of bin/xcable (test/test_fuzz.sh, 133 malformed namelists)
+#   make stress-quick  a smoke test of the sweep (under a minute), tables in build/stress-quick/
+#   make test-fuzz     bad-input fuzzing of bin/xcable (test/test_fuzz.sh, malformed namelists)
+# The slack positions are compared with the peer runs in bench/peer/runs (if present). The code
+# version (git describe) goes into the tables' provenance line.
 
 .PHONY: stress stress-quick test-fuzz
 
+STRESS_VERSION = $(shell git describe --always --dirty 2>/dev/null || echo unknown)
+
 stress: deps
-	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(FPM) run --example stress --profile $(PROFILE) -- out=docs
+	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(FPM) run --example stress --profile $(PROFILE) -- \
+		out=docs peer=bench/peer/runs version=$(STRESS_VERSION)
 
 stress-quick: deps
 	@mkdir -p build/stress-quick
-	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(FPM) run --example stress --profile $(PROFILE) -- quick out=build/stress-quick
+	OMP_NUM_THREADS=1 OPENBLAS_NUM_THREADS=1 $(FPM) run --example stress --profile $(PROFILE) -- \
+		quick out=build/stress-quick peer=bench/peer/runs version=$(STRESS_VERSION)
 
 test-fuzz: build
 	test/test_fuzz.sh bin/xcable

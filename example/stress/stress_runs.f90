@@ -1,59 +1,68 @@
-!> One stress-test run in process (issue 6): the case is built like the app
-!> builds it (case_config, setup_case), then statics and the rupture with the
-!> energy ledger and a wall-clock limit, and the figures of the stress table
-!> are taken from the history. A compression probe (a run_observer) measures
-!> at each snapshot the compressed zone at the fixed end.
+!> One stress-test run in process (issue 6) through the simulation driver
+!> (driver/simulation.f90), for either scheme: the case is a case_config
+!> with the paper's defaults, prepared and run like the program runs it,
+!> with the energy ledger and a wall-clock limit; the figures of the stress
+!> tables are taken from the run's history and summary. A compression probe
+!> (a run_observer) measures at each snapshot the compressed zone at the
+!> fixed end from the output fields, so it reads both schemes alike.
 !>
 !> Measures (the window is the part of the run before the fixed end first goes
 !> into compression, T(0, t) <= 0, or the whole run if it never does):
 !> - overshoot: largest rise of the fixed-end tension above its static value
 !>   in the window, / T_s. An unloading front can only lower the tension, so
-!>   any rise is the box scheme's ringing (its short waves run ahead of the
-!>   front at Courant < 1 and lag it at Courant > 1) or, in a slack cable, the
-!>   swing of the sag.
+!>   any rise is a scheme's ringing (short waves running ahead of the front)
+!>   or, in a slack cable, the swing of the sag.
 !> - ringing: (total variation - |net change|) / (2 T_s) of the fixed-end
 !>   tension in the window: the summed height of every rebound. A monotone
 !>   drop gives 0.
-!> - speed error: (peak |u| at the breaking end in the window - simple-wave
-!>   theory) / theory (PHYSICS.md; straight string: not a reference for a
-!>   slack cable with a sag of metres).
+!> - speed error: (peak speed |V| of the released end in the window -
+!>   simple-wave theory) / theory (straight string: not a reference for a
+!>   slack cable with a sag of metres). Version 0.1 of this study took the
+!>   tangential speed |u| of the box scheme; |V| is what both schemes record.
 !> - drop error: time of the 1 % drop of the fixed-end tension minus
 !>   simple-wave theory with the ramp (xcable_theory%wall_drop_time; without
 !>   the weak shock of the concave law above eps = 0.2086, so approximate at
 !>   315 and 400 kN), s.
-!> - energy drift: max |ledger - ledger(0)| / strain energy(0) over the run.
+!> - energy drift: max |ledger - ledger(0)| / strain energy(0) over the run
+!>   (the driver's summary).
+!> - released end: its position at the times release_times, linear in time
+!>   between the two accepted steps around each (steps of at most 0.2 ms).
 module stress_runs
    use xcable_kinds, only: dp
-   use xcable_error, only: error_type
-   use xcable_io_input, only: case_config
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model, i_eps, i_om
-   use xcable_model_geometry, only: positions
-   use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture
-   use xcable_statics, only: static_state, solve_statics
+   use xcable_error, only: error_type, stat_input
+   use xcable_io_config, only: case_config
+   use xcable_material_law, only: material_law, new_law
+   use xcable_simulation, only: simulation
+   use xcable_run_records, only: run_history, run_summary, static_info, run_observer
    use xcable_theory, only: riemann_speed, wave_speed, wall_drop_time
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
    private
    public :: run_spec, run_outcome, stress_run, compression_probe, paper_bending_stiffness, wall_reflection
+   public :: release_times, outcome_tag
 
    !> E pi d^4 / 64 of the paper's cable, N m^2.
    real(dp), parameter :: paper_bending_stiffness = 230.0e6_dp*acos(-1.0_dp)*0.05_dp**4/64
+   !> Times at which the released end's position is recorded, s.
+   real(dp), parameter :: release_times(4) = [0.5_dp, 1.0_dp, 1.5_dp, 2.0_dp]
+   !> Snapshot records the probe keeps at most.
+   integer, parameter :: probe_capacity = 1000
 
    !> What to run.
    type :: run_spec
       !> Part of the sweep the run belongs to.
       character(len=12) :: study = ''
+      !> Discretisation: 'rod' or 'box'.
+      character(len=8) :: scheme = 'rod'
       !> Static end tension, N; breaking time, s.
       real(dp) :: tension = 180.0e3_dp, t_break = 5.0e-3_dp
       !> Nodes.
       integer :: nodes = 121
-      !> Courant number c(eps0) dt / ds; EI as a multiple of the paper's; time weight.
+      !> Courant number (c dt / ds); EI as a multiple of the paper's; time weight.
       real(dp) :: courant = 1, ei_factor = 1, theta = 0.5_dp
       !> End of the run, s (0: t_break + 2.2 L / c(eps0), past the front's reflection).
       real(dp) :: t_end = 0
-      !> Snapshot interval, s.
+      !> Snapshot interval, s (0: none but t_end). The box scheme fits whole steps into it.
       real(dp) :: interval = 0.01_dp
       !> Wall-clock limit of the dynamics, s.
       real(dp) :: wall_limit = 30
@@ -61,9 +70,10 @@ module stress_runs
 
    !> Compression at the fixed end, one record per snapshot.
    type, extends(run_observer) :: compression_probe
-      !> Cable data, grid and static state.
-      type(cable_model) :: model
-      real(dp), allocatable :: s(:), y_static(:, :)
+      !> Bending stiffness of the run, N m^2.
+      real(dp) :: bending_stiffness = 0
+      !> Output arc lengths and the static curvature on them.
+      real(dp), allocatable :: s(:), static_curvature(:)
       !> Snapshots recorded.
       integer :: n = 0
       !> Time, s; fixed-end tension, N; length of the compressed zone at the
@@ -73,6 +83,7 @@ module stress_runs
       real(dp), allocatable :: time(:), wall_tension(:), length(:), euler_load(:), deflection(:), &
                                curvature(:), min_strain(:)
    contains
+      procedure :: static => probe_static
       procedure :: snapshot => probe_snapshot
    end type compression_probe
 
@@ -81,25 +92,49 @@ module stress_runs
       !> Whether the run reached t_end; otherwise the named reason.
       logical :: complete = .false.
       character(:), allocatable :: reason
-      !> End asked for, time reached, step used, s.
-      real(dp) :: t_end = 0, time_reached = 0, dt = 0
+      !> End asked for, time reached, step asked for, s; Courant number taken.
+      real(dp) :: t_end = 0, time_reached = 0, dt = 0, courant_used = 0
       !> Static sag, m.
       real(dp) :: sag = 0
       !> See the module doc.
       real(dp) :: energy_drift = 0, overshoot = 0, ringing = 0, speed_error = 0, drop_error = 0
-      !> Newton iterations in the hardest step; rejected attempts; accepted steps.
+      !> Numerical dissipation booked in the ledger (theta > 0.5, rod) and the initial strain energy, J.
+      real(dp) :: dissipated = 0, strain_energy0 = 0
+      !> Newton iterations in the hardest step and per accepted step; rejected attempts; accepted steps.
       integer :: max_newton = 0, rejected = 0, steps = 0
+      real(dp) :: newton_per_step = 0
       !> Wall time of the dynamics, s.
       real(dp) :: wall = 0
-      !> Smallest fixed-end tension, N, and the largest |b0^2 + b3^2 - 1|.
-      real(dp) :: min_wall_tension = 0, max_unit_norm_error = 0
+      !> Smallest fixed-end tension, N; peak speed of the released end, m/s.
+      real(dp) :: min_wall_tension = 0, peak_end_speed = 0
+      !> Box: largest |b0^2 + b3^2 - 1|. Rod: largest turning angle between two cells, rad.
+      real(dp) :: max_unit_norm_error = 0, max_turning_angle = 0
+      !> Smallest strain reached (rod: every cell; box: the two end nodes only, what its summary keeps).
+      real(dp) :: min_strain = 0
+      !> The run's warnings, one per line ('' : none).
+      character(:), allocatable :: warnings
       !> Time the fixed end first went into compression, s (-1: never).
       real(dp) :: compression_time = -1
       !> Hardest Newton step and rejected attempts before and after that time.
       integer :: newton_tension = 0, newton_compression = 0, rejected_tension = 0, rejected_compression = 0
+      !> Released end's position at release_times, m (NaN: not reached).
+      real(dp) :: end_x(size(release_times)) = 0, end_z(size(release_times)) = 0
    end type run_outcome
 
 contains
+
+   !> The paper's tanh law and mass per length (for the references).
+   subroutine paper_law(law, mass)
+      !> The tanh law of eq. 17 with the paper's coefficients.
+      class(material_law), allocatable, intent(out) :: law
+      !> Mass per unstretched length, kg/m.
+      real(dp), intent(out) :: mass
+      type(case_config) :: config
+      type(error_type), allocatable :: error
+      ! The defaults of case_config name the tanh law, which new_law always knows (no error).
+      call new_law(law, trim(config%law), config%p, config%ea, config%strain_max, error)
+      mass = config%density*0.25_dp*acos(-1.0_dp)*config%diameter**2
+   end subroutine paper_law
 
    !> Run one case and measure it; probe, if present, records the compressed zone.
    subroutine stress_run(spec, outcome, probe)
@@ -107,19 +142,18 @@ contains
       type(run_spec), intent(in) :: spec
       !> Its figures.
       type(run_outcome), intent(out) :: outcome
-      !> Compression probe (reset here).
+      !> Compression probe (reset by the run's static state).
       type(compression_probe), intent(inout), optional :: probe
       type(case_config) :: config
-      type(cable_model) :: model
-      real(dp), allocatable :: s(:)
-      type(newton_options) :: newton
-      type(dynamics_options) :: dynamics
-      type(static_state) :: state
-      type(run_history) :: history
-      type(run_summary) :: summary
+      type(simulation), target :: sim
+      type(run_history), pointer :: history
+      type(run_summary), pointer :: summary
+      type(static_info), pointer :: info
       type(error_type), allocatable :: error
-      real(dp) :: eps0, t_s, c0, theory, nan
-      integer :: i, last
+      class(material_law), allocatable :: law
+      real(dp) :: eps0, t_s, mass, theory, nan
+      real(dp), allocatable :: wall_tension(:), end_speed(:)
+      integer :: i, last, n
 
       nan = ieee_value(1.0_dp, ieee_quiet_nan)
       outcome%energy_drift = nan
@@ -127,7 +161,13 @@ contains
       outcome%ringing = nan
       outcome%speed_error = nan
       outcome%drop_error = nan
+      outcome%end_x = nan
+      outcome%end_z = nan
+      outcome%warnings = ''
+      call paper_law(law, mass)
+      eps0 = law%strain_at(spec%tension)
       config%source = 'stress'
+      config%scheme = spec%scheme
       config%tension = spec%tension
       config%t_break = spec%t_break
       config%nodes = spec%nodes
@@ -138,80 +178,143 @@ contains
       config%energy = .true.
       config%quiet = .true.
       config%max_wall_time = spec%wall_limit
-      ! t_end first with a placeholder (setup_case needs one), then the automatic value.
-      config%t_end = merge(spec%t_end, 1.0_dp, spec%t_end > 0)
-      call setup_case(config, model, s, newton, dynamics, error)
-      if (allocated(error)) then
-         outcome%reason = 'input: '//error%message
-         return
-      end if
-      eps0 = model%law%strain_at(spec%tension)
-      c0 = wave_speed(model%law, model%mass, eps0)
-      if (spec%t_end <= 0) then
-         config%t_end = spec%t_break + 2.2_dp*model%length/c0
-         call setup_case(config, model, s, newton, dynamics, error)
-         if (allocated(error)) then
-            outcome%reason = 'input: '//error%message
-            return
-         end if
-      end if
-      outcome%t_end = dynamics%t_end
-      outcome%dt = dynamics%dt
-      call solve_statics(model, s, spec%tension, newton, state, error)
+      config%t_end = spec%t_end
+      if (spec%t_end <= 0) config%t_end = spec%t_break + 2.2_dp*config%length/wave_speed(law, mass, eps0)
+      outcome%t_end = config%t_end
+      call sim%prepare(config, error)
       if (allocated(error)) then
          outcome%reason = error%message
+         if (error%stat == stat_input) outcome%reason = 'input: '//error%message
+         if (error%stat /= stat_input) outcome%reason = 'statics: '//error%message
          return
       end if
-      outcome%sag = state%sag
+      info => sim%static()
+      outcome%sag = info%sag
       if (present(probe)) then
-         probe%model = model
-         probe%s = s
-         probe%y_static = state%y
-         probe%n = 0
-         call run_rupture(model, s, state%y, dynamics, history, summary, error, probe)
+         probe%bending_stiffness = config%bending_stiffness
+         call sim%run(probe, error)
       else
-         call run_rupture(model, s, state%y, dynamics, history, summary, error)
+         call sim%run(error=error)
       end if
+      history => sim%history()
+      summary => sim%summary()
       outcome%complete = .not. allocated(error)
       outcome%reason = 'complete'
       if (allocated(error)) outcome%reason = error%message
+      outcome%dt = summary%dt_requested
+      outcome%courant_used = summary%courant_used
       outcome%time_reached = summary%time_reached
       outcome%energy_drift = summary%energy_drift
+      outcome%dissipated = summary%dissipated
+      if (allocated(history%energy)) outcome%strain_energy0 = history%energy(1, 0)
       outcome%max_newton = summary%max_newton_iterations
       outcome%rejected = summary%rejected_steps
       outcome%steps = summary%steps
+      outcome%newton_per_step = real(summary%newton_iterations, dp)/max(summary%steps, 1)
       outcome%wall = summary%wall_time
       outcome%min_wall_tension = summary%min_fixed_end_tension
+      outcome%peak_end_speed = summary%peak_end_speed
       outcome%max_unit_norm_error = summary%max_unit_norm_error
+      outcome%max_turning_angle = summary%max_turning_angle
+      outcome%min_strain = summary%min_strain
+      if (allocated(summary%warnings)) outcome%warnings = summary%warnings
 
-      ! The window: up to the first record with the fixed end in compression.
-      t_s = history%fixed_end_tension(0)
-      last = history%n
-      do i = 1, history%n
-         if (history%fixed_end_tension(i) <= 0) then
+      ! Slot 1 is end a (held), slot 2 end b (released) in both schemes.
+      n = history%n
+      wall_tension = history%ends(5, 1, 0:n)
+      end_speed = norm2(history%ends(3:4, 2, 0:n), 1)
+      do i = 1, size(release_times)
+         call end_position_at(history, release_times(i), outcome%end_x(i), outcome%end_z(i))
+      end do
+      ! The window: up to the first record with the fixed end in compression (index from 1 here).
+      t_s = wall_tension(1)
+      last = n + 1
+      do i = 2, n + 1
+         if (wall_tension(i) <= 0) then
             last = i - 1
-            outcome%compression_time = history%time(i)
+            outcome%compression_time = history%time(i - 1)
             exit
          end if
       end do
-      associate (tw => history%fixed_end_tension)
-         outcome%overshoot = max(0.0_dp, maxval(tw(0:last)) - t_s)/spec%tension
-         outcome%ringing = 0
-         if (last >= 1) outcome%ringing = (sum(abs(tw(1:last) - tw(0:last - 1))) - abs(tw(last) - tw(0)))/(2*spec%tension)
-      end associate
-      outcome%newton_tension = maxval(history%newton_iterations(0:last))
-      outcome%rejected_tension = sum(history%rejected(0:last))
-      if (last < history%n) then
-         outcome%newton_compression = maxval(history%newton_iterations(last + 1:history%n))
-         outcome%rejected_compression = summary%rejected_steps - outcome%rejected_tension
+      outcome%overshoot = max(0.0_dp, maxval(wall_tension(1:last)) - t_s)/spec%tension
+      outcome%ringing = 0
+      if (last >= 2) outcome%ringing = (sum(abs(wall_tension(2:last) - wall_tension(1:last - 1))) - &
+                                        abs(wall_tension(last) - wall_tension(1)))/(2*spec%tension)
+      outcome%newton_tension = maxval(history%newton_iterations(0:last - 1))
+      outcome%rejected_tension = sum(history%rejected(0:last - 1))
+      if (last < n + 1) then
+         outcome%newton_compression = maxval(history%newton_iterations(last:n))
+         outcome%rejected_compression = max(summary%rejected_steps - outcome%rejected_tension, 0)
       end if
-      theory = riemann_speed(model%law, model%mass, model%law%strain_at(0.0_dp), eps0)
-      outcome%speed_error = (maxval(abs(history%end_velocity(0:last))) - theory)/theory
+      theory = riemann_speed(law, mass, law%strain_at(0.0_dp), eps0)
+      outcome%speed_error = (maxval(end_speed(1:last)) - theory)/theory
       if (summary%front_arrival_time > 0) then
          outcome%drop_error = summary%front_arrival_time - &
-                              wall_drop_time(model%law, model%mass, model%length, eps0, spec%t_break, 0.01_dp)
+                              wall_drop_time(law, mass, config%length, eps0, spec%t_break, 0.01_dp)
       end if
    end subroutine stress_run
+
+   !> Position of the released end (slot 2) at time t, linear between the
+   !> two records around it; NaN if the run did not get there.
+   subroutine end_position_at(history, t, x, z)
+      !> History of the run (slot 2: the released end).
+      type(run_history), intent(in) :: history
+      !> Time, s.
+      real(dp), intent(in) :: t
+      !> Position, m (left as it is if the run did not reach t).
+      real(dp), intent(inout) :: x, z
+      integer :: lo, hi, mid
+      real(dp) :: w
+      if (history%n < 1) return
+      if (history%time(history%n) < t*(1 - 1.0e-12_dp)) return
+      ! Bisection for time(lo) <= t <= time(hi).
+      lo = 0
+      hi = history%n
+      do while (hi - lo > 1)
+         mid = (lo + hi)/2
+         if (history%time(mid) <= t) then
+            lo = mid
+         else
+            hi = mid
+         end if
+      end do
+      w = 0
+      if (history%time(hi) > history%time(lo)) w = min(max((t - history%time(lo))/(history%time(hi) - history%time(lo)), &
+                                                           0.0_dp), 1.0_dp)
+      x = (1 - w)*history%ends(1, 2, lo) + w*history%ends(1, 2, hi)
+      z = (1 - w)*history%ends(2, 2, lo) + w*history%ends(2, 2, hi)
+   end subroutine end_position_at
+
+   !> Short name of how a run ended.
+   function outcome_tag(complete, reason) result(tag)
+      !> Whether the run completed; its reason otherwise.
+      logical, intent(in) :: complete
+      character(*), intent(in) :: reason
+      character(:), allocatable :: tag
+      if (complete) then
+         tag = 'complete'
+      else if (index(reason, 'input:') == 1) then
+         tag = 'refused'
+      else if (index(reason, 'statics:') == 1) then
+         tag = 'statics'
+      else if (index(reason, 'wall-clock') > 0) then
+         tag = 'wall clock'
+      else if (index(reason, 'rejected attempts by') > 0) then
+         tag = 'step budget'
+      else if (index(reason, 'collapsed') > 0) then
+         tag = 'collapse'
+      else if (index(reason, 'unit circle') > 0) then
+         tag = 'frame lost'
+      else if (index(reason, 'half a turn') > 0) then
+         tag = 'fold'
+      else if (index(reason, 'not finite') > 0 .or. index(reason, 'non-finite') > 0) then
+         tag = 'non-finite'
+      else if (index(reason, 'Newton') > 0 .or. index(reason, 'dgbtrf') > 0) then
+         tag = 'newton'
+      else
+         tag = 'other'
+      end if
+   end function outcome_tag
 
    !> Straight-string reflection at the fixed end of the paper's cable released
    !> from the static tension: the breaking end reaches u_end = phi(eps0) -
@@ -229,94 +332,101 @@ contains
       real(dp), intent(out) :: eps0, u_end, eps_wall, wall_tension
       !> Capacity to each floor, m/s.
       real(dp), intent(out) :: capacity(:)
-      type(case_config) :: config
-      type(cable_model) :: model
-      real(dp), allocatable :: s(:)
-      type(newton_options) :: newton
-      type(dynamics_options) :: dynamics
-      type(error_type), allocatable :: error
-      real(dp) :: eps_zero, lo, hi, mid
+      class(material_law), allocatable :: law
+      real(dp) :: mass, eps_zero, lo, hi, mid
       integer :: it, j
-      config%source = 'stress'
-      config%bending_stiffness = paper_bending_stiffness
-      config%tension = tension
-      call setup_case(config, model, s, newton, dynamics, error)
-      eps0 = model%law%strain_at(tension)
-      eps_zero = model%law%strain_at(0.0_dp)
-      u_end = riemann_speed(model%law, model%mass, eps_zero, eps0)
+      call paper_law(law, mass)
+      eps0 = law%strain_at(tension)
+      eps_zero = law%strain_at(0.0_dp)
+      u_end = riemann_speed(law, mass, eps_zero, eps0)
       do j = 1, size(floors)
-         capacity(j) = riemann_speed(model%law, model%mass, floors(j), eps_zero)
+         capacity(j) = riemann_speed(law, mass, floors(j), eps_zero)
       end do
       ! Bisection on [-1000, eps_zero]: far in compression c tends to sqrt(p5 / m).
       lo = -1000
       hi = eps_zero
       do it = 1, 200
          mid = 0.5_dp*(lo + hi)
-         if (riemann_speed(model%law, model%mass, mid, eps_zero) > u_end) then
+         if (riemann_speed(law, mass, mid, eps_zero) > u_end) then
             lo = mid
          else
             hi = mid
          end if
       end do
       eps_wall = 0.5_dp*(lo + hi)
-      wall_tension = model%law%tension(eps_wall)
+      wall_tension = law%tension(eps_wall)
    end subroutine wall_reflection
 
+   !> Keep the grid and the static curvature; start a new record (run_observer).
+   subroutine probe_static(self, info, error)
+      !> Probe.
+      class(compression_probe), intent(inout) :: self
+      !> The static state.
+      type(static_info), intent(in) :: info
+      !> Never set.
+      type(error_type), allocatable, intent(out) :: error
+      self%s = info%s
+      self%static_curvature = info%fields(:, 8)
+      self%n = 0
+      if (.not. allocated(self%time)) then
+         allocate (self%time(probe_capacity), self%wall_tension(probe_capacity), self%length(probe_capacity), &
+                   self%euler_load(probe_capacity), self%deflection(probe_capacity), self%curvature(probe_capacity), &
+                   self%min_strain(probe_capacity))
+      end if
+   end subroutine probe_static
+
    !> Measure the compressed zone at the fixed end (run_observer).
-   subroutine probe_snapshot(self, t, y, error)
+   subroutine probe_snapshot(self, t, fields, error)
       !> Probe.
       class(compression_probe), intent(inout) :: self
       !> Time, s.
       real(dp), intent(in) :: t
-      !> Unknowns (7, nodes).
-      real(dp), intent(in) :: y(:, :)
+      !> Fields (nodes, n_fields): tension, shear, strain, u, v, x, z, curvature.
+      real(dp), intent(in) :: fields(:, :)
       !> Never set.
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: x(size(self%s)), z(size(self%s)), tension(size(self%s)), zone, chord_x, chord_z, chord, dist
+      real(dp) :: zone, chord_x, chord_z, chord, dist
       integer :: k, last, np
       np = size(self%s)
-      if (.not. allocated(self%time)) then
-         allocate (self%time(1000), self%wall_tension(1000), self%length(1000), self%euler_load(1000), &
-                   self%deflection(1000), self%curvature(1000), self%min_strain(1000))
-      end if
       if (self%n == size(self%time)) return
       self%n = self%n + 1
-      tension = self%model%law%tension(y(i_eps, :))
-      call positions(y, self%s, x, z)
-      ! Compressed zone: the nodes from the fixed end while T < 0; its length
-      ! ends at the interpolated zero of T.
-      last = 0
-      do k = 1, np
-         if (tension(k) >= 0) exit
-         last = k
-      end do
-      zone = 0
-      if (last >= 1 .and. last < np) then
-         zone = self%s(last) + (self%s(last + 1) - self%s(last))*(-tension(last))/(tension(last + 1) - tension(last))
-      else if (last == np) then
-         zone = self%s(np)
-      end if
-      self%time(self%n) = t
-      self%wall_tension(self%n) = tension(1)
-      self%length(self%n) = zone
-      self%euler_load(self%n) = huge(1.0_dp)
-      if (zone > 0) self%euler_load(self%n) = pi**2*self%model%bending_stiffness/zone**2
-      self%deflection(self%n) = 0
-      self%curvature(self%n) = 0
-      self%min_strain(self%n) = y(i_eps, 1)
-      if (last >= 2) then
-         chord_x = x(last) - x(1)
-         chord_z = z(last) - z(1)
-         chord = max(hypot(chord_x, chord_z), tiny(1.0_dp))
-         do k = 1, last
-            dist = abs((x(k) - x(1))*chord_z - (z(k) - z(1))*chord_x)/chord
-            self%deflection(self%n) = max(self%deflection(self%n), dist)
+      associate (tension => fields(:, 1), strain => fields(:, 3), x => fields(:, 6), z => fields(:, 7), &
+                 omega => fields(:, 8))
+         ! Compressed zone: the nodes from the fixed end while T < 0; its length
+         ! ends at the interpolated zero of T.
+         last = 0
+         do k = 1, np
+            if (tension(k) >= 0) exit
+            last = k
          end do
-      end if
-      do k = 1, max(last, 1)
-         self%curvature(self%n) = max(self%curvature(self%n), abs(y(i_om, k) - self%y_static(i_om, k)))
-         self%min_strain(self%n) = min(self%min_strain(self%n), y(i_eps, k))
-      end do
+         zone = 0
+         if (last >= 1 .and. last < np) then
+            zone = self%s(last) + (self%s(last + 1) - self%s(last))*(-tension(last))/(tension(last + 1) - tension(last))
+         else if (last == np) then
+            zone = self%s(np)
+         end if
+         self%time(self%n) = t
+         self%wall_tension(self%n) = tension(1)
+         self%length(self%n) = zone
+         self%euler_load(self%n) = huge(1.0_dp)
+         if (zone > 0) self%euler_load(self%n) = pi**2*self%bending_stiffness/zone**2
+         self%deflection(self%n) = 0
+         self%curvature(self%n) = 0
+         self%min_strain(self%n) = strain(1)
+         if (last >= 2) then
+            chord_x = x(last) - x(1)
+            chord_z = z(last) - z(1)
+            chord = max(hypot(chord_x, chord_z), tiny(1.0_dp))
+            do k = 1, last
+               dist = abs((x(k) - x(1))*chord_z - (z(k) - z(1))*chord_x)/chord
+               self%deflection(self%n) = max(self%deflection(self%n), dist)
+            end do
+         end if
+         do k = 1, max(last, 1)
+            self%curvature(self%n) = max(self%curvature(self%n), abs(omega(k) - self%static_curvature(k)))
+            self%min_strain(self%n) = min(self%min_strain(self%n), strain(k))
+         end do
+      end associate
    end subroutine probe_snapshot
 end module stress_runs

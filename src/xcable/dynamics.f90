@@ -89,6 +89,8 @@ module xcable_dynamics
       real(dp), allocatable :: end_y(:, :, :)
       !> Position (x, z) of the breaking end (2, 0:n), m.
       real(dp), allocatable :: end_position(:, :)
+      !> Smallest and largest strain at any node over the records.
+      real(dp) :: min_strain = huge(1.0_dp), max_strain = -huge(1.0_dp)
    contains
       procedure :: reserve => history_reserve
    end type run_history
@@ -446,6 +448,8 @@ contains
          history%rejected(i) = rejected
          history%end_y(:, 1, i) = y(:, 1)
          history%end_y(:, 2, i) = y(:, np)
+         history%min_strain = min(history%min_strain, minval(y(i_eps, :)))
+         history%max_strain = max(history%max_strain, maxval(y(i_eps, :)))
          call positions(y, s, xpos, zpos)
          history%end_position(:, i) = [xpos(np), zpos(np)]
       end subroutine record

@@ -215,8 +215,8 @@ contains
          s%time_reached = old_summary%time_reached
          s%wall_time = old_summary%wall_time
          s%max_unit_norm_error = old_summary%max_unit_norm_error
-         s%min_strain = minval(old%end_y(i_eps, :, 0:n))
-         s%max_strain = maxval(old%end_y(i_eps, :, 0:n))
+         s%min_strain = old%min_strain
+         s%max_strain = old%max_strain
          ds = self%s(2) - self%s(1)
          c0 = sqrt(self%model%law%stiffness(self%state%y(i_eps, np))/self%model%mass)
          s%dt_requested = self%courant*ds/c0

@@ -59,7 +59,7 @@ contains
       character(len=12) :: fmt
       character(:), allocatable :: digits, sign
       real(dp) :: y
-      integer :: d, ios, e_at, exponent, n
+      integer :: d, ios, e_at, exponent, n, lo, hi
       if (x /= x .or. abs(x) > huge(x)) then
          s = str_real(x)
          return
@@ -68,12 +68,23 @@ contains
          s = '0'
          return
       end if
-      do d = 1, 17
+      ! The fewest significant digits that read back exactly: 17 always do, and
+      ! if d digits do, d + 1 do too, so bisect.
+      lo = 1
+      hi = 17
+      do while (lo < hi)
+         d = (lo + hi)/2
          write (fmt, '(a,i0,a)') '(es40.', d - 1, 'e4)'
          write (buf, fmt) x
          read (buf, *, iostat=ios) y
-         if (ios == 0 .and. y == x) exit
+         if (ios == 0 .and. y == x) then
+            hi = d
+         else
+            lo = d + 1
+         end if
       end do
+      write (fmt, '(a,i0,a)') '(es40.', hi - 1, 'e4)'
+      write (buf, fmt) x
       buf = adjustl(buf)
       sign = ''
       if (buf(1:1) == '-') then

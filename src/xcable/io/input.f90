@@ -294,8 +294,10 @@ contains
       integer, intent(out) :: counts(:)
       !> Error naming the file, the line or group, and the variable.
       type(error_type), allocatable, intent(out) :: error
+      ! The group's text is gathered in a buffer as long as the file (appending to a
+      ! deferred-length string character by character is quadratic in a long table).
       character(:), allocatable :: text, group
-      integer :: i, j, start_line, ig
+      integer :: i, j, start_line, ig, nt
       logical :: in_group, in_quote
       character :: quote, ch
 
@@ -304,7 +306,8 @@ contains
       in_group = .false.
       in_quote = .false.
       quote = ' '
-      text = ''
+      allocate (character(len=sum(len_trim(lines)) + size(lines)) :: text)
+      nt = 0
       group = ''
       start_line = 0
       do i = 1, size(lines)
@@ -314,7 +317,7 @@ contains
             ch = lines(i)(j:j)
             if (in_quote) then
                if (ch == quote) in_quote = .false.
-               if (in_group) text = text//ch
+               if (in_group) call append(ch)
                cycle
             end if
             if (ch == '!') exit
@@ -346,7 +349,7 @@ contains
                present_group(ig) = .true.
                in_group = .true.
                start_line = i
-               text = ''
+               nt = 0
                j = j + len(group)
                cycle
             end if
@@ -356,7 +359,7 @@ contains
                return
             end if
             if (ch == '/') then
-               call check_assignments(path, t, group, text, counts, error)
+               call check_assignments(path, t, group, text(1:nt), counts, error)
                if (allocated(error)) return
                in_group = .false.
                cycle
@@ -365,9 +368,9 @@ contains
                in_quote = .true.
                quote = ch
             end if
-            text = text//ch
+            call append(ch)
          end do
-         if (in_group) text = text//' '
+         if (in_group) call append(' ')
       end do
       if (in_group) then
          call fatal_error(error, path//': group &'//group//' (line '//str(start_line)// &
@@ -378,6 +381,14 @@ contains
          call fatal_error(error, path//': no namelist group found; expected some of '// &
                           join_names(group_names, '&'), stat_input)
       end if
+
+   contains
+
+      subroutine append(c)
+         character, intent(in) :: c
+         nt = nt + 1
+         text(nt:nt) = c
+      end subroutine append
    end subroutine scan_groups
 
    !> Check the names and value types of the assignments of one group, and

@@ -15,6 +15,7 @@ program xcable_tests
    use suite_rod_dynamics, only: collect_rod_dynamics
    use suite_scenes, only: collect_scenes
    use suite_laws, only: collect_laws
+   use suite_registry, only: collect_registry
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -34,7 +35,8 @@ program xcable_tests
              new_testsuite('rod_statics', collect_rod_statics), &
              new_testsuite('rod_dynamics', collect_rod_dynamics), &
              new_testsuite('scenes', collect_scenes), &
-             new_testsuite('laws', collect_laws)]
+             new_testsuite('laws', collect_laws), &
+             new_testsuite('registry', collect_registry)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -3,6 +3,7 @@
 !>   xcable case.nml
 !>   xcable --check case.nml        (validate the case, solve its statics, and exit)
 !>   xcable --schema markdown|tsv   (the input table: README's, or the sweep scripts')
+!>   xcable --version               (the version, the compiler and its options)
 !>
 !> Exit codes: 0 complete (warnings, if any, on stderr and in the file);
 !> 1 numerical failure (the result file says 'failed', with the reason and
@@ -17,6 +18,7 @@ program xcable_main
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_summary, run_history, static_info
    use xcable_app_output, only: app_output
+   use xcable_version, only: version_lines
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
 
@@ -32,7 +34,8 @@ program xcable_main
    real(dp) :: dt
    logical :: check_only
    character(len=*), parameter :: usage = 'usage: xcable [--check] <case.nml>   (--check: validate only; '// &
-                                          'see README.md for the namelist groups); xcable --schema markdown|tsv'
+                                          'see README.md for the namelist groups); xcable --schema markdown|tsv; '// &
+                                          'xcable --version'
 
    nargs = command_argument_count()
    call schema_option()
@@ -48,6 +51,10 @@ program xcable_main
    call get_command_argument(nargs, path)
    if (trim(path) == '--help' .or. trim(path) == '-h') then
       write (output_unit, '(a)') usage
+      stop
+   end if
+   if (nargs == 1 .and. trim(path) == '--version') then
+      write (output_unit, '(a)') version_lines()
       stop
    end if
 

@@ -8,6 +8,7 @@ module suite_output
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
                              put_text_attr
    use xcable_io_output, only: result_file
+   use xcable_version, only: code_version
    use hdf5
    implicit none
    private
@@ -19,7 +20,8 @@ contains
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('hdf5_writers_report_errors', test_writers), &
                new_unittest('result_file_status_and_errors', test_result_file), &
-               new_unittest('echo_above_64_kb', test_large_echo)]
+               new_unittest('echo_above_64_kb', test_large_echo), &
+               new_unittest('version_matches_fpm_toml', test_version)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -145,6 +147,33 @@ contains
       call check(error, text == echo, 'the 200 kB echo did not read back whole (length '//str(len(text))//')')
       call delete_file(path)
    end subroutine test_large_echo
+
+   !> The version the program reports (src/xcable/version.f90) is the package
+   !> version of fpm.toml: the first line `version = "..."` of the manifest.
+   subroutine test_version(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=256) :: line
+      character(:), allocatable :: manifest_version
+      integer :: unit, ios, q1, q2
+      open (newunit=unit, file='fpm.toml', status='old', action='read', iostat=ios)
+      call check(error, ios == 0, 'cannot open fpm.toml (the tests run from the project root)')
+      if (allocated(error)) return
+      manifest_version = ''
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         line = adjustl(line)
+         if (line(1:7) /= 'version') cycle
+         if (verify(line(8:index(line, '=') - 1), ' ') /= 0) cycle
+         q1 = index(line, '"')
+         q2 = index(line, '"', back=.true.)
+         if (q2 > q1) manifest_version = line(q1 + 1:q2 - 1)
+         exit
+      end do
+      close (unit)
+      call check(error, manifest_version == code_version, 'fpm.toml says version "'//manifest_version// &
+                 '", src/xcable/version.f90 says "'//code_version//'": change both (and CHANGELOG.md)')
+   end subroutine test_version
 
    !> A string attribute of loc ('' when it cannot be read).
    subroutine read_text_attr(loc, name, text)

@@ -21,14 +21,12 @@ module xcable_io_output
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
                                  field_names, n_fields, n_end_quantities, end_quantity_names
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr
+   use xcable_version, only: code_version
    use hdf5
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
    private
-   public :: result_file, code_version
-
-   !> Version of the code written into every result.
-   character(len=*), parameter :: code_version = '0.2.0'
+   public :: result_file
 
    !> An open result file; receives the static state and the snapshots of a run.
    type, extends(run_observer) :: result_file

@@ -1,0 +1,24 @@
+!> The version of xcable: the one string that `xcable --version`, the result
+!> files and the checkpoints report. fpm.toml's `version` holds the same
+!> number (the package version fpm builds and installs); the test
+!> output/version_matches_fpm_toml fails when the two differ, so a release
+!> changes this line and fpm.toml together (and CHANGELOG.md).
+module xcable_version
+   use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
+   implicit none
+   private
+   public :: code_version, version_lines
+
+   !> Version of the code, as in fpm.toml.
+   character(len=*), parameter :: code_version = '0.3.0'
+
+contains
+
+   !> What `xcable --version` prints: the version, the compiler and its options,
+   !> one per line (no trailing new line).
+   function version_lines() result(text)
+      character(:), allocatable :: text
+      text = 'xcable '//code_version//new_line('a')//'compiler: '//compiler_version()//new_line('a')// &
+             'compiler options: '//compiler_options()
+   end function version_lines
+end module xcable_version

@@ -205,6 +205,8 @@ begin 'NaN behind a repeat count' 'tension'
 from fast_315kN; edit 's/tension = 315000/tension = 1*NaN/'; check
 begin 'max_wall_time = Inf' 'max_wall_time'
 from fast_180kN; set_in numerics 'max_wall_time = Inf'; check
+begin 'checkpoint_interval = NaN' 'checkpoint_interval'
+from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = NaN, /'; check
 
 # --- huge and tiny values ---------------------------------------------------------
 begin 'tension = 1e300' 'tension'
@@ -237,6 +239,12 @@ begin 'diameter = 1e300' 'diameter'
 from slow_315kN; add '&cable diameter = 1e300 /'; check
 begin 'young = 1e-300' 'young'
 from slow_315kN; add '&cable young = 1e-300 /'; check
+begin 'checkpoint_interval = -1' 'checkpoint_interval = -1' 'must be 0 (none) or > 0'
+from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = -1, /'; check
+begin 'checkpoint_interval = 1e300' 'checkpoint_interval' '1e7'
+from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = 1e300, /'; check
+begin 'checkpoint_interval with the box scheme' 'checkpoint_interval = 60' 'box scheme writes no checkpoints'
+from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = 60, /'; set_in numerics "scheme = 'box'"; check
 begin 'gravity = 0, the box scheme (static direction undetermined)' 'gravity' 'box'
 from slow_315kN; add '&cable gravity = 0 /'; set_in numerics "scheme = 'box'"; check
 begin 'gravity = 0, a cable held at one end only (no static shape)' 'gravity = 0' 'held at one end'

@@ -131,6 +131,8 @@ module xcable_io_config
       logical :: energy = .false.
       !> Write gnuplot-ready text beside the HDF5 file.
       logical :: gnuplot = .false.
+      !> Wall-clock time between checkpoints of a rod run, s (0: none; SIGTERM still writes one).
+      real(dp) :: checkpoint_interval = 0
       !> Variables assigned in the file, as 'group%variable' names separated by blanks
       !> (so that "both given" and "not given" can be told apart from defaults).
       character(:), allocatable :: given

@@ -704,7 +704,7 @@ contains
       real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness
       character(len=16) :: law, compression, scheme, mass_matrix
       real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
-      real(dp) :: min_step_fraction, max_wall_time, interval, damping
+      real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval
       real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
       integer :: nodes, newton_max_iter
       logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot
@@ -716,7 +716,7 @@ contains
       namelist /rupture/ enabled, s_break, t_break, time
       namelist /numerics/ scheme, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
          reuse_jacobian, extrapolate, min_step_fraction, max_wall_time
-      namelist /output/ file, interval, fields, quiet, energy, gnuplot
+      namelist /output/ file, interval, fields, quiet, energy, gnuplot, checkpoint_interval
       integer :: unit, ios, ig
       character(len=512) :: msg
 
@@ -732,7 +732,7 @@ contains
       reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
       max_wall_time = c%max_wall_time
       file = c%file; interval = c%interval; fields = c%fields; quiet = c%quiet; energy = c%energy
-      gnuplot = c%gnuplot
+      gnuplot = c%gnuplot; checkpoint_interval = c%checkpoint_interval
 
       open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=msg)
       if (ios /= 0) then
@@ -783,7 +783,7 @@ contains
       c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction
       c%max_wall_time = max_wall_time
       c%file = file; c%interval = interval; c%fields = fields; c%quiet = quiet; c%energy = energy
-      c%gnuplot = gnuplot
+      c%gnuplot = gnuplot; c%checkpoint_interval = checkpoint_interval
    end subroutine read_groups
 
    !> Read &end_a or &end_b (the same variables) into one end.
@@ -885,6 +885,7 @@ contains
       case ('output%quiet'); call move(c%quiet, v, store)
       case ('output%energy'); call move(c%energy, v, store)
       case ('output%gnuplot'); call move(c%gnuplot, v, store)
+      case ('output%checkpoint_interval'); call move(c%checkpoint_interval, v, store)
       case default
          v%found = .false.
       end select
@@ -1630,9 +1631,14 @@ contains
    !> positions of free, force and mass ends) and tables without rows; a
    !> table read from a file is written inline, the file named in a comment.
    !> Read back, it gives the same case (with the table inline, not from the file).
-   function config_text(c) result(text)
+   !> With fingerprint, the variables that may differ between a run and its
+   !> resume (schema: resume_may_differ) are left out: the text a checkpoint
+   !> is checked against.
+   function config_text(c, fingerprint) result(text)
       !> The case.
       type(case_config), intent(in) :: c
+      !> Leave out what may differ on --resume (default: .false.).
+      logical, intent(in), optional :: fingerprint
       character(:), allocatable :: text
       integer, parameter :: width = 100
       character(len=*), parameter :: nl = new_line('a')
@@ -1642,6 +1648,9 @@ contains
       type(config_value) :: v
       character(:), allocatable :: block, comment, line, sep, token
       integer :: ig, i, k, n
+      logical :: skip_steering
+      skip_steering = .false.
+      if (present(fingerprint)) skip_steering = fingerprint
       t = schema_table()
       groups = schema_groups(t)
       text = ''
@@ -1654,6 +1663,7 @@ contains
          do i = 1, size(mine)
             associate (e => t(mine(i)))
                if (.not. echoed(c, e)) cycle
+               if (skip_steering .and. e%resume_may_differ) cycle
                if (e%name == 'table_file') then
                   comment = comment//"! &"//trim(e%group)//": the table was read from table_file = '"// &
                             get_text(c, e)//"'"//nl

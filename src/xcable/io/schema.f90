@@ -10,7 +10,10 @@
 !> entry here (the default written as the echo writes it), and in
 !> io/input.f90 one line of `access` plus the namelist read of its group
 !> (local, namelist statement, copy in and out); then `make schema`. The
-!> tests of suite input fail until all of these agree.
+!> tests of suite input fail until all of these agree. A variable that steers
+!> a run without changing what it computes (progress lines, limits of wall
+!> time, checkpoints) is marked resume_may_differ: a checkpoint is accepted
+!> by `xcable --resume` when every other variable is as it was.
 module xcable_io_schema
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
@@ -56,6 +59,9 @@ module xcable_io_schema
       character(len=40) :: default_means = ''
       !> Added to a range error: why the range is what it is.
       character(len=120) :: note = ''
+      !> Whether the value may differ between a run and its `xcable --resume` (it steers the run,
+      !> not what it computes: left out of the namelist fingerprint a checkpoint is checked against).
+      logical :: resume_may_differ = .false.
       !> Meaning, one line.
       character(len=320) :: doc = ''
    end type schema_entry
@@ -203,8 +209,9 @@ contains
                'the step control halves a failed step down to this fraction of dt (1/1024), then stops with a named '// &
                'error', 1.0e-9_dp, 1.0_dp)
       call add(t, 'numerics', 'max_wall_time', 'real', 's', '0', &
-               'wall-clock limit of the dynamics; checked before every step attempt', 0.0_dp, 1.0e7_dp, &
-               lower_open=.true., zero_means='no limit')
+               'wall-clock limit of the dynamics of one process (a resumed run counts from its resume); checked '// &
+               'before every step attempt', 0.0_dp, 1.0e7_dp, lower_open=.true., zero_means='no limit', &
+               resume_may_differ=.true.)
       ! &output
       call add(t, 'output', 'file', 'string', '-', "''", 'HDF5 result file (its directory must exist)', length=512, &
                zero_means='results/<namelist stem>.h5')
@@ -213,14 +220,19 @@ contains
       call add(t, 'output', 'fields', 'string', '-', "'"//join(known_fields)//"'", &
                'snapshot fields to write, separated by blanks or commas', length=256, choices=join(known_fields), &
                word_list=.true.)
-      call add(t, 'output', 'quiet', 'logical', '-', '.false.', 'no progress lines on stderr (use in batch)')
+      call add(t, 'output', 'quiet', 'logical', '-', '.false.', 'no progress lines on stderr (use in batch)', &
+               resume_may_differ=.true.)
       call add(t, 'output', 'energy', 'logical', '-', '.false.', 'keep the energy ledger in the history')
       call add(t, 'output', 'gnuplot', 'logical', '-', '.false.', 'also write gnuplot-ready text beside the HDF5 file')
+      call add(t, 'output', 'checkpoint_interval', 'real', 's', '0', &
+               'wall-clock time between checkpoints of a rod run (the file &output file + .ckpt, for xcable '// &
+               '--resume); a rod run also writes one when it gets SIGTERM, whatever this says', 0.0_dp, 1.0e7_dp, &
+               lower_open=.true., zero_means='none', resume_may_differ=.true.)
    end function schema_table
 
    !> Append an entry. A number is bounded when lower and upper are given.
    subroutine add(t, group, name, type, unit, default, doc, lower, upper, count, length, choices, word_list, &
-                  lower_open, upper_from, zero_means, default_means, note)
+                  lower_open, upper_from, zero_means, default_means, note, resume_may_differ)
       !> The table.
       type(schema_entry), allocatable, intent(inout) :: t(:)
       !> Group, variable, type, unit, default (as the echo writes it) and meaning.
@@ -237,6 +249,8 @@ contains
       logical, intent(in), optional :: lower_open
       !> Variable that gives the upper bound, what 0 stands for, what the default stands for, why the range.
       character(*), intent(in), optional :: upper_from, zero_means, default_means, note
+      !> Whether it may differ between a run and its resume.
+      logical, intent(in), optional :: resume_may_differ
       type(schema_entry) :: e
       e%group = group
       e%name = name
@@ -258,6 +272,7 @@ contains
       if (present(zero_means)) e%zero_means = zero_means
       if (present(default_means)) e%default_means = default_means
       if (present(note)) e%note = note
+      if (present(resume_may_differ)) e%resume_may_differ = resume_may_differ
       t = [t, e]
    end subroutine add
 
@@ -476,6 +491,7 @@ contains
       row = '| '//heading//' | `'//trim(e%name)//'` | '//type//' | '//trim(e%unit)//' | '//default//' | '// &
             allowed//' | '//trim(e%doc)
       if (len_trim(e%note) > 0) row = row//' ('//trim(e%note)//')'
+      if (e%resume_may_differ) row = row//'; may differ on --resume'
       row = escape_tags(row//' |')
    end function markdown_row
 

@@ -1,6 +1,7 @@
 !> xcable: dynamics of a highly extensible cable from a namelist.
 !>
 !>   xcable case.nml
+!>   xcable --resume case.nml       (continue from the checkpoint of case.nml's result file)
 !>   xcable --check case.nml        (validate the case, solve its statics, and exit)
 !>   xcable --schema markdown|tsv   (the input table: README's, or the sweep scripts')
 !>   xcable --version               (the version, the compiler and its options)
@@ -8,7 +9,14 @@
 !> Exit codes: 0 complete (warnings, if any, on stderr and in the file);
 !> 1 numerical failure (the result file says 'failed', with the reason and
 !> the time; or no file when the statics fails); 2 bad input or output path
-!> (no result file).
+!> (no result file), or a checkpoint that --resume refuses (nothing changed);
+!> 3 interrupted by SIGTERM (rod scheme): a checkpoint was written and the
+!> result file says 'interrupted'; `xcable --resume case.nml` continues.
+!>
+!> Checkpoints (rod scheme): the file &output file + '.ckpt', written every
+!> &output checkpoint_interval seconds of wall time and when SIGTERM arrives;
+!> removed when the run completes or fails. A new run (without --resume)
+!> removes a checkpoint left by an earlier one of the same result file.
 program xcable_main
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, stat_input, stat_io
@@ -19,6 +27,8 @@ program xcable_main
    use xcable_run_records, only: run_summary, run_history, static_info
    use xcable_app_output, only: app_output
    use xcable_version, only: version_lines
+   use xcable_io_checkpoint, only: checkpoint_path, remove_checkpoint
+   use xcable_system_posix, only: install_termination_handler, new_run_id
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
 
@@ -29,27 +39,30 @@ program xcable_main
    type(run_summary), pointer :: summary
    type(run_history), pointer :: history
    type(static_info), pointer :: info
-   character(len=4096) :: path
+   character(len=4096) :: path, option
+   character(:), allocatable :: checkpoint, fingerprint, run_id, problem
    integer :: nargs, steps
    real(dp) :: dt
-   logical :: check_only
-   character(len=*), parameter :: usage = 'usage: xcable [--check] <case.nml>   (--check: validate only; '// &
-                                          'see README.md for the namelist groups); xcable --schema markdown|tsv; '// &
-                                          'xcable --version'
+   logical :: check_only, resume, exists, rod
+   character(len=*), parameter :: usage = 'usage: xcable [--check | --resume] <case.nml>   (--check: validate only; '// &
+                                          '--resume: continue from the checkpoint; see README.md for the namelist '// &
+                                          'groups); xcable --schema markdown|tsv; xcable --version'
 
    nargs = command_argument_count()
    call schema_option()
    check_only = .false.
+   resume = .false.
    if (nargs == 2) then
-      call get_command_argument(1, path)
-      check_only = trim(path) == '--check'
+      call get_command_argument(1, option)
+      check_only = trim(option) == '--check'
+      resume = trim(option) == '--resume'
    end if
-   if (.not. (nargs == 1 .or. check_only)) then
+   if (.not. (nargs == 1 .or. check_only .or. resume)) then
       write (error_unit, '(a)') usage
       stop 2, quiet=.true.
    end if
    call get_command_argument(nargs, path)
-   if (trim(path) == '--help' .or. trim(path) == '-h') then
+   if (nargs == 1 .and. (trim(path) == '--help' .or. trim(path) == '-h')) then
       write (output_unit, '(a)') usage
       stop
    end if
@@ -74,20 +87,54 @@ program xcable_main
    end if
 
    output%quiet = config%quiet
-   call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), config%gnuplot, &
-                      trim(config%scheme), sim%terms, sim%piece_starts(), error)
-   if (allocated(error)) then
-      call output%finish('failed', error%message)
-      call fail_input(error)
+   rod = sim%scheme /= 'box'
+   checkpoint = checkpoint_path(trim(config%file))
+   fingerprint = config_text(config, fingerprint=.true.)
+   if (resume) then
+      ! Everything is checked before the result file is touched.
+      inquire (file=checkpoint, exist=exists)
+      if (.not. exists) call fail_text(trim(path)//': no checkpoint '//checkpoint//' to resume from (a rod run '// &
+                                       'writes one every &output checkpoint_interval seconds and when it gets '// &
+                                       'SIGTERM); run without --resume')
+      call sim%enable_checkpoints(checkpoint, fingerprint, '', config%checkpoint_interval, on_termination=.true.)
+      call sim%resume(checkpoint, fingerprint, run_id, error)
+      if (allocated(error)) call fail_input(error)
+      call output%reopen(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
+                         config%gnuplot, sim%piece_starts(), sim%snapshots_written(), run_id, error)
+      if (allocated(error)) then
+         if (error%stat == stat_input) call fail_input(error)
+         call fail_run(error, sim%rod%t)
+      end if
+      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: resuming from '//checkpoint//' at t = '// &
+         str(sim%rod%t)//' s (step '//str(sim%rod%history%n)//')'
+   else
+      ! A checkpoint of an earlier run of this result file no longer fits it.
+      call remove_checkpoint(checkpoint)
+      run_id = new_run_id()
+      call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
+                         config%gnuplot, trim(config%scheme), sim%terms, sim%piece_starts(), error, run_id=run_id)
+      if (allocated(error)) then
+         call output%finish('failed', error%message)
+         call fail_input(error)
+      end if
+      if (rod) call sim%enable_checkpoints(checkpoint, fingerprint, run_id, config%checkpoint_interval, &
+                                           on_termination=.true.)
+      info => sim%static()
+      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(info%span)// &
+         ' m, sag '//str(info%sag)//' m; dynamics with the '//trim(config%scheme)//' scheme, '// &
+         str(config%nodes)//' nodes, dt '//str(dt)//' s'
    end if
-   info => sim%static()
-   if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(info%span)// &
-      ' m, sag '//str(info%sag)//' m; dynamics with the '//trim(config%scheme)//' scheme, '// &
-      str(config%nodes)//' nodes, dt '//str(dt)//' s'
+   ! SIGTERM (a batch system's time limit): the rod run writes a checkpoint and stops.
+   if (rod) then
+      problem = install_termination_handler()
+      if (len(problem) > 0) write (error_unit, '(a)') 'xcable: warning: '//problem//': SIGTERM ends the run '// &
+         'without a checkpoint'
+   end if
 
    call sim%run(output, error)
    summary => sim%summary()
    history => sim%history()
+   if (sim%interrupted) call stop_interrupted()
    ! A failed run keeps its history and summary too; the first error is reported.
    call output%write_history(history, write_error)
    if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
@@ -99,6 +146,8 @@ program xcable_main
       write (error_unit, '(a)') 'xcable: error: '//error%message
       stop 1, quiet=.true.
    end if
+   ! Complete: the checkpoint has served (the status is written first).
+   call remove_checkpoint(checkpoint)
    call print_warnings(summary%warnings)
    if (.not. config%quiet) write (error_unit, '(a)') 'xcable: complete in '//str(summary%wall_time)//' s: '// &
       str(summary%steps)//' steps, peak end speed '//str(summary%peak_end_speed)//' m/s, results in '//trim(config%file)
@@ -136,18 +185,46 @@ contains
    !> Bad input: one line on stderr, exit code 2.
    subroutine fail_input(err)
       type(error_type), intent(in) :: err
-      write (error_unit, '(a)') 'xcable: error: '//err%message
-      stop 2, quiet=.true.
+      call fail_text(err%message)
    end subroutine fail_input
 
+   !> One line on stderr, exit code 2.
+   subroutine fail_text(message)
+      character(*), intent(in) :: message
+      write (error_unit, '(a)') 'xcable: error: '//message
+      stop 2, quiet=.true.
+   end subroutine fail_text
+
    !> Numerical failure: mark the file failed, one line on stderr, exit code 1.
+   !> A failed run keeps no checkpoint (resuming would fail again).
    subroutine fail_run(err, time)
       type(error_type), intent(in) :: err
       real(dp), intent(in) :: time
       call output%finish('failed', err%message, time, summary%warnings)
+      call remove_checkpoint(checkpoint)
       write (error_unit, '(a)') 'xcable: failed at t = '//str(time)//' s: '//err%message
       call print_warnings(summary%warnings)
       if (err%stat == stat_input .or. err%stat == stat_io) stop 2, quiet=.true.
       stop 1, quiet=.true.
    end subroutine fail_run
+
+   !> SIGTERM: the checkpoint is written; the file gets the summary so far and
+   !> the status 'interrupted'; exit code 3.
+   subroutine stop_interrupted()
+      call output%write_summary(summary, history%end_labels, write_error)
+      if (allocated(write_error)) then
+         write (error_unit, '(a)') 'xcable: interrupted (SIGTERM) at t = '//str(summary%time_reached)// &
+            ' s, checkpoint '//checkpoint//' written, but: '//write_error%message
+         stop 1, quiet=.true.
+      end if
+      call output%finish('interrupted', warnings=summary%warnings, error=write_error)
+      if (allocated(write_error)) then
+         write (error_unit, '(a)') 'xcable: interrupted (SIGTERM) at t = '//str(summary%time_reached)// &
+            ' s, checkpoint '//checkpoint//' written, but: '//write_error%message
+         stop 1, quiet=.true.
+      end if
+      write (error_unit, '(a)') 'xcable: interrupted (SIGTERM) at t = '//str(summary%time_reached)//' s; checkpoint '// &
+         checkpoint//'; continue with: xcable --resume '//trim(path)
+      stop 3, quiet=.true.
+   end subroutine stop_interrupted
 end program xcable_main

@@ -43,10 +43,16 @@ module xcable_rod_run
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
                                  n_end_quantities
    use xcable_theory, only: wave_speed
+   use xcable_io_archive, only: state_archive
+   use xcable_system_posix, only: termination_requested
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: rod_run, rod_run_options
+   public :: rod_run, rod_run_options, run_progress
+
+   !> Why advance returned: the run ended (t_end or an error), a checkpoint is
+   !> due, or SIGTERM arrived.
+   integer, parameter, public :: pause_none = 0, pause_checkpoint = 1, pause_termination = 2
 
    !> Most time steps a run may ask for.
    integer, parameter, public :: max_steps = 1000000
@@ -77,7 +83,38 @@ module xcable_rod_run
       logical :: energy = .false.
       !> Smallest step of the step control, as a fraction of dt; wall-clock limit (s, 0: none).
       real(dp) :: min_step_fraction = 1.0_dp/1024, max_wall_time = 0
+      !> Pause for a checkpoint every this many seconds of wall time (0: never).
+      real(dp) :: checkpoint_interval = 0
+      !> Pause for a checkpoint every this many accepted steps (0: never). Not a namelist variable:
+      !> the tests' way to checkpoint at a known step.
+      integer :: checkpoint_steps = 0
+      !> Pause when SIGTERM has arrived (the program installs the handler, system/posix.f90).
+      logical :: stop_on_termination = .false.
    end type rod_run_options
+
+   !> Where the step loop stands between two steps: what it carries from one
+   !> step to the next besides the state of the pieces (kept in a checkpoint).
+   type :: run_progress
+      !> Step the step control tries next, s.
+      real(dp) :: h = 0
+      !> Steps accepted since the step was last halved (it doubles after four), and attempts
+      !> rejected since the last accepted step.
+      integer :: n_good = 0, rejected_here = 0
+      !> Index of the next snapshot (snapshot_time); snapshots 0 .. snapshot_index - 1 are written.
+      integer :: snapshot_index = 1
+      !> Wall time of the dynamics in the processes before this one (a resumed run), s.
+      real(dp) :: wall_before = 0
+   end type run_progress
+
+   !> The wall clock of this process's part of a run (not kept in a checkpoint).
+   type :: run_clock
+      !> Clock count at the start (or the resume) and counts per second.
+      integer(i8) :: start = 0, rate = 1
+      !> Wall time (s, from start) of the last progress report and of the last checkpoint pause.
+      real(dp) :: last_report = 0, last_checkpoint = 0
+      !> History records at the last checkpoint pause (the next needs a step more).
+      integer :: records_at_checkpoint = 0
+   end type run_clock
 
    !> One piece of cable in a run.
    type :: piece_run
@@ -126,14 +163,30 @@ module xcable_rod_run
       real(dp) :: work = 0, dissipation = 0
       !> Whether the break has happened.
       logical :: broken = .false.
+      !> Force (N; x, z of each) and couple (N m) the break's new ends start from (cut a, cut b).
+      real(dp) :: cut_force(2, 2) = 0, cut_couple(2) = 0
       !> History and summary.
       type(run_history) :: history
       type(run_summary) :: summary
+      !> Where the step loop stands, and this process's clock.
+      type(run_progress) :: progress
+      type(run_clock) :: clock
+      !> Fields of a snapshot (n_out, n_fields).
+      real(dp), allocatable :: buffer(:, :)
    contains
       !> Statics, the time step and the pieces (before any output).
       procedure :: prepare => run_prepare
-      !> The dynamics to t_end.
+      !> The dynamics to t_end (start, advance until done, finish).
       procedure :: run => run_dynamics
+      !> The parts of run: the records of t = 0; the steps until t_end or a pause; the summary.
+      procedure :: start => run_start
+      procedure :: advance => run_advance
+      procedure :: finish => run_finish
+      !> Wall time of the dynamics so far (all processes of a resumed run), s.
+      procedure :: wall_time => run_wall_time
+      !> The state between two steps to an archive, and back into a prepared run.
+      procedure :: save_state => run_save_state
+      procedure :: load_state => run_load_state
       !> Fields on the output nodes.
       procedure :: fields => run_fields
    end type rod_run
@@ -365,8 +418,10 @@ contains
       end if
    end function end_value
 
-   !> Integrate to t_end, sending snapshots to the observer. On error the
-   !> history and summary hold what was done.
+   !> Integrate to t_end, sending snapshots to the observer: start, advance
+   !> until done, finish. On error the history and summary hold what was
+   !> done. A run that is to write checkpoints goes through start (or
+   !> load_state), advance and finish itself (driver/simulation.f90).
    subroutine run_dynamics(self, observer, error)
       !> Run (prepared).
       class(rod_run), intent(inout) :: self
@@ -374,19 +429,32 @@ contains
       class(run_observer), intent(inout), optional :: observer
       !> Error when the run cannot go on.
       type(error_type), allocatable, intent(out) :: error
-      type(error_type), allocatable :: step_error
-      integer(i8) :: clock_start, clock_now, clock_rate
-      real(dp) :: h, h_try, wall, last_report, t_stop, max_rejections
-      integer :: snapshot_index, rejected_here, n_good, p, iterations, capacity
-      logical :: newton_failed, kept, any_kept, landing
-      real(dp), allocatable :: buffer(:, :)
-      character(:), allocatable :: reason
+      integer :: pause
+      call self%start(observer, error)
+      if (allocated(error)) return
+      do
+         call self%advance(observer, error, pause)
+         if (allocated(error) .or. pause == pause_none) exit
+      end do
+      call self%finish()
+   end subroutine run_dynamics
 
-      call system_clock(clock_start, clock_rate)
+   !> The start of the dynamics: the record of t = 0, the static state and
+   !> its snapshot to the observer, a break at t = 0, and the skip to a later
+   !> break when nothing moves before it.
+   subroutine run_start(self, observer, error)
+      !> Run (prepared).
+      class(rod_run), intent(inout) :: self
+      !> Receives the static state and the snapshots before the break.
+      class(run_observer), intent(inout), optional :: observer
+      !> Error when the output fails.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: capacity
+      call system_clock(self%clock%start, self%clock%rate)
       self%t = 0
       self%work = 0
       self%dissipation = 0
-      allocate (buffer(self%n_out, n_fields))
+      self%progress = run_progress(h=self%dt)
       call start_history(self)
       if (present(observer)) then
          call observer%static(self%info, error)
@@ -396,12 +464,6 @@ contains
       end if
       capacity = int(min(self%options%t_end/self%dt, real(max_steps, dp))) + 16
       call self%history%reserve(capacity, size(self%history%end_labels), self%options%energy)
-      max_rejections = 1000 + self%options%t_end/self%dt
-      snapshot_index = 1
-      h = self%dt
-      n_good = 0
-      rejected_here = 0
-      last_report = 0
       ! A break at t = 0 happens before the first step.
       if (self%scene%breaks .and. self%scene%break_time <= 0) then
          call split(self, error)
@@ -409,133 +471,481 @@ contains
       end if
       ! Nothing moves before a break if no end moves or changes its load: skip to it.
       if (self%scene%breaks .and. .not. self%broken .and. .not. ends_change(self)) then
-         call emit_snapshots(self%scene%break_time, .true.)
+         call emit_snapshots(self, observer, self%scene%break_time, .true., error)
          if (allocated(error)) return
          self%t = self%scene%break_time
          call record(self, 0, 0, self%t - self%history%time(self%history%n))
          call split(self, error)
          if (allocated(error)) return
       end if
+      self%clock%records_at_checkpoint = self%history%n
+   end subroutine run_start
 
-      do while (self%t < self%options%t_end*(1 - 1.0e-12_dp))
-         call system_clock(clock_now)
-         wall = real(clock_now - clock_start, dp)/clock_rate
-         if (self%options%max_wall_time > 0 .and. wall > self%options%max_wall_time) then
-            call fatal_error(error, 'wall-clock limit of '//str(self%options%max_wall_time)//' s reached at t = '// &
-                             str(self%t)//' s', stat_numerics)
-            exit
-         end if
-         ! Land on t_end and on the start of the break.
-         t_stop = self%options%t_end
-         if (self%scene%breaks .and. .not. self%broken .and. self%scene%break_time > self%t) &
-            t_stop = min(t_stop, self%scene%break_time)
-         h_try = h
-         landing = self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*h
-         if (landing) h_try = t_stop - self%t
-         if (.not. (self%t + h_try > self%t)) then
-            call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
-                             str(self%t)//' s', stat_numerics)
-            exit
-         end if
-         ! One attempt on every piece.
-         newton_failed = .false.
-         any_kept = .false.
-         iterations = 0
-         do p = 1, size(self%pieces)
-            call attempt(self, p, h_try, kept, iterations, step_error)
-            any_kept = any_kept .or. kept
-            if (allocated(step_error)) then
-               newton_failed = .true.
+   !> Time steps until t_end, an error, or a pause: the SIGTERM flag is set
+   !> (with options%stop_on_termination) or a checkpoint is due (every
+   !> options%checkpoint_interval seconds of wall time, or every
+   !> options%checkpoint_steps accepted steps), checked before every step
+   !> attempt, where the state is complete (a checkpoint needs at least one
+   !> step since the last). After a pause the state can be saved
+   !> (save_state) and advance called again.
+   subroutine run_advance(self, observer, error, pause)
+      !> Run (started, or loaded from a checkpoint).
+      class(rod_run), intent(inout) :: self
+      !> Receives the snapshots.
+      class(run_observer), intent(inout), optional :: observer
+      !> Error when the run cannot go on.
+      type(error_type), allocatable, intent(out) :: error
+      !> Why it returned: pause_none (t_end or an error), pause_checkpoint or pause_termination.
+      integer, intent(out) :: pause
+      type(error_type), allocatable :: step_error
+      integer(i8) :: clock_now
+      real(dp) :: h_try, wall, t_stop, max_rejections
+      integer :: p, iterations
+      logical :: newton_failed, kept, any_kept, landing, due
+      character(:), allocatable :: reason
+
+      pause = pause_none
+      max_rejections = 1000 + self%options%t_end/self%dt
+      associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
+         do while (self%t < self%options%t_end*(1 - 1.0e-12_dp))
+            call system_clock(clock_now)
+            wall = real(clock_now - self%clock%start, dp)/self%clock%rate
+            if (self%options%max_wall_time > 0 .and. wall > self%options%max_wall_time) then
+               call fatal_error(error, 'wall-clock limit of '//str(self%options%max_wall_time)//' s reached at t = '// &
+                                str(self%t)//' s', stat_numerics)
                exit
             end if
-         end do
-         if (.not. allocated(step_error)) call check_state(self, h_try, step_error)
-         if (allocated(step_error)) then
-            self%summary%rejected_steps = self%summary%rejected_steps + 1
-            rejected_here = rejected_here + 1
-            do p = 1, size(self%pieces)
-               self%pieces(p)%work%usable = .false.
-            end do
-            reason = step_error%message
-            deallocate (step_error)
-            if (self%summary%rejected_steps > max_rejections) then
-               call fatal_error(error, 'step control: '//str(self%summary%rejected_steps)//' rejected attempts by t = '// &
-                                str(self%t)//' s: the step stays far below dt = '//str(self%dt)//' s; last: '//reason// &
-                                '; try a smaller dt or courant, or theta = 0.55', stat_numerics)
-               exit
-            end if
-            if (newton_failed .and. any_kept) cycle
-            h = 0.5_dp*h
-            n_good = 0
-            if (h < self%dt*self%options%min_step_fraction) then
-               call fatal_error(error, 'step control: step fell below '//str(self%dt*self%options%min_step_fraction)// &
-                                ' s at t = '//str(self%t)//' s after '//str(rejected_here)//' rejected attempts; last: '// &
-                                reason//'; try a smaller dt or courant, more nodes, or theta = 0.55', stat_numerics)
-               exit
-            end if
-            cycle
-         end if
-         ! Accept: snapshots inside the step, then the new level.
-         call accept(self, h_try)
-         call emit_snapshots(self%t + h_try, .false.)
-         if (allocated(error)) exit
-         self%t = self%t + h_try
-         if (abs(self%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) self%t = t_stop
-         ! The step taken: a step shortened only to land on t_end or the break is not a change of dt.
-         if (.not. landing) self%summary%dt_used = max(self%summary%dt_used, h_try)
-         if (h < self%dt) then
-            n_good = n_good + 1
-            if (n_good >= 4) then
-               h = min(2*h, self%dt)
-               n_good = 0
-            end if
-         end if
-         call record(self, iterations, rejected_here, h_try)
-         rejected_here = 0
-         if (self%scene%breaks .and. .not. self%broken .and. self%t >= self%scene%break_time*(1 - 1.0e-12_dp)) then
-            call split(self, error)
-            if (allocated(error)) exit
-         end if
-         call system_clock(clock_now)
-         wall = real(clock_now - clock_start, dp)/clock_rate
-         if (present(observer) .and. wall - last_report >= 1.0_dp) then
-            last_report = wall
-            call observer%progress(self%t, self%options%t_end, wall)
-         end if
-      end do
-      call system_clock(clock_now)
-      self%summary%wall_time = real(clock_now - clock_start, dp)/clock_rate
-      self%summary%time_reached = self%t
-      call summarise(self)
-
-   contains
-
-      !> Snapshots due up to time t_new: inside the step just accepted
-      !> (interpolated), or of the static state (static = .true.).
-      subroutine emit_snapshots(t_new, static)
-         real(dp), intent(in) :: t_new
-         logical, intent(in) :: static
-         real(dp) :: ts
-         do
-            ts = snapshot_time(self, snapshot_index)
-            if (ts > t_new*(1 + 1.0e-12_dp)) exit
-            if (static) then
-               buffer = self%info%fields
-            else
-               call interpolated_fields(self, ts, buffer)
-            end if
-            snapshot_index = snapshot_index + 1
-            if (present(observer)) then
-               call observer%snapshot(ts, buffer, step_error)
-               if (allocated(step_error)) then
-                  call prefix_error(step_error, 'output: ')
-                  call move_alloc(step_error, error)
+            ! A pause, where the state is that of an accepted step (or of the start).
+            if (self%options%stop_on_termination) then
+               if (termination_requested()) then
+                  pause = pause_termination
                   return
                end if
             end if
+            if (self%history%n > self%clock%records_at_checkpoint) then
+               due = .false.
+               if (self%options%checkpoint_interval > 0) &
+                  due = wall - self%clock%last_checkpoint >= self%options%checkpoint_interval
+               if (self%options%checkpoint_steps > 0) &
+                  due = due .or. self%history%n - self%clock%records_at_checkpoint >= self%options%checkpoint_steps
+               if (due) then
+                  self%clock%last_checkpoint = wall
+                  self%clock%records_at_checkpoint = self%history%n
+                  pause = pause_checkpoint
+                  return
+               end if
+            end if
+            ! Land on t_end and on the start of the break.
+            t_stop = self%options%t_end
+            if (self%scene%breaks .and. .not. self%broken .and. self%scene%break_time > self%t) &
+               t_stop = min(t_stop, self%scene%break_time)
+            h_try = h
+            landing = self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*h
+            if (landing) h_try = t_stop - self%t
+            if (.not. (self%t + h_try > self%t)) then
+               call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
+                                str(self%t)//' s', stat_numerics)
+               exit
+            end if
+            ! One attempt on every piece.
+            newton_failed = .false.
+            any_kept = .false.
+            iterations = 0
+            do p = 1, size(self%pieces)
+               call attempt(self, p, h_try, kept, iterations, step_error)
+               any_kept = any_kept .or. kept
+               if (allocated(step_error)) then
+                  newton_failed = .true.
+                  exit
+               end if
+            end do
+            if (.not. allocated(step_error)) call check_state(self, h_try, step_error)
+            if (allocated(step_error)) then
+               self%summary%rejected_steps = self%summary%rejected_steps + 1
+               rejected_here = rejected_here + 1
+               do p = 1, size(self%pieces)
+                  self%pieces(p)%work%usable = .false.
+               end do
+               reason = step_error%message
+               deallocate (step_error)
+               if (self%summary%rejected_steps > max_rejections) then
+                  call fatal_error(error, 'step control: '//str(self%summary%rejected_steps)//' rejected attempts by t = '// &
+                                   str(self%t)//' s: the step stays far below dt = '//str(self%dt)//' s; last: '//reason// &
+                                   '; try a smaller dt or courant, or theta = 0.55', stat_numerics)
+                  exit
+               end if
+               if (newton_failed .and. any_kept) cycle
+               h = 0.5_dp*h
+               n_good = 0
+               if (h < self%dt*self%options%min_step_fraction) then
+                  call fatal_error(error, 'step control: step fell below '//str(self%dt*self%options%min_step_fraction)// &
+                                   ' s at t = '//str(self%t)//' s after '//str(rejected_here)//' rejected attempts; last: '// &
+                                   reason//'; try a smaller dt or courant, more nodes, or theta = 0.55', stat_numerics)
+                  exit
+               end if
+               cycle
+            end if
+            ! Accept: snapshots inside the step, then the new level.
+            call accept(self, h_try)
+            call emit_snapshots(self, observer, self%t + h_try, .false., error)
+            if (allocated(error)) exit
+            self%t = self%t + h_try
+            if (abs(self%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) self%t = t_stop
+            ! The step taken: a step shortened only to land on t_end or the break is not a change of dt.
+            if (.not. landing) self%summary%dt_used = max(self%summary%dt_used, h_try)
+            if (h < self%dt) then
+               n_good = n_good + 1
+               if (n_good >= 4) then
+                  h = min(2*h, self%dt)
+                  n_good = 0
+               end if
+            end if
+            call record(self, iterations, rejected_here, h_try)
+            rejected_here = 0
+            if (self%scene%breaks .and. .not. self%broken .and. self%t >= self%scene%break_time*(1 - 1.0e-12_dp)) then
+               call split(self, error)
+               if (allocated(error)) exit
+            end if
+            call system_clock(clock_now)
+            wall = real(clock_now - self%clock%start, dp)/self%clock%rate
+            if (present(observer) .and. wall - self%clock%last_report >= 1.0_dp) then
+               self%clock%last_report = wall
+               call observer%progress(self%t, self%options%t_end, wall)
+            end if
          end do
-      end subroutine emit_snapshots
-   end subroutine run_dynamics
+      end associate
+   end subroutine run_advance
+
+   !> The end of the dynamics (also of one stopped by an error or a
+   !> termination): wall time, time reached, summary figures and warnings.
+   subroutine run_finish(self)
+      !> Run.
+      class(rod_run), intent(inout) :: self
+      self%summary%wall_time = self%wall_time()
+      self%summary%time_reached = self%t
+      call summarise(self)
+   end subroutine run_finish
+
+   !> Wall time of the dynamics so far, s: this process's and, for a resumed
+   !> run, that of the processes before.
+   function run_wall_time(self) result(wall)
+      !> Run.
+      class(rod_run), intent(in) :: self
+      real(dp) :: wall
+      integer(i8) :: clock_now
+      call system_clock(clock_now)
+      wall = self%progress%wall_before + real(clock_now - self%clock%start, dp)/self%clock%rate
+   end function run_wall_time
+
+   !> Save the state of the run between two steps (after a pause of
+   !> advance, or after start) to an archive: everything the next step and
+   !> the records depend on (see exchange_state). archive%ok tells whether
+   !> it was stored.
+   subroutine run_save_state(self, archive)
+      !> Run.
+      class(rod_run), intent(inout) :: self
+      !> Where the state goes.
+      class(state_archive), intent(inout) :: archive
+      type(error_type), allocatable :: error
+      call exchange_state(self, archive, .true., error)
+   end subroutine run_save_state
+
+   !> Load a state saved by save_state into a run prepared from the same case
+   !> (the same statics, grid and time step), ready for advance. Errors
+   !> (stat_input) when the archive fails or holds a state this run cannot
+   !> have.
+   subroutine run_load_state(self, archive, error)
+      !> Run, prepared.
+      class(rod_run), intent(inout) :: self
+      !> Where the state comes from.
+      class(state_archive), intent(inout) :: archive
+      !> Error.
+      type(error_type), allocatable, intent(out) :: error
+      call exchange_state(self, archive, .false., error)
+      if (allocated(error)) return
+      if (.not. archive%ok) then
+         call fatal_error(error, archive%message, stat_input)
+         return
+      end if
+      call system_clock(self%clock%start, self%clock%rate)
+      self%clock%last_report = 0
+      self%clock%last_checkpoint = 0
+      self%clock%records_at_checkpoint = self%history%n
+   end subroutine run_load_state
+
+   !> The state of a run, listed once for saving (saving = .true.) and
+   !> loading, so that the two cannot differ. It is what the step loop carries
+   !> from one step to the next:
+   !>  - time, step size asked for and the step control (progress: the step
+   !>    to try, the good steps since it was halved, the rejections since the
+   !>    last accepted step, the next snapshot, the wall time so far);
+   !>  - the break (whether it happened, the forces and couples its new ends
+   !>    start from) and so the pieces; per piece its positions and
+   !>    velocities at the current time, the reactions of its held ends, and
+   !>    Newton's kept factorisation when one is kept (reuse_jacobian): its
+   !>    LU factors and pivots, the contraction and the step it was made for;
+   !>  - the energy accumulators (work of the ends, dissipation);
+   !>  - the history (every record so far) and the summary's counters.
+   !> Not saved, because every step recomputes them before use: the pieces'
+   !> work arrays (old level, geometry, forces: prepare_step and the
+   !> residual), the Newton residual and update, the positions and
+   !> velocities of the previous time level (r_prev, v_prev: accept sets them
+   !> before the snapshots inside the step read them; the rod is a one-step
+   !> method). Not saved, because prepare computes them from the case: the
+   !> grid, the static state, the scene and its ends.
+   subroutine exchange_state(self, a, saving, error)
+      type(rod_run), intent(inout) :: self
+      class(state_archive), intent(inout) :: a
+      logical, intent(in) :: saving
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n_pieces, p, n, n_records, n_ends, flags(2), kb, expected_nodes(2)
+      real(dp) :: newton_reals(2), wall
+      character(:), allocatable :: prefix
+
+      call sync_real(a, 'run/t', self%t, saving)
+      call sync_real(a, 'run/dt', self%dt, saving)
+      call sync_real(a, 'run/work', self%work, saving)
+      call sync_real(a, 'run/dissipation', self%dissipation, saving)
+      call sync_logical(a, 'run/broken', self%broken, saving)
+      call sync_matrix(a, 'run/cut_force', self%cut_force, saving)
+      call sync_reals(a, 'run/cut_couple', self%cut_couple, saving)
+      call sync_real(a, 'progress/h', self%progress%h, saving)
+      call sync_int(a, 'progress/n_good', self%progress%n_good, saving)
+      call sync_int(a, 'progress/rejected_here', self%progress%rejected_here, saving)
+      call sync_int(a, 'progress/snapshot_index', self%progress%snapshot_index, saving)
+      ! The wall time of the dynamics so far (this process's and the earlier ones').
+      if (saving) wall = self%wall_time()
+      call sync_real(a, 'progress/wall_time', wall, saving)
+      if (.not. saving) self%progress%wall_before = wall
+
+      ! The pieces: one, or two after a break inside the cable.
+      n_pieces = 0
+      if (allocated(self%pieces)) n_pieces = size(self%pieces)
+      call sync_int(a, 'run/pieces', n_pieces, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         kb = self%break_node
+         if (self%broken .and. .not. self%scene%breaks) then
+            call fatal_error(error, 'the checkpoint holds a broken cable, the case has no break', stat_input)
+            return
+         end if
+         if (n_pieces /= merge(2, 1, self%broken .and. kb > 0)) then
+            call fatal_error(error, 'the checkpoint holds '//str(n_pieces)//' pieces of cable, this case '// &
+                             str(merge(2, 1, self%broken .and. kb > 0))//' at that stage', stat_input)
+            return
+         end if
+         self%pieces(1)%end_slot = [1, 2]
+         if (self%broken) call apply_split(self)
+      end if
+      expected_nodes = [self%options%nodes, 0]
+      if (n_pieces == 2) expected_nodes = [self%break_node, self%options%nodes - self%break_node + 1]
+      do p = 1, n_pieces
+         prefix = 'pieces/'//str(p)//'/'
+         associate (run_piece => self%pieces(p), work => self%pieces(p)%work)
+            n = run_piece%problem%piece%n
+            call sync_int(a, prefix//'nodes', n, saving)
+            if (.not. saving .and. a%ok .and. n /= expected_nodes(p)) then
+               call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in piece '//str(p)//', this case '// &
+                                str(expected_nodes(p)), stat_input)
+               return
+            end if
+            call sync_matrix(a, prefix//'r', run_piece%r, saving)
+            call sync_matrix(a, prefix//'v', run_piece%v, saving)
+            call sync_matrix(a, prefix//'reaction', run_piece%reaction, saving)
+            call sync_real(a, prefix//'tension_ref', run_piece%problem%piece%tension_ref, saving)
+            ! Newton's kept factorisation, when a kept one can be used (reuse_jacobian).
+            flags = merge(1, 0, [work%usable .and. self%options%newton%reuse_jacobian, work%jacobian%factorised])
+            newton_reals = [run_piece%factor_step, work%contraction]
+            call sync_ints(a, prefix//'newton_flags', flags, saving)
+            call sync_reals(a, prefix//'newton_reals', newton_reals, saving)
+            if (.not. saving) then
+               work%usable = flags(1) == 1
+               work%jacobian%factorised = flags(2) == 1
+               run_piece%factor_step = newton_reals(1)
+               work%contraction = newton_reals(2)
+            end if
+            if (flags(1) == 1) then
+               call sync_matrix(a, prefix//'jacobian', work%jacobian%ab, saving)
+               call sync_ints(a, prefix//'pivots', work%jacobian%ipiv, saving)
+            end if
+         end associate
+      end do
+
+      ! The history: every record so far.
+      n_records = self%history%n
+      call sync_int(a, 'history/n', n_records, saving)
+      n_ends = merge(4, 2, self%break_node > 0)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (n_records < 0 .or. a%stored_size('history/time') /= n_records + 1) then
+            call fatal_error(error, 'the checkpoint''s history has '//str(n_records)//' records but '// &
+                             str(a%stored_size('history/time'))//' times', stat_input)
+            return
+         end if
+         allocate (self%history%end_labels(n_ends))
+         self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
+         if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+         call self%history%reserve(max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, &
+                                   n_ends, self%options%energy)
+         self%history%n = n_records
+      end if
+      associate (h => self%history, m => n_records)
+         call sync_reals(a, 'history/time', h%time(0:m), saving)
+         call sync_reals(a, 'history/step', h%step(0:m), saving)
+         call sync_ints(a, 'history/newton_iterations', h%newton_iterations(0:m), saving)
+         call sync_ints(a, 'history/rejected', h%rejected(0:m), saving)
+         call sync_cube(a, 'history/ends', h%ends(:, :, 0:m), saving)
+         if (self%options%energy) call sync_matrix(a, 'history/energy', h%energy(:, 0:m), saving)
+      end associate
+
+      ! The summary's counters and extremes so far (summarise derives the rest at the end).
+      associate (s => self%summary)
+         call sync_int(a, 'summary/rejected_steps', s%rejected_steps, saving)
+         call sync_int(a, 'summary/newton_iterations', s%newton_iterations, saving)
+         call sync_int(a, 'summary/max_newton_iterations', s%max_newton_iterations, saving)
+         call sync_int(a, 'summary/factorisations', s%factorisations, saving)
+         call sync_real(a, 'summary/dt_requested', s%dt_requested, saving)
+         call sync_real(a, 'summary/dt_used', s%dt_used, saving)
+         call sync_real(a, 'summary/courant_requested', s%courant_requested, saving)
+         call sync_real(a, 'summary/max_turning_angle', s%max_turning_angle, saving)
+         call sync_real(a, 'summary/min_strain', s%min_strain, saving)
+         call sync_real(a, 'summary/max_strain', s%max_strain, saving)
+      end associate
+   end subroutine exchange_state
+
+   !> Put (saving) or get a real under a name.
+   subroutine sync_real(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x
+      logical, intent(in) :: saving
+      real(dp) :: buffer(1)
+      if (saving) then
+         call a%put_reals(name, [x])
+      else
+         call a%get_reals(name, buffer)
+         x = buffer(1)
+      end if
+   end subroutine sync_real
+
+   !> Put (saving) or get reals under a name.
+   subroutine sync_reals(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x(:)
+      logical, intent(in) :: saving
+      if (saving) then
+         call a%put_reals(name, x)
+      else
+         call a%get_reals(name, x)
+      end if
+   end subroutine sync_reals
+
+   !> Put (saving) or get a matrix under a name (stored column by column).
+   subroutine sync_matrix(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x(:, :)
+      logical, intent(in) :: saving
+      real(dp), allocatable :: buffer(:)
+      if (saving) then
+         call a%put_reals(name, reshape(x, [size(x)]))
+      else
+         allocate (buffer(size(x)))
+         call a%get_reals(name, buffer)
+         x = reshape(buffer, shape(x))
+      end if
+   end subroutine sync_matrix
+
+   !> Put (saving) or get a rank-3 array under a name.
+   subroutine sync_cube(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x(:, :, :)
+      logical, intent(in) :: saving
+      real(dp), allocatable :: buffer(:)
+      if (saving) then
+         call a%put_reals(name, reshape(x, [size(x)]))
+      else
+         allocate (buffer(size(x)))
+         call a%get_reals(name, buffer)
+         x = reshape(buffer, shape(x))
+      end if
+   end subroutine sync_cube
+
+   !> Put (saving) or get an integer under a name.
+   subroutine sync_int(a, name, i, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      integer, intent(inout) :: i
+      logical, intent(in) :: saving
+      integer :: buffer(1)
+      if (saving) then
+         call a%put_ints(name, [i])
+      else
+         call a%get_ints(name, buffer)
+         i = buffer(1)
+      end if
+   end subroutine sync_int
+
+   !> Put (saving) or get integers under a name.
+   subroutine sync_ints(a, name, i, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      integer, intent(inout) :: i(:)
+      logical, intent(in) :: saving
+      if (saving) then
+         call a%put_ints(name, i)
+      else
+         call a%get_ints(name, i)
+      end if
+   end subroutine sync_ints
+
+   !> Put (saving) or get a logical under a name (as 0 or 1).
+   subroutine sync_logical(a, name, flag, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      logical, intent(inout) :: flag
+      logical, intent(in) :: saving
+      integer :: buffer(1)
+      if (saving) then
+         call a%put_ints(name, [merge(1, 0, flag)])
+      else
+         call a%get_ints(name, buffer)
+         flag = buffer(1) == 1
+      end if
+   end subroutine sync_logical
+
+   !> Snapshots due up to time t_new: inside the step just accepted
+   !> (interpolated), or of the static state (static = .true.).
+   subroutine emit_snapshots(self, observer, t_new, static, error)
+      type(rod_run), intent(inout) :: self
+      class(run_observer), intent(inout), optional :: observer
+      real(dp), intent(in) :: t_new
+      logical, intent(in) :: static
+      type(error_type), allocatable, intent(inout) :: error
+      type(error_type), allocatable :: output_error
+      real(dp) :: ts
+      do
+         ts = snapshot_time(self, self%progress%snapshot_index)
+         if (ts > t_new*(1 + 1.0e-12_dp)) exit
+         if (.not. allocated(self%buffer)) allocate (self%buffer(self%n_out, n_fields))
+         if (static) then
+            self%buffer = self%info%fields
+         else
+            call interpolated_fields(self, ts, self%buffer)
+         end if
+         self%progress%snapshot_index = self%progress%snapshot_index + 1
+         if (present(observer)) then
+            call observer%snapshot(ts, self%buffer, output_error)
+            if (allocated(output_error)) then
+               call prefix_error(output_error, 'output: ')
+               call move_alloc(output_error, error)
+               return
+            end if
+         end if
+      end do
+   end subroutine emit_snapshots
 
    !> Time of snapshot i (i >= 1); huge when there is none.
    pure real(dp) function snapshot_time(self, i)
@@ -852,31 +1262,19 @@ contains
    subroutine split(self, error)
       type(rod_run), intent(inout) :: self
       type(error_type), allocatable, intent(out) :: error
-      type(piece_run), allocatable :: old(:)
-      type(force_end) :: cut_a, cut_b
       real(dp), allocatable :: x(:), res(:)
       type(band_matrix) :: unused
       integer :: n, kb
       real(dp) :: w_a, w_b, m_b
-      self%broken = .true.
       n = self%pieces(1)%problem%piece%n
       if (self%scene%break_at_a .or. self%scene%break_at_b) then
-         associate (piece => self%pieces(1)%problem%piece)
-            cut_a = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, &
-                              duration=self%scene%t_break)
-            if (self%scene%break_at_b) then
-               cut_a%force0 = self%pieces(1)%reaction(:, 2)
-               cut_a%label = 'end_b'
-               deallocate (piece%end_b)
-               allocate (piece%end_b, source=cut_a)
-            else
-               cut_a%force0 = self%pieces(1)%reaction(:, 1)
-               cut_a%label = 'end_a'
-               deallocate (piece%end_a)
-               allocate (piece%end_a, source=cut_a)
-            end if
-         end associate
-         self%pieces(1)%work%usable = .false.
+         ! The held end lets go with the support's force at the break time.
+         if (self%scene%break_at_b) then
+            self%cut_force(:, 1) = self%pieces(1)%reaction(:, 2)
+         else
+            self%cut_force(:, 1) = self%pieces(1)%reaction(:, 1)
+         end if
+         call apply_split(self)
          return
       end if
       ! Inside: the elastic cell forces at the current positions.
@@ -888,13 +1286,47 @@ contains
          w_a = 0.5_dp*piece%weight*piece%ds(kb - 1)
          w_b = 0.5_dp*piece%weight*piece%ds(kb)
          m_b = bend_moment(piece, kb, piece%th1(kb))
-         cut_a = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
-                           force0=piece%force(:, kb - 1) + [0.0_dp, w_a], couple0=m_b)
-         cut_b = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
-                           force0=-piece%force(:, kb) + [0.0_dp, w_b], couple0=-m_b)
+         self%cut_force(:, 1) = piece%force(:, kb - 1) + [0.0_dp, w_a]
+         self%cut_force(:, 2) = -piece%force(:, kb) + [0.0_dp, w_b]
+         self%cut_couple = [m_b, -m_b]
          ! The bending energy at the break node leaves with the cut: booked as work.
          self%work = self%work - bend_energy(piece, kb, piece%th1(kb))
       end associate
+      call apply_split(self)
+   end subroutine split
+
+   !> The pieces after the break, with new ends that start from self%cut_force
+   !> and cut_couple: the released end replaced (a break at an end), or the
+   !> piece cut in two at the break node, each new piece taking the positions,
+   !> velocities, output columns, history slots and reactions of its nodes.
+   !> Also rebuilds the pieces of a broken run loaded from a checkpoint.
+   subroutine apply_split(self)
+      type(rod_run), intent(inout) :: self
+      type(piece_run), allocatable :: old(:)
+      type(force_end) :: cut_a, cut_b
+      integer :: n, kb
+      self%broken = .true.
+      n = self%pieces(1)%problem%piece%n
+      cut_a = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
+                        force0=self%cut_force(:, 1), couple0=self%cut_couple(1))
+      if (self%scene%break_at_a .or. self%scene%break_at_b) then
+         associate (piece => self%pieces(1)%problem%piece)
+            if (self%scene%break_at_b) then
+               cut_a%label = 'end_b'
+               deallocate (piece%end_b)
+               allocate (piece%end_b, source=cut_a)
+            else
+               cut_a%label = 'end_a'
+               deallocate (piece%end_a)
+               allocate (piece%end_a, source=cut_a)
+            end if
+         end associate
+         self%pieces(1)%work%usable = .false.
+         return
+      end if
+      kb = self%break_node
+      cut_b = force_end(kind_name='break', history='ramp', t0=self%scene%break_time, duration=self%scene%t_break, &
+                        force0=self%cut_force(:, 2), couple0=self%cut_couple(2))
       cut_a%label = 'break_a'
       cut_b%label = 'break_b'
       call move_alloc(self%pieces, old)
@@ -920,7 +1352,7 @@ contains
       call self%pieces(1)%work%init(2*kb, rod_kl, rod_ku, spread(self%pieces(1)%problem%piece%length_ref, 1, 2*kb))
       call self%pieces(2)%work%init(2*(n - kb + 1), rod_kl, rod_ku, &
                                     spread(self%pieces(2)%problem%piece%length_ref, 1, 2*(n - kb + 1)))
-   end subroutine split
+   end subroutine apply_split
 
    !> Summary figures and warnings from the history.
    subroutine summarise(self)
@@ -930,10 +1362,15 @@ contains
       logical :: held_end
       n = self%history%n
       n_ends = size(self%history%end_labels)
+      ! Derived from the history afresh (also for a run summarised when it was interrupted).
+      if (allocated(self%summary%ends)) deallocate (self%summary%ends)
       allocate (self%summary%ends(n_ends))
       self%summary%steps = n
       self%summary%peak_end_speed = 0
+      self%summary%peak_end_speed_time = 0
       self%summary%min_fixed_end_tension = huge(1.0_dp)
+      self%summary%min_fixed_end_tension_time = 0
+      self%summary%front_arrival_time = -1
       do j = 1, n_ends
          associate (e => self%summary%ends(j))
             e%min_tension = self%history%ends(5, j, 0)

@@ -8,22 +8,46 @@
 !>
 !> prepare returns stat_input errors for an inconsistent case (nothing has
 !> been written yet) and stat_numerics when the statics fails.
+!>
+!> Checkpoints (rod scheme): after `enable_checkpoints`, run writes the
+!> state to a checkpoint file (io/checkpoint.f90) every so many seconds of
+!> wall time, and when SIGTERM arrives it writes one and stops (`interrupted`
+!> is then set). `resume` loads a checkpoint into a prepared simulation, so
+!> that run continues from it; the resumed run computes what the
+!> uninterrupted one would have, to the last bit on the same machine and
+!> build (the state saved is listed in driver/rod_run.f90, exchange_state).
 module xcable_simulation
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_scene, only: scene_type, scene_from_config
-   use xcable_rod_run, only: rod_run, rod_run_options
+   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination
    use xcable_box_run, only: box_run
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
+   use xcable_io_checkpoint, only: checkpoint_file
+   use xcable_version, only: code_version
    implicit none
    private
-   public :: simulation, run_options_from_config
+   public :: simulation, run_options_from_config, checkpoint_settings
 
    !> Inertia kept by the shortest wave (two cells) with the averaged mass
    !> matrix, as a fraction of the lumped one (model/rod.f90, docs/numerics.md).
    real(dp), parameter, public :: averaged_sawtooth_mass = 0.1_dp
+
+   !> Where and when a run writes checkpoints.
+   type :: checkpoint_settings
+      !> Path of the checkpoint file ('' : no checkpoints).
+      character(:), allocatable :: path
+      !> Wall time between checkpoints, s (0: none at intervals).
+      real(dp) :: interval = 0
+      !> Accepted steps between checkpoints (0: none; the tests' way to checkpoint at known steps).
+      integer :: every_steps = 0
+      !> Write one and stop when SIGTERM arrives (the program installs the handler).
+      logical :: on_termination = .false.
+      !> The case's namelist fingerprint (io/input.f90 config_text, fingerprint) and the run's identifier.
+      character(:), allocatable :: fingerprint, run_id
+   end type checkpoint_settings
 
    !> A run of a case.
    type :: simulation
@@ -34,9 +58,21 @@ module xcable_simulation
       type(box_run) :: box
       !> What the model computes, for the result file.
       character(:), allocatable :: terms
+      !> Checkpoints (rod scheme).
+      type(checkpoint_settings) :: checkpoints
+      !> Checkpoints written by this process.
+      integer :: checkpoints_written = 0
+      !> Whether the run continues from a checkpoint (resume), and whether it stopped at SIGTERM.
+      logical :: resumed = .false., interrupted = .false.
    contains
       procedure :: prepare => sim_prepare
       procedure :: run => sim_run
+      !> Write checkpoints during run (rod scheme).
+      procedure :: enable_checkpoints => sim_enable_checkpoints
+      !> Continue from a checkpoint: load it into the prepared run.
+      procedure :: resume => sim_resume
+      !> Snapshots written so far, the one at t = 0 included (after resume: those the checkpoint counts).
+      procedure :: snapshots_written => sim_snapshots_written
       !> Output node arc lengths.
       procedure :: output_s => sim_output_s
       !> Output columns where a new piece starts.
@@ -88,9 +124,13 @@ contains
       type(scene_type) :: scene
       type(rod_run) :: fresh_rod
       type(box_run) :: fresh_box
-      ! A simulation may be prepared again for another case.
+      ! A simulation may be prepared again for another case (checkpoints are enabled after prepare).
       self%rod = fresh_rod
       self%box = fresh_box
+      self%checkpoints = checkpoint_settings()
+      self%checkpoints_written = 0
+      self%resumed = .false.
+      self%interrupted = .false.
       self%scheme = trim(config%scheme)
       select case (self%scheme)
       case ('box')
@@ -127,13 +167,153 @@ contains
       class(run_observer), intent(inout), optional :: observer
       !> Error when the run cannot go on (the records hold what was done).
       type(error_type), allocatable, intent(out) :: error
+      integer :: pause
       select case (self%scheme)
       case ('box')
          call self%box%run(observer, error)
       case default
-         call self%rod%run(observer, error)
+         if (.not. allocated(self%checkpoints%path)) then
+            call self%rod%run(observer, error)
+            return
+         end if
+         if (.not. self%resumed) then
+            call self%rod%start(observer, error)
+            if (allocated(error)) return
+         end if
+         do
+            call self%rod%advance(observer, error, pause)
+            if (allocated(error) .or. pause == pause_none) exit
+            call write_checkpoint(self, error)
+            if (allocated(error)) exit
+            if (pause == pause_termination) then
+               self%interrupted = .true.
+               exit
+            end if
+         end do
+         call self%rod%finish()
       end select
    end subroutine sim_run
+
+   !> Write checkpoints to path during run: every interval seconds of wall
+   !> time (0: none), every every_steps accepted steps (0: none; tests), and,
+   !> with on_termination, when SIGTERM arrives (then the run stops and
+   !> interrupted is set). The rod scheme only (the box scheme refuses a
+   !> checkpoint interval in prepare and is left alone here).
+   subroutine sim_enable_checkpoints(self, path, fingerprint, run_id, interval, on_termination, every_steps)
+      !> Simulation (prepared).
+      class(simulation), intent(inout) :: self
+      !> Checkpoint file.
+      character(*), intent(in) :: path
+      !> Namelist fingerprint and identifier of the run, written into each checkpoint.
+      character(*), intent(in) :: fingerprint, run_id
+      !> Wall time between checkpoints, s (0: none at intervals).
+      real(dp), intent(in) :: interval
+      !> Stop with a checkpoint at SIGTERM.
+      logical, intent(in) :: on_termination
+      !> Accepted steps between checkpoints (0: none).
+      integer, intent(in), optional :: every_steps
+      if (self%scheme == 'box') return
+      self%checkpoints%path = path
+      self%checkpoints%fingerprint = fingerprint
+      self%checkpoints%run_id = run_id
+      self%checkpoints%interval = interval
+      self%checkpoints%on_termination = on_termination
+      self%checkpoints%every_steps = 0
+      if (present(every_steps)) self%checkpoints%every_steps = every_steps
+      self%rod%options%checkpoint_interval = interval
+      self%rod%options%checkpoint_steps = self%checkpoints%every_steps
+      self%rod%options%stop_on_termination = on_termination
+   end subroutine sim_enable_checkpoints
+
+   !> Write the state of the rod run to the checkpoint file (atomically).
+   subroutine write_checkpoint(self, error)
+      type(simulation), intent(inout) :: self
+      type(error_type), allocatable, intent(out) :: error
+      type(checkpoint_file) :: file
+      call file%create(self%checkpoints%path, code_version, self%checkpoints%fingerprint, self%checkpoints%run_id, &
+                       self%rod%t, error)
+      if (allocated(error)) return
+      call self%rod%save_state(file)
+      call file%commit(error)
+      if (.not. allocated(error)) self%checkpoints_written = self%checkpoints_written + 1
+   end subroutine write_checkpoint
+
+   !> Continue from the checkpoint at path (enable_checkpoints first: its path
+   !> is where later checkpoints go). Refuses (stat_input, nothing loaded
+   !> that matters: the caller stops) a file that cannot be read, is damaged,
+   !> was written by another version or for another namelist; run_id returns
+   !> the identifier of the run the checkpoint belongs to.
+   subroutine sim_resume(self, path, fingerprint, run_id, error)
+      !> Simulation (prepared).
+      class(simulation), intent(inout) :: self
+      !> Checkpoint file.
+      character(*), intent(in) :: path
+      !> The case's namelist fingerprint.
+      character(*), intent(in) :: fingerprint
+      !> Identifier of the run that wrote the checkpoint.
+      character(:), allocatable, intent(out) :: run_id
+      !> Error.
+      type(error_type), allocatable, intent(out) :: error
+      type(checkpoint_file) :: file
+      if (self%scheme == 'box') then
+         call fatal_error(error, path//': the box scheme writes no checkpoints and cannot resume', stat_input)
+         return
+      end if
+      call file%open(path, error)
+      if (allocated(error)) return
+      run_id = file%run_id
+      if (file%code_version /= code_version) then
+         call fatal_error(error, "checkpoint '"//path//"' was written by xcable "//file%code_version//', this is '// &
+                          code_version//': a checkpoint resumes only with the version that wrote it', stat_input)
+         call file%close()
+         return
+      end if
+      if (file%namelist /= fingerprint) then
+         call fatal_error(error, "checkpoint '"//path//"' was written for another case: "// &
+                          first_difference(file%namelist, fingerprint), stat_input)
+         call file%close()
+         return
+      end if
+      call self%rod%load_state(file, error)
+      if (allocated(error)) then
+         error%message = "checkpoint '"//path//"': "//error%message
+         call file%close()
+         return
+      end if
+      call file%verify(error)
+      if (allocated(error)) return
+      self%checkpoints%run_id = run_id
+      self%resumed = .true.
+   end subroutine sim_resume
+
+   !> Where two namelist texts first differ, as "line k: 'a' (checkpoint), 'b' (now)".
+   function first_difference(then, now) result(text)
+      character(*), intent(in) :: then, now
+      character(:), allocatable :: text
+      integer :: line, i, a0, b0, a1, b1
+      line = 1
+      a0 = 1
+      b0 = 1
+      do i = 1, min(len(then), len(now))
+         if (then(i:i) /= now(i:i)) exit
+         if (then(i:i) == new_line('a')) then
+            line = line + 1
+            a0 = i + 1
+            b0 = i + 1
+         end if
+      end do
+      a1 = index(then(a0:), new_line('a'))
+      a1 = merge(len(then), a0 + a1 - 2, a1 == 0)
+      b1 = index(now(b0:), new_line('a'))
+      b1 = merge(len(now), b0 + b1 - 2, b1 == 0)
+      text = 'the namelist differs in line '//str(line)//": '"//then(a0:a1)//"' (checkpoint), '"//now(b0:b1)// &
+             "' (now); the variables that may differ are marked in README's input table"
+   end function first_difference
+
+   integer function sim_snapshots_written(self) result(n)
+      class(simulation), intent(in) :: self
+      n = self%rod%progress%snapshot_index
+   end function sim_snapshots_written
 
    function sim_output_s(self) result(s)
       class(simulation), intent(in) :: self

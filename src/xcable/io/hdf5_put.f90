@@ -1,15 +1,18 @@
-!> Small writers of HDF5 datasets and attributes, shared by the result file
-!> (io/output.f90) and the sweep collector (example/sweep_collect.f90).
+!> Small writers and readers of HDF5 datasets and attributes, shared by the
+!> result file (io/output.f90), the checkpoints (io/checkpoint.f90) and the
+!> sweep collector (example/sweep_collect.f90).
 !>
 !> Each takes a logical `ok` that it clears on any HDF5 error and never sets,
 !> so that a caller can write many items and check once. Attributes are
-!> replaced if they exist (the status of a result file is rewritten).
+!> replaced if they exist (the status of a result file is rewritten). A
+!> reader of an absent attribute clears ok and leaves its value empty.
 module xcable_io_hdf5
    use xcable_kinds, only: dp
    use hdf5
    implicit none
    private
    public :: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, put_text_attr
+   public :: get_text_attr, get_real_attr, get_int_attr, delete_attr
 
 contains
 
@@ -191,6 +194,122 @@ contains
       call h5tclose_f(string_type, hdferr)
       call h5sclose_f(space, hdferr)
    end subroutine put_text_attr
+
+   !> A string attribute, trimmed ('' and ok cleared when absent or not a string).
+   subroutine get_text_attr(loc, name, text, ok)
+      !> File, group or dataset.
+      integer(hid_t), intent(in) :: loc
+      !> Attribute name.
+      character(*), intent(in) :: name
+      !> Value.
+      character(:), allocatable, intent(out) :: text
+      !> Cleared on an HDF5 error or an absent attribute.
+      logical, intent(inout) :: ok
+      integer(hid_t) :: attr, file_type, memory_type
+      integer(size_t) :: length
+      integer :: hdferr, class
+      logical :: exists
+      text = ''
+      call h5aexists_f(loc, name, exists, hdferr)
+      if (hdferr /= 0 .or. .not. exists) then
+         ok = .false.
+         return
+      end if
+      call h5aopen_f(loc, name, attr, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      call h5aget_type_f(attr, file_type, hdferr)
+      call h5tget_class_f(file_type, class, hdferr)
+      call h5tget_size_f(file_type, length, hdferr)
+      if (hdferr /= 0 .or. class /= H5T_STRING_F) then
+         ok = .false.
+      else
+         deallocate (text)
+         allocate (character(len=int(length)) :: text)
+         call h5tcopy_f(H5T_NATIVE_CHARACTER, memory_type, hdferr)
+         call h5tset_size_f(memory_type, length, hdferr)
+         call h5aread_f(attr, memory_type, text, [1_hsize_t], hdferr)
+         if (hdferr /= 0) then
+            ok = .false.
+            text = ''
+         end if
+         call h5tclose_f(memory_type, hdferr)
+         text = trim(text)
+      end if
+      call h5tclose_f(file_type, hdferr)
+      call h5aclose_f(attr, hdferr)
+   end subroutine get_text_attr
+
+   !> A real scalar attribute (0 and ok cleared when absent).
+   subroutine get_real_attr(loc, name, value, ok)
+      !> File, group or dataset.
+      integer(hid_t), intent(in) :: loc
+      !> Attribute name.
+      character(*), intent(in) :: name
+      !> Value.
+      real(dp), intent(out) :: value
+      !> Cleared on an HDF5 error or an absent attribute.
+      logical, intent(inout) :: ok
+      integer(hid_t) :: attr
+      integer :: hdferr
+      logical :: exists
+      value = 0
+      call h5aexists_f(loc, name, exists, hdferr)
+      if (hdferr /= 0 .or. .not. exists) then
+         ok = .false.
+         return
+      end if
+      call h5aopen_f(loc, name, attr, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      call h5aread_f(attr, H5T_NATIVE_DOUBLE, value, [1_hsize_t], hdferr)
+      if (hdferr /= 0) ok = .false.
+      call h5aclose_f(attr, hdferr)
+   end subroutine get_real_attr
+
+   !> An integer scalar attribute (0 and ok cleared when absent).
+   subroutine get_int_attr(loc, name, value, ok)
+      !> File, group or dataset.
+      integer(hid_t), intent(in) :: loc
+      !> Attribute name.
+      character(*), intent(in) :: name
+      !> Value.
+      integer, intent(out) :: value
+      !> Cleared on an HDF5 error or an absent attribute.
+      logical, intent(inout) :: ok
+      integer(hid_t) :: attr
+      integer :: hdferr
+      logical :: exists
+      value = 0
+      call h5aexists_f(loc, name, exists, hdferr)
+      if (hdferr /= 0 .or. .not. exists) then
+         ok = .false.
+         return
+      end if
+      call h5aopen_f(loc, name, attr, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      call h5aread_f(attr, H5T_NATIVE_INTEGER, value, [1_hsize_t], hdferr)
+      if (hdferr /= 0) ok = .false.
+      call h5aclose_f(attr, hdferr)
+   end subroutine get_int_attr
+
+   !> Delete an attribute if it exists (ok cleared on an HDF5 error).
+   subroutine delete_attr(loc, name, ok)
+      !> File, group or dataset.
+      integer(hid_t), intent(in) :: loc
+      !> Attribute name.
+      character(*), intent(in) :: name
+      !> Cleared on an HDF5 error.
+      logical, intent(inout) :: ok
+      call drop_attr(loc, name, ok)
+   end subroutine delete_attr
 
    !> Delete the attribute name of loc if it exists.
    subroutine drop_attr(loc, name, ok)

@@ -1,9 +1,11 @@
 !> HDF5 result file (and, when asked, gnuplot-ready text beside it).
 !>
 !> Layout (h5py reads 2-D datasets as [time, node]):
-!>   /  attributes status ('running', 'complete' or 'failed'), failure_reason,
-!>      failure_time, warnings, namelist, input_file, code_version,
-!>      compiler_version, compiler_options, scheme, terms
+!>   /  attributes status ('running', 'complete', 'failed' or 'interrupted'),
+!>      failure_reason, failure_time, warnings, namelist, input_file,
+!>      code_version, compiler_version, compiler_options, scheme, terms,
+!>      run_id (the run's identifier, also in its checkpoints), resumes (how
+!>      often it was resumed from a checkpoint)
 !>   /s, /time, and one 2-D dataset per field asked for in &output fields
 !>   /static/{s,x,z,tension,shear,strain,u,v,curvature} (+ beta0, beta3 of the
 !>      box scheme), attributes span, sag, end_angle, tension_a, tension_b,
@@ -13,14 +15,22 @@
 !>   /history/energy/{strain,kinetic,bending,gravity,work,dissipation,ledger} with the ledger
 !>   /summary attributes
 !> The status is 'running' from creation, so a run that is killed never looks
-!> complete. Only the fields asked for are written.
+!> complete; 'interrupted' (with /summary, without /history) when it stopped
+!> at SIGTERM with a checkpoint. Only the fields asked for are written.
+!>
+!> A resumed run reopens its file (reopen): the snapshots up to its
+!> checkpoint stay, those written after it (by a process killed later) are
+!> cut, as is the gnuplot text; /summary, /history and the failure and
+!> warning attributes of an earlier stop are removed; status 'running'.
 module xcable_io_output
    use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_io
+   use xcable_error, only: error_type, fatal_error, stat_io, stat_input
    use xcable_strings, only: str
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
                                  field_names, n_fields, n_end_quantities, end_quantity_names
-   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr
+   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr, &
+                             get_text_attr, get_int_attr, delete_attr
+   use xcable_system_posix, only: replace_file
    use xcable_version, only: code_version
    use hdf5
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
@@ -49,6 +59,7 @@ module xcable_io_output
       integer, allocatable :: piece_starts(:)
    contains
       procedure :: create => result_create
+      procedure :: reopen => result_reopen
       procedure :: static => result_static
       procedure :: snapshot => result_snapshot
       procedure :: write_history => result_write_history
@@ -59,7 +70,8 @@ module xcable_io_output
 contains
 
    !> Create the file (status 'running') and write the provenance.
-   subroutine result_create(self, path, s, fields, namelist_text, input_file, gnuplot, scheme, terms, piece_starts, error)
+   subroutine result_create(self, path, s, fields, namelist_text, input_file, gnuplot, scheme, terms, piece_starts, error, &
+                            run_id)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Path of the HDF5 file.
@@ -80,7 +92,9 @@ contains
       integer, intent(in) :: piece_starts(:)
       !> Error when the file cannot be created.
       type(error_type), allocatable, intent(out) :: error
-      integer :: hdferr, i, dot, ios, status
+      !> Identifier of the run (written as the attribute run_id; its checkpoints carry it too).
+      character(*), intent(in), optional :: run_id
+      integer :: hdferr, i, ios, status
       integer(hid_t) :: access
       character(len=256) :: msg
       logical :: ok
@@ -113,15 +127,14 @@ contains
       call put_text_attr(self%file, 'compiler_options', compiler_options(), ok)
       call put_text_attr(self%file, 'scheme', scheme, ok)
       call put_text_attr(self%file, 'terms', terms, ok)
+      if (present(run_id)) call put_text_attr(self%file, 'run_id', run_id, ok)
       call put_real_vector(self%file, 's', s, ok, 'm')
       if (.not. ok) then
          call fatal_error(error, "writing the provenance to '"//path//"' failed", stat_io)
          return
       end if
       if (gnuplot) then
-         dot = index(path, '.', back=.true.)
-         if (dot <= index(path, '/', back=.true.)) dot = len(path) + 1
-         self%text_stem = path(1:dot - 1)
+         self%text_stem = text_stem_of(path)
          open (newunit=self%text_unit, file=self%text_stem//'.snapshots.dat', status='replace', action='write', &
                iostat=ios, iomsg=msg)
          if (ios /= 0) then
@@ -142,6 +155,307 @@ contains
             'curvature[1/m]'
       end if
    end subroutine result_create
+
+   !> Reopen the result file of a run that continues from a checkpoint. It
+   !> must be the file of that run (run_id), not finished ('running' or
+   !> 'interrupted'), with at least the snapshots the checkpoint counts and
+   !> the same output nodes; with gnuplot text, its snapshot file must hold
+   !> them too. All of this is checked before anything is changed. Then the
+   !> snapshots after the checkpoint are cut (from the datasets and the
+   !> text), /summary and /history and the failure and warning attributes of
+   !> an earlier stop removed, the provenance updated (namelist, input_file;
+   !> resumes counted) and the status set to 'running'.
+   subroutine result_reopen(self, path, s, fields, namelist_text, input_file, gnuplot, piece_starts, snapshots, run_id, &
+                            error)
+      !> Result file.
+      class(result_file), intent(inout) :: self
+      !> Path of the HDF5 file.
+      character(*), intent(in) :: path
+      !> Output node arc lengths, m.
+      real(dp), intent(in) :: s(:)
+      !> Snapshot fields, separated by blanks or commas.
+      character(*), intent(in) :: fields
+      !> The resolved namelist (as the resumed run reads it).
+      character(*), intent(in) :: namelist_text
+      !> Namelist file of the case.
+      character(*), intent(in) :: input_file
+      !> Whether gnuplot text is written.
+      logical, intent(in) :: gnuplot
+      !> Output columns where a new piece starts (empty: one piece).
+      integer, intent(in) :: piece_starts(:)
+      !> Snapshots the checkpoint counts (the one at t = 0 included).
+      integer, intent(in) :: snapshots
+      !> Identifier of the run of the checkpoint.
+      character(*), intent(in) :: run_id
+      !> Error (stat_input) naming what does not fit; the file is then unchanged.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: hdferr, i, resumes, ios
+      logical :: ok, exists
+      character(:), allocatable :: status, stored_id, reason, lines(:)
+      character(len=*), parameter :: fresh = '; run without --resume to start again'
+      integer :: keep_lines
+      self%path = path
+      self%s = s
+      self%piece_starts = piece_starts
+      do i = 1, n_fields
+         self%want(i) = has_word(fields, trim(field_names(i)))
+      end do
+      inquire (file=path, exist=exists)
+      if (.not. exists) then
+         call fatal_error(error, "the result file '"//path//"' of the checkpoint is missing"//fresh, stat_input)
+         return
+      end if
+      call h5open_f(hdferr)
+      call h5eset_auto_f(0, hdferr)
+      call h5fopen_f(path, H5F_ACC_RDWR_F, self%file, hdferr)
+      if (hdferr /= 0) then
+         self%file = -1
+         call fatal_error(error, "the result file '"//path//"' cannot be opened for writing (damaged, or in use)"//fresh, &
+                          stat_input)
+         return
+      end if
+      ok = .true.
+      call get_text_attr(self%file, 'status', status, ok)
+      call get_text_attr(self%file, 'run_id', stored_id, ok)
+      if (.not. ok) then
+         call refuse("'"//path//"' has no status or run_id: not the result file of a run with checkpoints"//fresh)
+         return
+      end if
+      select case (status)
+      case ('running', 'interrupted')
+      case ('complete')
+         call refuse("the result file '"//path//"' is already complete: nothing to resume")
+         return
+      case ('failed')
+         ok = .true.
+         call get_text_attr(self%file, 'failure_reason', reason, ok)
+         call refuse("the result file '"//path//"' says the run failed ("//reason//'): resuming would fail again'//fresh)
+         return
+      case default
+         call refuse("the result file '"//path//"' has the status '"//status//"'"//fresh)
+         return
+      end select
+      if (stored_id /= run_id) then
+         call refuse("the result file '"//path//"' belongs to run "//stored_id//', the checkpoint to run '//run_id// &
+                     ' (the file was written again since)'//fresh)
+         return
+      end if
+      if (dataset_length(self%file, 's', 1) /= size(s)) then
+         call refuse("the result file '"//path//"' has other output nodes than this case"//fresh)
+         return
+      end if
+      if (dataset_length(self%file, 'time', 1) < snapshots) then
+         call refuse("the result file '"//path//"' holds "//str(max(dataset_length(self%file, 'time', 1), 0))// &
+                     ' snapshots, the checkpoint counts '//str(snapshots)//fresh)
+         return
+      end if
+      do i = 1, n_fields
+         if (.not. self%want(i)) cycle
+         if (dataset_length(self%file, trim(field_names(i)), 2) < snapshots) then
+            call refuse("the result file '"//path//"' lacks snapshots of "//trim(field_names(i))//fresh)
+            return
+         end if
+      end do
+      if (gnuplot) then
+         self%text_stem = text_stem_of(path)
+         call kept_text(self%text_stem//'.snapshots.dat', snapshots, lines, keep_lines, reason)
+         if (len(reason) > 0) then
+            call refuse(reason//fresh)
+            return
+         end if
+      end if
+      ! Checked: now change it.
+      call truncate(self%file, 'time', 1, snapshots, ok)
+      do i = 1, n_fields
+         if (self%want(i)) call truncate(self%file, trim(field_names(i)), 2, snapshots, ok)
+      end do
+      call delete_link(self%file, 'history', ok)
+      call delete_link(self%file, 'summary', ok)
+      call delete_attr(self%file, 'failure_reason', ok)
+      call delete_attr(self%file, 'failure_time', ok)
+      call delete_attr(self%file, 'warnings', ok)
+      resumes = 0
+      call get_int_attr(self%file, 'resumes', resumes, exists)
+      call put_int_attr(self%file, 'resumes', resumes + 1, ok)
+      call put_text_attr(self%file, 'namelist', namelist_text, ok)
+      call put_text_attr(self%file, 'input_file', input_file, ok)
+      call put_text_attr(self%file, 'status', 'running', ok)
+      call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
+      if (.not. ok .or. hdferr /= 0) then
+         call fatal_error(error, "reopening '"//path//"' to resume: an HDF5 write failed", stat_io)
+         return
+      end if
+      self%snapshots = snapshots
+      if (gnuplot) then
+         call rewrite_text(self%text_stem//'.snapshots.dat', lines(1:keep_lines), reason)
+         if (len(reason) == 0) open (newunit=self%text_unit, file=self%text_stem//'.snapshots.dat', status='old', &
+                                     position='append', action='write', iostat=ios)
+         if (len(reason) > 0 .or. ios /= 0) then
+            call fatal_error(error, 'cannot rewrite '//self%text_stem//'.snapshots.dat to resume (&output gnuplot)', &
+                             stat_io)
+            return
+         end if
+         self%gnuplot_text = .true.
+      end if
+
+   contains
+
+      !> Refuse: close the file unchanged.
+      subroutine refuse(message)
+         character(*), intent(in) :: message
+         call fatal_error(error, message, stat_input)
+         call h5fclose_f(self%file, hdferr)
+         self%file = -1
+      end subroutine refuse
+   end subroutine result_reopen
+
+   !> Number of snapshots of a dataset (rank 1: its length; rank 2: its second
+   !> dimension); -1 when it is missing or of another rank.
+   integer function dataset_length(loc, name, rank) result(n)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name
+      integer, intent(in) :: rank
+      integer(hid_t) :: dset, space
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer :: hdferr, stored_rank
+      n = -1
+      call h5dopen_f(loc, name, dset, hdferr)
+      if (hdferr /= 0) return
+      call h5dget_space_f(dset, space, hdferr)
+      call h5sget_simple_extent_ndims_f(space, stored_rank, hdferr)
+      if (stored_rank == rank) then
+         call h5sget_simple_extent_dims_f(space, dims(1:rank), maxdims(1:rank), hdferr)
+         if (hdferr >= 0) n = int(dims(rank))
+      end if
+      call h5sclose_f(space, hdferr)
+      call h5dclose_f(dset, hdferr)
+   end function dataset_length
+
+   !> Cut an extendible snapshot dataset to its first `keep` snapshots.
+   subroutine truncate(loc, name, rank, keep, ok)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name
+      integer, intent(in) :: rank, keep
+      logical, intent(inout) :: ok
+      integer(hid_t) :: dset, space
+      integer(hsize_t) :: dims(2), maxdims(2)
+      integer :: hdferr
+      call h5dopen_f(loc, name, dset, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      call h5dget_space_f(dset, space, hdferr)
+      call h5sget_simple_extent_dims_f(space, dims(1:rank), maxdims(1:rank), hdferr)
+      call h5sclose_f(space, hdferr)
+      dims(rank) = int(keep, hsize_t)
+      call h5dset_extent_f(dset, dims(1:rank), hdferr)
+      if (hdferr /= 0) ok = .false.
+      call h5dclose_f(dset, hdferr)
+   end subroutine truncate
+
+   !> Remove a group or dataset if it exists.
+   subroutine delete_link(loc, name, ok)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name
+      logical, intent(inout) :: ok
+      logical :: exists
+      integer :: hdferr
+      call h5lexists_f(loc, name, exists, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+      else if (exists) then
+         call h5ldelete_f(loc, name, hdferr)
+         if (hdferr /= 0) ok = .false.
+      end if
+   end subroutine delete_link
+
+   !> The lines of a gnuplot snapshot file that hold its first `keep` blocks
+   !> (the blank lines between blocks after the last kept one left out):
+   !> lines(1:count). reason is '' or why the file does not do.
+   subroutine kept_text(path, keep, lines, count, reason)
+      character(*), intent(in) :: path
+      integer, intent(in) :: keep
+      character(:), allocatable, intent(out) :: lines(:)
+      integer, intent(out) :: count
+      character(:), allocatable, intent(out) :: reason
+      character(len=512) :: line
+      character(len=512), allocatable :: all(:), grown(:)
+      integer :: unit, ios, n, blocks
+      reason = ''
+      count = 0
+      allocate (character(len=512) :: lines(0))
+      open (newunit=unit, file=path, status='old', action='read', iostat=ios)
+      if (ios /= 0) then
+         reason = 'the gnuplot text '//path//' of the run is missing'
+         return
+      end if
+      allocate (all(1024))
+      n = 0
+      blocks = 0
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         if (index(line, '# t = ') == 1) then
+            blocks = blocks + 1
+            if (blocks > keep) exit
+         end if
+         if (n == size(all)) then
+            allocate (grown(2*n))
+            grown(1:n) = all(1:n)
+            call move_alloc(grown, all)
+         end if
+         n = n + 1
+         all(n) = line
+      end do
+      close (unit)
+      if (blocks < keep) then
+         reason = 'the gnuplot text '//path//' holds '//str(blocks)//' snapshots, the checkpoint counts '//str(keep)
+         return
+      end if
+      do while (n > 0)
+         if (len_trim(all(n)) > 0) exit
+         n = n - 1
+      end do
+      deallocate (lines)
+      allocate (character(len=512) :: lines(n))
+      lines = all(1:n)
+      count = n
+   end subroutine kept_text
+
+   !> Write lines (trimmed) to path through path.tmp and a rename; reason '' or why not.
+   subroutine rewrite_text(path, lines, reason)
+      character(*), intent(in) :: path
+      character(len=*), intent(in) :: lines(:)
+      character(:), allocatable, intent(out) :: reason
+      integer :: unit, ios, i
+      reason = ''
+      open (newunit=unit, file=path//'.tmp', status='replace', action='write', iostat=ios)
+      if (ios /= 0) then
+         reason = 'cannot create '//path//'.tmp'
+         return
+      end if
+      do i = 1, size(lines)
+         write (unit, '(a)', iostat=ios) trim(lines(i))
+         if (ios /= 0) exit
+      end do
+      close (unit)
+      if (ios /= 0) then
+         reason = 'cannot write '//path//'.tmp'
+         return
+      end if
+      reason = replace_file(path//'.tmp', path)
+   end subroutine rewrite_text
+
+   !> Stem of the gnuplot text files of a result path (without its extension).
+   pure function text_stem_of(path) result(stem)
+      character(*), intent(in) :: path
+      character(:), allocatable :: stem
+      integer :: dot
+      dot = index(path, '.', back=.true.)
+      if (dot <= index(path, '/', back=.true.)) dot = len(path) + 1
+      stem = path(1:dot - 1)
+   end function text_stem_of
 
    !> Write the static state (run_observer).
    subroutine result_static(self, info, error)

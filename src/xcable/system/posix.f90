@@ -12,7 +12,7 @@ module xcable_system_posix
    implicit none
    private
    public :: install_termination_handler, termination_requested, clear_termination, raise_termination
-   public :: replace_file, process_id, checksum_start, checksum_update, checksum_text
+   public :: replace_file, process_id, checksum_start, checksum_update, checksum_text, new_run_id
 
    interface
       function c_install() result(status) bind(c, name='xcable_install_termination_handler')
@@ -114,6 +114,20 @@ contains
    integer function process_id()
       process_id = int(c_pid())
    end function process_id
+
+   !> An identifier of a new run: the date and time to the millisecond, the
+   !> process id and the clock count ('20261201T135212.345-p4242-c12345678').
+   function new_run_id() result(id)
+      character(:), allocatable :: id
+      integer :: values(8)
+      integer(c_int64_t) :: count
+      character(len=64) :: buffer
+      call date_and_time(values=values)
+      call system_clock(count)
+      write (buffer, '(i4.4,2i2.2,a,3i2.2,a,i3.3,a,i0,a,i0)') values(1:3), 'T', values(5:7), '.', values(8), '-p', &
+         process_id(), '-c', count
+      id = trim(buffer)
+   end function new_run_id
 
    !> The starting value of a checksum.
    function checksum_start() result(hash)

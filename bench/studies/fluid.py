@@ -18,6 +18,7 @@ Needs h5py and numpy; not part of make test.
 import argparse, os, subprocess, sys, time
 import numpy as np
 import h5py
+from common import text_attr, write_tables
 
 # The paper's runs and their t_end (s).
 CASES = [("fast_180kN", 180e3, 0.005, 0.14), ("slow_180kN", 180e3, 0.05, 0.17),
@@ -54,7 +55,7 @@ def run(exe, work, name, medium, fluid, tension, t_break, t_end, nodes, window_e
         e0 = float(e["strain"][0])
         last = {k: float(e[k][-1]) for k in ("strain", "kinetic", "bending", "gravity", "loads")}
         gravity0 = float(e["gravity"][0])
-        status = h.attrs["status"].decode() if isinstance(h.attrs["status"], bytes) else h.attrs["status"]
+        status = text_attr(h.attrs["status"])
         return dict(status=status, peak=float(s["peak_end_speed"]), mean=mean, front=front,
                     window_end=2 * front - t_break, kinetic=last["kinetic"] / e0, strain=last["strain"] / e0,
                     bending=last["bending"] / e0, gravity=(last["gravity"] - gravity0) / e0,
@@ -87,14 +88,7 @@ def main():
                          f"{r['gravity']:+.4f} | {r['fluid']:+.3f} | {r['tmin'] / 1e3:.2f} | {r['eps_min']:.3f} | "
                          f"{r['turn']:.3f} | {r['drift']:.1e} | {r['wall']:.1f} |")
             print(lines[-1], flush=True)
-    text = "\n".join(lines) + "\n"
-    marker = "<!-- generated table below"
-    if os.path.exists(a.out) and marker in open(a.out).read():
-        old = open(a.out).read()
-        text = old[:old.index(marker)] + old[old.index(marker):].split("\n", 1)[0] + "\n\n" + text
-    with open(a.out, "w") as f:
-        f.write(text)
-
+    write_tables(a.out, "\n".join(lines) + "\n")
 
 if __name__ == "__main__":
     sys.exit(main())

@@ -391,16 +391,7 @@ contains
             if (.not. with_jacobian) cycle
             stiff = fp*outer(t_c, t_c) + f/l*(identity2() - outer(t_c, t_c))
             dp_de = (jm - 2*outer(matmul(jm, e), e)/l**2)/l**2
-            ! d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1.
-            dmom = 0
-            if (c >= 2) then
-               dmom(:, 0) = dmom(:, 0) + self%dmom(c)*pvec
-               dmom(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
-            end if
-            if (c + 1 <= n - 1) then
-               dmom(:, 0) = dmom(:, 0) + self%dmom(c + 1)*pvec
-               dmom(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
-            end if
+            dmom = moment_difference_gradient(self, c)
             self%block(:, :, 0, c) = stiff + moment_diff/self%ds(c)*dp_de + outer(pvec, dmom(:, 0))/self%ds(c)
             self%block(:, :, -1, c) = outer(pvec, dmom(:, -1))/self%ds(c)
             self%block(:, :, 1, c) = outer(pvec, dmom(:, 1))/self%ds(c)
@@ -504,15 +495,7 @@ contains
             dphi_de = perp(e1)/l1**2
             dg_de = drho*dphi_de/(l0*l1) - rho/(l0*l1**2)*e1/l1
             dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
-            ds_de = 0
-            if (c >= 2) then
-               ds_de(:, 0) = ds_de(:, 0) + self%dmom(c)*dphi_de
-               ds_de(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
-            end if
-            if (c + 1 <= n - 1) then
-               ds_de(:, 0) = ds_de(:, 0) + self%dmom(c + 1)*dphi_de
-               ds_de(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
-            end if
+            ds_de = moment_difference_gradient(self, c)
             self%block(:, :, 0, c) = dstrain + s_c/self%ds(c)*dgvec + outer(gvec, ds_de(:, 0))/self%ds(c)
             self%block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/self%ds(c)
             self%block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/self%ds(c)
@@ -521,6 +504,25 @@ contains
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
    end subroutine rod_step_system
+
+   !> d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1 (columns -1:1), with the moments' derivatives
+   !> dmom with respect to the new turning angles (statics and steps alike): the turning
+   !> angle of node k changes by perp(e_c) . de_c / |e_c|^2 with its cell c = k - 1 or k.
+   pure function moment_difference_gradient(self, c) result(d)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: c
+      real(dp) :: d(2, -1:1), dth(2)
+      d = 0
+      dth = perp(self%e1(:, c))/self%l1(c)**2
+      if (c >= 2) then
+         d(:, 0) = d(:, 0) + self%dmom(c)*dth
+         d(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+      end if
+      if (c + 1 <= self%n - 1) then
+         d(:, 0) = d(:, 0) + self%dmom(c + 1)*dth
+         d(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+      end if
+   end function moment_difference_gradient
 
    !> The distributed loads at the positions x: each cell's force (the load per
    !> unstretched length times ds) goes half to each of its nodes. In a step

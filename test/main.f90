@@ -16,6 +16,7 @@ program xcable_tests
    use suite_scenes, only: collect_scenes
    use suite_laws, only: collect_laws
    use suite_registry, only: collect_registry
+   use suite_fluid, only: collect_fluid
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -36,7 +37,8 @@ program xcable_tests
              new_testsuite('rod_dynamics', collect_rod_dynamics), &
              new_testsuite('scenes', collect_scenes), &
              new_testsuite('laws', collect_laws), &
-             new_testsuite('registry', collect_registry)]
+             new_testsuite('registry', collect_registry), &
+             new_testsuite('fluid', collect_fluid)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -16,7 +16,7 @@ module suite_scenes
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
-   public :: collect_scenes
+   public :: collect_scenes, free_end_period
 
    real(dp), parameter :: pi = acos(-1.0_dp)
 

@@ -133,6 +133,7 @@ control_ok 'p filled from element 4' "&material p(4) = 2.627e5, 135.5 /\n"
 control_ok 'repeat counts' "&material p = 2.703e5, 10.2, -2.128, 2*2.627e5 /\n"
 control_ok 'tabs and trailing blanks' "&static\ttension = 180000   /  \n"
 control_ok 'internal damping' "&material damping = 250 /\n"
+control_ok 'a fluid with a current' "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1, current_x = 0.5 /\n"
 begin control_run ''
 from fast_180kN
 edit 's/nodes = [0-9]*/nodes = 21/; s/t_end = [0-9.]*/t_end = 0.002/; s/interval = [0-9.]*/interval = 0.001/'
@@ -448,6 +449,22 @@ begin 'damping = NaN' 'damping = NaN' 'not a finite real number'
 from slow_315kN; add '&material damping = NaN /'; check
 begin 'damping = 1e300' 'damping = 1e300' 'in [0, 1e12]'
 from slow_315kN; add '&material damping = 1e300 /'; check
+
+# --- fluid loads (&fluid) --------------------------------------------------------------
+begin 'fluid density = -1025' 'density = -1025' 'in [0, 100000]'
+from slow_315kN; add '&fluid density = -1025 /'; check
+begin 'cd_normal = NaN' 'cd_normal = NaN' 'not a finite real number'
+from slow_315kN; add '&fluid density = 1025, cd_normal = NaN /'; check
+begin 'cd_tangential = -0.1' 'cd_tangential = -0.1' 'in [0, 1000]'
+from slow_315kN; add '&fluid density = 1025, cd_tangential = -0.1 /'; check
+begin 'ca_normal = Inf' 'ca_normal = Inf' 'not a finite real number'
+from slow_315kN; add '&fluid density = 1025, ca_normal = Inf /'; check
+begin 'a current without a fluid' 'current_x = 0.5' 'a current needs a fluid'
+from slow_315kN; add '&fluid current_x = 0.5 /'; check
+begin 'drag coefficients without a fluid' '&fluid' 'without a fluid (density = 0)'
+from slow_315kN; add '&fluid cd_normal = 1.2 /'; check
+begin 'fluid with the box scheme' 'box' 'no fluid loads'
+from slow_315kN; add '&fluid density = 1025 /'; edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
 
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'

@@ -19,19 +19,11 @@ Needs h5py and numpy (pip install h5py numpy); not part of make test.
 import argparse, os, subprocess, sys, time
 import numpy as np
 import h5py
+from common import crossing, text_attr, write_tables
 
 # The paper's runs and their t_end (s).
 CASES = [("fast_180kN", 180e3, 0.005, 0.14), ("slow_180kN", 180e3, 0.05, 0.17),
          ("fast_315kN", 315e3, 0.005, 0.13), ("slow_315kN", 315e3, 0.05, 0.16)]
-
-
-def crossing(t, y, level):
-    """First time y falls to level (linear interpolation), NaN if never."""
-    below = np.nonzero(y <= level)[0]
-    if below.size == 0 or below[0] == 0:
-        return float("nan")
-    i = below[0]
-    return float(t[i - 1] + (t[i] - t[i - 1]) * (level - y[i - 1]) / (y[i] - y[i - 1]))
 
 
 def run(exe, work, name, tension, t_break, nodes, damping, t_end, window_end=None):
@@ -62,8 +54,8 @@ def run(exe, work, name, tension, t_break, nodes, damping, t_end, window_end=Non
         # How abrupt the unloading is at the fixed end: the fastest fall of its tension.
         first = t < end
         rate = float(np.max(-np.diff(ta[first]) / np.diff(t[first])))
-        warnings = s["warnings"].decode() if isinstance(s["warnings"], bytes) else s["warnings"]
-        status = h.attrs["status"].decode() if isinstance(h.attrs["status"], bytes) else h.attrs["status"]
+        warnings = text_attr(s["warnings"])
+        status = text_attr(h.attrs["status"])
         return dict(status=status, peak=float(s["peak_end_speed"]), mean=mean_speed, front=front, window_end=2 * front - t_break,
                     width=crossing(t, ta, 0.5 * ta[0]) - crossing(t, ta, 0.99 * ta[0]), rate=rate,
                     tmin=float(s["end_a_min_tension"]), eps_min=float(s["min_strain"]),
@@ -99,16 +91,7 @@ def main():
                          f"{r['eps_min']:.3f} | {r['turn']:.3f} | {r['dissipated']:.3f} | {r['drift']:.1e} | "
                          f"{r['warnings']} | {r['wall']:.1f} |")
             print(lines[-1], flush=True)
-    # Keep the hand-written text above the marker of an existing page.
-    text = "\n".join(lines) + "\n"
-    marker = "<!-- generated table below"
-    if os.path.exists(a.out) and marker in open(a.out).read():
-        old = open(a.out).read()
-        head = old[:old.index(marker)] + old[old.index(marker):].split("\n", 1)[0] + "\n\n"
-        text = head + text
-    with open(a.out, "w") as f:
-        f.write(text)
-
+    write_tables(a.out, "\n".join(lines) + "\n")
 
 if __name__ == "__main__":
     sys.exit(main())

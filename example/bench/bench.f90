@@ -1,27 +1,44 @@
-!> Work-precision benchmark of xcable (issue 5).
+!> Work-precision benchmark of xcable (issue 5), for both discretisations.
 !>
 !>   fpm run --example bench --profile release -- [quick] [exe=bin/xcable] [work=build/bench] [out=docs]
+!>                                                 [version=TEXT] [jobs=2]
 !>
 !> For fast_180kN and slow_315kN it runs the `xcable` executable (the whole
-!> process, one thread, median of at least three runs) on a ladder of grids
-!> at fixed Courant numbers c(eps0) dt / ds = 0.5, 1, 2, on a ladder of time
-!> steps at 241 nodes and on grids between, and measures per run:
-!> - the peak breaking-end speed, while the fixed end is in tension, against
-!>   simple-wave theory (bench_theory);
+!> process, one thread) in three variants: the box scheme (&numerics scheme =
+!> 'box', the paper's scheme of version 0.1) and the rod (scheme = 'rod') with
+!> the averaged and the lumped mass matrix. Ladders: grids of 31 (box only),
+!> 61, 121, 241, 481, 961 nodes at Courant numbers c(eps0) dt / ds = 0.5, 1, 2
+!> and grids of 91..361 nodes at Courant 1 for every variant; for the box as in
+!> version 0.1 also its time steps at 241 nodes and its Newton tolerance at its
+!> target. Per run it measures:
+!> - the peak breaking-end speed while the fixed end is in tension, and the
+!>   plateau speed (the time mean after the ramp while the fixed end is in
+!>   tension), against simple-wave theory (bench_theory);
 !> - the time of the 1 % drop of the fixed-end tension against simple-wave
 !>   theory with the ramp, the wall reflection and the weak shock fitted;
 !> - the tension field at 10 ms intervals while the fixed end is in tension,
-!>   against the Courant-1 runs on 961 and 481 nodes (Newton tolerance 1e-10),
-!>   Richardson-extrapolated when the observed order on 241/481/961 nodes is
-!>   within 0.3 of 2; mean and max of |error| / T_s.
-!> The timed runs use newton_tol = 1e-7 (a table shows what the tolerance
-!> changes). At the target configuration of each case it also times the run
-!> with more or less output and with the energy ledger.
+!>   against the variant's own Courant-1 runs on 961 and 481 nodes (Newton
+!>   tolerance 1e-10), Richardson-extrapolated when the observed order on
+!>   241/481/961 nodes is within 0.3 of 2 (bench_measure); the references of
+!>   the variants are compared with each other.
+!> At the target configuration of each variant it runs the rod with theta =
+!> 0.5, 0.55 and 0.6 (what damping costs at the front) and with
+!> reuse_jacobian = .true., and the output costs.
+!>
+!> Timing: every configuration of a case once per round, the variants of a
+!> configuration one after the other, so that the ratio of two variants is
+!> measured in the same state of this shared machine: medians of 11 rounds
+!> (5 for runs above 0.3 s) of the wall time and of the CPU time (user +
+!> system) of the whole process, and the median over rounds of the paired
+!> ratios. Afterwards valgrind --tool=callgrind counts the instructions of the
+!> Courant-1 ladder up to 481 nodes, the targets, the cheapest runs that meet
+!> the targets, the reuse, theta and output runs (`jobs` at a time: the count
+!> does not depend on the load).
 !>
 !> Writes <out>/benchmark_tables.md (markdown) and <out>/benchmark.dat (data
-!> of the figure, bench/benchmark.gp). `quick` runs only the targets and the
-!> output costs (for before/after timings) and reuses the reference fields
-!> that the last full run saved in <work>.
+!> of the figure, bench/benchmark.gp). `quick` times only the targets and the
+!> output costs (for before/after timings, no instruction counts) and reuses
+!> the reference fields that the last full run saved in <work>.
 program bench
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type
@@ -32,78 +49,80 @@ program bench
    use xcable_solver_banded, only: band_matrix
    use xcable_dynamics, only: dynamics_options
    use bench_theory, only: wave_reference, simple_wave_reference
-   use bench_runs, only: run_spec, run_result, run_case, median, count_instructions
+   use bench_runs, only: run_spec, run_result, run_case, median, paired_ratio, instruction_command, read_instructions
+   use bench_measure, only: run_errors, field_reference, measure, build_field_reference, save_reference, &
+                            load_reference, compare_references
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
-   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
+   use, intrinsic :: ieee_arithmetic, only: ieee_is_nan
    implicit none
 
-   !> A paper case, its target configuration and the targets.
+   !> The variants: box scheme, rod with averaged mass, rod with lumped mass.
+   integer, parameter :: n_variants = 3, box = 1, rod = 2, lumped = 3
+   character(len=*), parameter :: variant_names(n_variants) = [character(len=12) :: 'box', 'rod averaged', &
+                                                                'rod lumped']
+   character(len=*), parameter :: variant_scheme(n_variants) = [character(len=3) :: 'box', 'rod', 'rod']
+   character(len=*), parameter :: variant_mass(n_variants) = [character(len=8) :: 'averaged', 'averaged', 'lumped']
+   character(len=*), parameter :: variant_tags(n_variants) = [character(len=3) :: 'box', 'rod', 'rlm']
+
+   !> A paper case and the target configuration of each variant.
    type :: case_def
       character(len=16) :: name = ''
       real(dp) :: tension = 0, t_break = 0, t_end = 0
-      integer :: target_nodes = 241
-      real(dp) :: target_courant = 1
-      !> Targets: |speed error|, |drop error| (s), mean field error (0: not a target), wall (s).
-      real(dp) :: max_speed = 0, max_drop = 0, max_field = 0, max_wall = 0.1_dp
+      integer :: target_nodes(n_variants) = 241
+      real(dp) :: target_courant(n_variants) = 1
    end type case_def
 
-   !> Errors of one run.
-   type :: run_errors
-      !> Time at which the fixed end goes into compression (end of the window), s.
-      real(dp) :: t_tension = 0
-      !> (peak end speed - theory) / theory.
-      real(dp) :: speed = 0
-      !> Time of the 1 % drop minus theory, s.
-      real(dp) :: drop = 0
-      !> Mean and max |T - T_ref| / T_s over nodes and snapshots in the window.
-      real(dp) :: field_mean = 0, field_max = 0
-   end type run_errors
-
-   !> Reference tension field of a case.
-   type :: field_reference
-      logical :: ok = .false.
-      !> Grid (m), snapshot times (s), tension (nodes, snapshots), N.
-      real(dp), allocatable :: s(:), times(:), tension(:, :)
-      !> Observed order from 241/481/961 nodes, and whether extrapolated.
-      real(dp) :: order = 0
-      logical :: extrapolated = .false.
-      !> Mean |correction| / T_s: the uncertainty of the reference.
-      real(dp) :: uncertainty = 0
-      !> Where it comes from.
-      character(len=160) :: source = ''
-   end type field_reference
-
+   !> Accuracy targets: |end speed error|, |1 % drop error| (s), mean field error / T_s.
+   real(dp), parameter :: max_speed = 1.0e-3_dp, max_drop = 0.05e-3_dp, max_field = 5.0e-3_dp
+   !> The sets of targets of the cheapest-configuration table (flags of met).
+   character(len=4), parameter :: criteria(3) = ['P.DF', '.MDF', '...F']
+   character(len=*), parameter :: criterion_names(3) = [character(len=40) :: 'peak speed, drop, field (P D F)', &
+                                                         'plateau speed, drop, field (M D F)', 'field only (F)']
    integer, parameter :: ladder_nodes(6) = [31, 61, 121, 241, 481, 961]
    real(dp), parameter :: ladder_courant(3) = [0.5_dp, 1.0_dp, 2.0_dp]
    integer, parameter :: dt_nodes = 241
    real(dp), parameter :: dt_courant(6) = [0.25_dp, 0.75_dp, 1.25_dp, 1.5_dp, 3.0_dp, 4.0_dp]
    integer, parameter :: between_nodes(7) = [91, 151, 161, 181, 201, 301, 361]
    real(dp), parameter :: tolerances(5) = [1.0e-5_dp, 1.0e-6_dp, 1.0e-8_dp, 1.0e-9_dp, 1.0e-10_dp]
+   real(dp), parameter :: thetas(3) = [0.5_dp, 0.55_dp, 0.6_dp]
    real(dp), parameter :: bench_tol = 1.0e-7_dp, reference_tol = 1.0e-10_dp
    real(dp), parameter :: length = 60
    character(len=*), parameter :: all_fields = 'tension shear strain u v x z curvature'
-   integer, parameter :: max_runs = 80
+   !> Instructions are counted on the Courant-1 ladder up to this many nodes.
+   integer, parameter :: count_nodes_max = 481
+   integer, parameter :: max_runs = 160
+   !> Timing rounds: max_rounds for runs under 0.3 s, else long_rounds.
+   integer, parameter :: max_rounds = 11, long_rounds = 5
+
+   !> Lines of the figure's data kept for a later block.
+   type :: text_block
+      character(len=200), allocatable :: lines(:)
+   end type text_block
 
    type(case_def) :: cases(2)
+   !> The box time steps of both cases, then the theta rows (rod, lumped) of each.
+   type(text_block) :: later_blocks(6)
    type(run_spec) :: specs(max_runs)
    type(run_result) :: results(max_runs)
    type(run_errors) :: errors(max_runs)
    character(len=16) :: kinds(max_runs)
+   integer :: variant_of(max_runs)
+   real(dp) :: instructions(max_runs)
    type(wave_reference) :: ref
-   type(field_reference) :: field
+   type(field_reference) :: field(n_variants)
    type(cable_model) :: model
-   character(len=512) :: arg, exe, work, out
-   logical :: quick
-   integer :: i, ic, n, md, dat, round
-   real(dp) :: nan, speed_start, speed_end
-   !> Timing rounds: at most max_rounds (runs under 0.3 s), 5 under 3 s, else 3.
-   integer, parameter :: max_rounds = 11
+   character(len=512) :: arg, exe, work, out, version
+   logical :: quick, have_valgrind
+   integer :: i, ic, n, md, dat, round, jobs, v, stat
+   real(dp) :: speed_start, speed_end
+   character(len=64) :: load_start, load_end, date
 
-   nan = ieee_value(1.0_dp, ieee_quiet_nan)
    quick = .false.
    exe = 'bin/xcable'
    work = 'build/bench'
    out = 'docs'
+   version = ''
+   jobs = 2
    do i = 1, command_argument_count()
       call get_command_argument(i, arg)
       if (arg == 'quick') then
@@ -114,36 +133,62 @@ program bench
          work = arg(6:)
       else if (arg(1:4) == 'out=') then
          out = arg(5:)
+      else if (arg(1:8) == 'version=') then
+         version = arg(9:)
+      else if (arg(1:5) == 'jobs=') then
+         read (arg(6:), *, iostat=stat) jobs
+         if (stat /= 0 .or. jobs < 1) error stop 'bench: jobs= takes a positive integer'
       else
-         write (error_unit, '(a)') 'usage: bench [quick] [exe=bin/xcable] [work=build/bench] [out=docs]'
+         write (error_unit, '(a)') 'usage: bench [quick] [exe=bin/xcable] [work=build/bench] [out=docs] '// &
+            '[version=TEXT] [jobs=2]'
          error stop 2
       end if
    end do
    call execute_command_line('mkdir -p '//trim(work))
+   call execute_command_line('command -v valgrind > /dev/null 2>&1', exitstat=stat)
+   have_valgrind = stat == 0
 
-   cases(1) = case_def('fast_180kN', 180.0e3_dp, 0.005_dp, 0.14_dp, 201, 1.0_dp, 1.0e-3_dp, 0.05e-3_dp, 0, 0.1_dp)
-   cases(2) = case_def('slow_315kN', 315.0e3_dp, 0.05_dp, 0.16_dp, 201, 2.0_dp, 0, 0, 5.0e-3_dp, 0.1_dp)
+   cases(1) = case_def('fast_180kN', 180.0e3_dp, 0.005_dp, 0.14_dp, [201, 481, 481], [1.0_dp, 1.0_dp, 1.0_dp])
+   cases(2) = case_def('slow_315kN', 315.0e3_dp, 0.05_dp, 0.16_dp, [201, 91, 91], [2.0_dp, 1.0_dp, 1.0_dp])
 
    if (quick) then
       open (newunit=md, file=trim(work)//'/benchmark_quick.md', status='replace', action='write')
    else
       open (newunit=md, file=trim(out)//'/benchmark_tables.md', status='replace', action='write')
       open (newunit=dat, file=trim(out)//'/benchmark.dat', status='replace', action='write')
-      write (dat, '(a)') '# xcable work-precision benchmark (example/bench); one gnuplot index per series:'
-      write (dat, '(a)') '# 0-2 fast_180kN nodes ladder at Courant 0.5, 1, 2; 3 its dt ladder at 241 nodes; 4 its target;'
-      write (dat, '(a)') '# 5 its grids between at Courant 1; 6-11 the same for slow_315kN'
-      write (dat, '(a)') '# columns: nodes courant wall[s] |speed error| |1% drop error|[ms] mean|dT|/Ts max|dT|/Ts '// &
-         'reached_t_end(1/0)'
+      write (dat, '(a)') '# xcable work-precision benchmark (example/bench); one gnuplot index per series.'
+      write (dat, '(a)') '# Per case (fast_180kN: base 0, slow_315kN: base 15) and variant (box +0, rod averaged +5,'// &
+         ' rod lumped +10):'
+      write (dat, '(a)') '#   +0, +1, +2: grids at Courant 0.5, 1, 2; +3: grids between at Courant 1; +4: the target.'
+      write (dat, '(a)') '# 30, 31: the box time steps at 241 nodes (fast_180kN, slow_315kN); 32, 33: the rod'// &
+         ' (averaged, lumped) at theta 0.5, 0.55, 0.6 at its fast_180kN target, 34, 35 at its slow_315kN target.'
+      write (dat, '(a)') '# columns: nodes courant wall[s] cpu[s] |peak speed error| |plateau speed error| '// &
+         '|1% drop error|[ms] mean|dT|/Ts max|dT|/Ts reached_t_end(1/0) instructions(0: not counted) theta'
    end if
 
+   call date_and_time(date=date)
+   date = date(1:4)//'-'//date(5:6)//'-'//date(7:8)
+   load_start = load_average()
    speed_start = machine_speed()
    call say('# xcable work-precision benchmark')
    call say('')
-   call say('Generated by `make bench` (example/bench/). Wall time: the whole `xcable` process (start-up, statics, '// &
-            'dynamics, HDF5 output), one thread, release build; median of 11 runs (5 above 0.3 s, 3 above 3 s), '// &
-            'taken in rounds over all configurations of a case. Timed runs: newton_tol = 1e-7, tension snapshots '// &
-            'every 10 ms, no energy ledger, no gnuplot text (the cost of more output is in the last table of each '// &
-            'case).')
+   call say('Generated by `make bench` (example/bench/) on '//trim(date)//' with '//trim(exe)// &
+            trim(merge(' (version '//trim(version)//')', repeat(' ', 11 + len_trim(version)), len_trim(version) > 0))// &
+            '. Variants: the box scheme (&numerics scheme = ''box'', the paper''s scheme of version 0.1) and the rod '// &
+            '(scheme = ''rod'', the default) with the averaged and the lumped mass matrix.')
+   call say('')
+   call say('Times: the whole `xcable` process (start-up, statics, dynamics, HDF5 output), one thread, release '// &
+            'build. Every configuration of a case runs once per round, the variants of one configuration one '// &
+            'after the other; wall and CPU (user + system) times are medians of 11 rounds (5 for runs above 0.3 s), '// &
+            'ratios are medians over rounds of the paired ratios. **This machine was shared with other jobs** '// &
+            '(load average '//trim(load_start)//' at the start): the wall times are inflated and noisy, so compare '// &
+            'ratios within one benchmark run, CPU times and instruction counts (valgrind --tool=callgrind, exact '// &
+            'and independent of the load). Timed runs: newton_tol = 1e-7, theta = 0.5, tension snapshots every '// &
+            '10 ms, no energy ledger, no gnuplot text.')
+   call say('')
+   call say('Targets: end speed within 1e-3 (column "met": P for the peak, M for the plateau mean), 1 % drop '// &
+            'at the fixed end within 0.05 ms (D), mean tension-field error within 5e-3 T_s (F); a run that stops '// &
+            'before t_end meets none.')
 
    do ic = 1, 2
       call case_model(cases(ic), model)
@@ -154,6 +199,7 @@ program bench
       do i = 1, max_runs
          results(i) = run_result()
       end do
+      instructions = 0
       call build_runs(cases(ic))
       ! Rounds: every run once per round, so that a busy spell of this shared
       ! machine spreads over all configurations instead of spoiling one.
@@ -165,20 +211,26 @@ program bench
             call run_case(specs(i), trim(exe), trim(work), results(i))
          end do
       end do
-      call build_field_reference(cases(ic), field)
-      do i = 1, n
-         call measure(cases(ic), results(i), ref, field, errors(i))
+      do v = 1, n_variants
+         call variant_reference(cases(ic), v, field(v))
       end do
+      do i = 1, n
+         call measure(results(i), ref, field(variant_of(i)), length, cases(ic)%tension, cases(ic)%t_break, errors(i))
+      end do
+      if (.not. quick .and. have_valgrind) call count_all_instructions()
       call print_tables(cases(ic))
       if (.not. quick) call write_data(ic)
    end do
    speed_end = machine_speed()
+   load_end = load_average()
+   call say('')
+   call say('## Machine state')
    call say('')
    call say('Machine speed during the benchmark (LU factorisation and 20 substitutions of a 1687 x 1687 band '// &
             'matrix, kl = 7, ku = 10, in process): '//trim(real_fmt(1.0e3_dp*speed_start, '(f8.2)'))// &
-            ' ms at the start, '//trim(real_fmt(1.0e3_dp*speed_end, '(f8.2)'))//' ms at the end. This '// &
-            'machine is shared: the same work takes up to twice as long at busy times, so compare times within '// &
-            'one benchmark run.')
+            ' ms at the start, '//trim(real_fmt(1.0e3_dp*speed_end, '(f8.2)'))//' ms at the end (0.67-0.68 ms '// &
+            'on 2026-11-30, a quiet day). Load average (1, 5, 15 min): '//trim(load_start)//' at the start, '// &
+            trim(load_end)//' at the end, on 2 cores.')
    if (.not. quick) close (dat)
    close (md)
 
@@ -186,22 +238,47 @@ contains
 
    !> Print a line to stdout and the markdown file.
    subroutine say(text)
+      !> The line.
       character(*), intent(in) :: text
       write (output_unit, '(a)') text
       write (md, '(a)') text
    end subroutine say
 
-   !> A real in a format, trimmed.
+   !> A real in a format, trimmed; blank for NaN.
    function real_fmt(x, fmt) result(text)
+      !> Value.
       real(dp), intent(in) :: x
+      !> Fortran format.
       character(*), intent(in) :: fmt
       character(len=32) :: text
+      text = ''
+      if (ieee_is_nan(x)) return
       write (text, fmt) x
       text = adjustl(text)
    end function real_fmt
 
+   !> An integer as text.
+   character(len=16) function int_str(i)
+      !> Value.
+      integer, intent(in) :: i
+      write (int_str, '(i0)') i
+   end function int_str
+
+   !> The load average of the machine (1, 5 and 15 minutes), from /proc/loadavg.
+   character(len=64) function load_average() result(text)
+      integer :: unit, ios
+      real(dp) :: loads(3)
+      text = 'unknown'
+      open (newunit=unit, file='/proc/loadavg', status='old', action='read', iostat=ios)
+      if (ios /= 0) return
+      read (unit, *, iostat=ios) loads
+      close (unit)
+      if (ios == 0) write (text, '(f5.2,", ",f5.2,", ",f5.2)') loads
+   end function load_average
+
    !> Rounds of run i from its first wall time (references: one, untimed).
    integer function rounds_of(i)
+      !> Run.
       integer, intent(in) :: i
       if (kinds(i) == 'reference') then
          rounds_of = 1
@@ -209,10 +286,8 @@ contains
          rounds_of = max_rounds
       else if (results(i)%walls(1) < 0.3_dp) then
          rounds_of = max_rounds
-      else if (results(i)%walls(1) < 3.0_dp) then
-         rounds_of = 5
       else
-         rounds_of = 3
+         rounds_of = long_rounds
       end if
    end function rounds_of
 
@@ -246,9 +321,11 @@ contains
       machine_speed = median(times)
    end function machine_speed
 
-   !> The model of a case, built from a namelist like the app does.
+   !> The model of a case (law, mass), built from a namelist like the app does.
    subroutine case_model(c, model)
+      !> The case.
       type(case_def), intent(in) :: c
+      !> Its model.
       type(cable_model), intent(out) :: model
       type(case_config) :: config
       type(error_type), allocatable :: error
@@ -273,55 +350,100 @@ contains
       if (abs(model%length - length) > 1.0e-12_dp) error stop 'bench: the paper cable is 60 m long'
    end subroutine case_model
 
-   !> The runs of a case.
+   !> The runs of a case, the variants of each configuration next to each other.
    subroutine build_runs(c)
+      !> The case.
       type(case_def), intent(in) :: c
-      integer :: a, b
+      integer :: a, b, w
       logical :: cached
       if (.not. quick) then
          do b = 1, size(ladder_courant)
             do a = 1, size(ladder_nodes)
-               call add(c, ladder_nodes(a), ladder_courant(b), 'ladder')
+               do w = 1, n_variants
+                  if (w /= box .and. ladder_nodes(a) < 61) cycle
+                  call add(c, w, ladder_nodes(a), ladder_courant(b), 'ladder')
+               end do
+            end do
+         end do
+         do a = 1, size(between_nodes)
+            do w = 1, n_variants
+               call add(c, w, between_nodes(a), 1.0_dp, 'between')
             end do
          end do
          do b = 1, size(dt_courant)
-            call add(c, dt_nodes, dt_courant(b), 'dt')
-         end do
-         do a = 1, size(between_nodes)
-            call add(c, between_nodes(a), 1.0_dp, 'between')
+            call add(c, box, dt_nodes, dt_courant(b), 'dt')
          end do
          do b = 1, size(tolerances)
-            call add(c, c%target_nodes, c%target_courant, 'tol', tol=tolerances(b))
+            call add(c, box, c%target_nodes(box), c%target_courant(box), 'tol', tol=tolerances(b))
          end do
       end if
-      if (find(c%target_nodes, c%target_courant, 'ladder') == 0 .and. find(c%target_nodes, c%target_courant, 'between') &
-          == 0) call add(c, c%target_nodes, c%target_courant, 'target')
-      inquire (file=trim(work)//'/reference_'//trim(c%name)//'.bin', exist=cached)
-      if (.not. quick .or. .not. cached) then
+      do w = 1, n_variants
+         if (find(w, c%target_nodes(w), c%target_courant(w), 'ladder') == 0 .and. &
+             find(w, c%target_nodes(w), c%target_courant(w), 'between') == 0) &
+            call add(c, w, c%target_nodes(w), c%target_courant(w), 'target')
+      end do
+      if (.not. quick) then
+         do w = rod, lumped
+            call add(c, w, c%target_nodes(w), c%target_courant(w), 'reuse', reuse=.true.)
+         end do
+         do b = 1, size(thetas)
+            do w = rod, lumped
+               call add(c, w, c%target_nodes(w), c%target_courant(w), 'theta', energy=.true., theta=thetas(b))
+            end do
+         end do
+      end if
+      do w = box, rod
+         call add(c, w, c%target_nodes(w), c%target_courant(w), 'cost', fields='')
+         call add(c, w, c%target_nodes(w), c%target_courant(w), 'cost', fields=all_fields)
+         call add(c, w, c%target_nodes(w), c%target_courant(w), 'cost', fields=all_fields, gnuplot=.true.)
+         call add(c, w, c%target_nodes(w), c%target_courant(w), 'cost', energy=.true.)
+         call add(c, w, c%target_nodes(w), c%target_courant(w), 'cost', fields=all_fields, gnuplot=.true., &
+                  energy=.true.)
+      end do
+      do w = 1, n_variants
+         inquire (file=reference_cache(c, w), exist=cached)
+         if (quick .and. cached) cycle
          do a = 4, 6
-            call add(c, ladder_nodes(a), 1.0_dp, 'reference', tol=reference_tol)
+            call add(c, w, ladder_nodes(a), 1.0_dp, 'reference', tol=reference_tol)
          end do
-      end if
-      call add(c, c%target_nodes, c%target_courant, 'cost', fields='')
-      call add(c, c%target_nodes, c%target_courant, 'cost', fields=all_fields)
-      call add(c, c%target_nodes, c%target_courant, 'cost', fields=all_fields, gnuplot=.true.)
-      call add(c, c%target_nodes, c%target_courant, 'cost', energy=.true.)
-      call add(c, c%target_nodes, c%target_courant, 'cost', fields=all_fields, gnuplot=.true., energy=.true.)
+      end do
    end subroutine build_runs
 
-   !> Append a run.
-   subroutine add(c, nodes, courant, kind, fields, energy, gnuplot, interval, tol)
+   !> File of the saved reference field of a variant.
+   function reference_cache(c, w) result(path)
+      !> The case.
       type(case_def), intent(in) :: c
+      !> The variant.
+      integer, intent(in) :: w
+      character(:), allocatable :: path
+      path = trim(work)//'/reference_'//trim(c%name)//'_'//trim(variant_tags(w))//'.bin'
+   end function reference_cache
+
+   !> Append a run.
+   subroutine add(c, w, nodes, courant, kind, fields, energy, gnuplot, tol, theta, reuse)
+      !> The case.
+      type(case_def), intent(in) :: c
+      !> The variant.
+      integer, intent(in) :: w
+      !> Nodes and Courant number.
       integer, intent(in) :: nodes
       real(dp), intent(in) :: courant
+      !> What the run is for.
       character(*), intent(in) :: kind
+      !> Snapshot fields (default: tension).
       character(*), intent(in), optional :: fields
+      !> Energy ledger, gnuplot text (default: neither).
       logical, intent(in), optional :: energy, gnuplot
-      real(dp), intent(in), optional :: interval, tol
+      !> Newton tolerance (default bench_tol) and time weight (default 0.5).
+      real(dp), intent(in), optional :: tol, theta
+      !> &numerics reuse_jacobian (default: not given, the scheme's default).
+      logical, intent(in), optional :: reuse
       character(len=96) :: label
       n = n + 1
       if (n > max_runs) error stop 'bench: too many runs'
       specs(n) = run_spec()
+      specs(n)%scheme = trim(variant_scheme(w))
+      specs(n)%mass_matrix = trim(variant_mass(w))
       specs(n)%tension = c%tension
       specs(n)%t_break = c%t_break
       specs(n)%t_end = c%t_end
@@ -332,44 +454,111 @@ contains
       if (present(fields)) specs(n)%fields = fields
       if (present(energy)) specs(n)%energy = energy
       if (present(gnuplot)) specs(n)%gnuplot = gnuplot
-      if (present(interval)) specs(n)%interval = interval
       if (present(tol)) specs(n)%newton_tol = tol
-      write (label, '(a,a,i0,a,f4.2,3a,i0)') trim(c%name), '_n', nodes, '_c', courant, '_', trim(kind), '_', n
+      if (present(theta)) specs(n)%theta = theta
+      if (present(reuse)) specs(n)%reuse_jacobian = merge(1, 0, reuse)
+      write (label, '(a,a,a,a,i0,a,f4.2,3a,i0)') trim(c%name), '_', trim(variant_tags(w)), '_n', nodes, '_c', courant, &
+         '_', trim(kind), '_', n
       specs(n)%label = trim(label)
       kinds(n) = kind
+      variant_of(n) = w
    end subroutine add
 
-   !> Index of the run of a kind with these nodes and Courant number (0: none).
-   integer function find(nodes, courant, kind) result(idx)
+   !> Index of the run of a variant and kind with these nodes and Courant number (0: none).
+   integer function find(w, nodes, courant, kind) result(idx)
+      !> The variant.
+      integer, intent(in) :: w
+      !> Nodes and Courant number.
       integer, intent(in) :: nodes
       real(dp), intent(in) :: courant
+      !> What the run is for.
       character(*), intent(in) :: kind
       integer :: j
       idx = 0
       do j = 1, n
-         if (specs(j)%nodes == nodes .and. abs(specs(j)%courant - courant) < 1.0e-9_dp .and. kinds(j) == kind) then
+         if (variant_of(j) == w .and. specs(j)%nodes == nodes .and. abs(specs(j)%courant - courant) < 1.0e-9_dp &
+             .and. kinds(j) == kind) then
             idx = j
             return
          end if
       end do
    end function find
 
-   !> The target run of the current case.
-   integer function target_run() result(idx)
-      idx = find(cases(ic)%target_nodes, cases(ic)%target_courant, 'ladder')
-      if (idx == 0) idx = find(cases(ic)%target_nodes, cases(ic)%target_courant, 'between')
-      if (idx == 0) idx = find(cases(ic)%target_nodes, cases(ic)%target_courant, 'target')
+   !> The target run of a variant in the current case.
+   integer function target_run(w) result(idx)
+      !> The variant.
+      integer, intent(in) :: w
+      associate (c => cases(ic))
+         idx = find(w, c%target_nodes(w), c%target_courant(w), 'ladder')
+         if (idx == 0) idx = find(w, c%target_nodes(w), c%target_courant(w), 'between')
+         if (idx == 0) idx = find(w, c%target_nodes(w), c%target_courant(w), 'target')
+      end associate
    end function target_run
 
-   !> Courant number c(eps0) dt / ds of the step actually taken.
-   real(dp) function actual_courant(j)
+   !> Whether run j is one of the timed runs at the default settings (theta
+   !> 0.5, newton_tol 1e-7, tension snapshots): the runs the cheapest
+   !> configurations are chosen from.
+   logical function plain_run(j)
+      !> Run.
       integer, intent(in) :: j
-      actual_courant = ref%speed0*results(j)%step/(length/(specs(j)%nodes - 1))
-   end function actual_courant
+      plain_run = kinds(j) == 'ladder' .or. kinds(j) == 'between' .or. kinds(j) == 'dt' .or. kinds(j) == 'target'
+   end function plain_run
+
+   !> The reference field of a variant: from its reference runs, or the one saved by the last full run.
+   subroutine variant_reference(c, w, f)
+      !> The case.
+      type(case_def), intent(in) :: c
+      !> The variant.
+      integer, intent(in) :: w
+      !> Its reference field.
+      type(field_reference), intent(out) :: f
+      integer :: i241, i481, i961
+      i241 = find(w, 241, 1.0_dp, 'reference')
+      i481 = find(w, 481, 1.0_dp, 'reference')
+      i961 = find(w, 961, 1.0_dp, 'reference')
+      if (i241 == 0 .or. i481 == 0 .or. i961 == 0) then
+         call load_reference(reference_cache(c, w), f)
+         return
+      end if
+      call build_field_reference(results(i241), results(i481), results(i961), length, c%tension, f)
+      call save_reference(f, reference_cache(c, w))
+   end subroutine variant_reference
+
+   !> Whether the instructions of run j are counted (the cheapest runs too).
+   logical function counted(j)
+      !> Run.
+      integer, intent(in) :: j
+      integer :: k
+      counted = kinds(j) == 'theta' .or. kinds(j) == 'cost' .or. kinds(j) == 'reuse' .or. j == target_run(variant_of(j)) .or. &
+                (kinds(j) == 'ladder' .and. abs(specs(j)%courant - 1) < 1.0e-9_dp .and. specs(j)%nodes <= count_nodes_max)
+      do k = 1, size(criteria)
+         if (j == cheapest_run(variant_of(j), criteria(k))) counted = .true.
+      end do
+   end function counted
+
+   !> Count the instructions of the selected runs with callgrind, `jobs` at a time.
+   subroutine count_all_instructions()
+      integer :: unit, j
+      character(:), allocatable :: list
+      list = trim(work)//'/callgrind_'//trim(cases(ic)%name)//'.txt'
+      open (newunit=unit, file=list, status='replace', action='write')
+      do j = 1, n
+         if (counted(j) .and. results(j)%exit_code >= 0) write (unit, '(a)') instruction_command(specs(j), trim(exe), &
+                                                                                                trim(work))
+      end do
+      close (unit)
+      write (error_unit, '(a)') 'bench: counting instructions (valgrind --tool=callgrind) of the runs in '//list
+      call execute_command_line('xargs -d ''\n'' -n 1 -P '//trim(int_str(jobs))//' sh -c < '//list)
+      do j = 1, n
+         if (counted(j)) instructions(j) = read_instructions(specs(j), trim(work))
+      end do
+   end subroutine count_all_instructions
 
    !> The simple-wave references of a case.
    subroutine print_reference(c, r)
+      !> The case.
       type(case_def), intent(in) :: c
+      !> Its references.
       type(wave_reference), intent(in) :: r
       character(len=1024) :: line
       call say('')
@@ -381,8 +570,9 @@ contains
          'change them by about 1e-4, well under 1 %):'
       call say(trim(line))
       call say('')
-      write (line, '(a,f8.4,a)') '- peak breaking-end speed: integral of c d eps from T = 0 to eps0 = ', &
-         r%end_speed, ' m/s;'
+      write (line, '(a,f8.4,a)') '- breaking-end speed: integral of c d eps from T = 0 to eps0 = ', r%end_speed, &
+         ' m/s, measured along the chord from end a to end b at t = 0; the peak while the fixed end is in '// &
+         'tension, and the plateau: the time mean from t_br until the fixed end goes into compression;'
       call say(trim(line))
       if (r%shock_jump > 1.0e-9_dp) then
          write (line, '(a,f8.4,a,f8.4,a,es9.2,a,f6.1,a)') '- 1 % drop of the fixed-end tension: ', &
@@ -405,312 +595,363 @@ contains
       call say(trim(line))
    end subroutine print_reference
 
-   !> The reference tension field from the Courant-1 reference runs on 241, 481 and 961 nodes.
-   subroutine build_field_reference(c, f)
-      type(case_def), intent(in) :: c
-      type(field_reference), intent(out) :: f
-      integer :: i241, i481, i961, j, k, m, unit, ios, nw, nn
-      real(dp) :: t_window, d1, d2, cnt
-      character(:), allocatable :: cache
-      cache = trim(work)//'/reference_'//trim(c%name)//'.bin'
-      i241 = find(241, 1.0_dp, 'reference')
-      i481 = find(481, 1.0_dp, 'reference')
-      i961 = find(961, 1.0_dp, 'reference')
-      if (i241 == 0 .or. i481 == 0 .or. i961 == 0) then
-         call load_reference(c, f)
-         return
-      end if
-      if (.not. (results(i241)%ok .and. results(i481)%ok .and. results(i961)%ok)) return
-      t_window = compression_time(results(i961))
-      nw = count(results(i961)%snapshot_time > 0 .and. results(i961)%snapshot_time <= t_window)
-      if (nw == 0) return
-      allocate (f%times(nw))
-      f%times = pack(results(i961)%snapshot_time, results(i961)%snapshot_time > 0 .and. &
-                     results(i961)%snapshot_time <= t_window)
-      ! Observed order on the 241-node points.
-      d1 = 0
-      d2 = 0
-      cnt = 0
-      do j = 1, nw
-         do k = 1, 241
-            d1 = d1 + abs(value_at(i481, 2*k - 1, f%times(j)) - value_at(i241, k, f%times(j)))
-            d2 = d2 + abs(value_at(i961, 4*k - 3, f%times(j)) - value_at(i481, 2*k - 1, f%times(j)))
-            cnt = cnt + 1
-         end do
-      end do
-      f%order = log(d1/d2)/log(2.0_dp)
-      f%extrapolated = abs(f%order - 2) <= 0.3_dp
-      if (f%extrapolated) then
-         nn = 481
-         allocate (f%s(nn), f%tension(nn, nw))
-         f%uncertainty = 0
-         do j = 1, nw
-            do k = 1, nn
-               f%s(k) = length*(k - 1)/(nn - 1)
-               f%tension(k, j) = value_at(i961, 2*k - 1, f%times(j)) + &
-                                 (value_at(i961, 2*k - 1, f%times(j)) - value_at(i481, k, f%times(j)))/3
-               f%uncertainty = f%uncertainty + abs(value_at(i961, 2*k - 1, f%times(j)) - value_at(i481, k, f%times(j)))/3
-            end do
-         end do
-         f%uncertainty = f%uncertainty/(nn*nw)/c%tension
-         f%source = '961 and 481 nodes at Courant 1, Richardson-extrapolated (p = 2)'
-      else
-         nn = 961
-         allocate (f%s(nn), f%tension(nn, nw))
-         do j = 1, nw
-            do k = 1, nn
-               f%s(k) = length*(k - 1)/(nn - 1)
-               f%tension(k, j) = value_at(i961, k, f%times(j))
-            end do
-         end do
-         f%uncertainty = d2/cnt/c%tension/max(2**f%order - 1, 1.0_dp)
-         f%source = '961 nodes at Courant 1 (observed order too far from 2 to extrapolate)'
-      end if
-      f%ok = .true.
-      open (newunit=unit, file=cache, status='replace', action='write', access='stream', form='unformatted', iostat=ios)
-      if (ios /= 0) return
-      m = len_trim(f%source)
-      write (unit) nn, nw, f%order, f%extrapolated, f%uncertainty, m, f%source(1:m), f%s, f%times, f%tension
-      close (unit)
-   end subroutine build_field_reference
-
-   !> Reference saved by the last full run.
-   subroutine load_reference(c, f)
-      type(case_def), intent(in) :: c
-      type(field_reference), intent(inout) :: f
-      integer :: unit, ios, nn, nw, m
-      open (newunit=unit, file=trim(work)//'/reference_'//trim(c%name)//'.bin', status='old', action='read', &
-            access='stream', form='unformatted', iostat=ios)
-      if (ios /= 0) return
-      read (unit, iostat=ios) nn, nw, f%order, f%extrapolated, f%uncertainty, m
-      if (ios /= 0) return
-      f%source = ''
-      read (unit, iostat=ios) f%source(1:m)
-      allocate (f%s(nn), f%times(nw), f%tension(nn, nw))
-      read (unit, iostat=ios) f%s, f%times, f%tension
-      close (unit)
-      f%ok = ios == 0
-      f%source = trim(f%source)//' (saved by the last full run)'
-   end subroutine load_reference
-
-   !> Tension at node k of run j at snapshot time t (NaN if absent).
-   real(dp) function value_at(j, k, t)
-      integer, intent(in) :: j, k
-      real(dp), intent(in) :: t
-      integer :: m
-      value_at = nan
-      if (.not. allocated(results(j)%tension)) return
-      do m = 1, size(results(j)%snapshot_time)
-         if (abs(results(j)%snapshot_time(m) - t) < 1.0e-7_dp) then
-            if (k <= size(results(j)%tension, 1)) value_at = results(j)%tension(k, m)
-            return
-         end if
-      end do
-   end function value_at
-
-   !> First time the fixed-end tension is <= 0 (end of the history if never), s.
-   real(dp) function compression_time(r)
-      type(run_result), intent(in) :: r
-      integer :: i
-      compression_time = r%time(size(r%time))
-      do i = 2, size(r%time)
-         if (r%fixed_end_tension(i) <= 0) then
-            compression_time = r%time(i - 1) + (r%time(i) - r%time(i - 1))*r%fixed_end_tension(i - 1)/ &
-                               (r%fixed_end_tension(i - 1) - r%fixed_end_tension(i))
-            return
-         end if
-      end do
-   end function compression_time
-
-   !> Errors of one run against the references.
-   subroutine measure(c, r, w, f, e)
-      type(case_def), intent(in) :: c
-      type(run_result), intent(in) :: r
-      type(wave_reference), intent(in) :: w
-      type(field_reference), intent(in) :: f
-      type(run_errors), intent(out) :: e
-      integer :: i, j, k, m, nn, cnt
-      real(dp) :: peak, t0, x, tref, err
-      e%speed = nan
-      e%drop = nan
-      e%field_mean = nan
-      e%field_max = nan
-      if (.not. r%ok) return
-      if (size(r%time) < 2) return
-      e%t_tension = compression_time(r)
-      peak = 0
-      do i = 1, size(r%time)
-         if (r%time(i) <= e%t_tension) peak = max(peak, abs(r%end_velocity(i)))
-      end do
-      e%speed = (peak - w%end_speed)/w%end_speed
-      t0 = r%fixed_end_tension(1)
-      do i = 2, size(r%time)
-         if (r%fixed_end_tension(i) <= 0.99_dp*t0) then
-            e%drop = r%time(i - 1) + (r%time(i) - r%time(i - 1))*(0.99_dp*t0 - r%fixed_end_tension(i - 1))/ &
-                     (r%fixed_end_tension(i) - r%fixed_end_tension(i - 1)) - w%drop_time
-            exit
-         end if
-      end do
-      if (.not. f%ok .or. .not. allocated(r%tension)) return
-      nn = size(r%tension, 1)
-      if (nn < 2) return
-      e%field_mean = 0
-      e%field_max = 0
-      cnt = 0
-      do j = 1, size(f%times)
-         m = 0
-         do i = 1, size(r%snapshot_time)
-            if (abs(r%snapshot_time(i) - f%times(j)) < 1.0e-7_dp) m = i
-         end do
-         if (m == 0) then
-            e%field_mean = nan
-            e%field_max = nan
-            return
-         end if
-         do k = 1, nn
-            x = length*(k - 1)/(nn - 1)
-            tref = interpolate(f%s, f%tension(:, j), x)
-            err = abs(r%tension(k, m) - tref)/c%tension
-            e%field_mean = e%field_mean + err
-            e%field_max = max(e%field_max, err)
-            cnt = cnt + 1
-         end do
-      end do
-      e%field_mean = e%field_mean/cnt
-   end subroutine measure
-
-   !> Linear interpolation on an increasing grid (exact at its points).
-   pure real(dp) function interpolate(xg, yg, x)
-      real(dp), intent(in) :: xg(:), yg(:), x
-      integer :: i
-      real(dp) :: w
-      i = max(1, min(size(xg) - 1, int((x - xg(1))/(xg(size(xg)) - xg(1))*(size(xg) - 1)) + 1))
-      do while (i > 1 .and. xg(i) > x)
-         i = i - 1
-      end do
-      do while (i < size(xg) - 1 .and. xg(i + 1) < x)
-         i = i + 1
-      end do
-      w = (x - xg(i))/(xg(i + 1) - xg(i))
-      if (abs(x - xg(i)) < 1.0e-9_dp) w = 0
-      if (abs(x - xg(i + 1)) < 1.0e-9_dp) w = 1
-      interpolate = (1 - w)*yg(i) + w*yg(i + 1)
-   end function interpolate
+   !> Which targets run j meets: P (peak speed), M (plateau speed), D (1 % drop), F (field); '.' where not.
+   character(len=4) function met(j)
+      !> Run.
+      integer, intent(in) :: j
+      logical :: complete
+      complete = results(j)%exit_code == 0 .and. results(j)%ok
+      met = '....'
+      if (complete .and. abs(errors(j)%speed) <= max_speed) met(1:1) = 'P'
+      if (complete .and. abs(errors(j)%plateau) <= max_speed) met(2:2) = 'M'
+      if (complete .and. abs(errors(j)%drop) <= max_drop) met(3:3) = 'D'
+      if (complete .and. errors(j)%field_mean <= max_field) met(4:4) = 'F'
+   end function met
 
    !> The tables of a case.
    subroutine print_tables(c)
+      !> The case.
       type(case_def), intent(in) :: c
-      integer :: j, base, t
+      integer :: j, w, k, t
       integer, allocatable :: order(:)
-      real(dp) :: instructions(max_runs)
-      real(dp) :: t_base
       character(len=1024) :: line
       type(case_config) :: defaults
+      real(dp) :: mean, largest
+      integer :: shared
       call say('')
-      if (field%ok) then
-         write (line, '(a,f5.2,a,es8.1,a,f5.1,a)') '- tension field: '//trim(field%source)//'; observed order '// &
-            'on 241/481/961 nodes ', field%order, ', uncertainty of the reference about ', field%uncertainty, &
-            ' T_s (mean); snapshots from 10 ms to ', 1.0e3_dp*maxval(field%times), ' ms (the fixed end in tension).'
+      call say('### '//trim(c%name)//': reference tension fields')
+      call say('')
+      call say('Snapshots every 10 ms while the fixed end of the 961-node run is in tension; each variant is '// &
+               'measured against its own reference.')
+      call say('')
+      call say('| variant | reference | observed order (241/481/961) | uncertainty (mean, / T_s) | snapshots |')
+      call say('|---|---|---:|---:|---|')
+      do w = 1, n_variants
+         if (field(w)%ok) then
+            write (line, '(a,f5.2,a,es8.1,a,f5.1,a,f5.1,a)') '| '//trim(variant_names(w))//' | '// &
+               trim(field(w)%source)//' | ', field(w)%order, ' | ', field(w)%uncertainty, ' | ', &
+               1.0e3_dp*minval(field(w)%times), ' - ', 1.0e3_dp*maxval(field(w)%times), ' ms |'
+         else
+            line = '| '//trim(variant_names(w))//' | none (run the full benchmark once) | | | |'
+         end if
          call say(trim(line))
-      else
-         call say('- tension field: no reference (run the full benchmark once).')
-      end if
-      t = target_run()
+      end do
       call say('')
-      call say('### '//trim(c%name)//': target')
+      call say('Differences between the references (481 points, the snapshots both have):')
       call say('')
-      call say('| configuration | wall (s) | end speed error | 1 % drop error (ms) | mean abs(dT)/T_s | met |')
-      call say('|---|---:|---:|---:|---:|:---:|')
-      if (t > 0) then
-         write (line, '(a,i0,a,f4.2,a,f8.4,a,es9.2,a,f8.4,a,es9.2,3a)') '| ', specs(t)%nodes, ' nodes, Courant ', &
-            specs(t)%courant, ' | ', results(t)%wall, ' | ', errors(t)%speed, ' | ', 1.0e3_dp*errors(t)%drop, ' | ', &
-            errors(t)%field_mean, ' | ', trim(merge('yes', 'no ', target_met(c, t))), ' |'
-         call say(trim(line))
-      end if
-      write (line, '(a,f5.3,a)') '| target | <= ', c%max_wall, ' | '//trim(merge('<= 0.1 %', '        ', &
-                                                                               c%max_speed > 0))//' | '// &
-         trim(merge('<= 0.05 ', '        ', c%max_drop > 0))//' | '//trim(merge('<= 5e-3', '       ', &
-                                                                               c%max_field > 0))//' | |'
-      call say(trim(line))
+      call say('| references | mean abs(dT)/T_s | max abs(dT)/T_s | snapshots |')
+      call say('|---|---:|---:|---:|')
+      do k = 1, 3
+         select case (k)
+         case (1)
+            call compare_references(field(rod), field(box), length, c%tension, mean, largest, shared)
+            line = '| rod averaged - box'
+         case (2)
+            call compare_references(field(lumped), field(box), length, c%tension, mean, largest, shared)
+            line = '| rod lumped - box'
+         case default
+            call compare_references(field(lumped), field(rod), length, c%tension, mean, largest, shared)
+            line = '| rod lumped - rod averaged'
+         end select
+         call say(trim(line)//' | '//trim(real_fmt(mean, '(es9.2)'))//' | '//trim(real_fmt(largest, '(es9.2)'))// &
+                  ' | '//trim(int_str(shared))//' |')
+      end do
+
+      call say('')
+      call say('### '//trim(c%name)//': target configurations')
+      call say('')
+      call say('The configuration of each variant that the theta and output rows use (and `make bench-quick` '// &
+               'times).')
+      call table_head(variant=.true.)
+      do w = 1, n_variants
+         t = target_run(w)
+         if (t > 0) call table_row(t, variant=.true.)
+      end do
+
       if (.not. quick) then
-         call say('')
-         call say('### '//trim(c%name)//': grids at fixed Courant numbers')
-         call table_head()
-         do j = 1, n
-            if (kinds(j) == 'ladder') call table_row(j)
+         call cheapest_table(c)
+         do w = 1, n_variants
+            call say('')
+            call say('### '//trim(c%name)//', '//trim(variant_names(w))//': grids at fixed Courant numbers')
+            call table_head()
+            do j = 1, n
+               if (kinds(j) == 'ladder' .and. variant_of(j) == w) call table_row(j)
+            end do
+            call say('')
+            call say('### '//trim(c%name)//', '//trim(variant_names(w))//': grids between, at Courant 1')
+            call table_head()
+            order = [integer ::]
+            do j = 1, n
+               if (variant_of(j) /= w) cycle
+               if (kinds(j) == 'between' .or. (kinds(j) == 'ladder' .and. abs(specs(j)%courant - 1) < 1.0e-9_dp &
+                                               .and. specs(j)%nodes >= 61 .and. specs(j)%nodes <= 481)) order = [order, j]
+            end do
+            call sort_runs(order, real(specs(order)%nodes, dp))
+            do j = 1, size(order)
+               call table_row(order(j))
+            end do
          end do
          call say('')
-         call say('### '//trim(c%name)//': time steps at 241 nodes')
+         call say('### '//trim(c%name)//', box: time steps at 241 nodes')
          call table_head()
          order = runs_by_courant()
          do j = 1, size(order)
             call table_row(order(j))
          end do
          call say('')
-         call say('### '//trim(c%name)//': grids between, at Courant 1')
-         call table_head()
-         do j = 1, n
-            if (kinds(j) == 'between' .or. (kinds(j) == 'ladder' .and. abs(specs(j)%courant - 1) < 1.0e-9_dp &
-                                            .and. specs(j)%nodes >= 61 .and. specs(j)%nodes <= 481)) call table_row(j)
-         end do
-         call say('')
-         call say('### '//trim(c%name)//': Newton tolerance at the target configuration ('// &
+         call say('### '//trim(c%name)//', box: Newton tolerance at the target configuration ('// &
                   trim(adjustl(real_fmt(defaults%newton_tol, '(es8.1)')))//' is the default)')
          call table_head('newton_tol')
          order = [integer ::]
          do j = 1, n
-            if (kinds(j) == 'tol' .or. j == t) order = [order, j]
+            if (kinds(j) == 'tol' .or. j == target_run(box)) order = [order, j]
          end do
          call sort_runs(order, -specs(order)%newton_tol)
          do j = 1, size(order)
             call table_row(order(j), specs(order(j))%newton_tol)
          end do
-      else
-         call say('')
-         call table_head()
-         if (t > 0) call table_row(t)
+         call ratio_table()
+         call reuse_table()
+         call theta_table()
       end if
-      call say('')
-      call say('### '//trim(c%name)//': cost of output and diagnostics ('//trim(int_str(c%target_nodes))// &
-               ' nodes, Courant '//trim(real_fmt(c%target_courant, '(f5.2)'))//')')
-      call say('')
-      call say('| output | wall (s) | change | instructions (1e6) | change |')
-      call say('|---|---:|---:|---:|---:|')
-      base = 0
-      do j = 1, n
-         if (kinds(j) == 'cost' .and. specs(j)%fields == '') base = j
-      end do
-      t_base = results(max(base, 1))%wall
-      do j = 1, n
-         if (kinds(j) /= 'cost' .and. j /= t) cycle
-         instructions(j) = 0
-         if (.not. quick) instructions(j) = count_instructions(specs(j), trim(exe), trim(work))
-      end do
-      do j = 1, n
-         if (kinds(j) /= 'cost' .and. j /= t) cycle
-         if (instructions(max(base, 1)) > 0) then
-            write (line, '(a,f8.4,a,sp,f6.1,ss,a,f8.1,a,sp,f6.1,ss,a)') '| '//trim(cost_label(j))//' | ', results(j)%wall, &
-               ' | ', 100*(results(j)%wall/t_base - 1), ' % | ', 1.0e-6_dp*instructions(j), ' | ', &
-               100*(instructions(j)/instructions(max(base, 1)) - 1), ' % |'
-         else
-            write (line, '(a,f8.4,a,sp,f6.1,ss,a)') '| '//trim(cost_label(j))//' | ', results(j)%wall, ' | ', &
-               100*(results(j)%wall/t_base - 1), ' % | | |'
-         end if
-         call say(trim(line))
-      end do
+      call cost_table(c)
    end subroutine print_tables
 
-   !> Whether run j meets the targets of case c.
-   logical function target_met(c, j)
+   !> The cheapest (median CPU time) complete plain runs of each variant that meet the targets.
+   subroutine cheapest_table(c)
+      !> The case.
       type(case_def), intent(in) :: c
-      integer, intent(in) :: j
-      target_met = results(j)%wall <= c%max_wall .and. results(j)%exit_code == 0
-      if (c%max_speed > 0) target_met = target_met .and. abs(errors(j)%speed) <= c%max_speed
-      if (c%max_drop > 0) target_met = target_met .and. abs(errors(j)%drop) <= c%max_drop
-      if (c%max_field > 0) target_met = target_met .and. errors(j)%field_mean <= c%max_field
-   end function target_met
+      integer :: k, w, best
+      call say('')
+      call say('### '//trim(c%name)//': cheapest configuration that meets the targets')
+      call say('')
+      call say('Among the complete runs at theta = 0.5 and newton_tol = 1e-7 (ladders, grids between, box time '// &
+               'steps), the one with the smallest median CPU time (the wall time of the same run beside it).')
+      call table_head(text_column='targets')
+      do k = 1, size(criteria)
+         do w = 1, n_variants
+            best = cheapest_run(w, criteria(k))
+            if (best > 0) then
+               call table_row(best, variant=.true., criterion=trim(criterion_names(k)))
+            else
+               call say('| '//trim(criterion_names(k))//' | '//trim(variant_names(w))//' | none on the ladders |'// &
+                        repeat(' |', 16))
+            end if
+         end do
+      end do
+   end subroutine cheapest_table
 
+   !> The plain run of variant w with the smallest median CPU time among those
+   !> that meet the targets want (flags as met gives them, '.' : not asked); 0: none.
+   integer function cheapest_run(w, want) result(best)
+      !> The variant.
+      integer, intent(in) :: w
+      !> The targets asked for.
+      character(len=4), intent(in) :: want
+      integer :: j
+      best = 0
+      do j = 1, n
+         if (variant_of(j) /= w .or. .not. plain_run(j)) cycle
+         if (.not. meets(met(j), want)) cycle
+         if (best == 0) then
+            best = j
+         else if (results(j)%cpu < results(best)%cpu) then
+            best = j
+         end if
+      end do
+   end function cheapest_run
+
+   !> Whether the target flags got (as met gives them) include every flag of want.
+   logical function meets(got, want)
+      !> Flags of a run, and the flags asked for ('.' : not asked).
+      character(len=4), intent(in) :: got, want
+      integer :: q
+      meets = .true.
+      do q = 1, 4
+         if (want(q:q) /= '.' .and. got(q:q) /= want(q:q)) meets = .false.
+      end do
+   end function meets
+
+   !> Rod / box: cost ratios on the ladders, paired by round, and per node-step.
+   subroutine ratio_table()
+      integer :: a, b, jb, jr, jl
+      real(dp) :: per_step_r, per_step_l
+      character(len=1024) :: line
+      call say('')
+      call say('### '//trim(cases(ic)%name)//': cost of the rod against the box scheme')
+      call say('')
+      call say('Ratios of the whole process on the same grid and Courant number: wall and CPU time (medians over '// &
+               'the rounds of the ratio of the two runs of a round), instructions (callgrind, Courant 1 up to '// &
+               trim(int_str(count_nodes_max))//' nodes); "per node-step" divides by the ratio of the steps (the '// &
+               'box rounds its step to fit the 10 ms snapshot interval).')
+      call say('')
+      call say('| nodes | Courant | steps: box, rod, lumped | box wall (s) | box CPU (s) | rod/box wall | '// &
+               'rod/box CPU | rod/box instructions | rod/box per node-step (CPU) | rod/box per node-step '// &
+               '(instructions) | lumped/box CPU | lumped/box per node-step (instructions) |')
+      call say('|---:|---:|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
+      do b = 1, size(ladder_courant)
+         do a = 2, size(ladder_nodes)
+            jb = find(box, ladder_nodes(a), ladder_courant(b), 'ladder')
+            jr = find(rod, ladder_nodes(a), ladder_courant(b), 'ladder')
+            jl = find(lumped, ladder_nodes(a), ladder_courant(b), 'ladder')
+            if (jb == 0 .or. jr == 0 .or. jl == 0) cycle
+            if (.not. (results(jb)%ok .and. results(jr)%ok .and. results(jl)%ok)) cycle
+            per_step_r = real(results(jb)%steps, dp)/max(results(jr)%steps, 1)
+            per_step_l = real(results(jb)%steps, dp)/max(results(jl)%steps, 1)
+            write (line, '(a,i0,a,f4.2,a,3(i0,a),f8.4,a,f8.4,a,f6.2,a,f6.2,a)') '| ', ladder_nodes(a), ' | ', &
+               ladder_courant(b), ' | ', results(jb)%steps, ', ', results(jr)%steps, ', ', results(jl)%steps, ' | ', &
+               results(jb)%wall, ' | ', results(jb)%cpu, ' | ', paired_ratio(results(jr), results(jb), .false.), &
+               ' | ', paired_ratio(results(jr), results(jb), .true.), ' | '
+            line = trim(line)//' '//trim(ratio_text(instructions(jr), instructions(jb)))//' | '// &
+                   trim(real_fmt(paired_ratio(results(jr), results(jb), .true.)*per_step_r, '(f6.2)'))//' | '// &
+                   trim(ratio_text(instructions(jr)*per_step_r, instructions(jb)))//' | '// &
+                   trim(real_fmt(paired_ratio(results(jl), results(jb), .true.), '(f6.2)'))//' | '// &
+                   trim(ratio_text(instructions(jl)*per_step_l, instructions(jb)))//' |'
+            call say(trim(line))
+         end do
+      end do
+      call marginal_cost()
+   end subroutine ratio_table
+
+   !> a / b with two decimals, blank when either is not counted.
+   function ratio_text(a, b) result(text)
+      !> Numerator and denominator.
+      real(dp), intent(in) :: a, b
+      character(len=16) :: text
+      text = ''
+      if (a > 0 .and. b > 0) write (text, '(f6.2)') a/b
+      text = adjustl(text)
+   end function ratio_text
+
+   !> Instructions per node-step between the two finest counted grids at
+   !> Courant 1 (the start-up and statics cancel), per variant, and the ratios.
+   subroutine marginal_cost()
+      integer :: w, j1, j2
+      real(dp) :: per(n_variants)
+      character(len=512) :: line
+      per = 0
+      do w = 1, n_variants
+         j1 = find(w, 241, 1.0_dp, 'ladder')
+         j2 = find(w, count_nodes_max, 1.0_dp, 'ladder')
+         if (j1 == 0 .or. j2 == 0) cycle
+         if (instructions(j1) <= 0 .or. instructions(j2) <= 0) cycle
+         per(w) = (instructions(j2) - instructions(j1))/ &
+                  (real(specs(j2)%nodes, dp)*results(j2)%steps - real(specs(j1)%nodes, dp)*results(j1)%steps)
+      end do
+      if (any(per <= 0)) return
+      write (line, '(a,i0,a,3(f8.0,a),f5.2,a,f5.2,a)') 'Instructions per node and step between 241 and ', &
+         count_nodes_max, ' nodes at Courant 1 (start-up and statics cancel): box ', per(box), ', rod averaged ', &
+         per(rod), ', rod lumped ', per(lumped), '; rod/box ', per(rod)/per(box), ', lumped/box ', &
+         per(lumped)/per(box), '.'
+      call say('')
+      call say(trim(line))
+   end subroutine marginal_cost
+
+   !> The rod at its targets with the Jacobian kept while Newton contracts well
+   !> (reuse_jacobian = .true., the box scheme's default) against its default.
+   subroutine reuse_table()
+      integer :: w, j
+      call say('')
+      call say('### '//trim(cases(ic)%name)//': the rod with reuse_jacobian = .true. at its target configuration')
+      call say('')
+      call say('The rod refreshes and factorises its Jacobian at every Newton iteration unless reuse_jacobian is '// &
+               'given; with .true. it keeps the factorised Jacobian while Newton contracts well, as the box scheme '// &
+               'does.')
+      call table_head(text_column='reuse_jacobian')
+      do w = rod, lumped
+         do j = 1, n
+            if (variant_of(j) /= w) cycle
+            if (j == target_run(w)) call table_row(j, criterion='default (.false.)')
+            if (kinds(j) == 'reuse') call table_row(j, criterion='.true.')
+         end do
+      end do
+   end subroutine reuse_table
+
+   !> The rod at theta 0.5, 0.55, 0.6 at its target: what damping costs at the front.
+   subroutine theta_table()
+      integer :: w, j
+      character(len=1024) :: line
+      call say('')
+      call say('### '//trim(cases(ic)%name)//': the rod''s time weight theta at its target configuration')
+      call say('')
+      call say('theta > 0.5 damps every mode whose velocity changes within a step and books the energy removed '// &
+               '(column "dissipated", / the initial strain energy) in the ledger; these runs keep the energy '// &
+               'ledger (a few per cent of the time).')
+      call say('')
+      call say('| variant | theta | nodes | Courant | wall (s) | CPU (s) | instructions (1e6) | Newton it. / step | '// &
+               'peak end speed error | plateau speed error | 1 % drop error (ms) | mean abs(dT)/T_s | '// &
+               'dissipated / strain energy | met |')
+      call say('|---|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:---:|')
+      do w = rod, lumped
+         do j = 1, n
+            if (kinds(j) /= 'theta' .or. variant_of(j) /= w) cycle
+            if (.not. results(j)%ok) then
+               call say('| '//trim(variant_names(w))//' | '//trim(real_fmt(specs(j)%theta, '(f4.2)'))// &
+                        ' | no result (exit '//trim(int_str(results(j)%exit_code))//') | | | | | | | | | | | |')
+               cycle
+            end if
+            write (line, '(a,f4.2,a,i0,a,f5.3,a,f8.4,a,f8.4,a)') '| '//trim(variant_names(w))//' | ', specs(j)%theta, &
+               ' | ', specs(j)%nodes, ' | ', results(j)%courant_used, ' | ', results(j)%wall, ' | ', results(j)%cpu, ' | '
+            line = trim(line)//' '//trim(instr_text(j))//' | '// &
+                   trim(real_fmt(real(results(j)%newton_iterations, dp)/max(results(j)%steps, 1), '(f5.2)'))//' | '// &
+                   trim(real_fmt(errors(j)%speed, '(es9.2)'))//' | '//trim(real_fmt(errors(j)%plateau, '(es9.2)'))// &
+                   ' | '//trim(real_fmt(1.0e3_dp*errors(j)%drop, '(f9.4)'))//' | '// &
+                   trim(real_fmt(errors(j)%field_mean, '(es9.2)'))//' | '// &
+                   trim(real_fmt(results(j)%dissipated/max(results(j)%strain_energy, tiny(1.0_dp)), '(es9.2)'))// &
+                   ' | '//met(j)//' |'
+            call say(trim(line))
+         end do
+      end do
+   end subroutine theta_table
+
+   !> Instructions of run j in millions (blank if not counted).
+   function instr_text(j) result(text)
+      !> Run.
+      integer, intent(in) :: j
+      character(len=16) :: text
+      text = ''
+      if (instructions(j) > 0) write (text, '(f9.1)') 1.0e-6_dp*instructions(j)
+      text = adjustl(text)
+   end function instr_text
+
+   !> The cost of more output and of the energy ledger at the targets of the box and the rod.
+   subroutine cost_table(c)
+      !> The case.
+      type(case_def), intent(in) :: c
+      integer :: j, w, base, t
+      character(len=1024) :: line
+      do w = box, rod
+         t = target_run(w)
+         call say('')
+         call say('### '//trim(c%name)//', '//trim(variant_names(w))//': cost of output and diagnostics ('// &
+                  trim(int_str(c%target_nodes(w)))//' nodes, Courant '//trim(real_fmt(c%target_courant(w), '(f5.2)'))//')')
+         call say('')
+         call say('| output | wall (s) | change | CPU (s) | change | instructions (1e6) | change |')
+         call say('|---|---:|---:|---:|---:|---:|---:|')
+         base = 0
+         do j = 1, n
+            if (kinds(j) == 'cost' .and. variant_of(j) == w .and. specs(j)%fields == '') base = j
+         end do
+         if (base == 0) cycle
+         do j = 1, n
+            if (variant_of(j) /= w .or. (kinds(j) /= 'cost' .and. j /= t)) cycle
+            write (line, '(a,f8.4,a,sp,f6.1,ss,a,f8.4,a,sp,f6.1,ss,a)') '| '//trim(cost_label(j))//' | ', &
+               results(j)%wall, ' | ', 100*(results(j)%wall/results(base)%wall - 1), ' % | ', results(j)%cpu, ' | ', &
+               100*(results(j)%cpu/max(results(base)%cpu, 1.0e-3_dp) - 1), ' % | '
+            if (instructions(base) > 0 .and. instructions(j) > 0) then
+               write (line, '(a,f8.1,a,sp,f6.1,ss,a)') trim(line)//' ', 1.0e-6_dp*instructions(j), ' | ', &
+                  100*(instructions(j)/instructions(base) - 1), ' % |'
+            else
+               line = trim(line)//' | |'
+            end if
+            call say(trim(line))
+         end do
+      end do
+   end subroutine cost_table
+
+   !> What a cost run writes.
    character(len=96) function cost_label(j)
+      !> Run.
       integer, intent(in) :: j
       if (specs(j)%fields == '') then
          cost_label = 'no fields (snapshot times only)'
@@ -724,104 +965,177 @@ contains
       if (specs(j)%energy) cost_label = trim(cost_label)//' + energy ledger'
    end function cost_label
 
-   character(len=16) function int_str(i)
-      integer, intent(in) :: i
-      write (int_str, '(i0)') i
-   end function int_str
-
-   subroutine table_head(extra)
+   !> Head of a run table (optional leading columns).
+   subroutine table_head(extra, variant, text_column)
+      !> Name of a leading numeric column.
       character(*), intent(in), optional :: extra
-      call say('')
-      if (present(extra)) then
-         call say('| '//extra//' | nodes | ds (m) | Courant | dt (us) | steps | Newton it. / step | factorisations | '// &
-                  'wall (s) | reached (s) | end speed error | 1 % drop error (ms) | mean abs(dT)/T_s | max abs(dT)/T_s |')
-         call say('|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
-      else
-         call say('| nodes | ds (m) | Courant | dt (us) | steps | Newton it. / step | factorisations | wall (s) | '// &
-                  'reached (s) | end speed error | 1 % drop error (ms) | mean abs(dT)/T_s | max abs(dT)/T_s |')
-         call say('|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|')
+      !> Leading variant column.
+      logical, intent(in), optional :: variant
+      !> Name of a leading text column (followed by the variant column).
+      character(*), intent(in), optional :: text_column
+      character(len=1024) :: head, rule
+      head = '|'
+      rule = '|'
+      if (present(text_column)) then
+         head = trim(head)//' '//text_column//' |'
+         rule = trim(rule)//'---|'
       end if
+      if (present(variant) .or. present(text_column)) then
+         head = trim(head)//' variant |'
+         rule = trim(rule)//'---|'
+      end if
+      if (present(extra)) then
+         head = trim(head)//' '//extra//' |'
+         rule = trim(rule)//'---:|'
+      end if
+      head = trim(head)//' nodes | ds (m) | Courant | dt (us) | steps | Newton it. / step | factorisations | '// &
+             'wall (s) | CPU (s) | instructions (1e6) | reached (s) | peak end speed error | plateau speed error | '// &
+             '1 % drop error (ms) | mean abs(dT)/T_s | max abs(dT)/T_s | met |'
+      rule = trim(rule)//'---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|---:|:---:|'
+      call say('')
+      call say(trim(head))
+      call say(trim(rule))
    end subroutine table_head
 
-   subroutine table_row(j, extra)
+   !> One row of a run table.
+   subroutine table_row(j, extra, variant, criterion)
+      !> Run.
       integer, intent(in) :: j
+      !> Value of the leading numeric column.
       real(dp), intent(in), optional :: extra
-      character(len=512) :: line
-      character(len=24) :: reached, lead
-      lead = ''
-      if (present(extra)) write (lead, '(a,es7.0,a)') '| ', extra, ' '
+      !> Leading variant column.
+      logical, intent(in), optional :: variant
+      !> Leading criterion column.
+      character(*), intent(in), optional :: criterion
+      character(len=1024) :: line
+      character(len=256) :: lead
+      character(len=24) :: reached
+      lead = '|'
+      if (present(criterion)) lead = trim(lead)//' '//trim(criterion)//' |'
+      if (present(variant) .or. present(criterion)) lead = trim(lead)//' '//trim(variant_names(variant_of(j)))//' |'
+      if (present(extra)) lead = trim(lead)//' '//trim(real_fmt(extra, '(es7.0)'))//' |'
       if (.not. results(j)%ok) then
-         write (line, '(2a,i0,a,i0,a)') trim(lead), '| ', specs(j)%nodes, ' | | | | | | | | no result (exit ', &
-            results(j)%exit_code, ') | | | | |'
+         write (line, '(a,i0,a,i0,a)') trim(lead)//' ', specs(j)%nodes, ' | | | | | | | | | | no result (exit ', &
+            results(j)%exit_code, ') | | | | | | |'
          call say(trim(line))
          return
       end if
       write (reached, '(f6.4)') results(j)%time_reached
       if (results(j)%exit_code /= 0) reached = trim(reached)//' (failed)'
-      write (line, '(2a,i0,a,f6.4,a,f5.3,a,f7.2,a,i0,a,f5.2,a,i0,a,f8.4,3a,es9.2,a,f9.4,a,es9.2,a,es9.2,a)') &
-         trim(lead), '| ', specs(j)%nodes, ' | ', length/(specs(j)%nodes - 1), ' | ', actual_courant(j), ' | ', &
-         1.0e6_dp*results(j)%step, ' | ', results(j)%steps, ' | ', &
-         real(results(j)%newton_iterations, dp)/max(results(j)%steps, 1), ' | ', results(j)%factorisations, ' | ', &
-         results(j)%wall, ' | ', trim(reached), ' | ', errors(j)%speed, ' | ', 1.0e3_dp*errors(j)%drop, ' | ', &
-         errors(j)%field_mean, ' | ', errors(j)%field_max, ' |'
+      write (line, '(a,i0,a,f6.4,a,f5.3,a,f7.2,a,i0,a,f5.2,a,i0,a,f8.4,a,f8.4,a)') trim(lead)//' ', specs(j)%nodes, &
+         ' | ', length/(specs(j)%nodes - 1), ' | ', results(j)%courant_used, ' | ', 1.0e6_dp*results(j)%step, ' | ', &
+         results(j)%steps, ' | ', real(results(j)%newton_iterations, dp)/max(results(j)%steps, 1), ' | ', &
+         results(j)%factorisations, ' | ', results(j)%wall, ' | ', results(j)%cpu, ' |'
+      line = trim(line)//' '//trim(instr_text(j))//' | '//trim(reached)//' | '// &
+             trim(real_fmt(errors(j)%speed, '(es9.2)'))//' | '//trim(real_fmt(errors(j)%plateau, '(es9.2)'))//' | '// &
+             trim(real_fmt(1.0e3_dp*errors(j)%drop, '(f9.4)'))//' | '//trim(field_text(j))//' | '//met(j)//' |'
       call say(trim(line))
    end subroutine table_row
 
-   !> The figure's data of the current case: three ladders, the dt ladder, the target, the grids between.
+   !> Mean and max field error of run j as two table cells; the run the
+   !> reference was taken from (without extrapolation) reads 'the reference'.
+   function field_text(j) result(text)
+      !> Run.
+      integer, intent(in) :: j
+      character(len=64) :: text
+      if (errors(j)%field_max <= 0 .and. .not. field(variant_of(j))%extrapolated) then
+         text = 'the reference | the reference '
+      else
+         text = trim(real_fmt(errors(j)%field_mean, '(es9.2)'))//' | '//trim(real_fmt(errors(j)%field_max, '(es9.2)'))//' '
+      end if
+   end function field_text
+
+   !> The figure's data of the current case (the index layout is in the file's
+   !> header); the box time steps and the theta rows of both cases follow
+   !> those of the second.
    subroutine write_data(ic)
+      !> The case.
       integer, intent(in) :: ic
-      integer :: k, j
+      integer :: w, k, j, q
       integer, allocatable :: order(:)
-      logical :: keep
-      do k = 1, 6
-         do j = 1, n
-            if (.not. results(j)%ok) cycle
-            select case (k)
-            case (1:3)
-               keep = kinds(j) == 'ladder' .and. abs(specs(j)%courant - ladder_courant(k)) < 1.0e-9_dp
-            case (4)
-               keep = .false.
-            case (5)
-               keep = j == target_run()
-            case default
-               keep = kinds(j) == 'between'
-            end select
-            if (.not. keep) cycle
-            call data_line(j)
-         end do
-         if (k == 4) then
-            order = runs_by_courant()
-            do j = 1, size(order)
-               call data_line(order(j))
+      do w = 1, n_variants
+         do k = 1, 5
+            do j = 1, n
+               if (variant_of(j) /= w) cycle
+               select case (k)
+               case (1:3)
+                  if (kinds(j) /= 'ladder' .or. abs(specs(j)%courant - ladder_courant(k)) > 1.0e-9_dp) cycle
+               case (4)
+                  if (kinds(j) /= 'between') cycle
+               case default
+                  if (j /= target_run(w)) cycle
+               end select
+               call data_line(j)
             end do
-         end if
-         if (k < 6 .or. ic == 1) write (dat, '(/)')
+            write (dat, '(/)')
+         end do
+      end do
+      call keep_lines(later_blocks(ic), runs_by_courant())
+      do w = rod, lumped
+         order = [integer ::]
+         do j = 1, n
+            if (kinds(j) == 'theta' .and. variant_of(j) == w) order = [order, j]
+         end do
+         call keep_lines(later_blocks(1 + 2*ic + w - rod), order)
+      end do
+      if (ic /= 2) return
+      do q = 1, size(later_blocks)
+         do j = 1, size(later_blocks(q)%lines)
+            write (dat, '(a)') trim(later_blocks(q)%lines(j))
+         end do
+         write (dat, '(/)')
       end do
    end subroutine write_data
 
    !> One line of the figure's data.
+   function data_text(j) result(text)
+      !> Run.
+      integer, intent(in) :: j
+      character(len=200) :: text
+      write (text, '(i5,f7.3,2es12.4,5es12.4,i3,es13.5,f6.3)') specs(j)%nodes, results(j)%courant_used, &
+         results(j)%wall, results(j)%cpu, abs(errors(j)%speed), abs(errors(j)%plateau), 1.0e3_dp*abs(errors(j)%drop), &
+         errors(j)%field_mean, errors(j)%field_max, merge(1, 0, results(j)%exit_code == 0), instructions(j), &
+         specs(j)%theta
+   end function data_text
+
+   !> Write one line of the figure's data (runs without a result are left out).
    subroutine data_line(j)
+      !> Run.
       integer, intent(in) :: j
       if (.not. results(j)%ok) return
-      write (dat, '(i5,f7.3,es12.4,4es12.4,i3)') specs(j)%nodes, actual_courant(j), results(j)%wall, &
-         abs(errors(j)%speed), 1.0e3_dp*abs(errors(j)%drop), errors(j)%field_mean, errors(j)%field_max, &
-         merge(1, 0, results(j)%exit_code == 0)
+      write (dat, '(a)') trim(data_text(j))
    end subroutine data_line
 
-   !> The runs on dt_nodes nodes (ladder and dt ladder), by increasing Courant number.
+   !> Keep the data lines of some runs for a later block.
+   subroutine keep_lines(block, order)
+      !> Where they are kept.
+      type(text_block), intent(inout) :: block
+      !> The runs.
+      integer, intent(in) :: order(:)
+      integer :: j
+      allocate (block%lines(0))
+      do j = 1, size(order)
+         if (results(order(j))%ok) block%lines = [block%lines, data_text(order(j))]
+      end do
+   end subroutine keep_lines
+
+   !> The box runs on dt_nodes nodes (ladder and dt ladder), by increasing Courant number.
    function runs_by_courant() result(order)
       integer, allocatable :: order(:)
       integer :: j
       order = [integer ::]
       do j = 1, n
-         if (specs(j)%nodes == dt_nodes .and. (kinds(j) == 'ladder' .or. kinds(j) == 'dt')) order = [order, j]
+         if (variant_of(j) == box .and. specs(j)%nodes == dt_nodes .and. (kinds(j) == 'ladder' .or. kinds(j) == 'dt')) &
+            order = [order, j]
       end do
       call sort_runs(order, specs(order)%courant)
    end function runs_by_courant
 
    !> Sort run indices by increasing key (insertion sort).
    subroutine sort_runs(order, key)
+      !> Run indices.
       integer, intent(inout) :: order(:)
+      !> Key of each.
       real(dp), intent(in) :: key(:)
       real(dp) :: k_sorted(size(key)), kt
       integer :: j, k, tmp

@@ -96,7 +96,7 @@ contains
       else
          call first_guess(error)
          if (allocated(error)) return
-         call solve_now(error)
+         call solve_with_loads(error)
          if (allocated(error)) return
       end if
       call finish()
@@ -134,6 +134,56 @@ contains
          f = problem%piece%reaction(n, reshape(state%r, [2*n]), 0.0_dp, 0.5_dp)
          mismatch = norm2(f)/scene%tension - 1
       end subroutine solve_at_span
+
+      !> Newton from state%r; if that fails and the cable carries distributed loads
+      !> (a current can push it far from the catenary guess), solve without them
+      !> and raise them step by step, each solution the guess of the next.
+      subroutine solve_with_loads(err)
+         type(error_type), allocatable, intent(out) :: err
+         real(dp), allocatable :: guess(:, :), last(:, :)
+         real(dp) :: factor, step
+         integer :: tries
+         if (.not. allocated(problem%piece%loads)) then
+            call solve_now(err)
+            return
+         end if
+         if (size(problem%piece%loads) == 0) then
+            call solve_now(err)
+            return
+         end if
+         guess = state%r
+         call solve_now(err)
+         if (.not. allocated(err)) return
+         deallocate (err)
+         state%r = guess
+         problem%piece%load_factor = 0
+         call solve_now(err)
+         if (allocated(err)) then
+            problem%piece%load_factor = 1
+            return
+         end if
+         factor = 0
+         step = 0.25_dp
+         last = state%r
+         do tries = 1, 200
+            problem%piece%load_factor = min(1.0_dp, factor + step)
+            call solve_now(err)
+            if (allocated(err)) then
+               deallocate (err)
+               state%r = last
+               step = 0.5_dp*step
+               if (step < 1.0e-4_dp) exit
+               cycle
+            end if
+            factor = problem%piece%load_factor
+            last = state%r
+            if (factor >= 1) exit
+            step = min(2*step, 1 - factor)
+         end do
+         problem%piece%load_factor = 1
+         if (factor < 1) call fatal_error(err, 'statics: no equilibrium found under the distributed loads (fluid): '// &
+                                         'reached '//str(100*factor)//' % of them', stat_numerics)
+      end subroutine solve_with_loads
 
       !> Newton from state%r.
       subroutine solve_now(err)

@@ -76,6 +76,8 @@ contains
          why = 'the box scheme has the tanh and linear laws only'
       else if (config%damping /= 0) then
          why = 'the box scheme has no internal damping'
+      else if (config%fluid_density /= 0) then
+         why = 'the box scheme has no fluid loads'
       else if (trim(config%compression) /= 'law') then
          why = 'the box scheme has the law''s compression only (compression = ''law'')'
       end if
@@ -203,6 +205,7 @@ contains
             self%history%energy(1:5, i) = old%energy(1:5, i)
             self%history%energy(6, i) = 0
             self%history%energy(7, i) = old%energy(6, i)
+            self%history%energy(8, i) = 0
          end if
       end do
       ! Summary: the box scheme's own figures, and per end.

@@ -19,10 +19,11 @@ module xcable_run_records
    integer, parameter :: n_end_quantities = 7
    character(len=*), parameter :: end_quantity_names(n_end_quantities) = &
       [character(len=8) :: 'x', 'z', 'vx', 'vz', 'tension', 'force_x', 'force_z']
-   !> Energy ledger columns (J): ledger = strain + kinetic + bending + gravity - work + dissipation.
-   integer, parameter :: n_energy = 7
+   !> Energy ledger columns (J): ledger = strain + kinetic + bending + gravity - work - loads + dissipation;
+   !> work: of the ends; loads: of the distributed loads (fluid drag and added mass).
+   integer, parameter :: n_energy = 8
    character(len=*), parameter :: energy_names(n_energy) = &
-      [character(len=11) :: 'strain', 'kinetic', 'bending', 'gravity', 'work', 'dissipation', 'ledger']
+      [character(len=11) :: 'strain', 'kinetic', 'bending', 'gravity', 'work', 'dissipation', 'ledger', 'loads']
    !> Snapshot fields, in this order.
    integer, parameter :: n_fields = 8
    character(len=*), parameter :: field_names(n_fields) = &

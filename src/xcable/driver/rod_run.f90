@@ -159,8 +159,8 @@ module xcable_rod_run
       real(dp) :: dt = 0
       !> Current time, s.
       real(dp) :: t = 0
-      !> Energy bookkeeping: work of the ends and loads, numerical dissipation, J.
-      real(dp) :: work = 0, dissipation = 0
+      !> Energy bookkeeping: work of the ends, work of the distributed loads, dissipation, J.
+      real(dp) :: work = 0, load_work = 0, dissipation = 0
       !> Whether the break has happened.
       logical :: broken = .false.
       !> Force (N; x, z of each) and couple (N m) the break's new ends start from (cut a, cut b).
@@ -238,6 +238,7 @@ contains
       call self%pieces(1)%problem%piece%init(self%s, scene%mass, scene%weight, scene%ei, scene%gravity, options%mu, &
                                               scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp), options%mu2, &
                                               options%damping)
+      if (allocated(scene%loads)) self%pieces(1)%problem%piece%loads = scene%loads
       static_newton = options%newton
       call solve_rod_statics(scene, self%pieces(1)%problem, static_newton, self%static, error)
       if (allocated(error)) return
@@ -1082,6 +1083,8 @@ contains
                ! Work of the ends: applied force (mean over the step) or reaction, times the displacement.
                call end_work(piece%end_a, 1, 1)
                call end_work(piece%end_b, n, 2)
+               ! Distributed loads: their force on each node (centred on the step) times its displacement.
+               self%load_work = self%load_work + sum(piece%load_node*(r1 - run_piece%r))
                ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt.
                if (piece%damping > 0) self%dissipation = self%dissipation + &
                   piece%damping*sum(piece%ds*(piece%l1 - piece%l0)**2)/h
@@ -1204,7 +1207,8 @@ contains
          self%history%energy(1:4, i) = en
          self%history%energy(5, i) = self%work
          self%history%energy(6, i) = self%dissipation
-         self%history%energy(7, i) = sum(en) - self%work + self%dissipation
+         self%history%energy(7, i) = sum(en) - self%work - self%load_work + self%dissipation
+         self%history%energy(8, i) = self%load_work
       end if
    end subroutine record
 
@@ -1338,6 +1342,10 @@ contains
          call self%pieces(2)%problem%piece%init(self%s(kb:n), whole%mass_per_length, whole%weight, whole%ei, whole%gravity, &
                                                  whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref, whole%mu2, &
                                                  whole%damping)
+         if (allocated(whole%loads)) then
+            self%pieces(1)%problem%piece%loads = whole%loads
+            self%pieces(2)%problem%piece%loads = whole%loads
+         end if
       end associate
       self%pieces(1)%r = old(1)%r(:, 1:kb)
       self%pieces(1)%v = old(1)%v(:, 1:kb)

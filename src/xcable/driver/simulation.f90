@@ -149,6 +149,7 @@ contains
    function terms_of(scene) result(terms)
       type(scene_type), intent(in) :: scene
       character(:), allocatable :: terms
+      integer :: k
       terms = 'rod: strain bending'
       if (scene%gravity > 0) terms = terms//' gravity'
       if (scene%end_a%point_mass() > 0 .or. scene%end_b%point_mass() > 0) terms = terms//' point_mass'
@@ -157,6 +158,11 @@ contains
       if (scene%breaks) terms = terms//' break'
       if (index(scene%law%name(), 'without compression') > 0) terms = terms//' tension_only'
       if (scene%law%name() == 'table' .or. index(scene%law%name(), 'table ') == 1) terms = terms//' table_law'
+      if (allocated(scene%loads)) then
+         do k = 1, size(scene%loads)
+            terms = terms//' '//scene%loads(k)%load%name()
+         end do
+      end if
    end function terms_of
 
    !> The dynamics.

@@ -77,6 +77,8 @@ module xcable_io_config
       character(len=512) :: material_table_file = ''
       !> Internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt, N s (&material damping).
       real(dp) :: damping = 0
+      !> &fluid: density (kg/m^3; 0: no fluid), drag and added-mass coefficients, uniform current (m/s).
+      real(dp) :: fluid_density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_z = 0
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp

@@ -753,6 +753,8 @@ contains
             call read_end(unit, 'end_a', c%end_a, ios, msg)
          case ('end_b')
             call read_end(unit, 'end_b', c%end_b, ios, msg)
+         case ('fluid')
+            call read_fluid(unit, c, ios, msg)
          case ('rupture')
             read (unit, nml=rupture, iostat=ios, iomsg=msg)
          case ('numerics')
@@ -823,6 +825,26 @@ contains
       e%table_time = table_time; e%table_x = table_x; e%table_z = table_z; e%table_file = table_file
    end subroutine read_end
 
+   !> Read &fluid (its density has the name of &cable's, so it has its own scope).
+   subroutine read_fluid(unit, c, ios, msg)
+      !> Open namelist file, rewound.
+      integer, intent(in) :: unit
+      !> The case: defaults in, values given out.
+      type(case_config), intent(inout) :: c
+      !> iostat of the read.
+      integer, intent(out) :: ios
+      !> iomsg of the read.
+      character(len=*), intent(inout) :: msg
+      real(dp) :: density, cd_normal, cd_tangential, ca_normal, current_x, current_z
+      namelist /fluid/ density, cd_normal, cd_tangential, ca_normal, current_x, current_z
+      density = c%fluid_density; cd_normal = c%cd_normal; cd_tangential = c%cd_tangential
+      ca_normal = c%ca_normal; current_x = c%current_x; current_z = c%current_z
+      read (unit, nml=fluid, iostat=ios, iomsg=msg)
+      if (ios /= 0) return
+      c%fluid_density = density; c%cd_normal = cd_normal; c%cd_tangential = cd_tangential
+      c%ca_normal = ca_normal; c%current_x = current_x; c%current_z = current_z
+   end subroutine read_fluid
+
    !> Get (store = .false.) or set (store = .true.) the value of a schema
    !> entry in a case: the one map from a namelist variable to its component
    !> of case_config for the generic code (validation, echo, tests).
@@ -861,6 +883,12 @@ contains
       case ('material%table_tension'); call move_rows(c%material_table_tension, c%material_table_rows, v, store)
       case ('material%table_file'); call move(c%material_table_file, v, store)
       case ('material%damping'); call move(c%damping, v, store)
+      case ('fluid%density'); call move(c%fluid_density, v, store)
+      case ('fluid%cd_normal'); call move(c%cd_normal, v, store)
+      case ('fluid%cd_tangential'); call move(c%cd_tangential, v, store)
+      case ('fluid%ca_normal'); call move(c%ca_normal, v, store)
+      case ('fluid%current_x'); call move(c%current_x, v, store)
+      case ('fluid%current_z'); call move(c%current_z, v, store)
       case ('static%tension'); call move(c%tension, v, store)
       case ('rupture%enabled'); call move(c%break_enabled, v, store)
       case ('rupture%s_break'); call move(c%s_break, v, store)
@@ -1280,6 +1308,22 @@ contains
          call fatal_error(error, c%source//': &static: tension = '//real_text(c%tension)//' and &end_b '//position// &
                           ': both given; give one: the tension (the paper'//"'"//'s symmetric case: end b at the '// &
                           'height of end a, the span from the tension) or the end positions', stat_input)
+         return
+      end if
+
+      if (c%fluid_density == 0 .and. (c%current_x /= 0 .or. c%current_z /= 0)) then
+         if (c%current_x /= 0) then
+            position = 'current_x = '//real_text(c%current_x)
+         else
+            position = 'current_z = '//real_text(c%current_z)
+         end if
+         call fatal_error(error, c%source//': &fluid: '//position//': a current needs a fluid; give &fluid density '// &
+                          '(> 0: 1025 for sea water, 1.2 for air)', stat_input)
+         return
+      end if
+      if (c%fluid_density == 0 .and. (c%cd_normal /= 0 .or. c%cd_tangential /= 0 .or. c%ca_normal /= 0)) then
+         call fatal_error(error, c%source//': &fluid: drag or added-mass coefficients without a fluid (density = 0); '// &
+                          'give &fluid density (> 0: 1025 for sea water, 1.2 for air)', stat_input)
          return
       end if
 

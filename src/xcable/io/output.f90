@@ -582,14 +582,19 @@ contains
       ! Columns 1-4: t, velocity u of end b along the cable (the released end of the
       ! paper's case), tension at end a, Newton iterations; 5-11 the energy ledger
       ! (strain kinetic bending gravity work ledger dissipation) or zeros without it;
-      ! then per end: speed, tension of the end cell, |external force|.
+      ! then per end: speed, tension of the end cell, |external force|; last, with the ledger,
+      ! the work of the distributed loads (fluid).
       header = '# columns: t[s] end_b_u[m/s] end_a_tension[N] newton_iterations E_strain[J] E_kinetic[J] '// &
                'E_bending[J] E_gravity[J] W_end[J] ledger[J] dissipation[J]'
       do j = 1, n_ends
          header = header//' '//trim(history%end_labels(j))//':speed[m/s] '//trim(history%end_labels(j))// &
                   ':tension[N] '//trim(history%end_labels(j))//':force[N]'
       end do
-      if (.not. allocated(history%energy)) header = header//' (no energy ledger)'
+      if (allocated(history%energy)) then
+         header = header//' W_loads[J]'
+      else
+         header = header//' (no energy ledger)'
+      end if
       write (unit, '(a)') header
       do i = 0, n
          write (unit, '(3es16.8,i4)', advance='no') history%time(i), end_b_u(i), history%ends(5, 1, i), &
@@ -603,6 +608,7 @@ contains
             write (unit, '(3es16.8)', advance='no') norm2(history%ends(3:4, j, i)), history%ends(5, j, i), &
                norm2(history%ends(6:7, j, i))
          end do
+         if (allocated(history%energy)) write (unit, '(es17.9)', advance='no') history%energy(8, i)
          write (unit, '(a)') ''
       end do
       close (unit)

@@ -115,6 +115,20 @@ contains
                length=16, choices='law none')
       call add(t, 'material', 'damping', 'real', 'N s', '0', &
                'internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt', 0.0_dp, 1.0e12_dp)
+      ! &fluid
+      call add(t, 'fluid', 'density', 'real', 'kg/m^3', '0', &
+               'density of the fluid around the cable (1025 sea water, 1.2 air): buoyancy, drag, added mass; '// &
+               '0: no fluid', 0.0_dp, 1.0e5_dp)
+      call add(t, 'fluid', 'cd_normal', 'real', '-', '0', &
+               'normal drag coefficient, on the stretched diameter (MoorDyn Cdn, OrcaFlex normal Cd)', 0.0_dp, 1.0e3_dp)
+      call add(t, 'fluid', 'cd_tangential', 'real', '-', '0', &
+               'tangential drag coefficient, on the surface pi d (MoorDyn Cdt, OrcaFlex axial Cd)', 0.0_dp, 1.0e3_dp)
+      call add(t, 'fluid', 'ca_normal', 'real', '-', '0', &
+               'normal added-mass coefficient, on the displaced volume (MoorDyn Can, OrcaFlex normal Ca)', 0.0_dp, 1.0e3_dp)
+      call add(t, 'fluid', 'current_x', 'real', 'm/s', '0', 'uniform current, horizontal (needs density > 0)', &
+               -1.0e3_dp, 1.0e3_dp)
+      call add(t, 'fluid', 'current_z', 'real', 'm/s', '0', 'uniform current, vertical (up), as current_x', &
+               -1.0e3_dp, 1.0e3_dp)
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &

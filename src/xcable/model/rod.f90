@@ -49,6 +49,7 @@ module xcable_model_rod
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
+   use xcable_loads_load, only: load_slot
    implicit none
    private
    public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
@@ -107,6 +108,14 @@ module xcable_model_rod
       real(dp), allocatable :: mass(:, :)
       !> Velocities of the last evaluated new level (2, n), m/s.
       real(dp), allocatable :: v1(:, :)
+      !> Distributed loads (fluid, ...): none when not allocated or empty.
+      type(load_slot), allocatable :: loads(:)
+      !> Force of the loads on each node in the last evaluation (2, n), N, and the
+      !> derivatives of each cell's load force with respect to the new positions of
+      !> its two nodes (2, 2, 0:1, n - 1): side 0 node c, side 1 node c + 1.
+      real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
+      !> Factor on the distributed loads (1; the statics ramps it up when it must).
+      real(dp) :: load_factor = 1
    contains
       !> Set up grid, material and work arrays.
       procedure :: init => rod_init
@@ -238,6 +247,9 @@ contains
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
       self%v1 = 0
+      allocate (self%load_node(2, n), self%load_block(2, 2, 0:1, n - 1))
+      self%load_node = 0
+      self%load_block = 0
       self%mass = 0
       self%mass(0, :) = (1 - mu)*mass*self%lumped
       self%mass(0, 1) = self%mass(0, 1) + end_a%point_mass()
@@ -247,7 +259,7 @@ contains
       self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mass*self%ds
       ! Kinetic energy of the second differences of velocity, w |V_k-1 - 2 V_k + V_k+1|^2 / 2 per interior node.
       do k = 2, n - 1
-         w = mu2*mass*self%dual(k)/16
+         w = self%mu2*mass*self%dual(k)/16
          self%mass(0, k - 1) = self%mass(0, k - 1) + w
          self%mass(0, k) = self%mass(0, k) + 4*w
          self%mass(0, k + 1) = self%mass(0, k + 1) + w
@@ -379,21 +391,13 @@ contains
             if (.not. with_jacobian) cycle
             stiff = fp*outer(t_c, t_c) + f/l*(identity2() - outer(t_c, t_c))
             dp_de = (jm - 2*outer(matmul(jm, e), e)/l**2)/l**2
-            ! d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1.
-            dmom = 0
-            if (c >= 2) then
-               dmom(:, 0) = dmom(:, 0) + self%dmom(c)*pvec
-               dmom(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
-            end if
-            if (c + 1 <= n - 1) then
-               dmom(:, 0) = dmom(:, 0) + self%dmom(c + 1)*pvec
-               dmom(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
-            end if
+            dmom = moment_difference_gradient(self, c)
             self%block(:, :, 0, c) = stiff + moment_diff/self%ds(c)*dp_de + outer(pvec, dmom(:, 0))/self%ds(c)
             self%block(:, :, -1, c) = outer(pvec, dmom(:, -1))/self%ds(c)
             self%block(:, :, 1, c) = outer(pvec, dmom(:, 1))/self%ds(c)
          end associate
       end do
+      call apply_loads(self, x, 0.0_dp, 0.5_dp, with_jacobian)
       call assemble(self, x, t, t, residual, jacobian, with_jacobian, dynamic=.false.)
    end subroutine rod_static_system
 
@@ -491,22 +495,84 @@ contains
             dphi_de = perp(e1)/l1**2
             dg_de = drho*dphi_de/(l0*l1) - rho/(l0*l1**2)*e1/l1
             dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
-            ds_de = 0
-            if (c >= 2) then
-               ds_de(:, 0) = ds_de(:, 0) + self%dmom(c)*dphi_de
-               ds_de(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
-            end if
-            if (c + 1 <= n - 1) then
-               ds_de(:, 0) = ds_de(:, 0) + self%dmom(c + 1)*dphi_de
-               ds_de(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
-            end if
+            ds_de = moment_difference_gradient(self, c)
             self%block(:, :, 0, c) = dstrain + s_c/self%ds(c)*dgvec + outer(gvec, ds_de(:, 0))/self%ds(c)
             self%block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/self%ds(c)
             self%block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/self%ds(c)
          end associate
       end do
+      call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
    end subroutine rod_step_system
+
+   !> d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1 (columns -1:1), with the moments' derivatives
+   !> dmom with respect to the new turning angles (statics and steps alike): the turning
+   !> angle of node k changes by perp(e_c) . de_c / |e_c|^2 with its cell c = k - 1 or k.
+   pure function moment_difference_gradient(self, c) result(d)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: c
+      real(dp) :: d(2, -1:1), dth(2)
+      d = 0
+      dth = perp(self%e1(:, c))/self%l1(c)**2
+      if (c >= 2) then
+         d(:, 0) = d(:, 0) + self%dmom(c)*dth
+         d(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+      end if
+      if (c + 1 <= self%n - 1) then
+         d(:, 0) = d(:, 0) + self%dmom(c + 1)*dth
+         d(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+      end if
+   end function moment_difference_gradient
+
+   !> The distributed loads at the positions x: each cell's force (the load per
+   !> unstretched length times ds) goes half to each of its nodes. In a step
+   !> (dt > 0) a cell's kinematics are centred on the step: stretch vector
+   !> (e^n + e^n+1) / 2, velocity (R^n+1 - R^n) / dt and acceleration
+   !> (V^n+1 - V^n) / dt, each the mean of its two nodes'; in statics, e of x at
+   !> rest. Fills load_node and, when asked, load_block.
+   subroutine apply_loads(self, x, dt, theta, with_jacobian)
+      class(rod_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt, theta
+      logical, intent(in) :: with_jacobian
+      integer :: c, i, n
+      real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), v1(2, 2), de_coef, kin(2, 2)
+      self%load_node = 0
+      if (.not. allocated(self%loads)) return
+      if (size(self%loads) == 0) return
+      n = self%n
+      self%load_block = 0
+      do c = 1, n - 1
+         r1 = reshape(x(2*c - 1:2*c + 2), [2, 2])
+         if (dt > 0) then
+            e = 0.5_dp*(self%e0(:, c) + self%e1(:, c))
+            w = 0.5_dp*((r1(:, 1) - self%r0(:, c)) + (r1(:, 2) - self%r0(:, c + 1)))/dt
+            v1 = ((r1 - self%r0(:, c:c + 1))/dt - (1 - theta)*self%v0(:, c:c + 1))/theta
+            a = 0.5_dp*((v1(:, 1) - self%v0(:, c)) + (v1(:, 2) - self%v0(:, c + 1)))/dt
+            de_coef = 0.5_dp
+         else
+            e = self%e1(:, c)
+            w = 0
+            a = 0
+            de_coef = 1
+         end if
+         do i = 1, size(self%loads)
+            call self%loads(i)%load%cell_force(e, w, a, f, df_de, df_dw, df_da)
+            f = self%load_factor*f
+            df_de = self%load_factor*df_de
+            df_dw = self%load_factor*df_dw
+            df_da = self%load_factor*df_da
+            self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
+            self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
+            if (.not. with_jacobian) cycle
+            ! dF_c/dR_b = ds [df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b], de/dR_b = +-de_coef / ds.
+            kin = 0
+            if (dt > 0) kin = self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) - de_coef*df_de + kin
+            self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + de_coef*df_de + kin
+         end do
+      end do
+   end subroutine apply_loads
 
    !> Bending energy of interior node k at turning angle th: B = 2 EI tan^2(th / 2) / h_k,
    !> that is EI kappa^2 h_k / 2 with the discrete curvature kappa = 2 tan(th / 2) / h_k
@@ -606,10 +672,11 @@ contains
          residual(2*c - 1:2*c) = residual(2*c - 1:2*c) - self%force(:, c)
          residual(2*c + 1:2*c + 2) = residual(2*c + 1:2*c + 2) + self%force(:, c)
       end do
-      ! Weight and applied forces.
+      ! Weight, distributed loads and applied forces.
       do k = 1, n
          residual(2*k) = residual(2*k) + node_weight(self, k)
       end do
+      residual = residual - reshape(self%load_node, [2*n])
       if (dynamic) then
          t_new = t1 + t2
          fext = 0.5_dp*(self%end_a%applied_force(t1) + self%end_a%applied_force(t_new))
@@ -675,6 +742,29 @@ contains
             end do
          end do
       end if
+      ! Distributed loads: node c and node c+1 each get -F_c / 2.
+      if (allocated(self%loads)) then
+         if (size(self%loads) > 0) then
+            do c = 1, n - 1
+               do side = 0, 1
+                  node = c + side
+                  do j = 0, 1
+                     k = c + j
+                     if (k == 1 .and. held_a) cycle
+                     if (k == n .and. held_b) cycle
+                     do a = 1, 2
+                        do b = 1, 2
+                           row = 2*(k - 1) + a
+                           col = 2*(node - 1) + b
+                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                                 - 0.5_dp*self%load_block(a, b, side, c)*scale
+                        end do
+                     end do
+                  end do
+               end do
+            end do
+         end if
+      end if
       if (held_a) call held_rows(1)
       if (held_b) call held_rows(n)
 
@@ -707,7 +797,7 @@ contains
       real(dp) :: f(2), mv(2)
       integer :: n, j
       n = self%n
-      f = [0.0_dp, node_weight(self, k)]
+      f = [0.0_dp, node_weight(self, k)] - self%load_node(:, k)
       if (k < n) f = f - self%force(:, k)
       if (k > 1) f = f + self%force(:, k - 1)
       if (dt > 0) then

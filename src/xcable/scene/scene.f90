@@ -17,6 +17,8 @@ module xcable_scene
    use xcable_material_table, only: table_law, new_table_law
    use xcable_ends_end, only: end_condition
    use xcable_ends_factory, only: new_end
+   use xcable_loads_load, only: load_slot, cable_load
+   use xcable_loads_fluid, only: fluid_load
    implicit none
    private
    public :: scene_type, scene_from_config, scene_grid
@@ -43,12 +45,28 @@ module xcable_scene
       real(dp) :: s_break = 0, break_time = 0, t_break = 0
       !> Whether the break is at end a, at end b, or inside the cable.
       logical :: break_at_a = .false., break_at_b = .false.
+      !> Distributed loads (none: not allocated). The weight above is net of their lift.
+      type(load_slot), allocatable :: loads(:)
    contains
       !> Whether the break splits the cable in two.
       procedure :: interior_break
    end type scene_type
 
 contains
+
+   !> Append a load to a list of loads.
+   subroutine add_load(loads, load)
+      type(load_slot), allocatable, intent(inout) :: loads(:)
+      class(cable_load), intent(in) :: load
+      type(load_slot), allocatable :: longer(:)
+      integer :: k
+      allocate (longer(size(loads) + 1))
+      do k = 1, size(loads)
+         call move_alloc(loads(k)%load, longer(k)%load)
+      end do
+      allocate (longer(size(longer))%load, source=load)
+      call move_alloc(longer, loads)
+   end subroutine add_load
 
    !> Whether the break is inside the cable (two pieces).
    pure logical function interior_break(self)
@@ -69,6 +87,7 @@ contains
       class(material_law), allocatable :: law
       type(table_law) :: table
       real(dp) :: area, ei, ea, rel
+      integer :: k
       scene%source = config%source
       area = config%area
       if (area == 0) area = 0.25_dp*pi*config%diameter**2
@@ -98,6 +117,14 @@ contains
       scene%gravity = config%gravity
       scene%weight = scene%mass*config%gravity
       scene%ei = ei
+      ! Distributed loads, one line each; their lift (buoyancy) comes off the weight.
+      allocate (scene%loads(0))
+      if (config%fluid_density > 0) call add_load(scene%loads, fluid_load(density=config%fluid_density, &
+         cd_normal=config%cd_normal, cd_tangential=config%cd_tangential, ca_normal=config%ca_normal, &
+         current=[config%current_x, config%current_z], diameter=config%diameter, area=area, gravity=config%gravity))
+      do k = 1, size(scene%loads)
+         scene%weight = scene%weight - scene%loads(k)%load%lift()
+      end do
 
       call new_end(config%end_a, 'end_a', scene%end_a, error)
       if (allocated(error)) then

@@ -9,6 +9,7 @@ module suite_output
                              put_text_attr
    use xcable_io_output, only: result_file
    use xcable_version, only: code_version
+   use xcable_error, only: stat_input
    use hdf5
    implicit none
    private
@@ -21,7 +22,8 @@ contains
       tests = [new_unittest('hdf5_writers_report_errors', test_writers), &
                new_unittest('result_file_status_and_errors', test_result_file), &
                new_unittest('echo_above_64_kb', test_large_echo), &
-               new_unittest('version_matches_fpm_toml', test_version)]
+               new_unittest('version_matches_fpm_toml', test_version), &
+               new_unittest('reopen_to_resume', test_reopen)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -174,6 +176,118 @@ contains
       call check(error, manifest_version == code_version, 'fpm.toml says version "'//manifest_version// &
                  '", src/xcable/version.f90 says "'//code_version//'": change both (and CHANGELOG.md)')
    end subroutine test_version
+
+   !> Reopening for a resume: a file of another run, one with fewer
+   !> snapshots than the checkpoint counts, or one that is complete is
+   !> refused and left as it was; otherwise the snapshots after the
+   !> checkpoint are cut (HDF5 and gnuplot text), the summary of the
+   !> interruption removed and the status is 'running' again.
+   subroutine test_reopen(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: path = 'build/test_output_reopen.h5'
+      type(result_file) :: output
+      type(run_summary) :: summary
+      type(error_type), allocatable :: reopen_error
+      real(dp) :: fields(3, 8)
+      integer :: i
+      fields = 0
+      call output%create(path, [0.0_dp, 1.0_dp, 2.0_dp], 'tension x', '&numerics nodes = 3 /', 'test.nml', .true., &
+                         'rod', 'strain', [integer ::], error, run_id='run-A')
+      if (allocated(error)) return
+      do i = 0, 4
+         fields(:, 1) = i
+         call output%snapshot(0.1_dp*i, fields, error)
+         if (allocated(error)) return
+      end do
+      call output%write_summary(summary, [character(len=8) :: 'end_a', 'end_b'], error)
+      if (allocated(error)) return
+      call output%finish('interrupted')
+      call refused('another run''s file', 'run-B', 3, 'belongs to run run-A')
+      if (allocated(error)) return
+      call refused('fewer snapshots than the checkpoint', 'run-A', 7, 'holds 5 snapshots')
+      if (allocated(error)) return
+      call check(error, file_status() == 'interrupted' .and. snapshots_in_file() == 5 .and. text_blocks() == 5, &
+                 'a refused reopen changed the file')
+      if (allocated(error)) return
+      call output%reopen(path, [0.0_dp, 1.0_dp, 2.0_dp], 'tension x', '&numerics nodes = 3 /', 'test.nml', .true., &
+                         [integer ::], 3, 'run-A', error)
+      if (allocated(error)) return
+      call check(error, file_status() == 'running' .and. snapshots_in_file() == 3 .and. text_blocks() == 3 .and. &
+                 .not. has_summary(), 'after reopen: status '//file_status()//', '//str(snapshots_in_file())// &
+                 ' snapshots, '//str(text_blocks())//' text blocks (expected running, 3, 3, no /summary)')
+      if (allocated(error)) return
+      call output%snapshot(0.3_dp, fields, error)
+      if (allocated(error)) return
+      call output%finish('complete')
+      call check(error, snapshots_in_file() == 4 .and. text_blocks() == 4, 'a snapshot after reopen was not appended')
+      if (allocated(error)) return
+      call refused('a complete file', 'run-A', 3, 'already complete')
+      call delete_file(path)
+      call delete_file('build/test_output_reopen.snapshots.dat')
+
+   contains
+
+      subroutine refused(what, id, snapshots, expect)
+         character(*), intent(in) :: what, id, expect
+         integer, intent(in) :: snapshots
+         type(result_file) :: other
+         call other%reopen(path, [0.0_dp, 1.0_dp, 2.0_dp], 'tension x', '&numerics nodes = 3 /', 'test.nml', .true., &
+                           [integer ::], snapshots, id, reopen_error)
+         call check(error, allocated(reopen_error), 'reopening '//what//' was not refused')
+         if (allocated(error)) return
+         call check(error, reopen_error%stat == stat_input .and. index(reopen_error%message, expect) > 0, &
+                    'reopening '//what//': "'//reopen_error%message//'" lacks "'//expect//'"')
+         deallocate (reopen_error)
+      end subroutine refused
+
+      function file_status() result(text)
+         character(:), allocatable :: text
+         integer(hid_t) :: file
+         integer :: hdferr
+         call h5open_f(hdferr)
+         call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+         call read_text_attr(file, 'status', text)
+         call h5fclose_f(file, hdferr)
+      end function file_status
+
+      integer function snapshots_in_file() result(n)
+         integer(hid_t) :: file, dset, space
+         integer(hsize_t) :: dims(1), maxdims(1)
+         integer :: hdferr
+         call h5open_f(hdferr)
+         call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+         call h5dopen_f(file, 'time', dset, hdferr)
+         call h5dget_space_f(dset, space, hdferr)
+         call h5sget_simple_extent_dims_f(space, dims, maxdims, hdferr)
+         n = int(dims(1))
+         call h5sclose_f(space, hdferr)
+         call h5dclose_f(dset, hdferr)
+         call h5fclose_f(file, hdferr)
+      end function snapshots_in_file
+
+      logical function has_summary()
+         integer(hid_t) :: file
+         integer :: hdferr
+         call h5open_f(hdferr)
+         call h5fopen_f(path, H5F_ACC_RDONLY_F, file, hdferr)
+         call h5lexists_f(file, 'summary', has_summary, hdferr)
+         call h5fclose_f(file, hdferr)
+      end function has_summary
+
+      integer function text_blocks() result(n)
+         character(len=256) :: line
+         integer :: unit, ios
+         n = 0
+         open (newunit=unit, file='build/test_output_reopen.snapshots.dat', status='old', action='read', iostat=ios)
+         if (ios /= 0) return
+         do
+            read (unit, '(a)', iostat=ios) line
+            if (ios /= 0) exit
+            if (index(line, '# t = ') == 1) n = n + 1
+         end do
+         close (unit)
+      end function text_blocks
+   end subroutine test_reopen
 
    !> A string attribute of loc ('' when it cannot be read).
    subroutine read_text_attr(loc, name, text)

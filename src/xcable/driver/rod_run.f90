@@ -454,6 +454,7 @@ contains
       call system_clock(self%clock%start, self%clock%rate)
       self%t = 0
       self%work = 0
+      self%load_work = 0
       self%dissipation = 0
       self%progress = run_progress(h=self%dt)
       call start_history(self)
@@ -685,15 +686,19 @@ contains
    !>    velocities at the current time, the reactions of its held ends, and
    !>    Newton's kept factorisation when one is kept (reuse_jacobian): its
    !>    LU factors and pivots, the contraction and the step it was made for;
-   !>  - the energy accumulators (work of the ends, dissipation);
+   !>  - the energy accumulators (work of the ends, work of the distributed
+   !>    loads, dissipation);
    !>  - the history (every record so far) and the summary's counters.
    !> Not saved, because every step recomputes them before use: the pieces'
    !> work arrays (old level, geometry, forces: prepare_step and the
    !> residual), the Newton residual and update, the positions and
    !> velocities of the previous time level (r_prev, v_prev: accept sets them
    !> before the snapshots inside the step read them; the rod is a one-step
-   !> method). Not saved, because prepare computes them from the case: the
-   !> grid, the static state, the scene and its ends.
+   !> method). The distributed loads (fluid) and the internal damping keep no
+   !> state of their own: a step evaluates them from its two levels, and the
+   !> statics leave the loads' factor at 1. Not saved, because prepare computes
+   !> them from the case: the grid, the static state, the scene, its ends and
+   !> loads, the damping coefficient.
    subroutine exchange_state(self, a, saving, error)
       type(rod_run), intent(inout) :: self
       class(state_archive), intent(inout) :: a
@@ -706,6 +711,7 @@ contains
       call sync_real(a, 'run/t', self%t, saving)
       call sync_real(a, 'run/dt', self%dt, saving)
       call sync_real(a, 'run/work', self%work, saving)
+      call sync_real(a, 'run/load_work', self%load_work, saving)
       call sync_real(a, 'run/dissipation', self%dissipation, saving)
       call sync_logical(a, 'run/broken', self%broken, saving)
       call sync_matrix(a, 'run/cut_force', self%cut_force, saving)

@@ -1,0 +1,467 @@
+!> Checkpoints and resume (rod scheme): a run stopped by SIGTERM (raised
+!> from inside the run, by the observer at a chosen snapshot) and resumed
+!> from its checkpoint computes, bit for bit, the snapshots, history and
+!> summary of the run that was not stopped; so does a run resumed from a
+!> checkpoint written every so many steps, and writing checkpoints does not
+!> change a run. Three scenes cover the state a checkpoint must hold: the
+!> paper's rupture (a released end, the energy ledger), a line parting in
+!> the middle while end a moves (a checkpoint before and one after the
+!> split into two pieces), and a kept Newton factorisation (reuse_jacobian,
+!> theta 0.55, internal damping). Damaged, truncated, foreign (another
+!> version, another namelist) and missing checkpoints are refused.
+module suite_checkpoint
+   use xcable_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check
+   use xcable_strings, only: str
+   use xcable_error, only: stat_input
+   use xcable_io_config, only: case_config
+   use xcable_io_input, only: config_text
+   use xcable_simulation, only: simulation
+   use xcable_run_records, only: run_observer, static_info, run_history, run_summary, n_fields
+   use xcable_io_checkpoint, only: checkpoint_file, remove_checkpoint
+   use xcable_io_hdf5, only: put_text_attr
+   use xcable_system_posix, only: install_termination_handler, raise_termination, clear_termination
+   use suite_rod_dynamics, only: rupture_config
+   use hdf5
+   use, intrinsic :: iso_fortran_env, only: output_unit, int8
+   implicit none
+   private
+   public :: collect_checkpoint
+
+   !> Records the snapshots of a run and raises SIGTERM at one of them.
+   type, extends(run_observer) :: recorder
+      !> Snapshots recorded, their times and fields (nodes, n_fields, snapshot).
+      integer :: n = 0
+      real(dp), allocatable :: times(:), fields(:, :, :)
+      !> Raise SIGTERM when this snapshot (1: the one at t = 0) has been recorded (0: never).
+      integer :: raise_at = 0
+   contains
+      procedure :: static => recorder_static
+      procedure :: snapshot => recorder_snapshot
+   end type recorder
+
+   character(len=*), parameter :: path = 'build/test_checkpoint.ckpt'
+
+contains
+
+   subroutine collect_checkpoint(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('sigterm_then_resume_is_bitwise', test_sigterm), &
+               new_unittest('periodic_checkpoints_change_nothing', test_periodic), &
+               new_unittest('refuses_bad_checkpoints', test_refusals)]
+   end subroutine collect_checkpoint
+
+   subroutine recorder_static(self, info, error)
+      class(recorder), intent(inout) :: self
+      type(static_info), intent(in) :: info
+      type(error_type), allocatable, intent(out) :: error
+   end subroutine recorder_static
+
+   subroutine recorder_snapshot(self, t, fields, error)
+      class(recorder), intent(inout) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(in) :: fields(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: times(:), stored(:, :, :)
+      if (.not. allocated(self%times)) allocate (self%times(0), self%fields(size(fields, 1), n_fields, 0))
+      allocate (times(self%n + 1), stored(size(fields, 1), n_fields, self%n + 1))
+      times(1:self%n) = self%times(1:self%n)
+      stored(:, :, 1:self%n) = self%fields(:, :, 1:self%n)
+      times(self%n + 1) = t
+      stored(:, :, self%n + 1) = fields
+      call move_alloc(times, self%times)
+      call move_alloc(stored, self%fields)
+      self%n = self%n + 1
+      if (self%n == self%raise_at) call raise_termination()
+   end subroutine recorder_snapshot
+
+   !> The paper's rupture at 180 kN on 61 nodes, the end released in 5 ms, with the ledger.
+   function paper_scene() result(c)
+      type(case_config) :: c
+      c = rupture_config(180.0e3_dp, 0.005_dp, 0.05_dp, 61)
+      c%energy = .true.
+      c%interval = 0.0025_dp
+   end function paper_scene
+
+   !> An inclined taut line (end b at 60 m, 20 m up) whose end a moves up and
+   !> down, parting in the middle at t = 10 ms: before the break one piece, after it two.
+   function middle_scene() result(c)
+      type(case_config) :: c
+      c = rupture_config(180.0e3_dp, 0.01_dp, 0.03_dp, 61)
+      c%end_a%kind = 'motion'
+      c%end_a%amplitude = 0.05_dp
+      c%end_a%period = 0.02_dp
+      c%end_b%x = 60
+      c%end_b%z = 20
+      c%given = 'end_b%x end_b%z'
+      c%s_break = 30
+      c%break_time = 0.01_dp
+      c%energy = .true.
+      c%interval = 0.002_dp
+      c%courant = 0.25_dp
+   end function middle_scene
+
+   !> The paper's rupture with a kept factorisation (reuse_jacobian given), theta 0.55 and damping.
+   function reuse_scene() result(c)
+      type(case_config) :: c
+      c = paper_scene()
+      c%reuse_jacobian = .true.
+      c%given = 'numerics%reuse_jacobian'
+      c%theta = 0.55_dp
+      c%damping = 2000
+   end function reuse_scene
+
+   !> The paper's rupture in water with a current: buoyancy, drag, added mass
+   !> and their work in the ledger (energy index 8, loads).
+   function fluid_scene() result(c)
+      type(case_config) :: c
+      c = paper_scene()
+      c%fluid_density = 1025
+      c%cd_normal = 1.2_dp
+      c%cd_tangential = 0.01_dp
+      c%ca_normal = 1
+      c%current_x = 0.5_dp
+   end function fluid_scene
+
+   !> The paper's rupture at Courant number 2 with at most 2 Newton
+   !> iterations a step: steps are rejected, halved and doubled back.
+   function halving_scene() result(c)
+      type(case_config) :: c
+      c = paper_scene()
+      c%courant = 2
+      c%newton_max_iter = 2
+   end function halving_scene
+
+   !> Run a case to the end without checkpoints.
+   subroutine plain_run(c, sim, store, error)
+      type(case_config), intent(in) :: c
+      type(simulation), intent(inout) :: sim
+      type(recorder), intent(inout) :: store
+      type(error_type), allocatable, intent(out) :: error
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      call sim%run(store, error)
+   end subroutine plain_run
+
+   !> Prepare a case, with checkpoints to path (every every_steps steps, 0:
+   !> none) and the stop at SIGTERM.
+   subroutine checkpointed(c, sim, every_steps, error)
+      type(case_config), intent(in) :: c
+      type(simulation), intent(inout) :: sim
+      integer, intent(in) :: every_steps
+      type(error_type), allocatable, intent(out) :: error
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      call sim%enable_checkpoints(path, config_text(c, fingerprint=.true.), 'test-run', 0.0_dp, .true., every_steps)
+   end subroutine checkpointed
+
+   !> Resume a case from path and run it to the end.
+   subroutine resumed_run(c, sim, store, error)
+      type(case_config), intent(in) :: c
+      type(simulation), intent(inout) :: sim
+      type(recorder), intent(inout) :: store
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: run_id
+      call checkpointed(c, sim, 0, error)
+      if (allocated(error)) return
+      call sim%resume(path, config_text(c, fingerprint=.true.), run_id, error)
+      if (allocated(error)) return
+      call check(error, run_id == 'test-run', 'the checkpoint''s run is "'//run_id//'"')
+      if (allocated(error)) return
+      call sim%run(store, error)
+   end subroutine resumed_run
+
+   !> SIGTERM in the middle of a run (at snapshot k): the run writes a
+   !> checkpoint and stops; resumed, it ends as the run that was not stopped.
+   subroutine test_sigterm(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: problem
+      problem = install_termination_handler()
+      call check(error, len(problem) == 0, problem)
+      if (allocated(error)) return
+      call stopped_and_resumed('paper rupture, SIGTERM during the release', paper_scene(), 2, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('middle break, SIGTERM before the break', middle_scene(), 3, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('middle break, SIGTERM during the break', middle_scene(), 8, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('kept factorisation, theta 0.55, damping', reuse_scene(), 6, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('in water with a current (fluid loads)', fluid_scene(), 5, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('step halved (2 Newton iterations at most)', halving_scene(), 4, error, halved=.true.)
+   end subroutine test_sigterm
+
+   subroutine stopped_and_resumed(what, c, k, error, halved)
+      character(*), intent(in) :: what
+      type(case_config), intent(in) :: c
+      integer, intent(in) :: k
+      type(error_type), allocatable, intent(out) :: error
+      !> Whether the stop must find the step halved and growing back (the step control's state matters).
+      logical, intent(in), optional :: halved
+      type(simulation) :: reference, stopped, resumed
+      type(recorder) :: whole, first, rest
+      call plain_run(c, reference, whole, error)
+      if (allocated(error)) return
+      call checkpointed(c, stopped, 0, error)
+      if (allocated(error)) return
+      first%raise_at = k
+      call stopped%run(first, error)
+      call clear_termination()
+      if (allocated(error)) return
+      call check(error, stopped%interrupted .and. stopped%checkpoints_written == 1, what//': SIGTERM did not stop '// &
+                 'the run with one checkpoint')
+      if (allocated(error)) return
+      call check(error, stopped%rod%t > 0 .and. stopped%rod%t < c%t_end, what//': stopped at t = '//str(stopped%rod%t))
+      if (allocated(error)) return
+      ! With reuse_jacobian the checkpoint holds a kept factorisation (its LU factors and pivots).
+      if (stopped%rod%options%newton%reuse_jacobian) call check(error, stopped%rod%pieces(1)%work%usable, &
+                                                                 what//': no factorisation kept at the checkpoint')
+      if (allocated(error)) return
+      ! With fluid loads their work so far is part of the state (the ledger's loads).
+      if (c%fluid_density > 0) call check(error, stopped%rod%load_work /= 0, what//': no work of the loads at the stop')
+      if (allocated(error)) return
+      if (present(halved)) call check(error, stopped%rod%progress%h < stopped%rod%dt .and. &
+                                      stopped%rod%progress%n_good > 0, what//': the step is not halved at the stop')
+      if (allocated(error)) return
+      call resumed_run(c, resumed, rest, error)
+      if (allocated(error)) return
+      call same_run(what, reference, resumed, whole, first, rest, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,i0,a,i0,a)') what//': stopped at t = '//str(stopped%rod%t)//' s (step ', &
+         stopped%rod%history%n, ' of ', reference%rod%history%n, '; step '//str(stopped%rod%progress%h/stopped%rod%dt)// &
+         ' dt, '//str(stopped%rod%progress%n_good)//' good since halved, '//str(reference%rod%summary%rejected_steps)// &
+         ' rejected in the run), resumed: snapshots, history and summary bitwise equal'
+      call remove_checkpoint(path)
+   end subroutine stopped_and_resumed
+
+   !> A checkpoint every 7 steps leaves the run as it is; the last one,
+   !> resumed, gives the same end again.
+   subroutine test_periodic(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: reference, periodic, resumed
+      type(recorder) :: whole, with_checkpoints, rest, none
+      type(case_config) :: c
+      integer :: kept
+      c = middle_scene()
+      call plain_run(c, reference, whole, error)
+      if (allocated(error)) return
+      call checkpointed(c, periodic, 7, error)
+      if (allocated(error)) return
+      call periodic%run(with_checkpoints, error)
+      if (allocated(error)) return
+      call same_run('with a checkpoint every 7 steps', reference, periodic, whole, with_checkpoints, none, error)
+      if (allocated(error)) return
+      ! A pause comes before a step: none after the last one.
+      call check(error, periodic%checkpoints_written == (reference%rod%history%n - 1)/7, 'checkpoints written: '// &
+                 str(periodic%checkpoints_written)//' for '//str(reference%rod%history%n)//' steps')
+      if (allocated(error)) return
+      call resumed_run(c, resumed, rest, error)
+      if (allocated(error)) return
+      kept = whole%n - rest%n
+      with_checkpoints%n = kept
+      call same_run('resumed from the last of them', reference, resumed, whole, with_checkpoints, rest, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,i0,a,i0,a)') 'middle break: ', periodic%checkpoints_written, &
+         ' checkpoints (every 7 steps) change nothing; resumed from the last (', kept, &
+         ' snapshots kept): bitwise equal'
+      call remove_checkpoint(path)
+   end subroutine test_periodic
+
+   !> Compare a run (b, with the snapshots first + rest) with the reference
+   !> (a, snapshots whole): every snapshot, history record and summary figure
+   !> but the wall time, to the bit.
+   subroutine same_run(what, a, b, whole, first, rest, error)
+      character(*), intent(in) :: what
+      type(simulation), intent(in), target :: a, b
+      type(recorder), intent(in) :: whole, first, rest
+      type(error_type), allocatable, intent(out) :: error
+      type(run_history), pointer :: ha, hb
+      type(run_summary), pointer :: sa, sb
+      integer :: n, j
+      ha => a%history()
+      hb => b%history()
+      sa => a%summary()
+      sb => b%summary()
+      n = ha%n
+      call check(error, first%n + rest%n == whole%n, what//': '//str(first%n)//' + '//str(rest%n)//' snapshots, '// &
+                 'the reference has '//str(whole%n))
+      if (allocated(error)) return
+      do j = 1, whole%n
+         if (j <= first%n) then
+            call check(error, first%times(j) == whole%times(j) .and. all(first%fields(:, :, j) == whole%fields(:, :, j)), &
+                       what//': snapshot '//str(j)//' differs')
+         else
+            call check(error, rest%times(j - first%n) == whole%times(j) .and. &
+                       all(rest%fields(:, :, j - first%n) == whole%fields(:, :, j)), what//': snapshot '//str(j)//' differs')
+         end if
+         if (allocated(error)) return
+      end do
+      call check(error, hb%n == n, what//': '//str(hb%n)//' history records, the reference has '//str(n))
+      if (allocated(error)) return
+      call check(error, all(ha%time(0:n) == hb%time(0:n)) .and. all(ha%step(0:n) == hb%step(0:n)) .and. &
+                 all(ha%newton_iterations(0:n) == hb%newton_iterations(0:n)) .and. &
+                 all(ha%rejected(0:n) == hb%rejected(0:n)) .and. all(ha%ends(:, :, 0:n) == hb%ends(:, :, 0:n)), &
+                 what//': the history differs')
+      if (allocated(error)) return
+      if (allocated(ha%energy)) call check(error, all(ha%energy(:, 0:n) == hb%energy(:, 0:n)), &
+                                           what//': the energy ledger differs')
+      if (allocated(error)) return
+      call check(error, sa%peak_end_speed == sb%peak_end_speed .and. sa%peak_end_speed_time == sb%peak_end_speed_time &
+                 .and. sa%min_fixed_end_tension == sb%min_fixed_end_tension .and. &
+                 sa%front_arrival_time == sb%front_arrival_time .and. sa%energy_drift == sb%energy_drift .and. &
+                 sa%dissipated == sb%dissipated .and. sa%time_reached == sb%time_reached .and. &
+                 sa%dt_used == sb%dt_used .and. sa%courant_used == sb%courant_used .and. &
+                 sa%max_turning_angle == sb%max_turning_angle .and. sa%min_strain == sb%min_strain .and. &
+                 sa%max_strain == sb%max_strain .and. sa%steps == sb%steps .and. &
+                 sa%rejected_steps == sb%rejected_steps .and. sa%newton_iterations == sb%newton_iterations .and. &
+                 sa%max_newton_iterations == sb%max_newton_iterations .and. sa%factorisations == sb%factorisations &
+                 .and. sa%warnings == sb%warnings, what//': the summary differs')
+      if (allocated(error)) return
+      do j = 1, size(sa%ends)
+         call check(error, sa%ends(j)%peak_speed == sb%ends(j)%peak_speed .and. &
+                    sa%ends(j)%min_tension == sb%ends(j)%min_tension .and. &
+                    sa%ends(j)%max_tension == sb%ends(j)%max_tension .and. &
+                    sa%ends(j)%front_arrival_time == sb%ends(j)%front_arrival_time, &
+                    what//': the summary of end '//str(j)//' differs')
+         if (allocated(error)) return
+      end do
+   end subroutine same_run
+
+   !> Checkpoints that must not be resumed: missing, truncated, with a byte of
+   !> their data changed, with their header changed, written by another
+   !> version, written for another namelist. Each is refused as bad input
+   !> with a message that says which.
+   subroutine test_refusals(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim, other
+      type(recorder) :: store
+      type(case_config) :: c
+      type(checkpoint_file) :: file
+      character(:), allocatable :: good, fingerprint
+      integer(hid_t) :: handle, dset
+      integer(hsize_t) :: offset
+      integer :: hdferr
+      logical :: ok
+      c = paper_scene()
+      fingerprint = config_text(c, fingerprint=.true.)
+      call checkpointed(c, sim, 20, error)
+      if (allocated(error)) return
+      call sim%run(store, error)
+      if (allocated(error)) return
+      good = read_bytes(path)
+      call check(error, len(good) > 1000, 'no checkpoint written')
+      if (allocated(error)) return
+
+      call refused('a missing checkpoint', 'build/no_such.ckpt', fingerprint, 'cannot be read', error)
+      if (allocated(error)) return
+
+      call write_bytes(path, good(1:len(good)/2))
+      call refused('a checkpoint cut to half its length', path, fingerprint, 'cannot be read', error)
+      if (allocated(error)) return
+
+      ! One byte of the history's times (where HDF5 stored them) changed.
+      call write_bytes(path, good)
+      call h5open_f(hdferr)
+      call h5fopen_f(path, H5F_ACC_RDONLY_F, handle, hdferr)
+      call h5dopen_f(handle, 'history/time', dset, hdferr)
+      call h5dget_offset_f(dset, offset, hdferr)
+      call h5dclose_f(dset, hdferr)
+      call h5fclose_f(handle, hdferr)
+      call check(error, hdferr == 0 .and. offset > 0, 'cannot find the history''s times in the checkpoint')
+      if (allocated(error)) return
+      call write_bytes(path, good(1:offset + 10)//achar(ieor(iachar(good(offset + 11:offset + 11)), 1))// &
+                       good(offset + 12:))
+      call refused('a checkpoint with one bit of its data flipped', path, fingerprint, &
+                   'content does not match its checksum', error)
+      if (allocated(error)) return
+
+      ! The namelist attribute rewritten (as if its text had been damaged).
+      call write_bytes(path, good)
+      call h5fopen_f(path, H5F_ACC_RDWR_F, handle, hdferr)
+      ok = .true.
+      call put_text_attr(handle, 'namelist', fingerprint(1:9)//'X'//fingerprint(11:), ok)
+      call h5fclose_f(handle, hdferr)
+      call refused('a checkpoint whose namelist attribute was changed', path, fingerprint, &
+                   'header does not match its checksum', error)
+      if (allocated(error)) return
+
+      ! Written by another version (a checkpoint of the same state, the version changed).
+      call file%create(path, '0.0.1', fingerprint, 'test-run', sim%rod%t, error)
+      if (allocated(error)) return
+      call sim%rod%save_state(file)
+      call file%commit(error)
+      if (allocated(error)) return
+      call refused('a checkpoint of another version', path, fingerprint, 'written by xcable 0.0.1, this is', error)
+      if (allocated(error)) return
+
+      ! For another namelist: 81 nodes instead of 61.
+      call write_bytes(path, good)
+      c%nodes = 81
+      call refused('a checkpoint of another case (nodes)', path, config_text(c, fingerprint=.true.), &
+                   'nodes = 61', error)
+      if (allocated(error)) return
+      ! But one that differs only in what may differ on --resume is taken.
+      c%nodes = 61
+      c%quiet = .true.
+      c%checkpoint_interval = 30
+      c%max_wall_time = 1000
+      call other%prepare(c, error)
+      if (allocated(error)) return
+      call resumed_check(other, config_text(c, fingerprint=.true.), error)
+      call remove_checkpoint(path)
+      write (output_unit, '(4x,a)') 'refused: missing, truncated, a bit of data flipped, header changed, another '// &
+         'version, another case; taken: another quiet, checkpoint_interval, max_wall_time'
+
+   contains
+
+      !> The resume must fail as bad input, the message containing expect.
+      subroutine refused(what, file_path, text, expect, error)
+         character(*), intent(in) :: what, file_path, text, expect
+         type(error_type), allocatable, intent(out) :: error
+         type(simulation) :: fresh
+         type(error_type), allocatable :: resume_error
+         character(:), allocatable :: run_id
+         call fresh%prepare(paper_scene(), error)
+         if (allocated(error)) return
+         call fresh%resume(file_path, text, run_id, resume_error)
+         call check(error, allocated(resume_error), what//' was resumed')
+         if (allocated(error)) return
+         call check(error, resume_error%stat == stat_input .and. index(resume_error%message, expect) > 0, &
+                    what//': message "'//resume_error%message//'" lacks "'//expect//'"')
+      end subroutine refused
+
+      subroutine resumed_check(run, text, error)
+         type(simulation), intent(inout) :: run
+         character(*), intent(in) :: text
+         type(error_type), allocatable, intent(out) :: error
+         character(:), allocatable :: run_id
+         call run%resume(path, text, run_id, error)
+      end subroutine resumed_check
+   end subroutine test_refusals
+
+   !> The bytes of a file.
+   function read_bytes(file_path) result(bytes)
+      character(*), intent(in) :: file_path
+      character(:), allocatable :: bytes
+      integer :: unit, size_bytes, ios
+      open (newunit=unit, file=file_path, access='stream', form='unformatted', status='old', action='read', iostat=ios)
+      if (ios /= 0) then
+         bytes = ''
+         return
+      end if
+      inquire (unit=unit, size=size_bytes)
+      allocate (character(len=size_bytes) :: bytes)
+      read (unit, iostat=ios) bytes
+      close (unit)
+   end function read_bytes
+
+   !> Write bytes as a file (replacing it).
+   subroutine write_bytes(file_path, bytes)
+      character(*), intent(in) :: file_path, bytes
+      integer :: unit
+      open (newunit=unit, file=file_path, access='stream', form='unformatted', status='replace', action='write')
+      write (unit) bytes
+      close (unit)
+   end subroutine write_bytes
+end module suite_checkpoint

@@ -27,6 +27,7 @@ test: build
 	$(FPM) test --profile $(PROFILE)
 	test/test_figures.sh
 	test/test_fuzz.sh bin/xcable
+	test/test_checkpoint.sh bin/xcable
 
 clean:
 	rm -rf build bin

@@ -88,6 +88,13 @@ program xcable_main
 
    output%quiet = config%quiet
    rod = sim%scheme /= 'box'
+   ! SIGTERM (a batch system's time limit): from here on the rod run writes a
+   ! checkpoint at its next step and stops (before the dynamics: at t = 0).
+   if (rod) then
+      problem = install_termination_handler()
+      if (len(problem) > 0) write (error_unit, '(a)') 'xcable: warning: '//problem//': SIGTERM ends the run '// &
+         'without a checkpoint'
+   end if
    checkpoint = checkpoint_path(trim(config%file))
    fingerprint = config_text(config, fingerprint=.true.)
    if (resume) then
@@ -123,12 +130,6 @@ program xcable_main
       if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(info%span)// &
          ' m, sag '//str(info%sag)//' m; dynamics with the '//trim(config%scheme)//' scheme, '// &
          str(config%nodes)//' nodes, dt '//str(dt)//' s'
-   end if
-   ! SIGTERM (a batch system's time limit): the rod run writes a checkpoint and stops.
-   if (rod) then
-      problem = install_termination_handler()
-      if (len(problem) > 0) write (error_unit, '(a)') 'xcable: warning: '//problem//': SIGTERM ends the run '// &
-         'without a checkpoint'
    end if
 
    call sim%run(output, error)

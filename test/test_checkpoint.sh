@@ -1,0 +1,190 @@
+#!/usr/bin/env bash
+# make test: checkpoints and --resume through the program, as a cluster uses them.
+#
+#   test/test_checkpoint.sh [path/to/xcable]        (default bin/xcable)
+#
+# One case (the paper's rupture at 180 kN in water with a current and
+# Kelvin-Voigt damping, 481 nodes, 1184 steps, about 2.5 s) is run three ways:
+#   reference  uninterrupted, without checkpoints;
+#   killed     checkpoint_interval = 1 s, SIGKILL once its first checkpoint
+#              is there and a snapshot has been written after it (the file
+#              stays 'running'; the resume cuts that snapshot), then --resume;
+#   stopped    no checkpoint interval, SIGTERM 0.3 s after the result file
+#              says 'running' (the handler is in place before): exit 3,
+#              'interrupted', a checkpoint; before resuming it, damaged copies
+#              of that checkpoint (truncated, one data byte flipped, one header
+#              byte flipped) are offered to --resume and must be refused: exit
+#              2, one line on stderr naming the checkpoint, and neither the
+#              result file nor the checkpoint changed; then the intact one is
+#              resumed.
+# Both resumed runs must end 'complete', without a checkpoint, and equal the
+# reference bit for bit: every snapshot dataset, the history, the static state,
+# every summary figure but the wall time (h5diff without tolerance), and the
+# gnuplot text files byte for byte.
+#
+# The kill and the SIGTERM wait for events (a file, a status), not for a
+# fixed time after the start, so a loaded machine slows the test but does
+# not change what it checks. Exit code: 0 all checks passed, 1 otherwise.
+set -u
+exe=${1:-bin/xcable}
+[[ -x $exe ]] || { echo "test_checkpoint: no executable $exe (make build first)" >&2; exit 1; }
+exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
+for tool in h5diff h5dump md5sum; do
+   command -v "$tool" >/dev/null || { echo "test_checkpoint: $tool not found (hdf5-tools, coreutils)" >&2; exit 1; }
+done
+work=$(mktemp -d "${TMPDIR:-/tmp}/xcable_checkpoint.XXXXXX")
+pid=""
+passes=0
+failures=0
+finish() {
+   [[ -z $pid ]] || kill -KILL "$pid" 2>/dev/null
+   if ((failures > 0)) || [[ -n ${KEEP:-} ]]; then echo "test_checkpoint: kept $work" >&2; else rm -rf "$work"; fi
+}
+trap finish EXIT
+cd "$work" || exit 1
+t0=$(date +%s.%N)
+
+check() {
+   local what=$1
+   shift
+   if "$@"; then
+      passes=$((passes + 1))
+      echo "  ok   $what"
+   else
+      failures=$((failures + 1))
+      echo "  FAIL $what"
+   fi
+}
+status_of() { HDF5_USE_FILE_LOCKING=FALSE h5dump -a /status "$1" 2>/dev/null | sed -n 's/^ *(0): "\([a-z]*\) *"$/\1/p'; }
+int_attr() { h5dump -a "$2" "$1" 2>/dev/null | sed -n 's/^ *(0): \([0-9-]*\)$/\1/p'; }
+# wait_for SECONDS COMMAND...: until the command succeeds (0) or the time is up (1).
+wait_for() {
+   local limit=$1 i
+   shift
+   for ((i = 0; i < limit * 100; i++)); do
+      "$@" && return 0
+      kill -0 "$pid" 2>/dev/null || { "$@"; return; }
+      sleep 0.01
+   done
+   return 1
+}
+
+# case NAME [OUTPUT EXTRA]: the namelist NAME.nml writing NAME.h5.
+write_case() {
+   cat >"$1.nml" <<EOF
+! test/test_checkpoint.sh: the paper's rupture at 180 kN in water, damped
+&static   tension = 180000 /
+&rupture  t_break = 0.005 /
+&material damping = 2000 /
+&fluid    density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_x = 0.5 /
+&numerics nodes = 481, courant = 1.0, t_end = 0.14 /
+&output   file = '$1.h5', interval = 0.01, gnuplot = .true., energy = .true.$2 /
+EOF
+}
+
+# same_as_reference NAME: bitwise equal to ref.h5 but for the wall time (h5diff, cmp).
+same_as_reference() {
+   local name=$1 d attr bad=0
+   for d in /time /s /tension /shear /strain /u /v /x /z /curvature /static /history; do
+      h5diff -q ref.h5 "$name.h5" "$d" "$d" >/dev/null 2>&1 || { echo "    $d differs"; bad=1; }
+   done
+   for attr in $(h5dump -A -g /summary ref.h5 | sed -n 's/^ *ATTRIBUTE "\([a-z0-9_]*\)".*/\1/p'); do
+      [[ $attr == wall_time ]] && continue
+      [[ "$(h5dump -a "/summary/$attr" ref.h5 | tail -n +2)" == "$(h5dump -a "/summary/$attr" "$name.h5" | tail -n +2)" ]] ||
+         { echo "    /summary $attr differs"; bad=1; }
+   done
+   cmp -s ref.snapshots.dat "$name.snapshots.dat" || { echo "    $name.snapshots.dat differs"; bad=1; }
+   cmp -s ref.history.dat "$name.history.dat" || { echo "    $name.history.dat differs"; bad=1; }
+   return $bad
+}
+
+echo "test_checkpoint: reference run"
+write_case ref ''
+"$exe" ref.nml 2>ref.err
+check "the reference run completes, without a checkpoint" test "$(status_of ref.h5)" = complete -a ! -e ref.h5.ckpt
+steps=$(int_attr ref.h5 /summary/steps)
+# differs NAME: the comparison sees a difference (its control).
+differs() { ! same_as_reference "$1" >/dev/null; }
+
+echo "test_checkpoint: SIGKILL after the first checkpoint, then --resume"
+write_case killed ', checkpoint_interval = 1'
+# snapshots FILE: snapshots in a result file; counted CHECKPOINT: those its checkpoint counts.
+snapshots() { HDF5_USE_FILE_LOCKING=FALSE h5dump -H -d /time "$1" 2>/dev/null | sed -n 's/.*SIMPLE { ( \([0-9]*\) ).*/\1/p'; }
+counted() { h5dump -d /progress/snapshot_index "$1" 2>/dev/null | sed -n 's/^ *(0): \([0-9]*\)$/\1/p'; }
+beyond_checkpoint() {
+   local n c
+   n=$(snapshots killed.h5)
+   c=$(counted killed.h5.ckpt)
+   [[ -n $n && -n $c ]] && ((n > c))
+}
+"$exe" killed.nml 2>killed.err &
+pid=$!
+# The first checkpoint (after 1 s of dynamics), then a snapshot written after it (1 s before the next).
+wait_for 120 test -s killed.h5.ckpt
+wait_for 120 beyond_checkpoint
+kill -KILL "$pid" 2>/dev/null
+wait "$pid" 2>/dev/null
+code=$?
+pid=""
+check "killed by SIGKILL (exit $code) after its first checkpoint, the file left 'running'" \
+   test "$code" -eq 137 -a -s killed.h5.ckpt -a "$(status_of killed.h5)" = running
+kept=$(snapshots killed.h5)
+cut_at=$(counted killed.h5.ckpt)
+check "killed with $kept snapshots written, $cut_at of them before the checkpoint (the rest is cut on resume)" \
+   test "${kept:-0}" -gt "${cut_at:-0}"
+"$exe" --resume killed.nml 2>killed.resume.err
+code=$?
+check "--resume completes it (exit $code): 'complete', resumes = 1, no checkpoint left" \
+   test "$code" -eq 0 -a "$(status_of killed.h5)" = complete -a "$(int_attr killed.h5 /resumes)" = 1 -a ! -e killed.h5.ckpt
+check "the resumed run equals the uninterrupted one bit for bit ($steps steps, snapshots, history, summary, text)" \
+   same_as_reference killed
+
+echo "test_checkpoint: SIGTERM, damaged checkpoints refused, then --resume"
+write_case stopped ''
+"$exe" stopped.nml 2>stopped.err &
+pid=$!
+# The handler is installed before the result file is made: SIGTERM once it says 'running'.
+running() { [[ "$(status_of "$1")" == running ]]; }
+wait_for 120 running stopped.h5
+sleep 0.3
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"
+code=$?
+pid=""
+check "SIGTERM: exit 3, 'interrupted', a checkpoint (no checkpoint_interval)" \
+   test "$code" -eq 3 -a "$(status_of stopped.h5)" = interrupted -a -s stopped.h5.ckpt
+check "SIGTERM: one line on stderr says how to continue" grep -q "interrupted (SIGTERM) at t = .*xcable --resume stopped.nml" stopped.err
+cp stopped.h5.ckpt good.ckpt
+check "control: the comparison tells the interrupted file from the reference" differs stopped
+# refused WHAT EXPECT: --resume of the damaged stopped.h5.ckpt fails with exit 2 and one line naming it and EXPECT; nothing changes.
+refused() {
+   local what=$1 expect=$2 before after code lines
+   before=$(md5sum stopped.h5 stopped.h5.ckpt stopped.snapshots.dat; ls | grep -v "^refused\.")
+   "$exe" --resume stopped.nml >refused.out 2>refused.err
+   code=$?
+   after=$(md5sum stopped.h5 stopped.h5.ckpt stopped.snapshots.dat; ls | grep -v "^refused\.")
+   lines=$(wc -l <refused.err)
+   check "$what: exit $code, $lines line: $(head -c 150 refused.err)" \
+      test "$code" -eq 2 -a "$lines" -eq 1 -a "$before" = "$after" -a "$(status_of stopped.h5)" = interrupted
+   grep -q -F "'stopped.h5.ckpt'" refused.err && grep -q -F "$expect" refused.err ||
+      { failures=$((failures + 1)); echo "  FAIL $what: the message lacks the file name or '$expect'"; }
+}
+head -c $(($(stat -c %s good.ckpt) / 2)) good.ckpt >stopped.h5.ckpt
+refused "a truncated checkpoint is refused" "cannot be read"
+cp good.ckpt stopped.h5.ckpt
+offset=$(h5dump -p -H -d /pieces/1/r good.ckpt | sed -n 's/^ *OFFSET \([0-9]*\)$/\1/p')
+printf '\x5a' | dd of=stopped.h5.ckpt bs=1 seek=$((offset + 100)) conv=notrunc status=none
+refused "a checkpoint with one data byte changed is refused" "does not match its checksum"
+cp good.ckpt stopped.h5.ckpt
+offset=$(grep -b -o -a -m1 'tension = 180000' good.ckpt | head -1 | cut -d: -f1)
+printf '7' | dd of=stopped.h5.ckpt bs=1 seek=$((offset + 10)) conv=notrunc status=none
+refused "a checkpoint with one header byte changed is refused" "header does not match its checksum"
+cp good.ckpt stopped.h5.ckpt
+"$exe" --resume stopped.nml 2>stopped.resume.err
+code=$?
+check "--resume of the intact checkpoint completes it (exit $code), no checkpoint left" \
+   test "$code" -eq 0 -a "$(status_of stopped.h5)" = complete -a ! -e stopped.h5.ckpt
+check "the resumed run equals the uninterrupted one bit for bit" same_as_reference stopped
+
+echo "test_checkpoint: $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s, $passes passed, $failures failed"
+((failures == 0))

@@ -48,8 +48,9 @@ case_name() {
   printf '%0*d' "$SWEEP_WIDTH" "$1"
 }
 
-# result_status FILE: complete, failed, running (written by a run that is still
-# going or was killed), missing or unreadable.
+# result_status FILE: complete, failed, interrupted (stopped by SIGTERM with a
+# checkpoint), running (written by a run that is still going or was killed),
+# missing or unreadable.
 result_status() {
   local file=$1 out
   if [ ! -e "$file" ]; then
@@ -63,6 +64,72 @@ result_status() {
   fi
   out=$(printf '%s\n' "$out" | sed -n 's/^ *(0): "\([a-z]*\) *"$/\1/p')
   echo "${out:-unreadable}"
+}
+
+# result_status_reason FILE: "status<TAB>reason" of a result: the status as
+# result_status, the reason a failed run gives (failure_reason), with every
+# number replaced by # so that runs failing the same way share one reason.
+result_status_reason() {
+  local file=$1 out status reason
+  status=$(result_status "$file")
+  reason=""
+  if [ "$status" = failed ]; then
+    out=$(HDF5_USE_FILE_LOCKING=FALSE h5dump -w 0 -a /failure_reason "$file" 2>/dev/null || true)
+    reason=$(printf '%s\n' "$out" | sed -n 's/^ *(0): "\(.*\)"$/\1/p' | sed 's/ *$//' |
+             sed -E 's/[-+]?[0-9]+(\.[0-9]*)?([eE][-+]?[0-9]+)?/#/g' | head -c 200)
+  fi
+  printf '%s\t%s\n' "$status" "$reason"
+}
+
+# report_not_complete TASK...: a summary of the given tasks that are not
+# complete, readable however many there are: one line per status with the
+# count and the task indices as ranges (0-1,3-4,...), and under 'failed' one
+# line per reason. A long index list is cut after about 100 characters
+# ('... and N more ranges'). Prints nothing and returns 0 when every task is
+# complete; returns 1 otherwise.
+report_not_complete() {
+  local task rows=""
+  for task in "$@"; do
+    rows+="$task	$(result_status_reason "$SWEEP_ABS/results/$(case_name "$task").h5")"$'\n'
+  done
+  printf '%s' "$rows" | awk -F '\t' '
+    function ranges(list,    n, v, i, lo, hi, out, sep, parts, count) {
+      n = split(list, v, " ")
+      out = ""; sep = ""; count = 0
+      for (i = 1; i <= n; i++) {
+        if (i == 1) { lo = v[i]; hi = v[i]; continue }
+        if (v[i] == hi + 1) { hi = v[i]; continue }
+        parts[++count] = (lo == hi ? lo : lo "-" hi); lo = v[i]; hi = v[i]
+      }
+      if (n > 0) parts[++count] = (lo == hi ? lo : lo "-" hi)
+      for (i = 1; i <= count; i++) {
+        if (length(out) > 100) { return out sprintf(" ... and %d more ranges", count - i + 1) }
+        out = out sep parts[i]; sep = ","
+      }
+      return out
+    }
+    $2 != "complete" {
+      bad++
+      if (!($2 in count)) order[++nstatus] = $2
+      count[$2]++; tasks[$2] = tasks[$2] " " $1
+      if ($2 == "failed") {
+        if (!($3 in rcount)) rorder[++nreason] = $3
+        rcount[$3]++; rtasks[$3] = rtasks[$3] " " $1
+      }
+    }
+    END {
+      if (!bad) exit 0
+      for (i = 1; i <= nstatus; i++) {
+        s = order[i]
+        printf "  %-12s %6d  tasks %s\n", s, count[s], ranges(tasks[s])
+        if (s == "failed")
+          for (j = 1; j <= nreason; j++) {
+            r = rorder[j]
+            printf "    %6d  %s\n            tasks %s\n", rcount[r], (r == "" ? "(no reason in the file)" : r), ranges(rtasks[r])
+          }
+      }
+      exit 1
+    }'
 }
 
 # incomplete_tasks: the tasks of the loaded sweep whose result is not complete, one a line.

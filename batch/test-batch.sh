@@ -105,19 +105,22 @@ check "the first variable varies slowest, ranges include hi" \
   test "$(sed -n 13p "$sweep/manifest.tsv")" = "$(printf '11\t300000\t10.5\t1e-6')"
 case_ok() {
   local f=$sweep/cases/0007.nml
-  grep -q "^   file = '$sweep/results/0007.h5'$" "$f" && grep -q '^   quiet = .true.$' "$f" &&
+  grep -q "^   file = 'results/0007.h5'$" "$f" && grep -q '^   quiet = .true.$' "$f" &&
     grep -q '^   max_wall_time = 1e-6$' "$f" && grep -q '^   courant = 1.0$' "$f" &&
     grep -q '^&static$' "$f" && [ "$(grep -c 'file =' "$f")" -eq 1 ] &&
     [ "$(awk '/^&material/ { m = 1 } m && /p\(2\) = 10.5/ { print "ok"; exit }' "$f")" = ok ]
 }
-check "a case: file and quiet set, values replaced or added, missing group added" case_ok
-"$xcable" "$sweep/cases/0002.nml"
+check "a case: file (relative to the sweep) and quiet set, values replaced or added, missing group added" case_ok
+(cd "$sweep" && "$xcable" cases/0002.nml)
 p2=$(h5dump -a namelist "$sweep/results/0002.h5" | grep -o 'p = [^,]*, [^,]*' | awk '{ print $4 + 0 }')
 check "xcable runs a generated case; material%p(2) overrides the base's vector (p2 = $p2)" test "$p2" = 10.5
 
 echo "$PROG: sweep-local and the collector"
 out=$("$here/sweep-local" "$sweep" -j 2 2>&1) && code=0 || code=$?
 check "sweep-local exits 1 when cases fail, naming them" test "$code" -eq 1 -a "$(grep -c 'exit 1, failed' <<<"$out")" -eq 6
+check "sweep-local sums up the failed by reason, numbers as #, indices as ranges" \
+  bash -c "grep -q '^  failed  *6  tasks 1,3,5,7,9,11$' <<<'$out' &&
+           grep -q '^ *6  wall-clock limit of # s reached at t = # s$' <<<'$out'"
 check "every task logged its attempt" test "$(grep -l 'job local_' "$sweep"/logs/0*.log | wc -l)" -eq 12
 # Damage the results: one missing, one unreadable, one left 'running' by a killed run.
 rm "$sweep/results/0000.h5"
@@ -175,6 +178,79 @@ check "then all 12 complete" test "$(column "$csv" status | grep -c '^complete$'
 check "task 6, complete before, was not rerun" test "$(grep -c '### task 6: start' "$sweep/logs/0006.log")" -eq 1
 out=$("$here/sweep-local" "$sweep" --failed-only)
 check "nothing left to run" grep -q "nothing to run" <<<"$out"
+
+echo "$PROG: a summary of many tasks that are not complete"
+# 900 tasks, of which 2, 5, ..., 29 complete and the rest missing: ranges, cut after about 100 characters.
+many=$tmp/many
+mkdir -p "$many/results"
+for ((i = 2; i < 30; i += 3)); do cp "$sweep/results/0006.h5" "$many/results/$(printf '%04d' "$i").h5"; done
+out=$(SWEEP_ABS=$many SWEEP_WIDTH=4 bash -c ". '$here/sweep-lib.sh'; report_not_complete \$(seq 0 899)") && code=0 || code=$?
+check "900 tasks: one line per status, indices as ranges (exit $code): $(head -c 90 <<<"$out")..." \
+  test "$code" -eq 1 -a "$(wc -l <<<"$out")" -eq 1 -a \
+  "$(grep -c '^  missing  *890  tasks 0-1,3-4,6-7,9-10,12-13,15-16,18-19,21-22,24-25,27-28,30-899$' <<<"$out")" -eq 1
+for ((i = 30; i < 900; i += 2)); do cp "$sweep/results/0006.h5" "$many/results/$(printf '%04d' "$i").h5"; done
+out=$(SWEEP_ABS=$many SWEEP_WIDTH=4 bash -c ". '$here/sweep-lib.sh'; report_not_complete \$(seq 0 899)") || true
+check "a long list of ranges is cut: $(head -c 60 <<<"$out")...$(tail -c 40 <<<"$out")" \
+  test "$(grep -c '^  missing  *455  tasks 0-1,3-4,.*,31,33,[0-9,]* \.\.\. and [0-9]* more ranges$' <<<"$out")" -eq 1 \
+  -a "$(wc -c <<<"$out")" -lt 200
+
+echo "$PROG: a moved sweep, interrupted and killed tasks resumed with --failed-only"
+# Three copies of one case (max_wall_time may differ on --resume; it changes nothing else).
+mkdir -p "$tmp/here"
+"$here/sweep-generate" "$repo/input/fast_180kN.nml" "$tmp/here/ck" numerics%max_wall_time=0,1000,2000 \
+  numerics%nodes=481 output%checkpoint_interval=0.5 >/dev/null
+mkdir -p "$tmp/there"
+mv "$tmp/here/ck" "$tmp/there/ck"
+rmdir "$tmp/here"
+ck=$tmp/there/ck
+names_no_path() { ! cat "$ck"/cases/*.nml "$ck/sweep.env" "$ck/manifest.tsv" | grep -v '^[!#]' | grep -q -F "$tmp/here"; }
+check "no case, manifest or setting names the directory the sweep was made in" names_no_path
+# Task 0: SIGTERM to the task's script (as Slurm's --signal=B:TERM) once xcable runs.
+SLURM_ARRAY_TASK_ID=0 bash "$here/sweep.sbatch" "$ck" >"$tmp/task0.out" 2>&1 &
+long_pid=$!
+for _ in $(seq 600); do [ "$(result_status "$ck/results/0000.h5")" = running ] && break; sleep 0.05; done
+sleep 0.3
+kill -TERM "$long_pid"
+code=0
+wait "$long_pid" || code=$?
+long_pid=""
+check "SIGTERM to the task script reaches xcable: exit $code, 'interrupted', a checkpoint" \
+  test "$code" -eq 3 -a "$(result_status "$ck/results/0000.h5")" = interrupted -a -s "$ck/results/0000.h5.ckpt"
+check "the task's log says it was interrupted" grep -q 'exit 3, interrupted' "$ck/logs/0000.log"
+# Task 1: xcable killed (SIGKILL) after its first checkpoint: 'running', with a checkpoint.
+SLURM_ARRAY_TASK_ID=1 bash "$here/sweep.sbatch" "$ck" >"$tmp/task1.out" 2>&1 &
+long_pid=$!
+for _ in $(seq 1200); do [ -s "$ck/results/0001.h5.ckpt" ] && break; sleep 0.05; done
+xcable_pid=$(pgrep -P "$long_pid" -x xcable || true)
+[ -z "$xcable_pid" ] || kill -KILL "$xcable_pid"
+wait "$long_pid" || true
+long_pid=""
+"$here/sweep-collect" "$ck" >/dev/null
+check "the collector: interrupted, running (killed), missing" \
+  test "$(column "$ck/summary.csv" status | tr '\n' ' ')" = "interrupted running missing "
+check "the collector counts the interrupted in summary.h5" \
+  bash -c "h5dump -a interrupted '$ck/summary.h5' | grep -q '(0): 1$'"
+# Moved again between submissions.
+mv "$ck" "$tmp/ck2"
+ck=$tmp/ck2
+out=$("$here/sweep-local" "$ck" --failed-only -j 2 2>&1) && code=0 || code=$?
+check "sweep-local --failed-only lists what it resumes: interrupted 0, running 1, missing 2" \
+  bash -c "grep -q '^  interrupted  *1  tasks 0$' <<<'$out' && grep -q '^  running  *1  tasks 1$' <<<'$out' &&
+           grep -q '^  missing  *1  tasks 2$' <<<'$out'"
+check "sweep-local --failed-only completes the three (exit $code)" test "$code" -eq 0
+check "tasks 0 and 1 resumed from their checkpoints, task 2 started afresh" \
+  bash -c "grep -q 'resuming from results/0000.h5.ckpt' '$ck/logs/0000.log' &&
+           grep -q 'resuming from results/0001.h5.ckpt' '$ck/logs/0001.log' && ! grep -q resuming '$ck/logs/0002.log'"
+"$here/sweep-collect" "$ck" >/dev/null
+same_figures() {
+  # Every column but the task, the swept max_wall_time and the wall time: one distinct row.
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) skip[i] = ($i == "task" || $i ~ /max_wall_time/ || $i == "wall_time"); next }
+           { row = ""; for (i = 1; i <= NF; i++) if (!skip[i]) row = row "," $i; rows[row] = 1 }
+           END { n = 0; for (r in rows) n++; exit n != 1 }' "$ck/summary.csv"
+}
+all_same() { [ "$(column "$ck/summary.csv" status | grep -c '^complete$')" -eq 3 ] && same_figures; }
+check "all complete, with the same figures whether resumed or not" all_same
+check "no checkpoint is left" test -z "$(find "$ck" -name '*.ckpt*')"
 
 echo "$PROG: $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s"
 echo "$PROG: $passes passed, $failures failed"

@@ -6,8 +6,10 @@
 !> (the width of the task names) and each OUTDIR/results/NNNN.h5, and writes
 !> OUTDIR/summary.csv and OUTDIR/summary.h5 with one row per task: the swept
 !> values, the status and the /summary figures of the run. Every task of the
-!> manifest is a row: status 'complete' or 'failed' (from the file), 'running'
-!> (a run still going, or killed), 'missing' (no result file: not run yet, or
+!> manifest is a row: status 'complete', 'failed' or 'interrupted' (from the
+!> file; interrupted: stopped by SIGTERM with a checkpoint, which
+!> sweep-submit/sweep-local --failed-only resume), 'running' (a run still
+!> going, or killed), 'missing' (no result file: not run yet, or
 !> refused by xcable as bad input; its log says which) or 'unreadable' (a file
 !> that HDF5 cannot open, or without a status). Figures a file does not hold
 !> are NaN (reals) or -1 (counts).
@@ -38,8 +40,8 @@ program sweep_collect
    character(len=*), parameter :: int_names(5) = [character(len=21) :: 'steps', 'rejected_steps', &
       'newton_iterations', 'max_newton_iterations', 'factorisations']
    !> Statuses counted in the summary.
-   character(len=*), parameter :: status_names(5) = [character(len=10) :: 'complete', 'failed', 'running', &
-      'missing', 'unreadable']
+   character(len=*), parameter :: status_names(6) = [character(len=11) :: 'complete', 'failed', 'interrupted', &
+      'running', 'missing', 'unreadable']
    !> Longest manifest line, swept value and failure reason kept.
    integer, parameter :: line_len = 8192, value_len = 256, reason_len = 1024
 
@@ -47,7 +49,7 @@ program sweep_collect
    type :: task_result
       !> Task index.
       integer :: task = -1
-      !> complete, failed, running, missing or unreadable.
+      !> complete, failed, interrupted, running, missing or unreadable.
       character(len=16) :: status = 'missing'
       !> Why the run failed ('' unless failed).
       character(len=reason_len) :: failure_reason = ''
@@ -103,7 +105,7 @@ program sweep_collect
    if (.not. ok) call fail(1, outdir//'/summary.h5: cannot be written')
    call h5close_f(hdferr)
 
-   write (output_unit, '(a,i0,a,5(i0,1x,a,:,", "))') 'sweep_collect: ', ntasks, ' tasks: ', &
+   write (output_unit, '(a,i0,a,6(i0,1x,a,:,", "))') 'sweep_collect: ', ntasks, ' tasks: ', &
       (counts(i), trim(status_names(i)), i=1, size(status_names))
    write (output_unit, '(a)') 'sweep_collect: wrote '//outdir//'/summary.csv and '//outdir//'/summary.h5'
 

@@ -58,7 +58,7 @@ program xcable_main
       resume = trim(option) == '--resume'
    end if
    if (.not. (nargs == 1 .or. check_only .or. resume)) then
-      write (error_unit, '(a)') usage
+      write (error_unit, '(a)') 'xcable: error: '//usage
       stop 2, quiet=.true.
    end if
    call get_command_argument(nargs, path)
@@ -69,6 +69,11 @@ program xcable_main
    if (nargs == 1 .and. trim(path) == '--version') then
       write (output_unit, '(a)') version_lines()
       stop
+   end if
+   ! An option without its case (xcable --resume): say so, not 'no such file'.
+   if (nargs == 1 .and. path(1:1) == '-') then
+      write (error_unit, '(a)') 'xcable: error: '//trim(path)//': an option without a case file, or not an option; '//usage
+      stop 2, quiet=.true.
    end if
 
    call read_config(trim(path), config, error)

@@ -8,7 +8,13 @@
 # pair), submits an 8-case sweep (2 breaking times x 4 tensions from
 # input/fast_180kN.nml on 41 nodes to t = 0.07 s) as a job array, waits,
 # collects and checks the summary; then removes one result, resubmits with
-# --failed-only and checks that exactly that task ran again. The daemons it
+# --failed-only and checks that exactly that task ran again. Then a long task
+# (a heaving mass on a cable, its t_end set so that it runs about a minute
+# on this machine) is submitted with --time=1 --signal=B:TERM@50: Slurm's
+# signal (or its time limit) interrupts it, the collector shows it
+# 'interrupted', sweep-submit --failed-only resumes it from its checkpoint,
+# and its figures equal those of a copy of the sweep run uninterrupted with
+# sweep-local meanwhile (about two minutes more). The daemons it
 # started are stopped by their PIDs on every exit. Set KEEP=1 to keep the
 # temporary directory (it is kept anyway when a check fails).
 #
@@ -174,15 +180,15 @@ check() {
   fi
 }
 
-# wait_jobs ID...: until none of the jobs is in the queue (at most 180 s).
+# wait_jobs ID...: until none of the jobs is in the queue (at most WAIT_LIMIT s, 180 by default).
 wait_jobs() {
   local ids
   ids=$(IFS=,; echo "$*")
-  for _ in $(seq 1800); do
+  for _ in $(seq $((${WAIT_LIMIT:-180} * 10))); do
     [ -z "$(squeue -h -j "$ids" -o '%i' 2>/dev/null)" ] && return 0
     sleep 0.1
   done
-  echo "$PROG: jobs $ids still queued after 180 s:" >&2
+  echo "$PROG: jobs $ids still queued after ${WAIT_LIMIT:-180} s:" >&2
   squeue -j "$ids" >&2 || true
   return 1
 }
@@ -254,6 +260,56 @@ check "after resubmission all 8 cases complete" test "$(column "$csv" status | g
 check "task 2 ran again under job $job2" grep -q "job ${job2}_2," "$sweep/logs/0002.log"
 out=$("$here/sweep-submit" "$sweep" --failed-only)
 check "sweep-submit --failed-only with nothing left submits nothing" grep -q "nothing to submit" <<<"$out"
+
+# --- 5. a task interrupted by Slurm, resumed with --failed-only --------------------
+# Its length: about 60 s on this machine now, from a 2 s (simulated) trial.
+cal=$tmp/calibrate.nml
+sed "s|'results/hanging_mass_heave.h5'|'$tmp/calibrate.h5'|; s|t_end = 20.0|t_end = 2.0|; s|nodes = 121|nodes = 241|" \
+  "$repo/input/hanging_mass_heave.nml" >"$cal"
+c0=$(date +%s.%N)
+"$repo/bin/xcable" "$cal" 2>/dev/null || die 1 "the trial run of input/hanging_mass_heave.nml failed"
+t_long=$(awk -v a="$c0" -v b="$(date +%s.%N)" 'BEGIN { t = int(2 * 60 / (b - a)); if (t < 20) t = 20; if (t > 600) t = 600; print t }')
+long=$tmp/long
+"$here/sweep-generate" "$repo/input/hanging_mass_heave.nml" "$long" numerics%nodes=241 numerics%t_end="$t_long" \
+  output%interval=1 output%gnuplot=.false. >/dev/null
+cp -r "$long" "$tmp/long_ref"
+say "a task of t_end = $t_long s (about a minute), submitted with --time=1 --signal=B:TERM@50;" \
+    "a copy of its sweep runs uninterrupted beside it (sweep-local)"
+"$here/sweep-local" "$tmp/long_ref" -j 1 >"$tmp/long_ref.out" 2>&1 &
+ref_pid=$!
+"$here/sweep-submit" "$long" -- --time=1 --signal=B:TERM@50 >/dev/null
+job3=$(awk 'NR > 1 && !/^#/ { id = $1 } END { print id }' "$long/jobs.txt")
+jobs_submitted+=("$job3")
+t_submit=$(elapsed)
+WAIT_LIMIT=300 wait_jobs "$job3"
+say "job $job3 ended $(awk -v a="$t_submit" -v b="$(elapsed)" 'BEGIN { printf "%.1f", b - a }') s after submission:" \
+    "$(grep -o 'exit [0-9]*, [a-z]*' "$long/logs/0000.log" | tail -1)"
+"$here/sweep-collect" "$long" >/dev/null
+check "Slurm interrupted the task (job $job3): the collector says 'interrupted'" \
+  test "$(column "$long/summary.csv" status)" = interrupted
+check "the task wrote a checkpoint and logged exit 3" \
+  bash -c "test -s '$long/results/0000.h5.ckpt' && grep -q 'exit 3, interrupted' '$long/logs/0000.log'"
+out=$("$here/sweep-submit" "$long" --failed-only)
+job4=$(awk 'NR > 1 && !/^#/ { id = $1 } END { print id }' "$long/jobs.txt")
+jobs_submitted+=("$job4")
+check "sweep-submit --failed-only lists it as interrupted and submits it (job $job4)" \
+  bash -c "grep -q '^  interrupted  *1  tasks 0$' <<<'$out' && test '$job4' != '$job3'"
+WAIT_LIMIT=300 wait_jobs "$job4"
+"$here/sweep-collect" "$long" >/dev/null
+check "resumed from its checkpoint under job $job4, now complete" \
+  bash -c "grep -q 'resuming from results/0000.h5.ckpt' '$long/logs/0000.log' &&
+           test \"\$(awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) if (\$i == \"status\") c = i; next } { print \$c }' '$long/summary.csv')\" = complete"
+wait "$ref_pid" || true
+"$here/sweep-collect" "$tmp/long_ref" >/dev/null
+# figures CSV: the row of summary.csv without the wall time.
+figures() {
+  awk -F, 'NR == 1 { for (i = 1; i <= NF; i++) skip[i] = ($i == "wall_time"); next }
+           { row = ""; for (i = 1; i <= NF; i++) if (!skip[i]) row = row "," $i; print row }' "$1"
+}
+check "the same figures as the uninterrupted copy (every column of summary.csv but wall_time)" \
+  test "$(figures "$long/summary.csv")" = "$(figures "$tmp/long_ref/summary.csv")" -a \
+  "$(column "$tmp/long_ref/summary.csv" status)" = complete
+echo "  interrupted and resumed: $(figures "$long/summary.csv" | cut -c 1-150)..."
 
 say "done"
 echo "$PROG: $passes passed, $failures failed"

@@ -14,8 +14,12 @@
 #     word the case expects: the variable (or group) at fault with its value
 #     where it has one, and the specific reason (not merely the file name),
 #   - no 'Backtrace', 'Fortran runtime error' or 'Segmentation' anywhere,
-#   - no file created (the scratch directory and any absolute output path
-#     are checked).
+#   - no file created or changed (the scratch directory and any absolute
+#     output path are checked).
+# The --resume cases start from a result file and checkpoint of a run
+# stopped by SIGTERM (made once, in the setup) and offer it damaged, from
+# another case, from another version (its version attribute rewritten and
+# its header checksum recomputed, by python3), without its result file, etc.
 # Controls first: the unchanged inputs pass `--check` and one short real run
 # does write its result file (so the 'no file' check can see one).
 # Exit code: 0 if every case passed, 1 otherwise (each failure is listed).
@@ -65,10 +69,10 @@ cut_after() {
 # check: run xcable on the case and assert the rules above.
 check() {
    local out=$dir.stdout err=$dir.stderr rc lines problem='' before after p
-   before=$(cd "$dir" && find . -mindepth 1 | sort)
+   before=$(cd "$dir" && { find . -mindepth 1; find . -type f -exec md5sum {} +; } | sort)
    (cd "$dir" && timeout "$limit" "$exe" "${args[@]:-case.nml}" >"$out" 2>"$err")
    rc=$?
-   after=$(cd "$dir" && find . -mindepth 1 | sort)
+   after=$(cd "$dir" && { find . -mindepth 1; find . -type f -exec md5sum {} +; } | sort)
    lines=$(awk 'END { print NR }' "$err")
    if ((rc == 124)); then
       problem="timed out after $limit s (hang)"
@@ -90,7 +94,7 @@ check() {
       done
    fi
    if [[ $before != "$after" ]]; then
-      problem="${problem:+$problem; }created: $(comm -13 <(echo "$before") <(echo "$after") | tr '\n' ' ')"
+      problem="${problem:+$problem; }created or changed: $(comm -13 <(echo "$before") <(echo "$after") | tr '\n' ' ')"
    fi
    for p in "${extra_paths[@]}"; do
       [[ -e $p ]] && problem="${problem:+$problem; }created $p"
@@ -503,6 +507,107 @@ begin 'input is a directory' 'case.nml' 'not a regular text file'
 rm -rf "$f"; mkdir "$f"; check
 begin 'input does not exist' 'missing.nml'
 args=(missing.nml); check
+
+# --- --resume misuse ------------------------------------------------------------------
+# The setup: input/fast_180kN.nml run to t_end = 10 s, stopped by SIGTERM once
+# its result file says 'running': results/fast_180kN.h5 'interrupted' and its
+# checkpoint results/fast_180kN.h5.ckpt. A second such run gives a result file
+# of another run (another run_id).
+resume_base() { from fast_180kN; edit 's/t_end = 0.14/t_end = 10/'; }
+stopped_run() {
+   local d=$1 p i
+   mkdir -p "$d/results"
+   cp "$f" "$d/case.nml"
+   (cd "$d" && exec "$exe" case.nml 2>/dev/null) &
+   p=$!
+   for ((i = 0; i < 3000; i++)); do
+      HDF5_USE_FILE_LOCKING=FALSE h5dump -a /status "$d/results/fast_180kN.h5" 2>/dev/null | grep -q '"running' && break
+      sleep 0.01
+   done
+   kill -TERM "$p"
+   wait "$p"
+}
+begin 'setup'
+resume_base
+stopped_run "$work/stopped_a"
+code_a=$?
+stopped_run "$work/stopped_b"
+code_b=$?
+n=$((n - 1))
+if ((code_a != 3 || code_b != 3)) || [[ ! -s $work/stopped_a/results/fast_180kN.h5.ckpt ]]; then
+   echo "  FAIL setup of the --resume cases: runs stopped by SIGTERM exited $code_a, $code_b (expected 3)"
+   failed=$((failed + 1))
+   failures+=("setup of the --resume cases")
+fi
+# stopped [a|b] [RESULT] [CHECKPOINT]: copy the result file and checkpoint of a stopped run into the case.
+stopped() {
+   local from=$work/stopped_${1:-a}
+   [[ ${2:-yes} == no ]] || cp "$from/results/fast_180kN.h5" "$dir/results/"
+   [[ ${3:-yes} == no ]] || cp "$from/results/fast_180kN.h5.ckpt" "$dir/results/"
+}
+# set_attrs FILE NAME=VALUE...: rewrite string attributes of an HDF5 file's root
+# (python3 with h5py, as bench/ uses). For a checkpoint the header checksum is
+# recomputed (FNV-1a over 64-bit words of code_version, namelist and run_id,
+# system/posix.c), so that it looks written by another version.
+set_attrs() {
+   python3 - "$@" <<'PY' || { echo "    (set_attrs needs python3 with h5py)"; return 1; }
+import sys
+import h5py, numpy
+def fnv(h, b):
+    p, m = 0x100000001b3, (1 << 64) - 1
+    for i in range(0, len(b) - len(b) % 8, 8):
+        h = ((h ^ int.from_bytes(b[i:i + 8], 'little')) * p) & m
+    for c in b[len(b) - len(b) % 8:]:
+        h = ((h ^ c) * p) & m
+    return ((h ^ len(b)) * p) & m
+def text(f, name):
+    v = f.attrs[name]
+    return (v if isinstance(v, bytes) else v.tobytes() if hasattr(v, 'tobytes') else str(v).encode())
+def header(f):
+    h = 0xcbf29ce484222325
+    for name in ('code_version', 'namelist', 'run_id'):
+        h = fnv(h, text(f, name))
+    return b'%016X' % h
+with h5py.File(sys.argv[1], 'r+') as f:
+    checkpoint = 'header_checksum' in f.attrs
+    if checkpoint:
+        assert header(f) == text(f, 'header_checksum'), 'cannot reproduce the header checksum'
+    for item in sys.argv[2:]:
+        name, value = item.split('=', 1)
+        f.attrs.create(name, numpy.bytes_(value.encode()))
+    if checkpoint:
+        f.attrs.create('header_checksum', numpy.bytes_(header(f)))
+PY
+}
+begin '--resume without a checkpoint' 'no checkpoint' 'results/fast_180kN.h5.ckpt' 'without --resume'
+resume_base; stopped a yes no; args=(--resume case.nml); check
+begin '--resume of a checkpoint of another case' 'written for another case' 'tension = 180000' 'tension = 170000'
+resume_base; edit 's/tension = 180000/tension = 170000/'; stopped; args=(--resume case.nml); check
+begin '--resume of a checkpoint with other nodes' 'written for another case' 'nodes = 241' 'nodes = 201'
+resume_base; edit 's/nodes = 241/nodes = 201/'; stopped; args=(--resume case.nml); check
+begin '--resume of another version'"'"'s checkpoint' 'written by xcable 0.0.9' 'only with the version that wrote it'
+resume_base; stopped; set_attrs "$dir/results/fast_180kN.h5.ckpt" code_version=0.0.9; args=(--resume case.nml); check
+begin '--resume of a truncated checkpoint' 'results/fast_180kN.h5.ckpt' 'cannot be read'
+resume_base; stopped; head -c 5000 "$work/stopped_a/results/fast_180kN.h5.ckpt" >"$dir/results/fast_180kN.h5.ckpt"
+args=(--resume case.nml); check
+begin '--resume of a result file posing as a checkpoint' 'results/fast_180kN.h5.ckpt' 'not an xcable checkpoint'
+resume_base; stopped a yes no; cp "$dir/results/fast_180kN.h5" "$dir/results/fast_180kN.h5.ckpt"
+args=(--resume case.nml); check
+begin '--resume of an empty checkpoint' 'results/fast_180kN.h5.ckpt' 'cannot be read'
+resume_base; stopped a yes no; : >"$dir/results/fast_180kN.h5.ckpt"; args=(--resume case.nml); check
+begin '--resume without the result file' 'results/fast_180kN.h5' 'is missing'
+resume_base; stopped a no yes; args=(--resume case.nml); check
+begin '--resume with the result file of another run' 'belongs to run' 'the checkpoint to run'
+resume_base; stopped a no yes; cp "$work/stopped_b/results/fast_180kN.h5" "$dir/results/"
+args=(--resume case.nml); check
+begin '--resume of a complete run' 'already complete'
+resume_base; stopped; set_attrs "$dir/results/fast_180kN.h5" status=complete; args=(--resume case.nml); check
+begin '--resume with the box scheme' 'box scheme'
+resume_base; set_in numerics "scheme = 'box'"; stopped; args=(--resume case.nml); check
+begin '--resume with no case' '--resume' 'without a case file' 'usage'
+args=(--resume); check
+begin '--resume with two cases' 'usage'
+resume_base; args=(--resume case.nml case.nml); check
 
 # --- output paths ------------------------------------------------------------------
 begin 'output in a missing directory' 'no/such/dir'

@@ -9,12 +9,12 @@
 # input/fast_180kN.nml on 41 nodes to t = 0.07 s) as a job array, waits,
 # collects and checks the summary; then removes one result, resubmits with
 # --failed-only and checks that exactly that task ran again. Then a long task
-# (a heaving mass on a cable, its t_end set so that it runs about a minute
+# (a heaving mass on a cable, its t_end set so that it runs about 90 s
 # on this machine) is submitted with --time=1 --signal=B:TERM@50: Slurm's
 # signal (or its time limit) interrupts it, the collector shows it
 # 'interrupted', sweep-submit --failed-only resumes it from its checkpoint,
 # and its figures equal those of a copy of the sweep run uninterrupted with
-# sweep-local meanwhile (about two minutes more). The daemons it
+# sweep-local meanwhile (about three minutes more). The daemons it
 # started are stopped by their PIDs on every exit. Set KEEP=1 to keep the
 # temporary directory (it is kept anyway when a check fails).
 #
@@ -262,18 +262,19 @@ out=$("$here/sweep-submit" "$sweep" --failed-only)
 check "sweep-submit --failed-only with nothing left submits nothing" grep -q "nothing to submit" <<<"$out"
 
 # --- 5. a task interrupted by Slurm, resumed with --failed-only --------------------
-# Its length: about 60 s on this machine now, from a 2 s (simulated) trial.
+# Its length: about 90 s on this machine now, from a 2 s (simulated) trial (Slurm signals it
+# 10-40 s after its start: its periodic checks are 30 s apart).
 cal=$tmp/calibrate.nml
 sed "s|'results/hanging_mass_heave.h5'|'$tmp/calibrate.h5'|; s|t_end = 20.0|t_end = 2.0|; s|nodes = 121|nodes = 241|" \
   "$repo/input/hanging_mass_heave.nml" >"$cal"
 c0=$(date +%s.%N)
 "$repo/bin/xcable" "$cal" 2>/dev/null || die 1 "the trial run of input/hanging_mass_heave.nml failed"
-t_long=$(awk -v a="$c0" -v b="$(date +%s.%N)" 'BEGIN { t = int(2 * 60 / (b - a)); if (t < 20) t = 20; if (t > 600) t = 600; print t }')
+t_long=$(awk -v a="$c0" -v b="$(date +%s.%N)" 'BEGIN { t = int(2 * 90 / (b - a)); if (t < 30) t = 30; if (t > 300) t = 300; print t }')
 long=$tmp/long
 "$here/sweep-generate" "$repo/input/hanging_mass_heave.nml" "$long" numerics%nodes=241 numerics%t_end="$t_long" \
   output%interval=1 output%gnuplot=.false. >/dev/null
 cp -r "$long" "$tmp/long_ref"
-say "a task of t_end = $t_long s (about a minute), submitted with --time=1 --signal=B:TERM@50;" \
+say "a task of t_end = $t_long s (about 90 s), submitted with --time=1 --signal=B:TERM@50;" \
     "a copy of its sweep runs uninterrupted beside it (sweep-local)"
 "$here/sweep-local" "$tmp/long_ref" -j 1 >"$tmp/long_ref.out" 2>&1 &
 ref_pid=$!

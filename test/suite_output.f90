@@ -175,6 +175,37 @@ contains
       close (unit)
       call check(error, manifest_version == code_version, 'fpm.toml says version "'//manifest_version// &
                  '", src/xcable/version.f90 says "'//code_version//'": change both (and CHANGELOG.md)')
+      if (allocated(error)) return
+      ! The newest entry of the changelog and the README follow it.
+      line = first_line('CHANGELOG.md', '## ')
+      call check(error, index(line, '## '//code_version//' ') == 1, 'CHANGELOG.md''s newest entry is "'// &
+                 trim(line)//'", the version is '//code_version)
+      if (allocated(error)) return
+      line = first_line('README.md', 'Version ')
+      call check(error, index(line, 'Version '//code_version//' ') == 1 .or. trim(line) == 'Version '//code_version, &
+                 'README.md says "'//trim(line)//'", the version is '//code_version)
+
+   contains
+
+      !> The first line of a file that starts with prefix ('' if none).
+      function first_line(file, prefix) result(found)
+         character(*), intent(in) :: file, prefix
+         character(len=256) :: found
+         character(len=256) :: text
+         integer :: u, stat
+         found = ''
+         open (newunit=u, file=file, status='old', action='read', iostat=stat)
+         if (stat /= 0) return
+         do
+            read (u, '(a)', iostat=stat) text
+            if (stat /= 0) exit
+            if (index(text, prefix) == 1) then
+               found = text
+               exit
+            end if
+         end do
+         close (u)
+      end function first_line
    end subroutine test_version
 
    !> Reopening for a resume: a file of another run, one with fewer

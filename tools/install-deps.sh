@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Install what xcable needs and is missing, and only that, saying what it installs.
 #   Debian/Ubuntu packages: gfortran liblapack-dev libhdf5-dev hdf5-tools pkg-config gnuplot-nox
-#   PyPI: fpm
+#   PyPI: fpm, h5py (the tests edit a checkpoint's attributes with it, to check that a foreign
+#     checkpoint is refused)
 # Run as root (or with sudo available). Without root, it only reports what is missing.
 set -euo pipefail
 
@@ -53,5 +54,13 @@ if ! command -v fpm >/dev/null 2>&1; then
     echo "install-deps: fpm went to ~/.local/bin; put it on PATH" >&2
   fi
   hash -r
+fi
+if ! python3 -c 'import h5py' >/dev/null 2>&1; then
+  echo "install-deps: installing h5py from PyPI"
+  if [ "$(id -u)" -eq 0 ]; then
+    python3 -m pip install -q h5py 2>/dev/null || python3 -m pip install -q --break-system-packages h5py
+  else
+    python3 -m pip install -q --user h5py 2>/dev/null || python3 -m pip install -q --user --break-system-packages h5py
+  fi
 fi
 exit 0

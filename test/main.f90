@@ -17,6 +17,7 @@ program xcable_tests
    use suite_laws, only: collect_laws
    use suite_registry, only: collect_registry
    use suite_fluid, only: collect_fluid
+   use suite_rod3d, only: collect_rod3d
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -38,7 +39,8 @@ program xcable_tests
              new_testsuite('scenes', collect_scenes), &
              new_testsuite('laws', collect_laws), &
              new_testsuite('registry', collect_registry), &
-             new_testsuite('fluid', collect_fluid)]
+             new_testsuite('fluid', collect_fluid), &
+             new_testsuite('rod3d', collect_rod3d)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -1,0 +1,506 @@
+!> The 3-D rod (model/rod3d.f90): its Jacobians against central differences
+!> entry by entry; a planar scene in 3-D against the planar rod; rotation
+!> about the vertical and mirror symmetry; the energy ledger; torsion (a
+!> torque gives the uniform twist rate M_t / GIp) and the unit norm of the
+!> frame's Euler parameters along a run.
+module suite_rod3d
+   use xcable_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
+   use xcable_error, only: fatal_error
+   use xcable_strings, only: str
+   use xcable_material_law, only: tanh_law, linear_law
+   use xcable_ends_end, only: end_condition
+   use xcable_ends_force, only: force_end
+   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
+   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, turning_angle
+   use xcable_rod3d_run, only: rod3d_run
+   use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
+   use xcable_fdcheck, only: check_jacobian
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   implicit none
+   private
+   public :: collect_rod3d
+
+   real(dp), parameter :: pi = acos(-1.0_dp)
+   !> The paper's cable: mass per length (kg/m), gravity, EI (N m^2); a GIp for the tests.
+   real(dp), parameter :: m_cable = 2.239_dp, g = 9.81_dp, ei = 70.6_dp, gip = 47.0_dp
+
+   !> A test end in 3-D: held at a point, or loaded by F(t) = F0 + F1 sin(2 pi t / period),
+   !> a torque M0 + M1 t and a point mass.
+   type, extends(end_condition) :: end3
+      logical :: is_held = .false.
+      real(dp) :: point(3) = 0, force0(3) = 0, force1(3) = 0, period = 1, torque0 = 0, torque1 = 0, mass = 0
+   contains
+      procedure :: kind => end3_kind
+      procedure :: held => end3_held
+      procedure :: position => end3_position
+      procedure :: position3 => end3_position3
+      procedure :: velocity3 => end3_velocity3
+      procedure :: applied_force => end3_force
+      procedure :: applied_force3 => end3_force3
+      procedure :: applied_torque => end3_torque
+      procedure :: point_mass => end3_mass
+   end type end3
+
+contains
+
+   subroutine collect_rod3d(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('jacobian_statics', test_jacobian_statics), &
+               new_unittest('jacobian_step', test_jacobian_step), &
+               new_unittest('jacobian_step_mass_damping_theta_0.7', test_jacobian_step_mass), &
+               new_unittest('reduction_to_planar_rod', test_reduction), &
+               new_unittest('reduction_release_buckling', test_reduction_release), &
+               new_unittest('rotation_about_vertical', test_rotation), &
+               new_unittest('mirror_symmetry', test_mirror), &
+               new_unittest('ledger_3d', test_ledger), &
+               new_unittest('torsion_twist_rate_unit_frame', test_torsion)]
+   end subroutine collect_rod3d
+
+   ! ---- the test end ----
+
+   pure function end3_kind(self) result(name)
+      class(end3), intent(in) :: self
+      character(:), allocatable :: name
+      name = merge('fixed', 'force', self%is_held)
+   end function end3_kind
+
+   pure logical function end3_held(self)
+      class(end3), intent(in) :: self
+      end3_held = self%is_held
+   end function end3_held
+
+   pure function end3_position(self, t) result(x)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(2)
+      x = [self%point(1), self%point(3)]
+   end function end3_position
+
+   pure function end3_position3(self, t) result(x)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(3)
+      x = self%point
+   end function end3_position3
+
+   pure function end3_velocity3(self, t) result(v)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: v(3)
+      v = 0
+   end function end3_velocity3
+
+   pure function end3_force3(self, t) result(f)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: f(3)
+      f = self%force0 + self%force1*sin(2*pi*t/self%period)
+   end function end3_force3
+
+   pure function end3_force(self, t) result(f)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: f(2), f3(3)
+      f3 = self%applied_force3(t)
+      f = [f3(1), f3(3)]
+   end function end3_force
+
+   pure real(dp) function end3_torque(self, t) result(m)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      m = self%torque0 + self%torque1*t
+   end function end3_torque
+
+   pure real(dp) function end3_mass(self)
+      class(end3), intent(in) :: self
+      end3_mass = self%mass
+   end function end3_mass
+
+   ! ---- helpers ----
+
+   !> Rotation by angle alpha about the vertical z, optionally after the mirror y -> -y.
+   pure function transform(v, alpha, mirror) result(w)
+      real(dp), intent(in) :: v(3), alpha
+      logical, intent(in) :: mirror
+      real(dp) :: w(3), u(3)
+      u = v
+      if (mirror) u(2) = -u(2)
+      w = [cos(alpha)*u(1) - sin(alpha)*u(2), sin(alpha)*u(1) + cos(alpha)*u(2), u(3)]
+   end function transform
+
+   !> A 3-D piece of n nodes over length len: end a held at the origin, end b loaded.
+   subroutine make_piece3(p, n, len, eb, error, mu, mu2, damping)
+      type(rod3d_problem), intent(out) :: p
+      integer, intent(in) :: n
+      real(dp), intent(in) :: len
+      class(end_condition), intent(in) :: eb
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: mu, mu2, damping
+      real(dp) :: s(n), mu_
+      integer :: k
+      s = [(len*(k - 1)/(n - 1), k=1, n)]
+      mu_ = 1
+      if (present(mu)) mu_ = mu
+      call p%piece%init(s, m_cable, m_cable*g, ei, gip, g, mu_, tanh_law(), end3(is_held=.true.), eb, 1.0e4_dp, &
+                        error, mu2, damping)
+   end subroutine make_piece3
+
+   !> A curved 3-D state of n nodes, the unknowns x (with twist angles) and velocities.
+   subroutine curved_state(n, len, x, r0, v0)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: len
+      real(dp), allocatable, intent(out) :: x(:), r0(:, :), v0(:, :)
+      integer :: k
+      real(dp) :: s
+      allocate (x(4*n), r0(3, n), v0(3, n))
+      do k = 1, n
+         s = len*(k - 1)/(n - 1)
+         r0(:, k) = [s*1.02_dp, 0.4_dp*sin(0.9_dp*s), 0.3_dp*sin(1.3_dp*s)]
+         v0(:, k) = [0.5_dp*cos(real(k, dp)), 0.3_dp*sin(real(k, dp)), -0.2_dp*k]
+         x(4*k - 3:4*k - 1) = r0(:, k) + [0.01_dp*sin(2.0_dp*k), 0.03_dp*cos(5.0_dp*k), 0.02_dp*cos(3.0_dp*k)]
+         x(4*k) = 0.1_dp*sin(real(k, dp))
+      end do
+      ! A cell squeezed and turned by a large angle out of the plane, another stretched.
+      x(21:23) = x(21:23) + [-0.4_dp, 0.25_dp, 0.3_dp]
+      x(29:31) = x(29:31) + [0.1_dp, -0.1_dp, -0.05_dp]
+   end subroutine curved_state
+
+   ! ---- Jacobians ----
+
+   subroutine test_jacobian_statics(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_problem) :: p
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :)
+      real(dp) :: worst
+      integer, parameter :: n = 9
+      call make_piece3(p, n, 6.0_dp, end3(force0=[1000.0_dp, 300.0_dp, 200.0_dp], torque0=5.0_dp), error)
+      if (allocated(error)) return
+      call curved_state(n, 6.0_dp, x, r0, v0)
+      p%dt = 0
+      call check_jacobian(p, x, rod3d_kl, rod3d_ku, spread(1.0e-6_dp, 1, 4*n), 1.0e-8_dp, worst, error)
+      write (output_unit, '(4x,a,es9.2)') '3-D statics: largest deviation from central differences / row scale', worst
+   end subroutine test_jacobian_statics
+
+   subroutine step_jacobian(error, mu, mu2, damping, theta, mass, label)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), intent(in) :: mu, mu2, damping, theta, mass
+      character(*), intent(in) :: label
+      type(rod3d_problem) :: p
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :)
+      real(dp) :: worst
+      integer, parameter :: n = 9
+      call make_piece3(p, n, 6.0_dp, end3(force0=[1000.0_dp, 300.0_dp, 200.0_dp], force1=[0.0_dp, 400.0_dp, 0.0_dp], &
+                                          period=0.05_dp, torque0=5.0_dp, torque1=100.0_dp, mass=mass), &
+                       error, mu, mu2, damping)
+      if (allocated(error)) return
+      call curved_state(n, 6.0_dp, x, r0, v0)
+      call p%piece%prepare_step(r0, v0)
+      p%dt = 0.002_dp
+      p%t0 = 0.01_dp
+      p%theta = theta
+      call check_jacobian(p, x, rod3d_kl, rod3d_ku, spread(1.0e-6_dp, 1, 4*n), 1.0e-8_dp, worst, error)
+      write (output_unit, '(4x,a,es9.2)') '3-D step ('//label//'): largest deviation / row scale', worst
+   end subroutine step_jacobian
+
+   subroutine test_jacobian_step(error)
+      type(error_type), allocatable, intent(out) :: error
+      call step_jacobian(error, 1.0_dp, 0.0_dp, 0.0_dp, 0.5_dp, 0.0_dp, 'averaged mass, theta 0.5')
+   end subroutine test_jacobian_step
+
+   subroutine test_jacobian_step_mass(error)
+      type(error_type), allocatable, intent(out) :: error
+      call step_jacobian(error, 0.5_dp, 0.3_dp, 2.0e3_dp, 0.7_dp, 5.0_dp, 'point mass, damping, theta 0.7')
+   end subroutine test_jacobian_step_mass
+
+   ! ---- runs ----
+
+   !> The scene of the runs: a 20 m line of the paper's cable on n nodes, end a held at the
+   !> origin, end b pulled by F0 + F1 sin(2 pi t / 0.1 s) (F1 may leave the plane), in its
+   !> static state under F0 turned by alpha about the vertical (and mirrored).
+   subroutine scene3(run, n, f0, f1, alpha, mirror, torque0, torque1, error, release)
+      type(rod3d_run), intent(out) :: run
+      integer, intent(in) :: n
+      real(dp), intent(in) :: f0(3), f1(3), alpha, torque0, torque1
+      logical, intent(in) :: mirror
+      type(error_type), allocatable, intent(out) :: error
+      !> With it, end b is instead the planar force end releasing f0 over this time (s).
+      real(dp), intent(in), optional :: release
+      real(dp), allocatable :: r2(:, :)
+      integer :: k
+      if (present(release)) then
+         call make_piece3(run%problem, n, 20.0_dp, force_end(history='ramp', force0=[f0(1), f0(3)], &
+                                                             duration=release), error)
+      else
+         call make_piece3(run%problem, n, 20.0_dp, end3(force0=transform(f0, alpha, mirror), &
+                                                        force1=transform(f1, alpha, mirror), period=0.1_dp, &
+                                                        torque0=torque0, torque1=torque1), error)
+      end if
+      if (allocated(error)) return
+      call run%init(1.0e-11_dp)
+      call planar_statics(n, f0, r2, error)
+      if (allocated(error)) return
+      ! Start the 3-D statics off the solution: out of the plane by 1 % of the span.
+      do k = 1, n
+         run%x(4*k - 3:4*k - 1) = transform([r2(1, k), 0.01_dp*r2(1, k), r2(2, k)], alpha, mirror)
+      end do
+      call run%statics(0.0_dp, error)
+   end subroutine scene3
+
+   !> The planar rod's static state of the same scene (positions (2, n)).
+   subroutine planar_statics(n, f0, r, error)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: f0(3)
+      real(dp), allocatable, intent(out) :: r(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p
+      type(newton_workspace) :: work
+      type(newton_options) :: options
+      type(newton_report) :: report
+      real(dp), allocatable :: x(:)
+      real(dp) :: s(n)
+      integer :: k
+      s = [(20.0_dp*(k - 1)/(n - 1), k=1, n)]
+      call p%piece%init(s, m_cable, m_cable*g, ei, g, 1.0_dp, tanh_law(), end3(is_held=.true.), &
+                        end3(force0=f0), 1.0e4_dp)
+      allocate (x(2*n))
+      do k = 1, n
+         x(2*k - 1:2*k) = [s(k)*1.02_dp, -0.5_dp*sin(pi*s(k)/20)]
+      end do
+      call work%init(2*n, rod_kl, rod_ku, spread(p%piece%length_ref, 1, 2*n))
+      options%tolerance = 1.0e-11_dp
+      options%max_iterations = 60
+      p%dt = 0
+      call newton_solve(p, x, work, options, report, error)
+      if (allocated(error)) return
+      r = reshape(x, [2, n])
+   end subroutine planar_statics
+
+   !> The planar rod run alongside: positions (2, n) after steps of dt from its statics.
+   subroutine planar_run(n, f0, f1, dt, steps, r, error, release)
+      integer, intent(in) :: n, steps
+      real(dp), intent(in) :: f0(3), f1(3), dt
+      real(dp), allocatable, intent(out) :: r(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), intent(in), optional :: release
+      type(rod_problem) :: p
+      type(newton_workspace) :: work
+      type(newton_options) :: options
+      type(newton_report) :: report
+      real(dp), allocatable :: x(:), v(:, :), v1(:, :)
+      real(dp) :: s(n)
+      integer :: k, i
+      s = [(20.0_dp*(k - 1)/(n - 1), k=1, n)]
+      call planar_statics(n, f0, r, error)
+      if (allocated(error)) return
+      if (present(release)) then
+         call p%piece%init(s, m_cable, m_cable*g, ei, g, 1.0_dp, tanh_law(), end3(is_held=.true.), &
+                           force_end(history='ramp', force0=[f0(1), f0(3)], duration=release), 1.0e4_dp)
+      else
+         call p%piece%init(s, m_cable, m_cable*g, ei, g, 1.0_dp, tanh_law(), end3(is_held=.true.), &
+                           end3(force0=f0, force1=f1, period=0.1_dp), 1.0e4_dp)
+      end if
+      call work%init(2*n, rod_kl, rod_ku, spread(p%piece%length_ref, 1, 2*n))
+      options%tolerance = 1.0e-11_dp
+      options%max_iterations = 60
+      allocate (v(2, n), v1(2, n))
+      v = 0
+      do i = 1, steps
+         call p%piece%prepare_step(r, v)
+         p%dt = dt
+         p%t0 = (i - 1)*dt
+         x = reshape(r + dt*v, [2*n])
+         call newton_solve(p, x, work, options, report, error)
+         if (allocated(error)) return
+         call p%piece%new_velocity(reshape(x, [2, n]), dt, 0.5_dp, v1)
+         r = reshape(x, [2, n])
+         v = v1
+      end do
+   end subroutine planar_run
+
+   !> Steps of a 3-D run.
+   subroutine advance(run, dt, steps, error, worst_ledger, worst_norm)
+      type(rod3d_run), intent(inout) :: run
+      real(dp), intent(in) :: dt
+      integer, intent(in) :: steps
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), intent(out), optional :: worst_ledger, worst_norm
+      real(dp), allocatable :: beta(:, :)
+      integer :: i, c
+      if (present(worst_ledger)) worst_ledger = 0
+      if (present(worst_norm)) worst_norm = 0
+      allocate (beta(4, run%problem%piece%n - 1))
+      do i = 1, steps
+         call run%step(dt, 0.5_dp, error)
+         if (allocated(error)) return
+         if (present(worst_ledger)) worst_ledger = max(worst_ledger, abs(run%imbalance()))
+         if (present(worst_norm)) then
+            call run%problem%piece%frames(run%x, beta)
+            do c = 1, size(beta, 2)
+               worst_norm = max(worst_norm, abs(norm2(beta(:, c)) - 1))
+            end do
+         end if
+      end do
+   end subroutine advance
+
+   !> A planar scene run in 3-D (statics started 1 % out of the plane) gives the planar rod's
+   !> positions: after the statics and after 40 steps of 1 ms with the end force varying by 40 %.
+   subroutine test_reduction(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: run
+      real(dp), allocatable :: r2(:, :)
+      real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-2000.0_dp, 0.0_dp, 300.0_dp]
+      real(dp) :: diff_static, diff_run, out_of_plane
+      integer, parameter :: n = 41
+      call scene3(run, n, f0, f1, 0.0_dp, .false., 0.0_dp, 0.0_dp, error)
+      if (allocated(error)) return
+      call planar_statics(n, f0, r2, error)
+      if (allocated(error)) return
+      diff_static = planar_difference(run%x, r2, out_of_plane)
+      call advance(run, 1.0e-3_dp, 40, error)
+      if (allocated(error)) return
+      call planar_run(n, f0, f1, 1.0e-3_dp, 40, r2, error)
+      if (allocated(error)) return
+      diff_run = max(planar_difference(run%x, r2, out_of_plane), out_of_plane)
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'planar scene in 3-D vs planar rod: statics ', diff_static, &
+         ', after 40 steps ', diff_run, ' of the span (largest position difference, y included)'
+      call check(error, diff_static < 1.0e-14_dp .and. diff_run < 5.0e-12_dp, &
+                 '3-D rod differs from the planar rod by more than 1e-14 (statics) or 5e-12 (run) of the span')
+   end subroutine test_reduction
+
+   !> The same for a release: 20 kN let go over 5 ms, 300 steps of 0.1 ms, through the unloading
+   !> wave's reflection at the held end and the compression and buckling there (turning angles
+   !> change sign within steps).
+   subroutine test_reduction_release(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: run
+      real(dp), allocatable :: r2(:, :)
+      real(dp), parameter :: f0(3) = [2.0e4_dp, 0.0_dp, 250.0_dp]
+      real(dp) :: diff_run, out_of_plane, th_max
+      integer, parameter :: n = 41, steps = 800
+      integer :: k
+      call scene3(run, n, f0, f0, 0.0_dp, .false., 0.0_dp, 0.0_dp, error, release=0.005_dp)
+      if (allocated(error)) return
+      call advance(run, 2.0e-4_dp, steps, error)
+      if (allocated(error)) return
+      call planar_run(n, f0, f0, 2.0e-4_dp, steps, r2, error, release=0.005_dp)
+      if (allocated(error)) return
+      diff_run = max(planar_difference(run%x, r2, out_of_plane), out_of_plane)
+      th_max = 0
+      do k = 2, n - 1
+         th_max = max(th_max, turning_angle(run%problem%piece%e1(:, k - 1), run%problem%piece%e1(:, k)))
+      end do
+      write (output_unit, '(4x,a,es9.2,a,f6.3,a,f8.3,a)') 'release in 3-D vs planar rod after 160 ms: ', diff_run, &
+         ' of the span; largest turning angle ', th_max, ' rad; end b at x = ', run%x(4*n - 3), ' m'
+      call check(error, diff_run < 4.0e-10_dp, '3-D release differs from the planar rod by more than 4e-10 of the span')
+   end subroutine test_reduction_release
+
+   !> Largest |R3 - (x, 0, z)| over the span, and the largest |y| over the span.
+   real(dp) function planar_difference(x, r2, out_of_plane) result(d)
+      real(dp), intent(in) :: x(:), r2(:, :)
+      real(dp), intent(out) :: out_of_plane
+      integer :: k, n
+      real(dp) :: span
+      n = size(r2, 2)
+      span = r2(1, n) - r2(1, 1)
+      d = 0
+      out_of_plane = 0
+      do k = 1, n
+         d = max(d, abs(x(4*k - 3) - r2(1, k)), abs(x(4*k - 1) - r2(2, k)))
+         out_of_plane = max(out_of_plane, abs(x(4*k - 2)))
+      end do
+      d = d/span
+      out_of_plane = out_of_plane/span
+   end function planar_difference
+
+   !> A 3-D motion (the end force swings out of the plane) of the scene turned by alpha
+   !> (and mirrored) against the turned (mirrored) motion of the original scene.
+   subroutine symmetry_case(alpha, mirror, diff, error)
+      real(dp), intent(in) :: alpha
+      logical, intent(in) :: mirror
+      real(dp), intent(out) :: diff
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: a, b
+      real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-1500.0_dp, 1500.0_dp, 300.0_dp]
+      integer, parameter :: n = 31
+      integer :: k
+      call scene3(a, n, f0, f1, 0.0_dp, .false., 2.0_dp, 50.0_dp, error)
+      if (allocated(error)) return
+      call scene3(b, n, f0, f1, alpha, mirror, 2.0_dp, 50.0_dp, error)
+      if (allocated(error)) return
+      call advance(a, 1.0e-3_dp, 40, error)
+      if (allocated(error)) return
+      call advance(b, 1.0e-3_dp, 40, error)
+      if (allocated(error)) return
+      diff = 0
+      do k = 1, n
+         diff = max(diff, norm2(b%x(4*k - 3:4*k - 1) - transform(a%x(4*k - 3:4*k - 1), alpha, mirror)))
+      end do
+      diff = diff/norm2(a%x(4*n - 3:4*n - 1))
+      if (maxval(abs(a%x(2:4*n:4))) < 0.05_dp) call fatal_error(error, 'the test motion hardly leaves the plane')
+   end subroutine symmetry_case
+
+   subroutine test_rotation(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: diff
+      call symmetry_case(0.7_dp, .false., diff, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,es9.2,a)') 'scene turned by 0.7 rad about the vertical: ', diff, &
+         ' of the span from the turned solution'
+      call check(error, diff < 1.0e-11_dp, 'turned scene differs from the turned solution by more than 1e-11')
+   end subroutine test_rotation
+
+   subroutine test_mirror(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: diff
+      call symmetry_case(0.0_dp, .true., diff, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,es9.2,a)') 'mirrored scene (y -> -y): ', diff, ' of the span from the mirrored solution'
+      call check(error, diff < 1.0e-13_dp, 'mirrored scene differs from the mirrored solution by more than 1e-13')
+   end subroutine test_mirror
+
+   !> The ledger of a 3-D motion (force swinging out of the plane, torque rising) closes:
+   !> largest |stored - initial - end work| over 100 steps, over the strain energy.
+   subroutine test_ledger(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: run
+      real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-4000.0_dp, 3000.0_dp, 800.0_dp]
+      real(dp) :: worst, strain, en(5)
+      call scene3(run, 41, f0, f1, 0.3_dp, .false., 1.0_dp, 200.0_dp, error)
+      if (allocated(error)) return
+      en = run%energies()
+      strain = en(1)
+      call advance(run, 1.0e-3_dp, 100, error, worst_ledger=worst)
+      if (allocated(error)) return
+      en = run%energies()
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a,f8.3,a)') '3-D ledger: largest imbalance ', worst/strain, &
+         ' of the strain energy (', strain, ' J); end work ', run%end_work, ' J'
+      call check(error, worst/strain < 1.0e-11_dp, '3-D ledger does not close to 1e-11 of the strain energy')
+   end subroutine test_ledger
+
+   !> A torque M_t at end b (rising from 1 to 21 N m over the run) gives the twist rate
+   !> M_t / GIp in every cell, statics and steps; |beta| stays 1 along the run.
+   subroutine test_torsion(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: run
+      real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-1500.0_dp, 1500.0_dp, 300.0_dp]
+      real(dp) :: rate_err_static, rate_err_run, worst_norm, expected
+      real(dp), allocatable :: tau(:)
+      call scene3(run, 41, f0, f1, 0.0_dp, .false., 1.0_dp, 400.0_dp, error)
+      if (allocated(error)) return
+      tau = run%problem%piece%twist_rates(run%x)
+      expected = 1.0_dp/gip
+      rate_err_static = maxval(abs(tau - expected))/expected
+      call advance(run, 1.0e-3_dp, 50, error, worst_norm=worst_norm)
+      if (allocated(error)) return
+      tau = run%problem%piece%twist_rates(run%x)
+      expected = (1.0_dp + 400.0_dp*run%t)/gip
+      rate_err_run = maxval(abs(tau - expected))/expected
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a,es9.2)') 'twist rate vs M_t / GIp: statics ', rate_err_static, &
+         ', after 50 steps ', rate_err_run, '; largest ||beta| - 1| along the run ', worst_norm
+      call check(error, rate_err_static < 1.0e-13_dp .and. rate_err_run < 1.0e-13_dp, &
+                 'twist rate differs from M_t / GIp by more than 1e-13')
+      if (allocated(error)) return
+      call check(error, worst_norm < 1.0e-14_dp, 'Euler parameters off the unit sphere by more than 1e-14')
+   end subroutine test_torsion
+end module suite_rod3d

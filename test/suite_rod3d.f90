@@ -16,6 +16,7 @@ module suite_rod3d
    use xcable_rod3d_run, only: rod3d_run
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use xcable_fdcheck, only: check_jacobian
+   use xcable_solver_banded, only: band_matrix
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
@@ -54,7 +55,9 @@ contains
                new_unittest('rotation_about_vertical', test_rotation), &
                new_unittest('mirror_symmetry', test_mirror), &
                new_unittest('ledger_3d', test_ledger), &
-               new_unittest('torsion_twist_rate_unit_frame', test_torsion)]
+               new_unittest('torsion_twist_rate_unit_frame', test_torsion), &
+               new_unittest('out_of_plane_sway', test_sway), &
+               new_unittest('discrete_gradient_exact', test_discrete_gradient)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -130,19 +133,21 @@ contains
    end function transform
 
    !> A 3-D piece of n nodes over length len: end a held at the origin, end b loaded.
-   subroutine make_piece3(p, n, len, eb, error, mu, mu2, damping)
+   subroutine make_piece3(p, n, len, eb, error, mu, mu2, damping, gravity)
       type(rod3d_problem), intent(out) :: p
       integer, intent(in) :: n
       real(dp), intent(in) :: len
       class(end_condition), intent(in) :: eb
       type(error_type), allocatable, intent(out) :: error
-      real(dp), intent(in), optional :: mu, mu2, damping
-      real(dp) :: s(n), mu_
+      real(dp), intent(in), optional :: mu, mu2, damping, gravity
+      real(dp) :: s(n), mu_, g_
       integer :: k
       s = [(len*(k - 1)/(n - 1), k=1, n)]
       mu_ = 1
       if (present(mu)) mu_ = mu
-      call p%piece%init(s, m_cable, m_cable*g, ei, gip, g, mu_, tanh_law(), end3(is_held=.true.), eb, 1.0e4_dp, &
+      g_ = g
+      if (present(gravity)) g_ = gravity
+      call p%piece%init(s, m_cable, m_cable*g_, ei, gip, g_, mu_, tanh_law(), end3(is_held=.true.), eb, 1.0e4_dp, &
                         error, mu2, damping)
    end subroutine make_piece3
 
@@ -503,4 +508,142 @@ contains
       if (allocated(error)) return
       call check(error, worst_norm < 1.0e-14_dp, 'Euler parameters off the unit sphere by more than 1e-14')
    end subroutine test_torsion
+
+   !> First out-of-plane (sway) mode of a line held at both ends, from a run started at rest
+   !> with y = A sin(pi s / L): the time between the first and the third zero crossings of the
+   !> middle node's y is half a period. A taut line without gravity against the string with
+   !> bending, m w^2 = T k^2 / (1 + eps) + EI k^4 / (1 + eps)^2, k = pi / L (exact for the
+   !> continuum: second order in the grid); a sagging line (sag 1 % of the span) against
+   !> Irvine's sway frequency w = (pi / L) sqrt(H / ((1 + eps) m)) with H the horizontal force
+   !> of the statics (plus the same bending term), which neglects terms of order (sag/span)^2.
+   subroutine test_sway(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: grids(3) = [21, 41, 81]
+      real(dp) :: err(3), err_sag, ratio
+      integer :: i
+      do i = 1, 3
+         call sway_error(grids(i), 0.0_dp, err(i), error)
+         if (allocated(error)) return
+      end do
+      call sway_error(41, g, err_sag, error)
+      if (allocated(error)) return
+      ratio = log(abs(err(2)/err(3)))/log(2.0_dp)
+      write (output_unit, '(4x,a,3es10.2,a,f5.2,a,es10.2)') 'sway frequency error, taut line on 21/41/81 nodes', err, &
+         ' (order ', ratio, '); sagging line (Irvine) on 41 nodes', err_sag
+      call check(error, abs(err(3)) < 3.0e-4_dp .and. ratio > 1.8_dp, &
+                 'sway frequency of the taut line off by more than 3e-4 on 81 nodes, or not second order')
+      if (allocated(error)) return
+      call check(error, abs(err_sag) < 2.0e-3_dp, 'sway frequency of the sagging line off Irvine by more than 2e-3')
+   end subroutine test_sway
+
+   !> Relative error of the sway frequency of a 20 m line on n nodes (gravity gz).
+   subroutine sway_error(n, gz, err, error)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: gz
+      real(dp), intent(out) :: err
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: run
+      type(tanh_law) :: law
+      real(dp), parameter :: len = 20.0_dp, tension = 5500.0_dp, amplitude = 1.0e-3_dp
+      real(dp) :: eps, span, h, omega_ref, k_wave, dt, y_prev, y_now, t_cross(3), eps_mean, sag
+      real(dp), allocatable :: tau(:)
+      integer :: k, i, crossings, mid
+      eps = law%strain_at(tension)
+      ! The sagging line's extra length over its chord, 8 d^2 / (3 l) with d = w l^2 / (8 H).
+      sag = 0
+      if (gz > 0) sag = m_cable*gz*len**2/(8*tension)
+      span = len*(1 + eps) - 8*sag**2/(3*len)
+      call make_piece3(run%problem, n, len, end3(is_held=.true., point=[span, 0.0_dp, 0.0_dp]), error, gravity=gz)
+      if (allocated(error)) return
+      call run%init(1.0e-11_dp)
+      do k = 1, n
+         run%x(4*k - 3:4*k) = [span*(k - 1)/(n - 1), 0.0_dp, -4*sag*(k - 1)*(n - k)/real(n - 1, dp)**2, 0.0_dp]
+      end do
+      call run%statics(0.0_dp, error)
+      if (allocated(error)) return
+      h = run%problem%piece%force(1, 1)
+      eps_mean = sum(run%problem%piece%l1 - 1)/(n - 1)
+      k_wave = acos(-1.0_dp)/len
+      omega_ref = sqrt((h*k_wave**2/(1 + eps_mean) + ei*k_wave**4/(1 + eps_mean)**2)/m_cable)
+      if (gz == 0) omega_ref = sqrt((tension*k_wave**2/(1 + eps) + ei*k_wave**4/(1 + eps)**2)/m_cable)
+      do k = 1, n
+         run%x(4*k - 2) = amplitude*sin(k_wave*len*(k - 1)/(n - 1))
+      end do
+      call run%start(run%x, run%v, 0.0_dp)
+      dt = 2*acos(-1.0_dp)/omega_ref/400
+      mid = (n + 1)/2
+      y_prev = run%x(4*mid - 2)
+      crossings = 0
+      do i = 1, 600
+         call run%step(dt, 0.5_dp, error)
+         if (allocated(error)) return
+         y_now = run%x(4*mid - 2)
+         if (y_now*y_prev < 0) then
+            crossings = crossings + 1
+            t_cross(crossings) = run%t - dt*y_now/(y_now - y_prev)
+            if (crossings == 3) exit
+         end if
+         y_prev = y_now
+      end do
+      if (crossings < 3) then
+         call fatal_error(error, 'the sway did not cross zero three times')
+         return
+      end if
+      err = 2*acos(-1.0_dp)/(t_cross(3) - t_cross(1))/omega_ref - 1
+      tau = run%problem%piece%twist_rates(run%x)
+      if (maxval(abs(tau)) > 0) call fatal_error(error, 'the sway twisted the line')
+   end subroutine sway_error
+
+   !> The cell forces of a step do the exact change of the stored energy: sum_c ds_c N_c .
+   !> (e_c^n+1 - e_c^n) = U(n+1) - U(n), for random pairs of 3-D states, curved ones (turning
+   !> angles up to 1 rad) and nearly straight ones (turning angles near 1e-4, where the
+   !> bending coefficient is a series), on a nearly inextensible soft law so that the bending
+   !> energy dominates; relative to the bending energy.
+   subroutine test_discrete_gradient(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_problem) :: p
+      type(band_matrix) :: unused
+      integer, parameter :: n = 9
+      real(dp) :: s(n), r0(3, n), r1(3, n), v0(3, n), noise(3, n), work, worst(2), scale, u0(5), u1(5)
+      real(dp), allocatable :: x0(:), x1(:), res(:)
+      integer :: trial, c, k, kind
+      s = [(6.0_dp*(k - 1)/(n - 1), k=1, n)]
+      worst = 0
+      allocate (x0(4*n), x1(4*n), res(4*n))
+      v0 = 0
+      do trial = 1, 20
+         kind = 1 + mod(trial, 2)
+         call p%piece%init(s, m_cable, 0.0_dp, ei, gip, 0.0_dp, 1.0_dp, linear_law(ea=1.0e-3_dp), &
+                           end3(is_held=.true.), end3(), 1.0e4_dp, error)
+         if (allocated(error)) return
+         do k = 1, n
+            if (kind == 1) then
+               r0(:, k) = [s(k), 0.5_dp*sin(1.1_dp*s(k)), 0.4_dp*cos(0.7_dp*s(k))]
+            else
+               r0(:, k) = [s(k), 1.0e-4_dp*sin(2.1_dp*s(k)), 1.0e-4_dp*cos(1.7_dp*s(k))]
+            end if
+         end do
+         call random_number(noise)
+         r1 = r0 + merge(0.2_dp, 2.0e-4_dp, kind == 1)*(noise - 0.5_dp)
+         call p%piece%prepare_step(r0, v0)
+         p%dt = 1.0e-3_dp
+         do k = 1, n
+            x0(4*k - 3:4*k) = [r0(:, k), 0.0_dp]
+            x1(4*k - 3:4*k) = [r1(:, k), 0.0_dp]
+         end do
+         call p%evaluate(x1, res, unused, .false.)
+         work = 0
+         do c = 1, n - 1
+            work = work + p%piece%ds(c)*dot_product(p%piece%force(:, c), p%piece%e1(:, c) - p%piece%e0(:, c))
+         end do
+         u0 = p%piece%energies(x0, v0)
+         u1 = p%piece%energies(x1, v0)
+         scale = u0(3) + u1(3)
+         worst(kind) = max(worst(kind), abs(work - ((u1(1) + u1(3)) - (u0(1) + u0(3))))/scale)
+      end do
+      write (output_unit, '(4x,a,2es9.2,a)') '3-D discrete gradient: largest |work - dU| / bending energy, curved, '// &
+         'nearly straight:', worst, ' (20 random steps)'
+      call check(error, worst(1) < 2.0e-15_dp .and. worst(2) < 2.0e-15_dp, &
+                 'the 3-D discrete gradient misses the energy change by '//str(worst(1))//', '//str(worst(2)))
+   end subroutine test_discrete_gradient
 end module suite_rod3d

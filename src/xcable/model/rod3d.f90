@@ -48,8 +48,8 @@
 !> angle passes through zero within a step (the planar rod's angle is signed,
 !> this one is not). Below a rotation of 1e-8 rad in a step the bracket
 !> (third order in the rotation) is dropped. The bending terms and their
-!> exact derivatives are written once in forward-mode dual numbers
-!> (model/dual.f90); the rest of the Jacobian is written out.
+!> exact derivatives are written once in forward-mode dual numbers (defined
+!> at the end of this module); the rest of the Jacobian is written out.
 !>
 !> Newton's unknowns are node after node (x, y, z, psi); the momentum rows of
 !> node k reach nodes k-2 .. k+2, so kl = ku = 4 * 3 - 1 = 11. A held end's
@@ -63,11 +63,43 @@ module xcable_model_rod3d
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
-   use xcable_model_dual, only: dual, operator(+), operator(-), operator(*), operator(/), sqrt, atan2, &
-                                dot3, cross3, constant, seeded
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
+
+   ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
+   ! (the two new cell vectors of a node). They live in this module so that the compiler can
+   ! inline their arithmetic (a separate module cost a factor of several).
+   !> Number of derivative slots.
+   integer, parameter :: dual_slots = 6
+
+   !> A value and its derivatives.
+   type :: dual
+      !> Value.
+      real(dp) :: v = 0
+      !> Derivatives with respect to the seeded inputs.
+      real(dp) :: d(dual_slots) = 0
+   end type dual
+
+   interface operator(+)
+      module procedure add_dd, add_dr, add_rd
+   end interface
+   interface operator(-)
+      module procedure sub_dd, sub_dr, sub_rd, neg_d
+   end interface
+   interface operator(*)
+      module procedure mul_dd, mul_dr, mul_rd
+   end interface
+   interface operator(/)
+      module procedure div_dd, div_dr, div_rd
+   end interface
+   interface sqrt
+      module procedure sqrt_d
+   end interface
+   interface atan2
+      module procedure atan2_dd
+   end interface
+
 
    !> The unknowns of a node, in their order in Newton's vector.
    character(len=*), parameter :: rod3d_unknown_names(4) = [character(len=3) :: 'x', 'y', 'z', 'psi']
@@ -194,6 +226,13 @@ contains
          call fatal_error(error, 'end couples are not available in the 3-D model', stat_input)
          return
       end if
+      ! A piece may be set up again.
+      if (allocated(self%law)) deallocate (self%law)
+      if (allocated(self%end_a)) deallocate (self%end_a)
+      if (allocated(self%end_b)) deallocate (self%end_b)
+      if (allocated(self%lumped)) deallocate (self%lumped, self%dual_length, self%r0, self%v0, self%mv0, self%e0, &
+                                              self%l0, self%th0, self%e1, self%l1, self%th1, self%force, &
+                                              self%force_node, self%v1, self%block, self%mass)
       n = size(s)
       self%n = n
       self%s = s
@@ -280,6 +319,7 @@ contains
       type(dual), intent(out) :: phi(3)
       type(dual), intent(out), optional :: jac(3, 3)
       type(dual) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, grad_rho(3), grad_s2(3), grad_c(3), yu(3)
+      type(dual) :: inv_xy, inv_xx, yr(3)
       integer :: i, j
       nx = sqrt(dot3(x, x))
       ny = sqrt(dot3(y, y))
@@ -301,41 +341,46 @@ contains
       phi = u*rho
       if (.not. present(jac)) return
       ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2
+      inv_xy = 1.0_dp/(nx*ny)
+      inv_xx = 1.0_dp/(nx*nx)
       yu = cross3(y, u)
-      grad_s2 = (yu/(nx*ny) - x*(s2/(nx*nx)))*2.0_dp
-      grad_c = y/(nx*ny) - x*(c/(nx*nx))
-      grad_rho = grad_s2*rho_s2 + grad_c*rho_c
+      grad_s2 = (yu*inv_xy - x*(s2*inv_xx))*2.0_dp
+      grad_c = y*inv_xy - x*(c*inv_xx)
+      grad_rho = grad_s2*rho_s2 + grad_c*rho_c - x*(rho*inv_xx)
       do j = 1, 3
          do i = 1, 3
-            jac(i, j) = u(i)*grad_rho(j) - u(i)*x(j)*rho/(nx*nx)
+            jac(i, j) = u(i)*grad_rho(j)
          end do
       end do
       ! (dx x y)_i = eps_ijk dx_j y_k: the cross-product matrix of -y.
-      jac(1, 2) = jac(1, 2) + y(3)*rho/(nx*ny)
-      jac(1, 3) = jac(1, 3) - y(2)*rho/(nx*ny)
-      jac(2, 1) = jac(2, 1) - y(3)*rho/(nx*ny)
-      jac(2, 3) = jac(2, 3) + y(1)*rho/(nx*ny)
-      jac(3, 1) = jac(3, 1) + y(2)*rho/(nx*ny)
-      jac(3, 2) = jac(3, 2) - y(1)*rho/(nx*ny)
+      yr = y*(rho*inv_xy)
+      jac(1, 2) = jac(1, 2) + yr(3)
+      jac(1, 3) = jac(1, 3) - yr(2)
+      jac(2, 1) = jac(2, 1) - yr(3)
+      jac(2, 3) = jac(2, 3) + yr(1)
+      jac(3, 1) = jac(3, 1) + yr(2)
+      jac(3, 2) = jac(3, 2) - yr(1)
    end subroutine rotation_vector
 
-   !> Discrete Jacobian of x -> phi(x, y) between x0 and x1 (see the module header): J with
-   !> J (x1 - x0) = phi(x1, y) - phi(x0, y) exactly.
-   pure function discrete_jacobian(x0, x1, y) result(jac)
+   !> Discrete Jacobian between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
+   !> (see the module header), given its change delta = h(x1) - h(x0): J with
+   !> J (x1 - x0) = delta exactly.
+   pure function discrete_jacobian(x0, x1, y, sign, delta) result(jac)
       real(dp), intent(in) :: x0(3)
       type(dual), intent(in) :: x1(3), y(3)
-      type(dual) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi1(3), phi0(3), bracket(3)
+      real(dp), intent(in) :: sign
+      type(dual), intent(in) :: delta(3)
+      type(dual) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
       integer :: i, j
       xm = (constant(x0) + x1)*0.5_dp
-      call rotation_vector(xm, y, phi1, jac)
+      call rotation_vector(xm, y, phi, jac)
+      if (sign < 0) jac = -jac
       c = cross3(constant(x0), x1)
       cc = dot3(c, c)
       if (cc%v <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)%v**2 + x1(2)%v**2 + x1(3)%v**2)) return
       dx = x1 - constant(x0)
-      call rotation_vector(x1, y, phi1)
-      call rotation_vector(constant(x0), y, phi0)
       do i = 1, 3
-         bracket(i) = phi1(i) - phi0(i) - dot3(jac(i, :), dx)
+         bracket(i) = delta(i) - dot3(jac(i, :), dx)
       end do
       w = cross3(c, xm)/cc
       do j = 1, 3
@@ -611,7 +656,8 @@ contains
       logical, intent(in) :: with_jacobian
       integer :: c, n, k, i
       real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n)
-      type(dual) :: a(3), b(3), phi0(3), phi1(3), q1, coef, psum(3), ja(3, 3), jb(3, 3), fa(3), fb(3)
+      type(dual) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
+      type(dual) :: ja(3, 3), jb(3, 3), fa(3), fb(3)
       n = self%n
       call unpack(x, r, psi)
       call self%geometry(r, self%e1, self%l1, self%th1)
@@ -643,17 +689,22 @@ contains
             a(i) = seeded(self%e1(i, k - 1), i)
             b(i) = seeded(self%e1(i, k), i + 3)
          end do
-         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0).
-         call rotation_vector(constant(self%e0(:, k - 1)), constant(self%e0(:, k)), phi0)
+         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0),
+         ! Ja averaging the changes of a at b0 and at b1, Jb those of b at a0 and at a1.
+         a0 = constant(self%e0(:, k - 1))
+         b0 = constant(self%e0(:, k))
+         call rotation_vector(a0, b0, phi0)
          call rotation_vector(a, b, phi1)
+         call rotation_vector(a, b0, phi_a1b0)
+         call rotation_vector(a0, b, phi_a0b1)
          q1 = dot3(phi1, phi1)
          coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
          psum = (phi1 + phi0)*coef
-         ja = (discrete_jacobian(self%e0(:, k - 1), a, constant(self%e0(:, k))) &
-               + discrete_jacobian(self%e0(:, k - 1), a, b))*0.5_dp
-         ! phi(a, b) = -phi(b, a).
-         jb = (discrete_jacobian(self%e0(:, k), b, constant(self%e0(:, k - 1))) &
-               + discrete_jacobian(self%e0(:, k), b, a))*(-0.5_dp)
+         ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
+         ja = (discrete_jacobian(self%e0(:, k - 1), a, b0, 1.0_dp, phi_a1b0 - phi0) &
+               + discrete_jacobian(self%e0(:, k - 1), a, b, 1.0_dp, phi1 - phi_a0b1))*0.5_dp
+         jb = (discrete_jacobian(self%e0(:, k), b, a0, -1.0_dp, phi_a0b1 - phi0) &
+               + discrete_jacobian(self%e0(:, k), b, a, -1.0_dp, phi1 - phi_a1b0))*0.5_dp
          do i = 1, 3
             fa(i) = dot3(ja(:, i), psum)
             fb(i) = dot3(jb(:, i), psum)
@@ -893,4 +944,138 @@ contains
       m(2, 2) = 1
       m(3, 3) = 1
    end function identity3
+   ! ---- dual-number arithmetic ----
+
+   !> A constant (no derivatives).
+   elemental type(dual) function constant(x) result(r)
+      !> Value.
+      real(dp), intent(in) :: x
+      r%v = x
+      r%d = 0
+   end function constant
+
+   !> Input i with value x (derivative 1 in slot i).
+   elemental type(dual) function seeded(x, i) result(r)
+      !> Value.
+      real(dp), intent(in) :: x
+      !> Slot.
+      integer, intent(in) :: i
+      r%v = x
+      r%d = 0
+      r%d(i) = 1
+   end function seeded
+
+   elemental type(dual) function add_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v + b%v
+      r%d = a%d + b%d
+   end function add_dd
+
+   elemental type(dual) function add_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v + b
+      r%d = a%d
+   end function add_dr
+
+   elemental type(dual) function add_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a + b%v
+      r%d = b%d
+   end function add_rd
+
+   elemental type(dual) function sub_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v - b%v
+      r%d = a%d - b%d
+   end function sub_dd
+
+   elemental type(dual) function sub_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v - b
+      r%d = a%d
+   end function sub_dr
+
+   elemental type(dual) function sub_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a - b%v
+      r%d = -b%d
+   end function sub_rd
+
+   elemental type(dual) function neg_d(a) result(r)
+      type(dual), intent(in) :: a
+      r%v = -a%v
+      r%d = -a%d
+   end function neg_d
+
+   elemental type(dual) function mul_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v*b%v
+      r%d = a%d*b%v + a%v*b%d
+   end function mul_dd
+
+   elemental type(dual) function mul_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v*b
+      r%d = a%d*b
+   end function mul_dr
+
+   elemental type(dual) function mul_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a*b%v
+      r%d = a*b%d
+   end function mul_rd
+
+   elemental type(dual) function div_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v/b%v
+      r%d = (a%d - r%v*b%d)/b%v
+   end function div_dd
+
+   elemental type(dual) function div_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v/b
+      r%d = a%d/b
+   end function div_dr
+
+   elemental type(dual) function div_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a/b%v
+      r%d = -r%v*b%d/b%v
+   end function div_rd
+
+   elemental type(dual) function sqrt_d(a) result(r)
+      type(dual), intent(in) :: a
+      r%v = sqrt(a%v)
+      r%d = 0.5_dp*a%d/r%v
+   end function sqrt_d
+
+   !> atan2(y, x) with d = (x dy - y dx) / (x^2 + y^2).
+   elemental type(dual) function atan2_dd(y, x) result(r)
+      type(dual), intent(in) :: y, x
+      r%v = atan2(y%v, x%v)
+      r%d = (x%v*y%d - y%v*x%d)/(x%v**2 + y%v**2)
+   end function atan2_dd
+
+   !> Dot product of two 3-vectors.
+   pure type(dual) function dot3(a, b) result(r)
+      type(dual), intent(in) :: a(3), b(3)
+      r = a(1)*b(1) + a(2)*b(2) + a(3)*b(3)
+   end function dot3
+
+   !> Cross product of two 3-vectors.
+   pure function cross3(a, b) result(r)
+      type(dual), intent(in) :: a(3), b(3)
+      type(dual) :: r(3)
+      r(1) = a(2)*b(3) - a(3)*b(2)
+      r(2) = a(3)*b(1) - a(1)*b(3)
+      r(3) = a(1)*b(2) - a(2)*b(1)
+   end function cross3
 end module xcable_model_rod3d

@@ -163,12 +163,12 @@ contains
          s = len*(k - 1)/(n - 1)
          r0(:, k) = [s*1.02_dp, 0.4_dp*sin(0.9_dp*s), 0.3_dp*sin(1.3_dp*s)]
          v0(:, k) = [0.5_dp*cos(real(k, dp)), 0.3_dp*sin(real(k, dp)), -0.2_dp*k]
-         x(4*k - 3:4*k - 1) = r0(:, k) + [0.01_dp*sin(2.0_dp*k), 0.03_dp*cos(5.0_dp*k), 0.02_dp*cos(3.0_dp*k)]
-         x(4*k) = 0.1_dp*sin(real(k, dp))
+         x(3*k - 2:3*k) = r0(:, k) + [0.01_dp*sin(2.0_dp*k), 0.03_dp*cos(5.0_dp*k), 0.02_dp*cos(3.0_dp*k)]
+         x(3*n + k) = 0.1_dp*sin(real(k, dp))
       end do
       ! A cell squeezed and turned by a large angle out of the plane, another stretched.
-      x(21:23) = x(21:23) + [-0.4_dp, 0.25_dp, 0.3_dp]
-      x(29:31) = x(29:31) + [0.1_dp, -0.1_dp, -0.05_dp]
+      x(16:18) = x(16:18) + [-0.4_dp, 0.25_dp, 0.3_dp]
+      x(22:24) = x(22:24) + [0.1_dp, -0.1_dp, -0.05_dp]
    end subroutine curved_state
 
    ! ---- Jacobians ----
@@ -247,7 +247,7 @@ contains
       if (allocated(error)) return
       ! Start the 3-D statics off the solution: out of the plane by 1 % of the span.
       do k = 1, n
-         run%x(4*k - 3:4*k - 1) = transform([r2(1, k), 0.01_dp*r2(1, k), r2(2, k)], alpha, mirror)
+         run%x(3*k - 2:3*k) = transform([r2(1, k), 0.01_dp*r2(1, k), r2(2, k)], alpha, mirror)
       end do
       call run%statics(0.0_dp, error)
    end subroutine scene3
@@ -396,7 +396,7 @@ contains
          th_max = max(th_max, turning_angle(run%problem%piece%e1(:, k - 1), run%problem%piece%e1(:, k)))
       end do
       write (output_unit, '(4x,a,es9.2,a,f6.3,a,f8.3,a)') 'release in 3-D vs planar rod after 160 ms: ', diff_run, &
-         ' of the span; largest turning angle ', th_max, ' rad; end b at x = ', run%x(4*n - 3), ' m'
+         ' of the span; largest turning angle ', th_max, ' rad; end b at x = ', run%x(3*n - 2), ' m'
       call check(error, diff_run < 4.0e-10_dp, '3-D release differs from the planar rod by more than 4e-10 of the span')
    end subroutine test_reduction_release
 
@@ -411,8 +411,8 @@ contains
       d = 0
       out_of_plane = 0
       do k = 1, n
-         d = max(d, abs(x(4*k - 3) - r2(1, k)), abs(x(4*k - 1) - r2(2, k)))
-         out_of_plane = max(out_of_plane, abs(x(4*k - 2)))
+         d = max(d, abs(x(3*k - 2) - r2(1, k)), abs(x(3*k) - r2(2, k)))
+         out_of_plane = max(out_of_plane, abs(x(3*k - 1)))
       end do
       d = d/span
       out_of_plane = out_of_plane/span
@@ -439,10 +439,10 @@ contains
       if (allocated(error)) return
       diff = 0
       do k = 1, n
-         diff = max(diff, norm2(b%x(4*k - 3:4*k - 1) - transform(a%x(4*k - 3:4*k - 1), alpha, mirror)))
+         diff = max(diff, norm2(b%x(3*k - 2:3*k) - transform(a%x(3*k - 2:3*k), alpha, mirror)))
       end do
-      diff = diff/norm2(a%x(4*n - 3:4*n - 1))
-      if (maxval(abs(a%x(2:4*n:4))) < 0.05_dp) call fatal_error(error, 'the test motion hardly leaves the plane')
+      diff = diff/norm2(a%x(3*n - 2:3*n))
+      if (maxval(abs(a%x(2:3*n:3))) < 0.05_dp) call fatal_error(error, 'the test motion hardly leaves the plane')
    end subroutine symmetry_case
 
    subroutine test_rotation(error)
@@ -557,7 +557,7 @@ contains
       if (allocated(error)) return
       call run%init(1.0e-11_dp)
       do k = 1, n
-         run%x(4*k - 3:4*k) = [span*(k - 1)/(n - 1), 0.0_dp, -4*sag*(k - 1)*(n - k)/real(n - 1, dp)**2, 0.0_dp]
+         run%x(3*k - 2:3*k) = [span*(k - 1)/(n - 1), 0.0_dp, -4*sag*(k - 1)*(n - k)/real(n - 1, dp)**2]
       end do
       call run%statics(0.0_dp, error)
       if (allocated(error)) return
@@ -567,17 +567,17 @@ contains
       omega_ref = sqrt((h*k_wave**2/(1 + eps_mean) + ei*k_wave**4/(1 + eps_mean)**2)/m_cable)
       if (gz == 0) omega_ref = sqrt((tension*k_wave**2/(1 + eps) + ei*k_wave**4/(1 + eps)**2)/m_cable)
       do k = 1, n
-         run%x(4*k - 2) = amplitude*sin(k_wave*len*(k - 1)/(n - 1))
+         run%x(3*k - 1) = amplitude*sin(k_wave*len*(k - 1)/(n - 1))
       end do
       call run%start(run%x, run%v, 0.0_dp)
       dt = 2*acos(-1.0_dp)/omega_ref/400
       mid = (n + 1)/2
-      y_prev = run%x(4*mid - 2)
+      y_prev = run%x(3*mid - 1)
       crossings = 0
       do i = 1, 600
          call run%step(dt, 0.5_dp, error)
          if (allocated(error)) return
-         y_now = run%x(4*mid - 2)
+         y_now = run%x(3*mid - 1)
          if (y_now*y_prev < 0) then
             crossings = crossings + 1
             t_cross(crossings) = run%t - dt*y_now/(y_now - y_prev)
@@ -610,6 +610,8 @@ contains
       s = [(6.0_dp*(k - 1)/(n - 1), k=1, n)]
       worst = 0
       allocate (x0(4*n), x1(4*n), res(4*n))
+      x0 = 0
+      x1 = 0
       v0 = 0
       do trial = 1, 20
          kind = 1 + mod(trial, 2)
@@ -628,8 +630,8 @@ contains
          call p%piece%prepare_step(r0, v0)
          p%dt = 1.0e-3_dp
          do k = 1, n
-            x0(4*k - 3:4*k) = [r0(:, k), 0.0_dp]
-            x1(4*k - 3:4*k) = [r1(:, k), 0.0_dp]
+            x0(3*k - 2:3*k) = r0(:, k)
+            x1(3*k - 2:3*k) = r1(:, k)
          end do
          call p%evaluate(x1, res, unused, .false.)
          work = 0

@@ -106,7 +106,7 @@ contains
       if (allocated(error)) error stop 1
       call run%init(1.0e-9_dp)
       do k = 1, nodes
-         run%x(4*k - 3:4*k) = [s(k)*(1 + eps), 0.0_dp, 0.0_dp, 0.0_dp]
+         run%x(3*k - 2:3*k) = [s(k)*(1 + eps), 0.0_dp, 0.0_dp]
       end do
       call run%start(run%x, run%v, 0.0_dp)
       call cpu_time(start)

@@ -57,10 +57,8 @@ contains
       allocate (self%x(4*n), self%v(3, n), scale(4*n))
       self%x = 0
       self%v = 0
-      do k = 1, n
-         scale(4*k - 3:4*k - 1) = self%problem%piece%length_ref
-         scale(4*k) = 1
-      end do
+      scale(1:3*n) = self%problem%piece%length_ref
+      scale(3*n + 1:4*n) = 1
       call self%work%init(4*n, rod3d_kl, rod3d_ku, scale)
       self%options%tolerance = tolerance
       self%options%max_iterations = 50
@@ -109,15 +107,14 @@ contains
       associate (piece => self%problem%piece)
          n = piece%n
          x0 = self%x
-         r0 = reshape(x0, [4, n])
-         r1 = r0(1:3, :)
-         call piece%prepare_step(r1, self%v)
+         r0 = reshape(x0(1:3*n), [3, n])
+         call piece%prepare_step(r0, self%v)
          self%problem%dt = dt
          self%problem%t0 = self%t
          self%problem%theta = theta
          ! First guess: R + dt V.
          do k = 1, n
-            self%x(4*k - 3:4*k - 1) = x0(4*k - 3:4*k - 1) + dt*self%v(:, k)
+            self%x(3*k - 2:3*k) = x0(3*k - 2:3*k) + dt*self%v(:, k)
          end do
          call newton_solve(self%problem, self%x, self%work, self%options, report, error)
          if (allocated(error)) then
@@ -125,9 +122,9 @@ contains
             return
          end if
          self%iterations = self%iterations + report%iterations
-         r1 = reshape(self%x, [4, n])
+         r1 = reshape(self%x(1:3*n), [3, n])
          allocate (v1(3, n))
-         call piece%new_velocity(r1(1:3, :), dt, theta, v1)
+         call piece%new_velocity(r1, dt, theta, v1)
          ! Work of the ends: applied forces (trapezoid in time, as the rows), torques (trapezoid,
          ! exact for the quasi-static twist), reactions of held ends on their displacement.
          call self%problem%evaluate(self%x, self%work%residual, self%work%jacobian, .false.)
@@ -164,8 +161,8 @@ contains
             else
                force = 0.5_dp*(piece%end_b%applied_force3(self%t) + piece%end_b%applied_force3(self%t + dt))
             end if
-            self%end_work = self%end_work + dot_product(force, self%x(4*k - 3:4*k - 1) - x0(4*k - 3:4*k - 1))
-            dpsi = self%x(4*k) - x0(4*k)
+            self%end_work = self%end_work + dot_product(force, self%x(3*k - 2:3*k) - x0(3*k - 2:3*k))
+            dpsi = self%x(3*n + k) - x0(3*n + k)
             if (k == 1) then
                torque0 = -piece%end_a%applied_torque(self%t)
                torque1 = -piece%end_a%applied_torque(self%t + dt)

@@ -51,8 +51,12 @@
 !> exact derivatives are written once in forward-mode dual numbers (defined
 !> at the end of this module); the rest of the Jacobian is written out.
 !>
-!> Newton's unknowns are node after node (x, y, z, psi); the momentum rows of
-!> node k reach nodes k-2 .. k+2, so kl = ku = 4 * 3 - 1 = 11. A held end's
+!> Newton's vector holds the positions node after node (x, y, z), then the
+!> twist angles psi_1 .. psi_n. The momentum rows of node k reach nodes k-2 ..
+!> k+2, so kl = ku = 3 * 3 - 1 = 8, the narrowest band node-after-node
+!> positions allow; the twist block, uncoupled from the positions, is
+!> tridiagonal (interleaving psi with the positions would make the band 11,
+!> and will be needed once the twist is coupled to the centreline). A held end's
 !> rows are R = X(t) and psi = 0 (the twist held); a loaded end adds its
 !> force, torque and point mass. When no end is held psi_1 = 0 fixes the
 !> rigid spin. Not yet in 3-D: distributed loads (fluid) and end couples.
@@ -101,12 +105,13 @@ module xcable_model_rod3d
    end interface
 
 
-   !> The unknowns of a node, in their order in Newton's vector.
+   !> The unknowns of a node: positions at 3 (k - 1) + 1..3, psi at 3 n + k.
    character(len=*), parameter :: rod3d_unknown_names(4) = [character(len=3) :: 'x', 'y', 'z', 'psi']
    !> Unknowns per node.
    integer, parameter :: rod3d_nodal = size(rod3d_unknown_names)
-   !> Band widths of the Jacobian (momentum rows reach two nodes either side).
-   integer, parameter :: rod3d_kl = rod3d_nodal*3 - 1, rod3d_ku = rod3d_kl
+   !> Band widths of the Jacobian: the momentum rows reach two nodes either side (3 * 3 - 1); the twist
+   !> block, after all the positions, is tridiagonal.
+   integer, parameter :: rod3d_kl = 3*3 - 1, rod3d_ku = rod3d_kl
    !> Strain differences below this use the Taylor form of the divided difference.
    real(dp), parameter :: small_strain_step = 1.0e-6_dp
    !> Turning-angle differences below this use the Taylor form of the divided difference.
@@ -297,8 +302,8 @@ contains
       real(dp), intent(out) :: r(:, :), psi(:)
       integer :: k
       do k = 1, size(psi)
-         r(:, k) = x(4*k - 3:4*k - 1)
-         psi(k) = x(4*k)
+         r(:, k) = x(3*k - 2:3*k)
+         psi(k) = x(3*size(psi) + k)
       end do
    end subroutine unpack
 
@@ -547,7 +552,7 @@ contains
       real(dp) :: tau(self%n - 1)
       integer :: c
       do c = 1, self%n - 1
-         tau(c) = (x(4*c + 4) - x(4*c))/self%ds(c)
+         tau(c) = (x(3*self%n + c + 1) - x(3*self%n + c))/self%ds(c)
       end do
    end function rod3d_twist_rates
 
@@ -737,42 +742,42 @@ contains
       call unpack(x, r, psi)
       residual = 0
       do c = 1, n - 1
-         residual(4*c - 3:4*c - 1) = residual(4*c - 3:4*c - 1) - self%force(:, c)
-         residual(4*c + 1:4*c + 3) = residual(4*c + 1:4*c + 3) + self%force(:, c)
+         residual(3*c - 2:3*c) = residual(3*c - 2:3*c) - self%force(:, c)
+         residual(3*c + 1:3*c + 3) = residual(3*c + 1:3*c + 3) + self%force(:, c)
       end do
       do k = 1, n
-         residual(4*k - 1) = residual(4*k - 1) + node_weight(self, k)
+         residual(3*k) = residual(3*k) + node_weight(self, k)
       end do
       if (dynamic) then
          t_new = t1 + t2
          residual(1:3) = residual(1:3) - 0.5_dp*(self%end_a%applied_force3(t1) + self%end_a%applied_force3(t_new))
-         residual(4*n - 3:4*n - 1) = residual(4*n - 3:4*n - 1) &
+         residual(3*n - 2:3*n) = residual(3*n - 2:3*n) &
                                      - 0.5_dp*(self%end_b%applied_force3(t1) + self%end_b%applied_force3(t_new))
          rate = 1/(theta*t2*t2)
          self%v1 = ((r - self%r0)/t2 - (1 - theta)*self%v0)/theta
          call self%mass_times(self%v1, self%force_node)
          do k = 1, n
-            residual(4*k - 3:4*k - 1) = residual(4*k - 3:4*k - 1) + (self%force_node(:, k) - self%mv0(:, k))/t2
+            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) + (self%force_node(:, k) - self%mv0(:, k))/t2
          end do
       else
          t_new = t1
          residual(1:3) = residual(1:3) - self%end_a%applied_force3(t1)
-         residual(4*n - 3:4*n - 1) = residual(4*n - 3:4*n - 1) - self%end_b%applied_force3(t1)
+         residual(3*n - 2:3*n) = residual(3*n - 2:3*n) - self%end_b%applied_force3(t1)
          rate = 0
       end if
       residual = residual*scale
       ! Twist rows (quasi-static, at the new time): dU/dpsi_k minus the applied torques.
       do c = 1, n - 1
          tau = (psi(c + 1) - psi(c))/self%ds(c)
-         residual(4*c) = residual(4*c) - self%gip*tau*twist_scale
-         residual(4*c + 4) = residual(4*c + 4) + self%gip*tau*twist_scale
+         residual(3*n + c) = residual(3*n + c) - self%gip*tau*twist_scale
+         residual(3*n + c + 1) = residual(3*n + c + 1) + self%gip*tau*twist_scale
       end do
-      residual(4) = residual(4) + self%end_a%applied_torque(t_new)*twist_scale
+      residual(3*n + 1) = residual(3*n + 1) + self%end_a%applied_torque(t_new)*twist_scale
       residual(4*n) = residual(4*n) - self%end_b%applied_torque(t_new)*twist_scale
-      if (anchor_a) residual(4) = psi(1)
+      if (anchor_a) residual(3*n + 1) = psi(1)
       if (anchor_b) residual(4*n) = psi(n)
       if (held_a) residual(1:3) = (r(:, 1) - self%end_a%position3(t_new))/self%length_ref
-      if (held_b) residual(4*n - 3:4*n - 1) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref
+      if (held_b) residual(3*n - 2:3*n) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref
       if (.not. with_jacobian) return
 
       jacobian%ab = 0
@@ -788,9 +793,9 @@ contains
                   if (k == 1 .and. held_a) cycle
                   if (k == n .and. held_b) cycle
                   do a = 1, 3
-                     row = 4*(k - 1) + a
+                     row = 3*(k - 1) + a
                      do b = 1, 3
-                        col = 4*(node - 1) + b
+                        col = 3*(node - 1) + b
                         jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
                                                               + merge(1.0_dp, -1.0_dp, j == 1)*sgn*self%block(a, b, cp - c, c)
                      end do
@@ -804,11 +809,11 @@ contains
             if (k == 1 .and. held_a) cycle
             if (k == n .and. held_b) cycle
             do a = 1, 3
-               row = 4*(k - 1) + a
+               row = 3*(k - 1) + a
                do j = -2, 2
                   node = k + j
                   if (node < 1 .or. node > n) cycle
-                  col = row + 4*j
+                  col = row + 3*j
                   jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
                                                         + self%mass(abs(j), min(k, node))*rate*scale
                end do
@@ -816,12 +821,12 @@ contains
          end do
       end if
       do c = 1, n - 1
-         call add_twist(4*c, 4*c, self%gip/self%ds(c)*twist_scale)
-         call add_twist(4*c, 4*c + 4, -self%gip/self%ds(c)*twist_scale)
-         call add_twist(4*c + 4, 4*c, -self%gip/self%ds(c)*twist_scale)
-         call add_twist(4*c + 4, 4*c + 4, self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c + 1, 3*n + c, -self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c + 1, 3*n + c + 1, self%gip/self%ds(c)*twist_scale)
       end do
-      if (anchor_a) call set_row(4, [4], [1.0_dp])
+      if (anchor_a) call set_row(3*n + 1, [3*n + 1], [1.0_dp])
       if (anchor_b) call set_row(4*n, [4*n], [1.0_dp])
       if (held_a) then
          do a = 1, 3
@@ -830,7 +835,7 @@ contains
       end if
       if (held_b) then
          do a = 1, 3
-            call set_row(4*(n - 1) + a, [4*(n - 1) + a], [1/self%length_ref])
+            call set_row(3*(n - 1) + a, [3*(n - 1) + a], [1/self%length_ref])
          end do
       end if
 

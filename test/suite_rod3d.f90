@@ -16,6 +16,8 @@ module suite_rod3d
    use xcable_rod3d_run, only: rod3d_run
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use xcable_fdcheck, only: check_jacobian
+   use xcable_io_config, only: end_config
+   use xcable_ends_factory, only: new_end, end_kinds
    use xcable_solver_banded, only: band_matrix
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -57,7 +59,8 @@ contains
                new_unittest('ledger_3d', test_ledger), &
                new_unittest('torsion_twist_rate_unit_frame', test_torsion), &
                new_unittest('out_of_plane_sway', test_sway), &
-               new_unittest('discrete_gradient_exact', test_discrete_gradient)]
+               new_unittest('discrete_gradient_exact', test_discrete_gradient), &
+               new_unittest('every_end_kind', test_every_end_kind)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -648,4 +651,127 @@ contains
       call check(error, worst(1) < 2.0e-15_dp .and. worst(2) < 2.0e-15_dp, &
                  'the 3-D discrete gradient misses the energy change by '//str(worst(1))//', '//str(worst(2)))
    end subroutine test_discrete_gradient
+   !> Every end kind of the factory, built from its input data as the program builds it (force
+   !> 'ramp' and 'table', motion 'harmonic' and 'table'), at end b with end a fixed and at end a
+   !> with end b fixed: from a line bowed out of the plane at rest, 20 steps of 0.5 ms; the
+   !> Jacobian of the step after 5 steps against central differences, and the ledger (end work
+   !> included, moving ends' reactions too) over the 20 steps, relative to the sum of the
+   !> energies' magnitudes.
+   subroutine test_every_end_kind(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=16), allocatable :: variants(:)
+      integer :: i, side
+      real(dp) :: worst_jac, worst_ledger, jac, ledger
+      variants = [character(len=16) :: 'fixed', 'free', 'force ramp', 'force table', 'motion harmonic', &
+                  'motion table', 'mass']
+      if (size(variants) < size(end_kinds) + 2) call fatal_error(error, 'a kind of the factory is missing here')
+      if (allocated(error)) return
+      worst_jac = 0
+      worst_ledger = 0
+      do side = 1, 2
+         do i = 1, size(variants)
+            call end_kind_case(variants(i), side, jac, ledger, error)
+            if (allocated(error)) then
+               error%message = trim(variants(i))//' at end '//merge('b', 'a', side == 1)//': '//error%message
+               return
+            end if
+            worst_jac = max(worst_jac, jac)
+            worst_ledger = max(worst_ledger, ledger)
+         end do
+      end do
+      write (output_unit, '(4x,a,es9.2,a,es9.2)') 'every end kind at either end: worst Jacobian deviation ', &
+         worst_jac, ', worst ledger imbalance ', worst_ledger
+      call check(error, worst_ledger < 5.0e-12_dp, '3-D ledger with some end kind does not close to 5e-12')
+   end subroutine test_every_end_kind
+
+   !> One case of test_every_end_kind: the variant at end b (side 1) or end a (side 2).
+   subroutine end_kind_case(variant, side, jac, ledger, error)
+      character(*), intent(in) :: variant
+      integer, intent(in) :: side
+      real(dp), intent(out) :: jac, ledger
+      type(error_type), allocatable, intent(out) :: error
+      type(end_config) :: held, loaded
+      class(end_condition), allocatable :: end_a, end_b
+      type(rod3d_run) :: run
+      integer, parameter :: n = 21
+      real(dp), parameter :: len = 10.0_dp
+      real(dp) :: s(n), pa(3), pb(3), en(5), scale
+      integer :: k, i
+      loaded%kind = variant(1:index(variant//' ', ' ') - 1)
+      select case (trim(variant))
+      case ('force ramp')
+         loaded%history = 'ramp'
+         loaded%force_x = merge(2000.0_dp, -2000.0_dp, side == 1)
+         loaded%force_z = 300
+         loaded%ramp_time = 0.02_dp
+      case ('force table')
+         loaded%history = 'table'
+         loaded%table_rows = 3
+         loaded%table_time(1:3) = [0.0_dp, 0.004_dp, 0.02_dp]
+         loaded%table_x(1:3) = merge(1.0_dp, -1.0_dp, side == 1)*[2000.0_dp, 2500.0_dp, 1000.0_dp]
+         loaded%table_z(1:3) = [300.0_dp, 0.0_dp, 500.0_dp]
+      case ('motion harmonic')
+         loaded%amplitude = 0.05_dp
+         loaded%period = 0.02_dp
+         loaded%direction_x = 0.6_dp
+         loaded%direction_z = 0.8_dp
+      case ('motion table')
+         loaded%motion = 'table'
+         loaded%table_rows = 3
+         loaded%table_time(1:3) = [0.0_dp, 0.004_dp, 0.02_dp]
+         loaded%table_x(1:3) = [0.0_dp, 0.02_dp, -0.01_dp]
+         loaded%table_z(1:3) = [0.0_dp, 0.01_dp, 0.0_dp]
+      case ('mass')
+         loaded%mass = 5
+      end select
+      ! Held points: end a at the origin, end b at (10.05, -0.5); a loaded end starts there too.
+      pa = 0
+      pb = [10.05_dp, 0.0_dp, -0.5_dp]
+      held%x = merge(pa(1), pb(1), side == 2)
+      held%z = merge(pa(3), pb(3), side == 2)
+      loaded%x = merge(pb(1), pa(1), side == 1)
+      loaded%z = merge(pb(3), pa(3), side == 1)
+      if (side == 1) then
+         held%x = pa(1)
+         held%z = pa(3)
+         call new_end(held, 'end_a', end_a, error)
+         if (allocated(error)) return
+         call new_end(loaded, 'end_b', end_b, error)
+      else
+         held%x = pb(1)
+         held%z = pb(3)
+         call new_end(loaded, 'end_a', end_a, error)
+         if (allocated(error)) return
+         call new_end(held, 'end_b', end_b, error)
+      end if
+      if (allocated(error)) return
+      s = [(len*(k - 1)/(n - 1), k=1, n)]
+      call run%problem%piece%init(s, m_cable, m_cable*g, ei, gip, g, 1.0_dp, tanh_law(), end_a, end_b, 1.0e4_dp, error)
+      if (allocated(error)) return
+      call run%init(1.0e-11_dp)
+      do k = 1, n
+         run%x(3*k - 2:3*k) = pa + (pb - pa)*(k - 1)/(n - 1.0_dp) &
+                              + [0.0_dp, 0.1_dp, -0.2_dp]*sin(acos(-1.0_dp)*(k - 1)/(n - 1.0_dp))
+      end do
+      call run%start(run%x, run%v, 0.0_dp)
+      ledger = 0
+      scale = 0
+      jac = 0
+      do i = 1, 20
+         if (i == 6) then
+            call run%problem%piece%prepare_step(reshape(run%x(1:3*n), [3, n]), run%v)
+            run%problem%dt = 5.0e-4_dp
+            run%problem%t0 = run%t
+            call check_jacobian(run%problem, run%x + 1.0e-3_dp*cos(real([(k, k=1, 4*n)], dp)), rod3d_kl, rod3d_ku, &
+                                spread(1.0e-6_dp, 1, 4*n), 3.0e-8_dp, jac, error)
+            if (allocated(error)) return
+         end if
+         call run%step(5.0e-4_dp, 0.5_dp, error)
+         if (allocated(error)) return
+         en = run%energies()
+         scale = max(scale, sum(abs(en)) + abs(run%end_work))
+         ledger = max(ledger, abs(run%imbalance()))
+      end do
+      ledger = ledger/scale
+   end subroutine end_kind_case
 end module suite_rod3d

@@ -25,8 +25,9 @@ module xcable_rod3d_run
       !> Newton work arrays and controls.
       type(newton_workspace) :: work
       type(newton_options) :: options
-      !> Stored energy at the start (J), work done by the ends (J), energy taken by damping (J).
-      real(dp) :: energy0 = 0, end_work = 0, dissipated = 0
+      !> Stored energy at the start (J), work done by the ends and by the distributed loads (J),
+      !> energy taken by damping and theta > 1/2 (J).
+      real(dp) :: energy0 = 0, end_work = 0, load_work = 0, dissipated = 0
       !> Newton iterations of all steps.
       integer :: iterations = 0
    contains
@@ -40,7 +41,7 @@ module xcable_rod3d_run
       procedure :: step => run_step
       !> Stored energies [strain, kinetic, bending, gravity, twist], J.
       procedure :: energies => run_energies
-      !> Ledger: stored energy - initial - end work + dissipated, J (0 when it closes).
+      !> Ledger: stored energy - initial - work of ends and loads + dissipated, J (0 when it closes).
       procedure :: imbalance => run_imbalance
    end type rod3d_run
 
@@ -91,6 +92,7 @@ contains
       self%t = t
       self%energy0 = sum(self%energies())
       self%end_work = 0
+      self%load_work = 0
       self%dissipated = 0
    end subroutine run_start
 
@@ -131,6 +133,7 @@ contains
          self%work%usable = .false.
          call book_end(1)
          call book_end(n)
+         self%load_work = self%load_work + sum(piece%load_node*(r1 - r0))
          ! Damping and numerical dissipation (theta > 1/2).
          do c = 1, n - 1
             eps0 = piece%l0(c) - 1
@@ -199,6 +202,6 @@ contains
 
    real(dp) function run_imbalance(self)
       class(rod3d_run), intent(in) :: self
-      run_imbalance = sum(self%energies()) - self%energy0 - self%end_work + self%dissipated
+      run_imbalance = sum(self%energies()) - self%energy0 - self%end_work - self%load_work + self%dissipated
    end function run_imbalance
 end module xcable_rod3d_run

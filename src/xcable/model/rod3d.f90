@@ -59,7 +59,8 @@
 !> and will be needed once the twist is coupled to the centreline). A held end's
 !> rows are R = X(t) and psi = 0 (the twist held); a loaded end adds its
 !> force, torque and point mass. When no end is held psi_1 = 0 fixes the
-!> rigid spin. Not yet in 3-D: distributed loads (fluid) and end couples.
+!> rigid spin. Distributed loads (fluid) enter as in the planar rod, through
+!> their 3-D form (loads/load.f90 cell_force3). Not yet in 3-D: end couples.
 module xcable_model_rod3d
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
@@ -67,6 +68,7 @@ module xcable_model_rod3d
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
+   use xcable_loads_load, only: load_slot
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
@@ -143,7 +145,16 @@ module xcable_model_rod3d
       real(dp), allocatable :: block(:, :, :, :)
       !> Mass matrix, mass(j, k) = M(k, k+j), kg.
       real(dp), allocatable :: mass(:, :)
+      !> Distributed loads (set by set_loads; none when not allocated or empty).
+      type(load_slot), allocatable :: loads(:)
+      !> Force of the loads on each node in the last evaluation (3, n), N, and the derivatives of
+      !> each cell's load force with respect to the new positions of its nodes (3, 3, 0:1, n - 1).
+      real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
+      !> Factor on the distributed loads.
+      real(dp) :: load_factor = 1
    contains
+      !> Set the distributed loads; error for a load without a 3-D form.
+      procedure :: set_loads => rod3d_set_loads
       !> Set up grid, material and work arrays.
       procedure :: init => rod3d_init
       !> Number of unknowns.
@@ -268,6 +279,11 @@ contains
       allocate (self%r0(3, n), self%v0(3, n), self%mv0(3, n), self%e0(3, n - 1), self%l0(n - 1), self%th0(n))
       allocate (self%e1(3, n - 1), self%l1(n - 1), self%th1(n), self%force(3, n - 1), self%force_node(3, n))
       allocate (self%v1(3, n), self%block(3, 3, -1:1, n - 1), self%mass(0:2, n))
+      if (allocated(self%load_node)) deallocate (self%load_node, self%load_block)
+      allocate (self%load_node(3, n), self%load_block(3, 3, 0:1, n - 1))
+      self%load_node = 0
+      self%load_block = 0
+      if (allocated(self%loads)) deallocate (self%loads)
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%force_node = 0; self%v1 = 0; self%block = 0
       ! The planar rod's mass matrix, for each component.
@@ -617,6 +633,7 @@ contains
                                (a/(na*nb) - b*(cosine/(nb*nb)))*coef, &
                                with_jacobian)
       end do
+      call apply_loads(self, x, 0.0_dp, 0.5_dp, with_jacobian)
       call assemble(self, x, t, t, residual, jacobian, with_jacobian, .false., 0.5_dp)
    end subroutine rod3d_static_system
 
@@ -716,6 +733,7 @@ contains
          end do
          call add_node_bending(self, k, fa, fb, with_jacobian)
       end do
+      call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
    end subroutine rod3d_step_system
 
@@ -747,6 +765,7 @@ contains
       end do
       do k = 1, n
          residual(3*k) = residual(3*k) + node_weight(self, k)
+         residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
       end do
       if (dynamic) then
          t_new = t1 + t2
@@ -820,6 +839,29 @@ contains
             end do
          end do
       end if
+      if (allocated(self%loads)) then
+         if (size(self%loads) > 0) then
+            ! Node c and node c+1 each get -F_c / 2.
+            do c = 1, n - 1
+               do side = 0, 1
+                  node = c + side
+                  do j = 0, 1
+                     k = c + j
+                     if (k == 1 .and. held_a) cycle
+                     if (k == n .and. held_b) cycle
+                     do a = 1, 3
+                        row = 3*(k - 1) + a
+                        do b = 1, 3
+                           col = 3*(node - 1) + b
+                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                                 - 0.5_dp*self%load_block(a, b, side, c)*scale
+                        end do
+                     end do
+                  end do
+               end do
+            end do
+         end if
+      end if
       do c = 1, n - 1
          call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
          call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
@@ -861,6 +903,69 @@ contains
       end subroutine set_row
    end subroutine assemble
 
+   !> Set the distributed loads (their lift must already be off the weight given to init).
+   subroutine rod3d_set_loads(self, loads, error)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Loads.
+      type(load_slot), intent(in) :: loads(:)
+      !> Error for a load without a 3-D form.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+      do i = 1, size(loads)
+         if (.not. loads(i)%load%has_3d()) then
+            call fatal_error(error, "the load '"//loads(i)%load%name()//"' has no 3-D form", stat_input)
+            return
+         end if
+      end do
+      self%loads = loads
+   end subroutine rod3d_set_loads
+
+   !> The distributed loads at x, as in the planar rod: each cell's force (load per unstretched
+   !> length times ds) half to each of its nodes; in a step the cell's kinematics are centred
+   !> on the step (stretch vector (e^n + e^n+1) / 2, velocity (R^n+1 - R^n) / dt, acceleration
+   !> (V^n+1 - V^n) / dt, means of its two nodes), in statics e of x at rest.
+   subroutine apply_loads(self, x, dt, theta, with_jacobian)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt, theta
+      logical, intent(in) :: with_jacobian
+      integer :: c, i, n
+      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), v1(3, 2), de_coef, kin(3, 3)
+      self%load_node = 0
+      if (.not. allocated(self%loads)) return
+      if (size(self%loads) == 0) return
+      n = self%n
+      self%load_block = 0
+      do c = 1, n - 1
+         r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
+         if (dt > 0) then
+            e = 0.5_dp*(self%e0(:, c) + self%e1(:, c))
+            w = 0.5_dp*((r1(:, 1) - self%r0(:, c)) + (r1(:, 2) - self%r0(:, c + 1)))/dt
+            v1 = ((r1 - self%r0(:, c:c + 1))/dt - (1 - theta)*self%v0(:, c:c + 1))/theta
+            a = 0.5_dp*((v1(:, 1) - self%v0(:, c)) + (v1(:, 2) - self%v0(:, c + 1)))/dt
+            de_coef = 0.5_dp
+         else
+            e = self%e1(:, c)
+            w = 0
+            a = 0
+            de_coef = 1
+         end if
+         do i = 1, size(self%loads)
+            call self%loads(i)%load%cell_force3(e, w, a, f, df_de, df_dw, df_da)
+            f = self%load_factor*f
+            self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
+            self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
+            if (.not. with_jacobian) cycle
+            ! dF_c/dR_b = ds [df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b], de/dR_b = +-de_coef / ds.
+            kin = 0
+            if (dt > 0) kin = self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
+            self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
+         end do
+      end do
+   end subroutine apply_loads
+
    !> The force the support exerts on end node k (1 or n) to keep its balance, after an
    !> evaluation at the state (statics: dt = 0).
    function rod3d_reaction(self, k, dt) result(f)
@@ -873,7 +978,7 @@ contains
       real(dp) :: f(3), mv(3)
       integer :: n, j
       n = self%n
-      f = [0.0_dp, 0.0_dp, node_weight(self, k)]
+      f = [0.0_dp, 0.0_dp, node_weight(self, k)] - self%load_node(:, k)
       if (k < n) f = f - self%force(:, k)
       if (k > 1) f = f + self%force(:, k - 1)
       if (dt > 0) then

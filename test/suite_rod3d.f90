@@ -37,6 +37,8 @@ module suite_rod3d
    type, extends(end_condition) :: end3
       logical :: is_held = .false.
       real(dp) :: point(3) = 0, force0(3) = 0, force1(3) = 0, period = 1, torque0 = 0, torque1 = 0, mass = 0
+      !> Couple (about -y, the planar convention) C0 + C1 t, N m.
+      real(dp) :: couple0 = 0, couple1 = 0
    contains
       procedure :: kind => end3_kind
       procedure :: held => end3_held
@@ -47,6 +49,7 @@ module suite_rod3d
       procedure :: applied_force3 => end3_force3
       procedure :: applied_torque => end3_torque
       procedure :: point_mass => end3_mass
+      procedure :: applied_couple => end3_couple
    end type end3
 
 contains
@@ -125,6 +128,12 @@ contains
       m = self%torque0 + self%torque1*t
    end function end3_torque
 
+   pure real(dp) function end3_couple(self, t) result(c)
+      class(end3), intent(in) :: self
+      real(dp), intent(in) :: t
+      c = self%couple0 + self%couple1*t
+   end function end3_couple
+
    pure real(dp) function end3_mass(self)
       class(end3), intent(in) :: self
       end3_mass = self%mass
@@ -201,7 +210,7 @@ contains
       real(dp), allocatable :: x(:), r0(:, :), v0(:, :)
       real(dp) :: worst
       integer, parameter :: n = 9
-      call make_piece3(p, n, 6.0_dp, end3(force0=[1000.0_dp, 300.0_dp, 200.0_dp], torque0=5.0_dp), error)
+      call make_piece3(p, n, 6.0_dp, end3(force0=[1000.0_dp, 300.0_dp, 200.0_dp], torque0=5.0_dp, couple0=3.0_dp), error)
       if (allocated(error)) return
       call curved_state(n, 6.0_dp, x, r0, v0)
       p%dt = 0
@@ -219,7 +228,8 @@ contains
       real(dp) :: worst
       integer, parameter :: n = 9
       call make_piece3(p, n, 6.0_dp, end3(force0=[1000.0_dp, 300.0_dp, 200.0_dp], force1=[0.0_dp, 400.0_dp, 0.0_dp], &
-                                          period=0.05_dp, torque0=5.0_dp, torque1=100.0_dp, mass=mass), &
+                                          period=0.05_dp, torque0=5.0_dp, torque1=100.0_dp, mass=mass, &
+                                          couple0=3.0_dp, couple1=200.0_dp), &
                        error, mu, mu2, damping, fluid=fluid)
       if (allocated(error)) return
       call curved_state(n, 6.0_dp, x, r0, v0)
@@ -272,7 +282,7 @@ contains
    !> The scene of the runs: a 20 m line of the paper's cable on n nodes, end a held at the
    !> origin, end b pulled by F0 + F1 sin(2 pi t / 0.1 s) (F1 may leave the plane), in its
    !> static state under F0 turned by alpha about the vertical (and mirrored).
-   subroutine scene3(run, n, f0, f1, alpha, mirror, torque0, torque1, error, release, current)
+   subroutine scene3(run, n, f0, f1, alpha, mirror, torque0, torque1, error, release, current, couple)
       type(rod3d_run), intent(out) :: run
       integer, intent(in) :: n
       real(dp), intent(in) :: f0(3), f1(3), alpha, torque0, torque1
@@ -282,13 +292,20 @@ contains
       real(dp), intent(in), optional :: release
       !> With it, the line is in water with this current (turned and mirrored with the scene).
       real(dp), intent(in), optional :: current(3)
+      !> With it, end b carries this couple (about -y) from t = 0, rising by 10 times it per second.
+      real(dp), intent(in), optional :: couple
       real(dp), allocatable :: r2(:, :)
       integer :: k
       if (present(release)) then
          call make_piece3(run%problem, n, 20.0_dp, force_end(history='ramp', force0=[f0(1), f0(3)], &
                                                              duration=release), error)
       else
-         if (present(current)) then
+         if (present(couple)) then
+            call make_piece3(run%problem, n, 20.0_dp, end3(force0=transform(f0, alpha, mirror), &
+                                                           force1=transform(f1, alpha, mirror), period=0.1_dp, &
+                                                           torque0=torque0, torque1=torque1, couple0=couple, &
+                                                           couple1=10*couple), error)
+         else if (present(current)) then
             call make_piece3(run%problem, n, 20.0_dp, end3(force0=transform(f0, alpha, mirror), &
                                                            force1=transform(f1, alpha, mirror), period=0.1_dp, &
                                                            torque0=torque0, torque1=torque1), error, &
@@ -306,7 +323,7 @@ contains
       else
          call run%init(1.0e-11_dp)
       end if
-      call planar_statics(n, f0, r2, error, current)
+      call planar_statics(n, f0, r2, error, current, couple)
       if (allocated(error)) return
       ! Start the 3-D statics off the solution: out of the plane by 1 % of the span.
       do k = 1, n
@@ -316,13 +333,16 @@ contains
    end subroutine scene3
 
    !> The planar rod's static state of the same scene (positions (2, n)).
-   subroutine planar_statics(n, f0, r, error, current)
+   subroutine planar_statics(n, f0, r, error, current, couple)
       integer, intent(in) :: n
       real(dp), intent(in) :: f0(3)
       real(dp), allocatable, intent(out) :: r(:, :)
       type(error_type), allocatable, intent(out) :: error
       !> A current (only its x and z are seen: its y component must be zero for the 3-D twin).
       real(dp), intent(in), optional :: current(3)
+      !> A couple at end b (as scene3).
+      real(dp), intent(in), optional :: couple
+      real(dp) :: c0
       type(rod_problem) :: p
       type(newton_workspace) :: work
       type(newton_options) :: options
@@ -331,7 +351,9 @@ contains
       real(dp) :: s(n)
       integer :: k
       s = [(20.0_dp*(k - 1)/(n - 1), k=1, n)]
-      call planar_piece(p, s, end3(force0=f0), current)
+      c0 = 0
+      if (present(couple)) c0 = couple
+      call planar_piece(p, s, end3(force0=f0, couple0=c0, couple1=10*c0), current)
       allocate (x(2*n))
       do k = 1, n
          x(2*k - 1:2*k) = [s(k)*1.02_dp, -0.5_dp*sin(pi*s(k)/20)]
@@ -364,12 +386,13 @@ contains
    end subroutine planar_piece
 
    !> The planar rod run alongside: positions (2, n) after steps of dt from its statics.
-   subroutine planar_run(n, f0, f1, dt, steps, r, error, release, current)
+   subroutine planar_run(n, f0, f1, dt, steps, r, error, release, current, couple)
       integer, intent(in) :: n, steps
       real(dp), intent(in) :: f0(3), f1(3), dt
       real(dp), allocatable, intent(out) :: r(:, :)
       type(error_type), allocatable, intent(out) :: error
-      real(dp), intent(in), optional :: release, current(3)
+      real(dp), intent(in), optional :: release, current(3), couple
+      real(dp) :: c0
       type(rod_problem) :: p
       type(newton_workspace) :: work
       type(newton_options) :: options
@@ -378,12 +401,14 @@ contains
       real(dp) :: s(n)
       integer :: k, i
       s = [(20.0_dp*(k - 1)/(n - 1), k=1, n)]
-      call planar_statics(n, f0, r, error, current)
+      call planar_statics(n, f0, r, error, current, couple)
       if (allocated(error)) return
+      c0 = 0
+      if (present(couple)) c0 = couple
       if (present(release)) then
          call planar_piece(p, s, force_end(history='ramp', force0=[f0(1), f0(3)], duration=release), current)
       else
-         call planar_piece(p, s, end3(force0=f0, force1=f1, period=0.1_dp), current)
+         call planar_piece(p, s, end3(force0=f0, force1=f1, period=0.1_dp, couple0=c0, couple1=10*c0), current)
       end if
       call work%init(2*n, rod_kl, rod_ku, spread(p%piece%length_ref, 1, 2*n))
       options%tolerance = 1.0e-11_dp
@@ -451,6 +476,22 @@ contains
          ', after 40 steps ', diff_run, ' of the span (largest position difference, y included)'
       call check(error, diff_static < 1.0e-14_dp .and. diff_run < 5.0e-12_dp, &
                  '3-D rod differs from the planar rod by more than 1e-14 (statics) or 5e-12 (run) of the span')
+      if (allocated(error)) return
+      ! With a couple at end b, 50 N m rising at 500 N m/s.
+      call scene3(run, n, f0, f1, 0.0_dp, .false., 0.0_dp, 0.0_dp, error, couple=50.0_dp)
+      if (allocated(error)) return
+      call planar_statics(n, f0, r2, error, couple=50.0_dp)
+      if (allocated(error)) return
+      diff_static = planar_difference(run%x, r2, out_of_plane)
+      call advance(run, 1.0e-3_dp, 40, error)
+      if (allocated(error)) return
+      call planar_run(n, f0, f1, 1.0e-3_dp, 40, r2, error, couple=50.0_dp)
+      if (allocated(error)) return
+      diff_run = max(planar_difference(run%x, r2, out_of_plane), out_of_plane)
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'the same with an end couple: statics ', diff_static, &
+         ', after 40 steps ', diff_run, ' of the span'
+      call check(error, diff_static < 1.0e-14_dp .and. diff_run < 5.0e-12_dp, &
+                 'with a couple the 3-D rod differs from the planar rod by more than 1e-14 or 5e-12')
    end subroutine test_reduction
 
    !> The same for a release: 20 kN let go over 5 ms, 300 steps of 0.1 ms, through the unloading
@@ -551,17 +592,34 @@ contains
       type(rod3d_run) :: run
       real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-4000.0_dp, 3000.0_dp, 800.0_dp]
       real(dp) :: worst, strain, en(5)
-      call scene3(run, 41, f0, f1, 0.3_dp, .false., 1.0_dp, 200.0_dp, error)
+      call scene3(run, 41, f0, f1, 0.3_dp, .false., 1.0_dp, 200.0_dp, error, couple=0.0_dp)
       if (allocated(error)) return
-      en = run%energies()
-      strain = en(1)
-      call advance(run, 1.0e-3_dp, 100, error, worst_ledger=worst)
+      call ledger_case(run, worst, strain, error)
       if (allocated(error)) return
-      en = run%energies()
       write (output_unit, '(4x,a,es9.2,a,es9.2,a,f8.3,a)') '3-D ledger: largest imbalance ', worst/strain, &
          ' of the strain energy (', strain, ' J); end work ', run%end_work, ' J'
       call check(error, worst/strain < 1.0e-11_dp, '3-D ledger does not close to 1e-11 of the strain energy')
+      if (allocated(error)) return
+      ! The same with a couple of 50 N m at end b (released statics: the static state is not
+      ! that of the couple; the couple then rises at 500 N m/s).
+      call scene3(run, 41, f0, f1, 0.3_dp, .false., 1.0_dp, 200.0_dp, error, couple=50.0_dp)
+      if (allocated(error)) return
+      call ledger_case(run, worst, strain, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,es9.2,a,f8.3,a)') '3-D ledger with an end couple: largest imbalance ', worst/strain, &
+         ' of the strain energy; end work ', run%end_work, ' J'
+      call check(error, worst/strain < 1.0e-11_dp, '3-D ledger with a couple does not close to 1e-11')
    end subroutine test_ledger
+
+   subroutine ledger_case(run, worst, strain, error)
+      type(rod3d_run), intent(inout) :: run
+      real(dp), intent(out) :: worst, strain
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: en(5)
+      en = run%energies()
+      strain = en(1)
+      call advance(run, 1.0e-3_dp, 100, error, worst_ledger=worst)
+   end subroutine ledger_case
 
    !> A torque M_t at end b (rising from 1 to 21 N m over the run) gives the twist rate
    !> M_t / GIp in every cell, statics and steps; |beta| stays 1 along the run.

@@ -152,10 +152,11 @@ contains
 
    contains
 
-      !> The end at node k: its force's work over the step and its torque's.
+      !> The end at node k: the work over the step of its force, its torque and its couple.
       subroutine book_end(k)
          integer, intent(in) :: k
-         real(dp) :: force(3), torque0, torque1, dpsi
+         real(dp) :: force(3), torque0, torque1, dpsi, p0(2), p1(2), dphi, couple
+         integer :: c
          associate (piece => self%problem%piece)
             if ((k == 1 .and. piece%end_a%held()) .or. (k == n .and. piece%end_b%held())) then
                force = piece%reaction(k, dt)
@@ -174,6 +175,17 @@ contains
                torque1 = piece%end_b%applied_torque(self%t + dt)
             end if
             self%end_work = self%end_work + 0.5_dp*(torque0 + torque1)*dpsi
+            ! The couple (about -y) on the end cell's projected angle.
+            c = merge(1, n - 1, k == 1)
+            p0 = piece%e0([1, 3], c)
+            p1 = piece%e1([1, 3], c)
+            dphi = atan2(p0(1)*p1(2) - p0(2)*p1(1), dot_product(p0, p1))
+            if (k == 1) then
+               couple = 0.5_dp*(piece%end_a%applied_couple(self%t) + piece%end_a%applied_couple(self%t + dt))
+            else
+               couple = 0.5_dp*(piece%end_b%applied_couple(self%t) + piece%end_b%applied_couple(self%t + dt))
+            end if
+            self%end_work = self%end_work + couple*dphi
          end associate
       end subroutine book_end
 

@@ -60,7 +60,9 @@
 !> rows are R = X(t) and psi = 0 (the twist held); a loaded end adds its
 !> force, torque and point mass. When no end is held psi_1 = 0 fixes the
 !> rigid spin. Distributed loads (fluid) enter as in the planar rod, through
-!> their 3-D form (loads/load.f90 cell_force3). Not yet in 3-D: end couples.
+!> their 3-D form (loads/load.f90 cell_force3). An end couple acts, as in the
+!> planar input, about the y axis, on the angle of the end cell's projection
+!> on the x-z plane (a couple vector in 3-D is not yet there).
 module xcable_model_rod3d
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
@@ -228,7 +230,7 @@ contains
       class(end_condition), intent(in) :: end_a, end_b
       !> Reference tension of the row scaling, N.
       real(dp), intent(in) :: tension_ref
-      !> Error: GIp <= 0, or an end couple (not in the 3-D rod).
+      !> Error: GIp <= 0.
       type(error_type), allocatable, intent(out) :: error
       !> Weight of the second-difference kinetic energy; Kelvin-Voigt damping c, N s (0 if absent).
       real(dp), intent(in), optional :: mu2, damping
@@ -236,10 +238,6 @@ contains
       real(dp) :: w
       if (.not. gip > 0) then
          call fatal_error(error, 'the torsional stiffness GIp must be > 0', stat_input)
-         return
-      end if
-      if (end_a%applied_couple(0.0_dp) /= 0 .or. end_b%applied_couple(0.0_dp) /= 0) then
-         call fatal_error(error, 'end couples are not available in the 3-D model', stat_input)
          return
       end if
       ! A piece may be set up again.
@@ -619,6 +617,7 @@ contains
          self%force(:, c) = f*tc
          if (with_jacobian) self%block(:, :, 0, c) = fp*outer(tc, tc) + f/self%l1(c)*(identity3() - outer(tc, tc))
       end do
+      call add_couples(self, t, t, .false., with_jacobian)
       do k = 2, n - 1
          do i = 1, 3
             a(i) = seeded(self%e1(i, k - 1), i)
@@ -733,6 +732,7 @@ contains
          end do
          call add_node_bending(self, k, fa, fb, with_jacobian)
       end do
+      call add_couples(self, t0, t0 + dt, .true., with_jacobian)
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
    end subroutine rod3d_step_system
@@ -902,6 +902,76 @@ contains
          end do
       end subroutine set_row
    end subroutine assemble
+
+   !> The applied couples of the ends (the planar input's couple, positive counter-clockwise in
+   !> the x-z plane, that is about -y) on the end cells. A couple C does the work C dphi, dphi
+   !> the change of the angle of the cell's projection on the x-z plane: in statics the force
+   !> -C grad(phi) / ds, in a step the time-averaged couple times the planar rod's exact discrete
+   !> gradient of that angle, perp(p_mid) dphi / (sin(dphi) |p0| |p1|) of the projections p.
+   subroutine add_couples(self, ta, tb, step, with_jacobian)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: ta, tb
+      logical, intent(in) :: step, with_jacobian
+      real(dp) :: couple, p0(2), p1(2), pm(2), l0, l1, cross01, dphi, rho, drho, g, gvec(2), dg(2), dgvec(2, 2)
+      real(dp) :: jm(2, 2), jp(2, 2)
+      integer :: c, side, i, j
+      integer, parameter :: plane(2) = [1, 3]
+      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      do side = 1, 2
+         if (side == 1) then
+            c = 1
+            couple = 0.5_dp*(self%end_a%applied_couple(ta) + self%end_a%applied_couple(tb))
+         else
+            c = self%n - 1
+            couple = 0.5_dp*(self%end_b%applied_couple(ta) + self%end_b%applied_couple(tb))
+         end if
+         if (couple == 0) cycle
+         p1 = self%e1(plane, c)
+         l1 = norm2(p1)
+         if (step) then
+            p0 = self%e0(plane, c)
+            l0 = norm2(p0)
+            pm = 0.5_dp*(p0 + p1)
+            cross01 = p0(1)*p1(2) - p0(2)*p1(1)
+            dphi = atan2(cross01, dot_product(p0, p1))
+            if (abs(dphi) < small_rotation) then
+               rho = 1 + dphi**2/6
+               drho = dphi/3
+            else
+               rho = dphi/sin(dphi)
+               drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
+            end if
+            g = rho/(l0*l1)
+            gvec = [-pm(2), pm(1)]*g
+            ! d gvec / d p1 = g jm / 2 + perp(pm) dg^T, dg = drho dphi/dp1 / (l0 l1) - rho p1 / (l0 l1^3).
+            dg = drho*[-p1(2), p1(1)]/l1**2/(l0*l1) - rho/(l0*l1**2)*p1/l1
+            do j = 1, 2
+               dgvec(:, j) = 0.5_dp*g*jm(:, j) + [-pm(2), pm(1)]*dg(j)
+            end do
+         else
+            gvec = [-p1(2), p1(1)]/l1**2
+            jp = (jm - 2*outer2([-p1(2), p1(1)], p1)/l1**2)/l1**2
+            dgvec = jp
+         end if
+         do i = 1, 2
+            self%force(plane(i), c) = self%force(plane(i), c) - couple*gvec(i)/self%ds(c)
+            if (.not. with_jacobian) cycle
+            do j = 1, 2
+               self%block(plane(i), plane(j), 0, c) = self%block(plane(i), plane(j), 0, c) &
+                                                      - couple*dgvec(i, j)/self%ds(c)
+            end do
+         end do
+      end do
+
+   contains
+
+      pure function outer2(u, v) result(m)
+         real(dp), intent(in) :: u(2), v(2)
+         real(dp) :: m(2, 2)
+         m(:, 1) = u*v(1)
+         m(:, 2) = u*v(2)
+      end function outer2
+   end subroutine add_couples
 
    !> Set the distributed loads (their lift must already be off the weight given to init).
    subroutine rod3d_set_loads(self, loads, error)

@@ -710,8 +710,9 @@ contains
             a(i) = seeded(self%e1(i, k - 1), i)
             b(i) = seeded(self%e1(i, k), i + 3)
          end do
-         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0),
-         ! Ja averaging the changes of a at b0 and at b1, Jb those of b at a0 and at a1.
+         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0):
+         ! Ja carries the mean of the changes of a at b0 and at b1, Jb that of the changes of b at
+         ! a0 and at a1, each about the Jacobian at the mid vectors.
          a0 = constant(self%e0(:, k - 1))
          b0 = constant(self%e0(:, k))
          call rotation_vector(a0, b0, phi0)
@@ -722,10 +723,10 @@ contains
          coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
          psum = (phi1 + phi0)*coef
          ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
-         ja = (discrete_jacobian(self%e0(:, k - 1), a, b0, 1.0_dp, phi_a1b0 - phi0) &
-               + discrete_jacobian(self%e0(:, k - 1), a, b, 1.0_dp, phi1 - phi_a0b1))*0.5_dp
-         jb = (discrete_jacobian(self%e0(:, k), b, a0, -1.0_dp, phi_a0b1 - phi0) &
-               + discrete_jacobian(self%e0(:, k), b, a, -1.0_dp, phi1 - phi_a1b0))*0.5_dp
+         ja = discrete_jacobian(self%e0(:, k - 1), a, (b0 + b)*0.5_dp, 1.0_dp, &
+                                ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
+         jb = discrete_jacobian(self%e0(:, k), b, (a0 + a)*0.5_dp, -1.0_dp, &
+                                ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
          do i = 1, 3
             fa(i) = dot3(ja(:, i), psum)
             fb(i) = dot3(jb(:, i), psum)

@@ -591,7 +591,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(rod3d_run) :: run
       real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-4000.0_dp, 3000.0_dp, 800.0_dp]
-      real(dp) :: worst, strain, en(5)
+      real(dp) :: worst, strain
       call scene3(run, 41, f0, f1, 0.3_dp, .false., 1.0_dp, 200.0_dp, error, couple=0.0_dp)
       if (allocated(error)) return
       call ledger_case(run, worst, strain, error)

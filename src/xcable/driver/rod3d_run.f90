@@ -52,7 +52,7 @@ contains
       class(rod3d_run), intent(inout) :: self
       !> Newton tolerance on the scaled update.
       real(dp), intent(in) :: tolerance
-      integer :: n, k
+      integer :: n
       real(dp), allocatable :: scale(:)
       n = self%problem%piece%n
       allocate (self%x(4*n), self%v(3, n), scale(4*n))

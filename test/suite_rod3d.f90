@@ -11,6 +11,9 @@ module suite_rod3d
    use xcable_material_law, only: tanh_law, linear_law
    use xcable_ends_end, only: end_condition
    use xcable_ends_force, only: force_end
+   use xcable_ends_fixed, only: fixed_end
+   use xcable_ends_motion, only: motion_end
+   use xcable_ends_end, only: smooth_ramp
    use xcable_loads_fluid, only: fluid_load
    use xcable_loads_load, only: load_slot
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
@@ -70,7 +73,8 @@ contains
                new_unittest('out_of_plane_sway', test_sway), &
                new_unittest('discrete_gradient_exact', test_discrete_gradient), &
                new_unittest('every_end_kind', test_every_end_kind), &
-               new_unittest('fluid_reduction_symmetry_ledger', test_fluid)]
+               new_unittest('fluid_reduction_symmetry_ledger', test_fluid), &
+               new_unittest('ends_with_y_torque', test_ends_y)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -1058,4 +1062,102 @@ contains
       diff = max(planar_difference(run%x, r, out_of_plane), out_of_plane)
       th_max = maxval(run%problem%piece%th1)
    end subroutine paper_run
+   !> The end types' 3-D data: a fairlead (motion end) moving along (0.6, 0.8, 0) and a force end
+   !> with a y component and a torque, both ramped. The scene turned by 0.9 rad about the
+   !> vertical (the ends' data turned by hand) against the turned motion, 30 steps of 0.5 ms;
+   !> the motion end's velocity3 against central differences of position3; the twist rate
+   !> against the ramped torque / GIp.
+   subroutine test_ends_y(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: diff(2), rate_err, vel_err, h, t
+      type(motion_end) :: probe
+      integer :: kind, i
+      do kind = 1, 2
+         call turned_pair(kind, 0.9_dp, diff(kind), rate_err, error)
+         if (allocated(error)) return
+      end do
+      probe = fairlead(0.9_dp)
+      vel_err = 0
+      h = 1.0e-6_dp
+      do i = 1, 20
+         t = 0.003_dp*i
+         vel_err = max(vel_err, norm2(probe%velocity3(t) - (probe%position3(t + h) - probe%position3(t - h))/(2*h)))
+      end do
+      write (output_unit, '(4x,a,2es9.2,a,es9.2,a,es9.2)') 'ends with y: turned 0.9 rad (motion end, force end) ', diff, &
+         '; velocity3 vs position3 ', vel_err, ' m/s; twist rate vs ramped torque / GIp ', rate_err
+      call check(error, maxval(diff) < 1.0e-10_dp, 'a turned scene with 3-D end data differs by more than 1e-10')
+      if (allocated(error)) return
+      call check(error, vel_err < 1.0e-6_dp .and. rate_err < 1.0e-13_dp, &
+                 'the motion end''s velocity3 or the force end''s torque is off')
+   end subroutine test_ends_y
+
+   !> The anchor of test_ends_y at (0.3, 0, 0.1) turned by alpha.
+   type(fixed_end) function anchor(alpha) result(f)
+      real(dp), intent(in) :: alpha
+      real(dp) :: p(3)
+      p = transform([0.3_dp, 0.0_dp, 0.1_dp], alpha, .false.)
+      f = fixed_end(point=[p(1), p(3)], y=p(2))
+   end function anchor
+
+   !> The fairlead of test_ends_y at (10.05, 0, -0.5) turned by alpha.
+   type(motion_end) function fairlead(alpha) result(m)
+      real(dp), intent(in) :: alpha
+      real(dp) :: o(3), d(3)
+      o = transform([10.05_dp, 0.0_dp, -0.5_dp], alpha, .false.)
+      d = transform([0.6_dp, 0.8_dp, 0.0_dp], alpha, .false.)
+      m = motion_end(origin=[o(1), o(3)], origin_y=o(2), direction=[d(1), d(3)], direction_y=d(2), &
+                     amplitude=0.05_dp, period=0.05_dp, ramp_time=0.01_dp)
+   end function fairlead
+
+   !> Kind 1: end b the fairlead; kind 2: end b the force end. The run of the original scene
+   !> and of the scene turned by alpha; diff the largest distance between the turned first and
+   !> the second, over the span; rate_err the twist rate's error (kind 2).
+   subroutine turned_pair(kind, alpha, diff, rate_err, error)
+      integer, intent(in) :: kind
+      real(dp), intent(in) :: alpha
+      real(dp), intent(out) :: diff, rate_err
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: runs(2)
+      type(force_end) :: pull
+      integer, parameter :: n = 21
+      real(dp) :: s(n), f(3), angle, tau_expected, u
+      real(dp), allocatable :: tau(:)
+      integer :: j, k, i
+      s = [(10.0_dp*(k - 1)/(n - 1), k=1, n)]
+      rate_err = 0
+      do j = 1, 2
+         angle = merge(0.0_dp, alpha, j == 1)
+         if (kind == 1) then
+            call runs(j)%problem%piece%init(s, m_cable, m_cable*g, ei, gip, g, 1.0_dp, tanh_law(), &
+                                            anchor(angle), fairlead(angle), 1.0e4_dp, error)
+         else
+            f = transform([2000.0_dp, 1200.0_dp, 300.0_dp], angle, .false.)
+            pull = force_end(history='ramp', force0=[f(1), f(3)], force0_y=f(2), torque0=4.0_dp, duration=0.02_dp)
+            call runs(j)%problem%piece%init(s, m_cable, m_cable*g, ei, gip, g, 1.0_dp, tanh_law(), &
+                                            anchor(angle), pull, 1.0e4_dp, error)
+         end if
+         if (allocated(error)) return
+         call runs(j)%init(1.0e-11_dp)
+         do k = 1, n
+            u = (k - 1)/(n - 1.0_dp)
+            runs(j)%x(3*k - 2:3*k) = transform([0.3_dp + 9.75_dp*u, 0.1_dp*sin(acos(-1.0_dp)*u), &
+                                                0.1_dp - 0.6_dp*u - 0.2_dp*sin(acos(-1.0_dp)*u)], angle, .false.)
+         end do
+         call runs(j)%start(runs(j)%x, runs(j)%v, 0.0_dp)
+         do i = 1, 30
+            call runs(j)%step(5.0e-4_dp, 0.5_dp, error)
+            if (allocated(error)) return
+            if (kind == 2) then
+               tau = runs(j)%problem%piece%twist_rates(runs(j)%x)
+               tau_expected = 4.0_dp*smooth_ramp(runs(j)%t, 0.0_dp, 0.02_dp)/gip
+               rate_err = max(rate_err, maxval(abs(tau - tau_expected))/(4.0_dp/gip))
+            end if
+         end do
+      end do
+      diff = 0
+      do k = 1, n
+         diff = max(diff, norm2(runs(2)%x(3*k - 2:3*k) - transform(runs(1)%x(3*k - 2:3*k), alpha, .false.)))
+      end do
+      diff = diff/10.05_dp
+   end subroutine turned_pair
 end module suite_rod3d

@@ -23,6 +23,7 @@ module suite_rod3d
    use xcable_fdcheck, only: check_jacobian
    use xcable_io_config, only: case_config
    use xcable_simulation, only: simulation
+   use suite_registry, only: scene_config, variants
    use xcable_io_config, only: end_config
    use xcable_ends_factory, only: new_end, end_kinds
    use xcable_solver_banded, only: band_matrix
@@ -74,7 +75,8 @@ contains
                new_unittest('discrete_gradient_exact', test_discrete_gradient), &
                new_unittest('every_end_kind', test_every_end_kind), &
                new_unittest('fluid_reduction_symmetry_ledger', test_fluid), &
-               new_unittest('ends_with_y_torque', test_ends_y)]
+               new_unittest('ends_with_y_torque', test_ends_y), &
+               new_unittest('statics_every_end_kind', test_statics_kinds)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -1160,4 +1162,56 @@ contains
       end do
       diff = diff/10.05_dp
    end subroutine turned_pair
+   !> The 3-D statics of every end kind and variant of the registry's scenes (10 m, 21 nodes,
+   !> end a fixed, end b of the kind; dry and in water with a current in the plane), started from
+   !> the program's planar static state bowed out of the plane by 1 % of x: it must come back to
+   !> the planar state (largest difference / length, y included).
+   subroutine test_statics_kinds(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: c
+      character(len=8), allocatable :: vs(:)
+      real(dp) :: worst, d, out_of_plane
+      integer :: i, j, k, n, wet
+      worst = 0
+      do wet = 0, 1
+         do i = 1, size(end_kinds)
+            vs = variants(trim(end_kinds(i)))
+            do j = 1, size(vs)
+               c = scene_config(trim(end_kinds(i)), trim(vs(j)), 'tanh', 'law', 0.0_dp, wet == 1)
+               call sim%prepare(c, error)
+               if (allocated(error)) return
+               block
+               type(rod3d_run) :: run
+               associate (q => sim%rod%pieces(1)%problem%piece, r2 => sim%rod%static%r)
+                  n = q%n
+                  call run%problem%piece%init(q%s, q%mass_per_length, q%weight, q%ei, gip, q%gravity, q%mu, q%law, &
+                                              q%end_a, q%end_b, q%tension_ref, error, q%mu2, q%damping)
+                  if (allocated(error)) return
+                  if (allocated(q%loads)) then
+                     call run%problem%piece%set_loads(q%loads, error)
+                     if (allocated(error)) return
+                  end if
+                  call run%init(1.0e-11_dp)
+                  do k = 1, n
+                     run%x(3*k - 2:3*k) = [r2(1, k), 0.01_dp*r2(1, k), r2(2, k)]
+                  end do
+                  call run%statics(0.0_dp, error)
+                  if (allocated(error)) then
+                     error%message = trim(end_kinds(i))//' '//trim(vs(j))//': '//error%message
+                     return
+                  end if
+                  d = planar_difference(run%x, r2, out_of_plane)
+                  ! planar_difference divides by the span; use the length instead.
+                  d = max(d*abs(r2(1, n) - r2(1, 1)), out_of_plane*abs(r2(1, n) - r2(1, 1)))/c%length
+                  worst = max(worst, d)
+               end associate
+               end block
+            end do
+         end do
+      end do
+      write (output_unit, '(4x,a,es9.2,a)') '3-D statics of every end kind (dry and wet) vs the planar statics: ', worst, &
+         ' of the length'
+      call check(error, worst < 1.0e-14_dp, 'a 3-D static state differs from the planar one by more than 1e-14')
+   end subroutine test_statics_kinds
 end module suite_rod3d

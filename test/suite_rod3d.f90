@@ -17,7 +17,7 @@ module suite_rod3d
    use xcable_loads_fluid, only: fluid_load
    use xcable_loads_load, only: load_slot
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
-   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, turning_angle
+   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, turning_angle, paper_euler_parameters
    use xcable_rod3d_run, only: rod3d_run
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use xcable_fdcheck, only: check_jacobian
@@ -466,13 +466,14 @@ contains
       type(rod3d_run) :: run
       real(dp), allocatable :: r2(:, :)
       real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-2000.0_dp, 0.0_dp, 300.0_dp]
-      real(dp) :: diff_static, diff_run, out_of_plane
+      real(dp) :: diff_static, diff_run, out_of_plane, frame_err
       integer, parameter :: n = 41
       call scene3(run, n, f0, f1, 0.0_dp, .false., 0.0_dp, 0.0_dp, error)
       if (allocated(error)) return
       call planar_statics(n, f0, r2, error)
       if (allocated(error)) return
       diff_static = planar_difference(run%x, r2, out_of_plane)
+      call frame_check(run, frame_err)
       call advance(run, 1.0e-3_dp, 40, error)
       if (allocated(error)) return
       call planar_run(n, f0, f1, 1.0e-3_dp, 40, r2, error)
@@ -480,8 +481,12 @@ contains
       diff_run = max(planar_difference(run%x, r2, out_of_plane), out_of_plane)
       write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'planar scene in 3-D vs planar rod: statics ', diff_static, &
          ', after 40 steps ', diff_run, ' of the span (largest position difference, y included)'
+      write (output_unit, '(4x,a,es9.2)') 'planar statics: paper''s Euler parameters, largest |beta1|, |beta2| and '// &
+         'error of t = (b0^2 - b3^2) i + 2 b0 b3 j ', frame_err
       call check(error, diff_static < 1.0e-14_dp .and. diff_run < 5.0e-12_dp, &
                  '3-D rod differs from the planar rod by more than 1e-14 (statics) or 5e-12 (run) of the span')
+      if (allocated(error)) return
+      call check(error, frame_err < 1.0e-14_dp, 'the frames of a planar state are not the paper''s planar ones')
       if (allocated(error)) return
       ! With a couple at end b, 50 N m rising at 500 N m/s.
       call scene3(run, n, f0, f1, 0.0_dp, .false., 0.0_dp, 0.0_dp, error, couple=50.0_dp)
@@ -526,6 +531,26 @@ contains
          ' of the span; largest turning angle ', th_max, ' rad; end b at x = ', run%x(3*n - 2), ' m'
       call check(error, diff_run < 4.0e-10_dp, '3-D release differs from the planar rod by more than 4e-10 of the span')
    end subroutine test_reduction_release
+
+   !> Frames of a planar state in the paper's convention: largest |beta1|, |beta2| and the
+   !> largest error of the paper's planar tangent against the cells' tangents (i = z, j = x).
+   subroutine frame_check(run, err)
+      type(rod3d_run), intent(in) :: run
+      real(dp), intent(out) :: err
+      real(dp), allocatable :: beta(:, :)
+      real(dp) :: b(4), t(3)
+      integer :: c, n
+      n = run%problem%piece%n
+      allocate (beta(4, n - 1))
+      call run%problem%piece%frames(run%x, beta)
+      err = 0
+      do c = 1, n - 1
+         b = paper_euler_parameters(beta(:, c))
+         t = (run%x(3*c + 1:3*c + 3) - run%x(3*c - 2:3*c))
+         t = t/norm2(t)
+         err = max(err, abs(b(2)), abs(b(3)), abs(b(1)**2 - b(4)**2 - t(3)), abs(2*b(1)*b(4) - t(1)))
+      end do
+   end subroutine frame_check
 
    !> Largest |R3 - (x, 0, z)| over the span, and the largest |y| over the span.
    real(dp) function planar_difference(x, r2, out_of_plane) result(d)

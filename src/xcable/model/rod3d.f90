@@ -74,6 +74,7 @@ module xcable_model_rod3d
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
+   public :: paper_euler_parameters
 
    ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
    ! (the two new cell vectors of a node). They live in this module so that the compiler can
@@ -1063,7 +1064,11 @@ contains
    end function rod3d_reaction
 
    !> Material frames of the cells of x as unit quaternions (4, n - 1), [beta0, beta1, beta2, beta3]:
-   !> the rotation of the fixed frame (x, y, z) onto (t, n, b) of each cell.
+   !> the rotation of the fixed frame (x, y, z) onto (t, n, b) of each cell. The frame of a
+   !> cell along x is (x, -z, y), the paper's convention (n the in-plane normal, down for a
+   !> horizontal cable, b out of the plane along y); it is carried to the first cell and on from
+   !> cell to cell by the smallest rotations between tangents, then turned by the cell's mean
+   !> psi about t. paper_euler_parameters gives the paper's parameters.
    pure subroutine rod3d_frames(self, x, beta)
       !> Piece.
       class(rod3d_piece), intent(in) :: self
@@ -1076,7 +1081,8 @@ contains
       call unpack(x, r, psi)
       call self%geometry(r, e, l, th)
       prev = [1.0_dp, 0.0_dp, 0.0_dp]
-      q = [1.0_dp, 0.0_dp, 0.0_dp, 0.0_dp]
+      ! A quarter turn about x: (x, y, z) onto (x, -z, y).
+      q = [sqrt(0.5_dp), -sqrt(0.5_dp), 0.0_dp, 0.0_dp]
       do c = 1, self%n - 1
          q = quaternion_product(minimal_rotation(prev, e(:, c)/l(c)), q)
          prev = e(:, c)/l(c)
@@ -1084,6 +1090,19 @@ contains
          beta(:, c) = quaternion_product(q, [cos(angle), sin(angle), 0.0_dp, 0.0_dp])
       end do
    end subroutine rod3d_frames
+
+   !> The paper's Euler parameters of a frame given as frames() gives it: the rotation of the
+   !> paper's fixed frame (i up, j horizontal, k = i x j, that is (z, x, y)) onto (t, n, b),
+   !> in components along i, j, k. In a planar state beta1 = beta2 = 0 and
+   !> t = (beta0^2 - beta3^2) i + 2 beta0 beta3 j, as in eqs. 18-21.
+   pure function paper_euler_parameters(beta) result(b)
+      !> Quaternion of frames() (rotation of (x, y, z) onto (t, n, b)).
+      real(dp), intent(in) :: beta(4)
+      real(dp) :: b(4), r(4)
+      ! Compose with the rotation taking (z, x, y) onto (x, y, z) (a third of a turn about (1, 1, 1)).
+      r = quaternion_product(beta, [0.5_dp, 0.5_dp, 0.5_dp, 0.5_dp])
+      b = [r(1), r(4), r(2), r(3)]
+   end function paper_euler_parameters
 
    !> The unit quaternion of the smallest rotation taking unit vector u to unit vector v
    !> (half a turn about z when v = -u is along x, about an axis normal to u otherwise).

@@ -18,6 +18,7 @@ program xcable_tests
    use suite_registry, only: collect_registry
    use suite_fluid, only: collect_fluid
    use suite_checkpoint, only: collect_checkpoint
+   use suite_rod3d, only: collect_rod3d
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -40,7 +41,8 @@ program xcable_tests
              new_testsuite('laws', collect_laws), &
              new_testsuite('registry', collect_registry), &
              new_testsuite('fluid', collect_fluid), &
-             new_testsuite('checkpoint', collect_checkpoint)]
+             new_testsuite('checkpoint', collect_checkpoint), &
+             new_testsuite('rod3d', collect_rod3d)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

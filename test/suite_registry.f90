@@ -23,7 +23,7 @@ module suite_registry
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
-   public :: collect_registry
+   public :: collect_registry, scene_config, variants
 
 contains
 

@@ -37,6 +37,13 @@ module xcable_ends_end
       procedure :: point_mass => end_point_mass
       !> Whether the applied force or couple changes with time.
       procedure :: time_dependent => end_time_dependent
+      !> The 3-D model's view of the end (x, y, z), z up: prescribed position, velocity,
+      !> applied force (by default the plane's x and z with y = 0), and the applied torque
+      !> about the outward tangent, N m (0 by default).
+      procedure :: position3 => end_position3
+      procedure :: velocity3 => end_velocity3
+      procedure :: applied_force3 => end_applied_force3
+      procedure :: applied_torque => end_applied_torque
    end type end_condition
 
    abstract interface
@@ -93,6 +100,36 @@ contains
       class(end_condition), intent(in) :: self
       end_time_dependent = .false.
    end function end_time_dependent
+
+   pure function end_position3(self, t) result(x)
+      class(end_condition), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(3), p(2)
+      p = self%position(t)
+      x = [p(1), 0.0_dp, p(2)]
+   end function end_position3
+
+   pure function end_velocity3(self, t) result(v)
+      class(end_condition), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: v(3), p(2)
+      p = self%velocity(t)
+      v = [p(1), 0.0_dp, p(2)]
+   end function end_velocity3
+
+   pure function end_applied_force3(self, t) result(f)
+      class(end_condition), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: f(3), p(2)
+      p = self%applied_force(t)
+      f = [p(1), 0.0_dp, p(2)]
+   end function end_applied_force3
+
+   pure real(dp) function end_applied_torque(self, t) result(m)
+      class(end_condition), intent(in) :: self
+      real(dp), intent(in) :: t
+      m = 0
+   end function end_applied_torque
 
    !> The paper's release ramp (eqs. 31-32): 1 before t0, cos^2(pi (t - t0) / (2 duration))
    !> during the ramp, 0 after (a step at t0 when the duration is 0).

@@ -10,10 +10,13 @@ module xcable_ends_fixed
    type, extends(end_condition) :: fixed_end
       !> The point (x, z), m.
       real(dp) :: point(2) = 0
+      !> Its y, for the 3-D model, m.
+      real(dp) :: y = 0
    contains
       procedure :: kind => fixed_kind
       procedure :: held => fixed_held
       procedure :: position => fixed_position
+      procedure :: position3 => fixed_position3
    end type fixed_end
 
 contains
@@ -35,4 +38,11 @@ contains
       real(dp) :: x(2)
       x = self%point
    end function fixed_position
+
+   pure function fixed_position3(self, t) result(x)
+      class(fixed_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(3)
+      x = [self%point(1), self%y, self%point(2)]
+   end function fixed_position3
 end module xcable_ends_fixed

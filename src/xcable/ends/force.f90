@@ -24,6 +24,9 @@ module xcable_ends_force
       real(dp) :: force0(2) = 0
       !> Starting couple of the 'ramp' (and constant couple otherwise), N m.
       real(dp) :: couple0 = 0
+      !> For the 3-D model: the y component of force0 (the 'table' history stays in the x-z
+      !> plane), N, and the torque about the outward tangent (ramped as the force), N m.
+      real(dp) :: force0_y = 0, torque0 = 0
       !> Start and duration of the ramp, s.
       real(dp) :: t0 = 0, duration = 0
       !> Force table of the 'table' history.
@@ -33,6 +36,8 @@ module xcable_ends_force
       procedure :: applied_force => force_applied_force
       procedure :: applied_couple => force_applied_couple
       procedure :: time_dependent => force_time_dependent
+      procedure :: applied_force3 => force_applied_force3
+      procedure :: applied_torque => force_applied_torque
    end type force_end
 
 contains
@@ -72,4 +77,30 @@ contains
       class(force_end), intent(in) :: self
       force_time_dependent = self%history /= 'constant'
    end function force_time_dependent
+
+   pure function force_applied_force3(self, t) result(f)
+      class(force_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: f(3), f2(2), scale
+      f2 = self%applied_force(t)
+      select case (self%history)
+      case ('ramp')
+         scale = smooth_ramp(t, self%t0, self%duration)
+      case ('table')
+         scale = 0
+      case default
+         scale = 1
+      end select
+      f = [f2(1), self%force0_y*scale, f2(2)]
+   end function force_applied_force3
+
+   pure real(dp) function force_applied_torque(self, t) result(m)
+      class(force_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      if (self%history == 'ramp') then
+         m = self%torque0*smooth_ramp(t, self%t0, self%duration)
+      else
+         m = self%torque0
+      end if
+   end function force_applied_torque
 end module xcable_ends_force

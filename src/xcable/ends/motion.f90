@@ -25,11 +25,17 @@ module xcable_ends_motion
       real(dp) :: amplitude = 0, period = 1, phase = 0, direction(2) = [0.0_dp, 1.0_dp], ramp_time = 0
       !> Displacement table of the 'table' motion.
       type(time_table) :: table
+      !> For the 3-D model: y of the origin (m) and the y component of the harmonic motion's
+      !> direction (the direction (x, y, z) is then direction(1), direction_y, direction(2), given
+      !> normalised); the 'table' motion stays in the x-z plane.
+      real(dp) :: origin_y = 0, direction_y = 0
    contains
       procedure :: kind => motion_kind
       procedure :: held => motion_held
       procedure :: position => motion_position
       procedure :: velocity => motion_velocity
+      procedure :: position3 => motion_position3
+      procedure :: velocity3 => motion_velocity3
    end type motion_end
 
 contains
@@ -84,4 +90,32 @@ contains
              *self%direction
       end if
    end function motion_velocity
+
+   pure function motion_position3(self, t) result(x)
+      class(motion_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: x(3), p(2), w, dw, y
+      p = self%position(t)
+      y = self%origin_y
+      if (self%motion /= 'table') then
+         call start_factor(self, t, w, dw)
+         y = y + self%amplitude*w*(sin(two_pi*t/self%period + self%phase) - sin(self%phase))*self%direction_y
+      end if
+      x = [p(1), y, p(2)]
+   end function motion_position3
+
+   pure function motion_velocity3(self, t) result(v)
+      class(motion_end), intent(in) :: self
+      real(dp), intent(in) :: t
+      real(dp) :: v(3), p(2), w, dw, omega, vy
+      p = self%velocity(t)
+      vy = 0
+      if (self%motion /= 'table') then
+         call start_factor(self, t, w, dw)
+         omega = two_pi/self%period
+         vy = self%amplitude*(dw*(sin(omega*t + self%phase) - sin(self%phase)) + w*omega*cos(omega*t + self%phase)) &
+              *self%direction_y
+      end if
+      v = [p(1), vy, p(2)]
+   end function motion_velocity3
 end module xcable_ends_motion

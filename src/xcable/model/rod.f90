@@ -480,36 +480,55 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n, k
-      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
-      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
+      integer :: n, k
       n = self%n
       call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
-      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
       do k = 2, n - 1
          call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k))
       end do
+      call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
+                      self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
+                      with_jacobian, self%force, self%block)
+      call apply_loads(self, x, dt, theta, with_jacobian)
+      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
+   end subroutine rod_step_system
+
+   !> The cell forces N_c and, with_jacobian, their blocks dN_c/de_c' of a step (rod_step_system's
+   !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
+   !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1.
+   subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, w0, ds, mom, dmom, damping, dt, couple_first, couple_last, &
+                         with_jacobian, force, block)
+      integer, intent(in) :: n
+      class(material_law), intent(in) :: law
+      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), w0(n - 1), ds(n - 1), mom(n), &
+                              dmom(n), damping, dt, couple_first, couple_last
+      logical, intent(in) :: with_jacobian
+      real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
+      integer :: c
+      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
+      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
+      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
       do c = 1, n - 1
-         associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
+         associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
             ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
             eps0 = l0 - 1
             eps1 = l1 - 1
             h = eps1 - eps0
             if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
-               q = self%law%tension(mid) + self%law%stiffness_slope(mid)*h*h/24
-               dq = 0.5_dp*self%law%stiffness(mid) + self%law%stiffness_slope(mid)*h/12
+               q = law%tension(mid) + law%stiffness_slope(mid)*h*h/24
+               dq = 0.5_dp*law%stiffness(mid) + law%stiffness_slope(mid)*h/12
             else
-               q = (self%law%strain_energy(eps1) - self%w0(c))/h
-               dq = (self%law%tension(eps1) - q)/h
+               q = (law%strain_energy(eps1) - w0(c))/h
+               dq = (law%tension(eps1) - q)/h
             end if
             lsum = l0 + l1
             wsum = e0 + e1
             ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
             ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
-            q = q + self%damping*h/dt
-            dq = dq + self%damping/dt
-            self%force(:, c) = q*wsum/lsum
+            q = q + damping*h/dt
+            dq = dq + damping/dt
+            force(:, c) = q*wsum/lsum
             ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
             em = 0.5_dp*wsum
             cross01 = cross2(e0, e1)
@@ -523,24 +542,27 @@ contains
             end if
             g = rho/(l0*l1)
             gvec = perp(em)*g
-            couple = cell_couple(self, c, t0, t0 + dt)
-            s_c = self%mom(c) - self%mom(c + 1) - couple
-            self%force(:, c) = self%force(:, c) + s_c/self%ds(c)*gvec
+            couple = 0
+            if (c == 1) then
+               couple = couple_first
+            else if (c == n - 1) then
+               couple = couple_last
+            end if
+            s_c = mom(c) - mom(c + 1) - couple
+            force(:, c) = force(:, c) + s_c/ds(c)*gvec
             if (.not. with_jacobian) cycle
             ds_dq = dq*e1/l1
             dstrain = outer(wsum/lsum, ds_dq) + q*(identity2()/lsum - outer(wsum, e1/l1)/lsum**2)
             dphi_de = perp(e1)/l1**2
             dg_de = drho*dphi_de/(l0*l1) - rho/(l0*l1**2)*e1/l1
             dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
-            ds_de = moment_difference_gradient(self, c)
-            self%block(:, :, 0, c) = dstrain + s_c/self%ds(c)*dgvec + outer(gvec, ds_de(:, 0))/self%ds(c)
-            self%block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/self%ds(c)
-            self%block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/self%ds(c)
+            ds_de = moment_gradient_of(n, c, e1_, l1_, dmom)
+            block(:, :, 0, c) = dstrain + s_c/ds(c)*dgvec + outer(gvec, ds_de(:, 0))/ds(c)
+            block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/ds(c)
+            block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/ds(c)
          end associate
       end do
-      call apply_loads(self, x, dt, theta, with_jacobian)
-      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
-   end subroutine rod_step_system
+   end subroutine cell_terms
 
    !> d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1 (columns -1:1), with the moments' derivatives
    !> dmom with respect to the new turning angles (statics and steps alike): the turning
@@ -548,18 +570,26 @@ contains
    pure function moment_difference_gradient(self, c) result(d)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: c
+      real(dp) :: d(2, -1:1)
+      d = moment_gradient_of(self%n, c, self%e1, self%l1, self%dmom)
+   end function moment_difference_gradient
+
+   !> moment_difference_gradient on explicit-shape arrays.
+   pure function moment_gradient_of(n, c, e1, l1, dmom) result(d)
+      integer, intent(in) :: n, c
+      real(dp), intent(in) :: e1(2, n - 1), l1(n - 1), dmom(n)
       real(dp) :: d(2, -1:1), dth(2)
       d = 0
-      dth = perp(self%e1(:, c))/self%l1(c)**2
+      dth = perp(e1(:, c))/l1(c)**2
       if (c >= 2) then
-         d(:, 0) = d(:, 0) + self%dmom(c)*dth
-         d(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+         d(:, 0) = d(:, 0) + dmom(c)*dth
+         d(:, -1) = -dmom(c)*perp(e1(:, c - 1))/l1(c - 1)**2
       end if
-      if (c + 1 <= self%n - 1) then
-         d(:, 0) = d(:, 0) + self%dmom(c + 1)*dth
-         d(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+      if (c + 1 <= n - 1) then
+         d(:, 0) = d(:, 0) + dmom(c + 1)*dth
+         d(:, 1) = -dmom(c + 1)*perp(e1(:, c + 1))/l1(c + 1)**2
       end if
-   end function moment_difference_gradient
+   end function moment_gradient_of
 
    !> The distributed loads at the positions x: each cell's force (the load per
    !> unstretched length times ds) goes half to each of its nodes. In a step

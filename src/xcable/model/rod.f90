@@ -182,7 +182,8 @@ contains
       !> Vector.
       real(dp), intent(in) :: a(2)
       real(dp) :: p(2)
-      p = [-a(2), a(1)]
+      p(1) = -a(2)
+      p(2) = a(1)
    end function perp
 
    !> Scalar cross product a x b = a1 b2 - a2 b1.
@@ -833,7 +834,7 @@ contains
       real(dp), intent(inout) :: ab(ldab, 2*n)
       real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
       logical, intent(in) :: held_a, held_b, dynamic
-      integer :: c, cp, side, node, col, row, k, a, j
+      integer :: c, cp, side, node, col, row, k, a
       real(dp) :: sgn, blk(2, 2)
       do c = 1, n - 1
          do cp = max(1, c - 1), min(n - 1, c + 1)
@@ -866,9 +867,11 @@ contains
          if (k == n .and. held_b) cycle
          do a = 1, 2
             row = 2*(k - 1) + a
-            do j = max(-2, 1 - k), min(2, n - k)
-               ab(band0 - 2*j, row + 2*j) = ab(band0 - 2*j, row + 2*j) + mass(abs(j), min(k, k + j))*rate*scale
-            end do
+            if (k >= 3) ab(band0 + 4, row - 4) = ab(band0 + 4, row - 4) + mass(2, k - 2)*rate*scale
+            if (k >= 2) ab(band0 + 2, row - 2) = ab(band0 + 2, row - 2) + mass(1, k - 1)*rate*scale
+            ab(band0, row) = ab(band0, row) + mass(0, k)*rate*scale
+            if (k <= n - 1) ab(band0 - 2, row + 2) = ab(band0 - 2, row + 2) + mass(1, k)*rate*scale
+            if (k <= n - 2) ab(band0 - 4, row + 4) = ab(band0 - 4, row + 4) + mass(2, k)*rate*scale
          end do
       end do
    end subroutine add_jacobian

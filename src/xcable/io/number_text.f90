@@ -1,9 +1,9 @@
 !> Real numbers as text in the Fortran edit descriptor ESw.d, the same
-!> characters as gfortran's formatted write, about 20 times cheaper.
+!> characters as gfortran's formatted write, about 8 times cheaper.
 !>
 !> Why: gfortran's formatted output costs about 5 000 instructions per
 !> number (the format interpreter, then snprintf), and the gnuplot text of a
-!> run (snapshots and history) writes tens of thousands of numbers: 10 % of
+!> run (snapshots and history) writes tens of thousands of numbers: 9 % of
 !> fast_180kN's instructions as shipped (docs/speed.md).
 !>
 !> How: |x| = m 2^e2 with m < 2^53 an integer. The d + 1 significant digits

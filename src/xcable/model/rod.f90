@@ -42,7 +42,7 @@
 !> after node; the momentum balance of node k involves nodes k-2 .. k+2, so
 !> the Jacobian has kl = ku = 5. A held end's rows are R = X(t).
 module xcable_model_rod
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, stat_numerics
    use xcable_strings, only: str
    use xcable_material_law, only: material_law
@@ -98,8 +98,15 @@ module xcable_model_rod
       real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
       !> Old level's strain energy per unstretched length of each cell, J/m, and bending energy of
       !> each node, J: the fixed ends of the divided differences, evaluated once per step by
-      !> prepare_step instead of at every Newton iteration (3 % of fast_180kN's instructions).
+      !> prepare_step instead of at every Newton iteration (2 % of fast_180kN's instructions).
       real(dp), allocatable :: w0(:), b0(:)
+      !> The last step evaluation's positions x, its geometry, and the strain and bending
+      !> energies it computed (memo_w_ok, memo_b_ok: where it computed them): prepare_step
+      !> takes the old level from here when r0 is x bit for bit (the accepted state, whose
+      !> geometry and energies would otherwise be computed again; 3 % of fast_180kN).
+      real(dp), allocatable :: memo_x(:), memo_e(:, :), memo_l(:), memo_th(:), memo_w(:), memo_b(:)
+      logical, allocatable :: memo_w_ok(:), memo_b_ok(:)
+      logical :: memo_valid = .false.
       !> New level: cell vectors, lengths, turning angles, cell forces; work (2, n).
       real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :)
       !> Cell quantities of the Jacobian: 2x2 blocks dN_c/de_c' for c' = c-1, c, c+1.
@@ -252,6 +259,9 @@ contains
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       allocate (self%w0(n - 1), self%b0(n))
       call old_energies(self)
+      allocate (self%memo_x(2*n), self%memo_e(2, n - 1), self%memo_l(n - 1), self%memo_th(n), self%memo_w(n - 1), &
+                self%memo_b(n), self%memo_w_ok(n - 1), self%memo_b_ok(n))
+      self%memo_valid = .false.
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
       self%v1 = 0
       allocate (self%load_node(2, n), self%load_block(2, 2, 0:1, n - 1))
@@ -436,18 +446,67 @@ contains
       self%r0 = r0
       self%v0 = v0
       call self%mass_times(v0, self%mv0)
-      call self%geometry(r0, self%e0, self%l0, self%th0)
-      call old_energies(self)
+      if (is_memo(self, r0)) then
+         call copy_geometry(self%n, self%memo_e, self%memo_l, self%memo_th, self%e0, self%l0, self%th0)
+         call old_energies(self, self%memo_w, self%memo_w_ok, self%memo_b, self%memo_b_ok)
+      else
+         call self%geometry(r0, self%e0, self%l0, self%th0)
+         call old_energies(self)
+      end if
    end subroutine rod_prepare_step
 
-   !> w0 and b0 from the old level's lengths and turning angles.
-   subroutine old_energies(self)
+   !> Copy a geometry (explicit shapes: a plain copy, not one through the
+   !> descriptors of class components).
+   pure subroutine copy_geometry(n, e, l, th, e_to, l_to, th_to)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: e(2, n - 1), l(n - 1), th(n)
+      real(dp), intent(out) :: e_to(2, n - 1), l_to(n - 1), th_to(n)
+      e_to = e
+      l_to = l
+      th_to = th
+   end subroutine copy_geometry
+
+   !> Copy m values.
+   pure subroutine copy_values(m, a, a_to)
+      integer, intent(in) :: m
+      real(dp), intent(in) :: a(m)
+      real(dp), intent(out) :: a_to(m)
+      a_to = a
+   end subroutine copy_values
+
+   !> Whether positions r are those of the last step evaluation, bit for bit.
+   logical function is_memo(self, r)
+      class(rod_piece), intent(in) :: self
+      real(dp), intent(in) :: r(:, :)
+      is_memo = .false.
+      if (.not. self%memo_valid) return
+      if (size(r) /= size(self%memo_x)) return
+      is_memo = all(transfer(r, [0_i8]) == transfer(self%memo_x, [0_i8]))
+   end function is_memo
+
+   !> w0 and b0 from the old level's lengths and turning angles, or where given
+   !> (w_ok, b_ok) from w and b, the same values computed by the last evaluation.
+   subroutine old_energies(self, w, w_ok, b, b_ok)
       class(rod_piece), intent(inout) :: self
+      real(dp), intent(in), optional :: w(:), b(:)
+      logical, intent(in), optional :: w_ok(:), b_ok(:)
       integer :: c, k
       do c = 1, self%n - 1
+         if (present(w)) then
+            if (w_ok(c)) then
+               self%w0(c) = w(c)
+               cycle
+            end if
+         end if
          self%w0(c) = self%law%strain_energy(self%l0(c) - 1)
       end do
       do k = 1, self%n
+         if (present(b)) then
+            if (b_ok(k)) then
+               self%b0(k) = b(k)
+               cycle
+            end if
+         end if
          self%b0(k) = bend_energy(self, k, self%th0(k))
       end do
    end subroutine old_energies
@@ -485,12 +544,17 @@ contains
       integer :: n, k
       n = self%n
       call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
+      call copy_values(2*n, x, self%memo_x)
+      call copy_geometry(n, self%e1, self%l1, self%th1, self%memo_e, self%memo_l, self%memo_th)
+      self%memo_b_ok = .false.
       do k = 2, n - 1
-         call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k))
+         call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k), &
+                           self%memo_b(k), self%memo_b_ok(k))
       end do
       call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
                       self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
-                      with_jacobian, self%force, self%block)
+                      with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok)
+      self%memo_valid = .true.
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
    end subroutine rod_step_system
@@ -499,13 +563,16 @@ contains
    !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
    !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1.
    subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, w0, ds, mom, dmom, damping, dt, couple_first, couple_last, &
-                         with_jacobian, force, block)
+                         with_jacobian, force, block, w1, w1_ok)
       integer, intent(in) :: n
       class(material_law), intent(in) :: law
       real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), w0(n - 1), ds(n - 1), mom(n), &
                               dmom(n), damping, dt, couple_first, couple_last
       logical, intent(in) :: with_jacobian
       real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
+      !> W(eps1) of each cell where it was computed (w1_ok).
+      real(dp), intent(out) :: w1(n - 1)
+      logical, intent(out) :: w1_ok(n - 1)
       integer :: c
       real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
       real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
@@ -520,8 +587,12 @@ contains
                mid = 0.5_dp*(eps0 + eps1)
                q = law%tension(mid) + law%stiffness_slope(mid)*h*h/24
                dq = 0.5_dp*law%stiffness(mid) + law%stiffness_slope(mid)*h/12
+               w1(c) = 0
+               w1_ok(c) = .false.
             else
-               q = (law%strain_energy(eps1) - w0(c))/h
+               w1(c) = law%strain_energy(eps1)
+               w1_ok(c) = .true.
+               q = (w1(c) - w0(c))/h
                dq = (law%tension(eps1) - q)/h
             end if
             lsum = l0 + l1
@@ -687,12 +758,15 @@ contains
    !> The discrete gradient of the bending energy of node k between the turning
    !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
    !> (Taylor forms when the two are close).
-   pure subroutine bend_divided(self, k, th0, th1, b0, m, dm)
+   pure subroutine bend_divided(self, k, th0, th1, b0, m, dm, b1, b1_ok)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       !> Old and new turning angle, and the old one's bending energy B(th0).
       real(dp), intent(in) :: th0, th1, b0
       real(dp), intent(out) :: m, dm
+      !> B(th1) when it was computed (b1_ok).
+      real(dp), intent(out) :: b1
+      logical, intent(out) :: b1_ok
       real(dp) :: h, mid, t, third
       h = th1 - th0
       if (abs(h) < small_rotation) then
@@ -702,8 +776,12 @@ contains
          third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
          m = bend_moment(self, k, mid) + third*h*h/24
          dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12
+         b1 = 0
+         b1_ok = .false.
       else
-         m = (bend_energy(self, k, th1) - b0)/h
+         b1 = bend_energy(self, k, th1)
+         b1_ok = .true.
+         m = (b1 - b0)/h
          dm = (bend_moment(self, k, th1) - m)/h
       end if
    end subroutine bend_divided

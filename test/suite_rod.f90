@@ -179,8 +179,9 @@ contains
 
    !> prepare_step takes the old level's geometry and energies from the last
    !> step evaluation when the positions are those of that evaluation (the
-   !> accepted state), and computes them otherwise (a rejected attempt): both
-   !> give, bit for bit, what a piece that never evaluated computes. The state
+   !> accepted state), and computes them otherwise (a rejected attempt); so do
+   !> geometry and energies (the ledger): all give, bit for bit, what a piece
+   !> that never evaluated computes. The state
    !> moves only two nodes, so that most nodes take the Taylor branches, where
    !> the evaluation computes no energy.
    subroutine test_old_level_memo(error)
@@ -188,6 +189,8 @@ contains
       type(rod_problem) :: p, fresh
       type(band_matrix) :: jac
       real(dp), allocatable :: x(:), r0(:, :), v0(:, :), res(:), x_new(:)
+      real(dp) :: e_memo(2, n - 1), l_memo(n - 1), th_memo(n), e_fresh(2, n - 1), l_fresh(n - 1), th_fresh(n)
+      real(dp) :: en_memo(4), en_fresh(4)
       integer :: attempt
       call make_piece(p, x, r0, v0, 1.0_dp, 0.0_dp, .false., .false.)
       x_new = reshape(r0, [2*n])
@@ -204,6 +207,15 @@ contains
          ! Attempt 1: accepted, the next step starts from x_new; attempt 2: rejected, again from r0.
          fresh = p
          fresh%piece%memo_valid = .false.
+         ! The geometry and energies of the evaluated state (the ledger's), from the memo.
+         call p%piece%geometry(reshape(x_new, [2, n]), e_memo, l_memo, th_memo)
+         call fresh%piece%geometry(reshape(x_new, [2, n]), e_fresh, l_fresh, th_fresh)
+         en_memo = p%piece%energies(reshape(x_new, [2, n]), v0, l_memo, th_memo)
+         en_fresh = fresh%piece%energies(reshape(x_new, [2, n]), v0, l_fresh, th_fresh)
+         call check(error, same(l_memo, l_fresh) .and. same(th_memo, th_fresh) .and. &
+                    same(reshape(e_memo, [2*(n - 1)]), reshape(e_fresh, [2*(n - 1)])) .and. same(en_memo, en_fresh), &
+                    'geometry or energies of the evaluated state differ from the ones computed afresh')
+         if (allocated(error)) return
          if (attempt == 1) then
             call p%piece%prepare_step(reshape(x_new, [2, n]), v0)
             call fresh%piece%prepare_step(reshape(x_new, [2, n]), v0)

@@ -103,7 +103,8 @@ module xcable_model_rod
       !> The last step evaluation's positions x, its geometry, and the strain and bending
       !> energies it computed (memo_w_ok, memo_b_ok: where it computed them): prepare_step
       !> takes the old level from here when r0 is x bit for bit (the accepted state, whose
-      !> geometry and energies would otherwise be computed again; 3 % of fast_180kN).
+      !> geometry and energies would otherwise be computed again; rod_geometry and rod_energies,
+      !> the ledger's, take them too: 6 % of fast_180kN).
       real(dp), allocatable :: memo_x(:), memo_e(:, :), memo_l(:), memo_th(:), memo_w(:), memo_b(:)
       logical, allocatable :: memo_w_ok(:), memo_b_ok(:)
       logical :: memo_valid = .false.
@@ -301,7 +302,12 @@ contains
       real(dp), intent(in) :: r(:, :)
       !> Cell vectors (2, n - 1), lengths (n - 1) and turning angles (n; 0 at the ends), rad.
       real(dp), intent(out) :: e(:, :), l(:), th(:)
-      call geometry_of(self%n, self%ds, r, e, l, th)
+      ! The positions of the last step evaluation (the accepted state): its geometry, the same bits.
+      if (is_memo(self, r)) then
+         call copy_geometry(self%n, self%memo_e, self%memo_l, self%memo_th, e, l, th)
+      else
+         call geometry_of(self%n, self%ds, r, e, l, th)
+      end if
    end subroutine rod_geometry
 
    !> rod_geometry on explicit-shape arrays (the compiler keeps their addresses in registers).
@@ -371,8 +377,17 @@ contains
       real(dp), intent(in) :: l(:), th(:)
       real(dp) :: en(4)
       integer :: k, c
+      logical :: memo
+      ! At the last step evaluation's positions, the energies it computed (the same bits).
+      memo = is_memo(self, r)
       en = 0
       do c = 1, self%n - 1
+         if (memo) then
+            if (self%memo_w_ok(c) .and. same_bits(l(c), self%memo_l(c))) then
+               en(1) = en(1) + self%ds(c)*self%memo_w(c)
+               cycle
+            end if
+         end if
          en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
       end do
       do k = 1, self%n
@@ -386,6 +401,12 @@ contains
          en(2) = en(2) + self%mass(2, k)*dot_product(v(:, k), v(:, k + 2))
       end do
       do k = 2, self%n - 1
+         if (memo) then
+            if (self%memo_b_ok(k) .and. same_bits(th(k), self%memo_th(k))) then
+               en(3) = en(3) + self%memo_b(k)
+               cycle
+            end if
+         end if
          en(3) = en(3) + bend_energy(self, k, th(k))
       end do
    end function rod_energies
@@ -475,14 +496,26 @@ contains
    end subroutine copy_values
 
    !> Whether positions r are those of the last step evaluation, bit for bit.
-   logical function is_memo(self, r)
+   pure logical function is_memo(self, r)
       class(rod_piece), intent(in) :: self
       real(dp), intent(in) :: r(:, :)
+      integer :: i, k
       is_memo = .false.
       if (.not. self%memo_valid) return
-      if (size(r) /= size(self%memo_x)) return
-      is_memo = all(transfer(r, [0_i8]) == transfer(self%memo_x, [0_i8]))
+      if (size(r, 1) /= 2 .or. size(r) /= size(self%memo_x)) return
+      do k = 1, size(r, 2)
+         do i = 1, 2
+            if (.not. same_bits(r(i, k), self%memo_x(2*k - 2 + i))) return
+         end do
+      end do
+      is_memo = .true.
    end function is_memo
+
+   !> Whether a and b are the same number to the bit (unlike ==, which takes -0 for +0).
+   elemental logical function same_bits(a, b)
+      real(dp), intent(in) :: a, b
+      same_bits = transfer(a, 0_i8) == transfer(b, 0_i8)
+   end function same_bits
 
    !> w0 and b0 from the old level's lengths and turning angles, or where given
    !> (w_ok, b_ok) from w and b, the same values computed by the last evaluation.

@@ -10,6 +10,7 @@ module suite_output
    use xcable_io_output, only: result_file
    use xcable_version, only: code_version
    use xcable_error, only: stat_input
+   use xcable_io_number_text, only: put_es, put_int
    use hdf5
    implicit none
    private
@@ -23,7 +24,8 @@ contains
                new_unittest('result_file_status_and_errors', test_result_file), &
                new_unittest('echo_above_64_kb', test_large_echo), &
                new_unittest('version_matches_fpm_toml', test_version), &
-               new_unittest('reopen_to_resume', test_reopen)]
+               new_unittest('reopen_to_resume', test_reopen), &
+               new_unittest('number_text_as_formatted_write', test_number_text)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -347,4 +349,67 @@ contains
       open (newunit=unit, file=path, status='old', iostat=ios)
       if (ios == 0) close (unit, status='delete')
    end subroutine delete_file
+
+   !> put_es and put_int give the characters of gfortran's ESw.d and Iw:
+   !> 200 000 numbers per descriptor, of magnitudes 1e-50 to 1e50, with
+   !> ties at the last digit (exact binary values ending in 5), powers of ten
+   !> and their neighbours, values that round up to the next power, zeros of
+   !> both signs, and the numbers written through the formatted write
+   !> (beyond the exponent range, not finite).
+   subroutine test_number_text(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: w(4) = [16, 17, 14, 23], d(4) = [8, 9, 6, 16]
+      real(dp), allocatable :: xs(:)
+      real(dp) :: r, zero
+      character(len=40) :: expected, got, fmt
+      integer :: i, f, pos, seed_size, n, ints(9)
+      integer, allocatable :: seed(:)
+      call random_seed(size=seed_size)
+      seed = [(104729*i, i=1, seed_size)]
+      call random_seed(put=seed)
+      n = 200000
+      allocate (xs(n))
+      do i = 1, n
+         call random_number(r)
+         xs(i) = (r - 0.5_dp)*10.0_dp**(int(r*1.0e6_dp)/10000 - 50)
+         if (mod(i, 7) == 0) xs(i) = anint(xs(i)*1.0e3_dp)/1.0e3_dp
+         if (mod(i, 11) == 0) xs(i) = 10.0_dp**(mod(i, 60) - 30)
+         if (mod(i, 13) == 0) xs(i) = nearest(10.0_dp**(mod(i, 60) - 30), merge(1.0_dp, -1.0_dp, mod(i, 2) == 0))
+         ! Integers ending in 5 (ties of the 9- and 10-digit descriptors) and halves.
+         if (mod(i, 17) == 0) xs(i) = real(int(r*1.0e6_dp)*10000 + 5, dp) + merge(0.5_dp, 0.0_dp, mod(i, 3) == 0)
+         if (mod(i, 19) == 0) xs(i) = real(mod(i, 1000), dp)/8
+         if (mod(i, 23) == 0) xs(i) = 9.9999999995_dp*10.0_dp**(mod(i, 10) - 5)
+         if (mod(i, 29) == 0) xs(i) = -xs(i)
+      end do
+      zero = 0
+      xs(1:10) = [0.0_dp, -zero, huge(1.0_dp), tiny(1.0_dp), 1.0e100_dp, -1.0e-100_dp, 123456789.5_dp, &
+                  123456788.5_dp, 1234567895.0_dp, zero/zero]
+      xs(11:12) = [1/zero, -1/zero]
+      do f = 1, size(w)
+         write (fmt, '(a,i0,a,i0,a)') '(es', w(f), '.', d(f), ')'
+         do i = 1, n
+            expected = ''
+            got = ''
+            write (expected(1:w(f)), fmt) xs(i)
+            pos = 1
+            call put_es(got, pos, xs(i), w(f), d(f))
+            if (got /= expected .or. pos /= w(f) + 1) then
+               call check(error, .false., 'put_es('//trim(fmt)//') of '//str(xs(i))//': "'//got(1:w(f))// &
+                          '", formatted write "'//expected(1:w(f))//'"')
+               return
+            end if
+         end do
+      end do
+      ints = [0, 1, 9, 10, 25, 999, 9999, 10000, -3]
+      do i = 1, size(ints)
+         expected = ''
+         got = ''
+         write (expected(1:4), '(i4)') ints(i)
+         pos = 1
+         call put_int(got, pos, ints(i), 4)
+         call check(error, got == expected .and. pos == 5, 'put_int(i4) of '//str(ints(i))//': "'//got(1:4)// &
+                    '", formatted write "'//expected(1:4)//'"')
+         if (allocated(error)) return
+      end do
+   end subroutine test_number_text
 end module suite_output

@@ -3,7 +3,7 @@
 !> check every model shares; and the discrete gradient, which must give the
 !> exact change of the stored energy for any two states.
 module suite_rod
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
    use xcable_strings, only: str
    use xcable_material_law, only: tanh_law, linear_law
@@ -32,7 +32,8 @@ contains
                new_unittest('jacobian_step_lumped_theta_0.7', test_step_lumped), &
                new_unittest('jacobian_step_mass_ends_tension_only', test_step_mass_ends), &
                new_unittest('jacobian_step_table_law_damping', test_step_table_damping), &
-               new_unittest('discrete_gradient_exact', test_discrete_gradient)]
+               new_unittest('discrete_gradient_exact', test_discrete_gradient), &
+               new_unittest('old_level_from_last_evaluation', test_old_level_memo)]
    end subroutine collect_rod
 
    !> A piece of 9 nodes: end a held (fixed or moving), end b loaded (force
@@ -175,4 +176,67 @@ contains
       write (output_unit, '(4x,a,es9.2)') 'discrete gradient: largest |work - dU| / |U| over 20 random steps', worst
       call check(error, worst < 1.0e-13_dp, 'the discrete gradient misses the energy change by '//str(worst)//' of U')
    end subroutine test_discrete_gradient
+
+   !> prepare_step takes the old level's geometry and energies from the last
+   !> step evaluation when the positions are those of that evaluation (the
+   !> accepted state), and computes them otherwise (a rejected attempt); so do
+   !> geometry and energies (the ledger): all give, bit for bit, what a piece
+   !> that never evaluated computes. The state
+   !> moves only two nodes, so that most nodes take the Taylor branches, where
+   !> the evaluation computes no energy.
+   subroutine test_old_level_memo(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p, fresh
+      type(band_matrix) :: jac
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :), res(:), x_new(:)
+      real(dp) :: e_memo(2, n - 1), l_memo(n - 1), th_memo(n), e_fresh(2, n - 1), l_fresh(n - 1), th_fresh(n)
+      real(dp) :: en_memo(4), en_fresh(4)
+      integer :: attempt
+      call make_piece(p, x, r0, v0, 1.0_dp, 0.0_dp, .false., .false.)
+      x_new = reshape(r0, [2*n])
+      x_new(7:8) = x_new(7:8) + [0.05_dp, -0.03_dp]
+      x_new(13:14) = x_new(13:14) + [-0.02_dp, 0.04_dp]
+      call jac%init(2*n, rod_kl, rod_ku)
+      allocate (res(2*n))
+      do attempt = 1, 2
+         call p%piece%prepare_step(r0, v0)
+         p%dt = 1.0e-3_dp
+         p%t0 = 0.002_dp
+         p%theta = 0.5_dp
+         call p%evaluate(x_new, res, jac, .false.)
+         ! Attempt 1: accepted, the next step starts from x_new; attempt 2: rejected, again from r0.
+         fresh = p
+         fresh%piece%memo_valid = .false.
+         ! The geometry and energies of the evaluated state (the ledger's), from the memo.
+         call p%piece%geometry(reshape(x_new, [2, n]), e_memo, l_memo, th_memo)
+         call fresh%piece%geometry(reshape(x_new, [2, n]), e_fresh, l_fresh, th_fresh)
+         en_memo = p%piece%energies(reshape(x_new, [2, n]), v0, l_memo, th_memo)
+         en_fresh = fresh%piece%energies(reshape(x_new, [2, n]), v0, l_fresh, th_fresh)
+         call check(error, same(l_memo, l_fresh) .and. same(th_memo, th_fresh) .and. &
+                    same(reshape(e_memo, [2*(n - 1)]), reshape(e_fresh, [2*(n - 1)])) .and. same(en_memo, en_fresh), &
+                    'geometry or energies of the evaluated state differ from the ones computed afresh')
+         if (allocated(error)) return
+         if (attempt == 1) then
+            call p%piece%prepare_step(reshape(x_new, [2, n]), v0)
+            call fresh%piece%prepare_step(reshape(x_new, [2, n]), v0)
+         else
+            call p%piece%prepare_step(r0, v0)
+            call fresh%piece%prepare_step(r0, v0)
+         end if
+         call check(error, same(p%piece%l0, fresh%piece%l0) .and. same(p%piece%th0, fresh%piece%th0) .and. &
+                    same(reshape(p%piece%e0, [2*(n - 1)]), reshape(fresh%piece%e0, [2*(n - 1)])) .and. &
+                    same(p%piece%w0, fresh%piece%w0) .and. same(p%piece%b0, fresh%piece%b0), &
+                    'old level after an evaluation ('//merge('accepted', 'rejected', attempt == 1)// &
+                    ') differs from the one computed afresh')
+         if (allocated(error)) return
+      end do
+      call check(error, count(p%piece%memo_b_ok) > 0 .and. count(.not. p%piece%memo_b_ok(2:n - 1)) > 0 .and. &
+                 count(p%piece%memo_w_ok) > 0 .and. count(.not. p%piece%memo_w_ok) > 0, &
+                 'the test state does not mix Taylor and divided-difference branches')
+   contains
+      logical function same(a, b)
+         real(dp), intent(in) :: a(:), b(:)
+         same = all(transfer(a, [0_i8]) == transfer(b, [0_i8]))
+      end function same
+   end subroutine test_old_level_memo
 end module suite_rod

@@ -32,11 +32,17 @@ module xcable_io_output
                              get_text_attr, get_int_attr, delete_attr
    use xcable_system_posix, only: replace_file
    use xcable_version, only: code_version
+   use xcable_io_number_text, only: put_es, put_int
    use hdf5
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
    private
    public :: result_file
+
+   !> Fields of the gnuplot snapshot columns 2-9 (x z tension strain u v shear curvature).
+   integer, parameter :: text_columns(8) = [6, 7, 1, 3, 4, 5, 2, 8]
+   !> Energies of the history columns 5-11 (strain kinetic bending gravity work ledger dissipation).
+   integer, parameter :: ledger_columns(7) = [1, 2, 3, 4, 5, 7, 6]
 
    !> An open result file; receives the static state and the snapshots of a run.
    type, extends(run_observer) :: result_file
@@ -501,8 +507,9 @@ contains
       real(dp), intent(in) :: fields(:, :)
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
-      integer :: i, k, hdferr
+      integer :: i, k, hdferr, pos, q
       logical :: ok
+      character(len=9*16) :: line
       ok = .true.
       self%snapshots = self%snapshots + 1
       call append(self%file, 'time', [t], 1, ok)
@@ -519,9 +526,13 @@ contains
          write (self%text_unit, '(a,es14.6)') '# t = ', t
          do k = 1, size(self%s)
             if (any(self%piece_starts == k)) write (self%text_unit, '(a)') ''
-            ! columns: s x z tension strain u v shear curvature
-            write (self%text_unit, '(9es16.8)') self%s(k), fields(k, 6), fields(k, 7), fields(k, 1), fields(k, 3), &
-               fields(k, 4), fields(k, 5), fields(k, 2), fields(k, 8)
+            ! columns: s x z tension strain u v shear curvature, as '(9es16.8)' (put_es)
+            pos = 1
+            call put_es(line, pos, self%s(k), 16, 8)
+            do q = 1, 8
+               call put_es(line, pos, fields(k, text_columns(q)), 16, 8)
+            end do
+            write (self%text_unit, '(a)') line
          end do
          flush (self%text_unit)
       end if
@@ -536,9 +547,9 @@ contains
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
       integer(hid_t) :: group, egroup
-      integer :: hdferr, n, i, j, q, unit, ios, n_ends
+      integer :: hdferr, n, i, j, q, unit, ios, n_ends, pos
       logical :: ok
-      character(:), allocatable :: header
+      character(:), allocatable :: header, line
       n = history%n
       n_ends = size(history%end_labels)
       call h5gcreate_f(self%file, 'history', group, hdferr)
@@ -596,20 +607,28 @@ contains
          header = header//' (no energy ledger)'
       end if
       write (unit, '(a)') header
+      ! One line per record, as '(3es16.8,i4,7es17.9,<3 n_ends>es16.8[,es17.9])' (put_es).
+      allocate (character(len=3*16 + 4 + 8*17 + 3*16*n_ends) :: line)
       do i = 0, n
-         write (unit, '(3es16.8,i4)', advance='no') history%time(i), end_b_u(i), history%ends(5, 1, i), &
-            history%newton_iterations(i)
-         if (allocated(history%energy)) then
-            write (unit, '(7es17.9)', advance='no') history%energy(1:5, i), history%energy(7, i), history%energy(6, i)
-         else
-            write (unit, '(7es17.9)', advance='no') (0.0_dp, q=1, 7)
-         end if
-         do j = 1, n_ends
-            write (unit, '(3es16.8)', advance='no') norm2(history%ends(3:4, j, i)), history%ends(5, j, i), &
-               norm2(history%ends(6:7, j, i))
+         pos = 1
+         call put_es(line, pos, history%time(i), 16, 8)
+         call put_es(line, pos, end_b_u(i), 16, 8)
+         call put_es(line, pos, history%ends(5, 1, i), 16, 8)
+         call put_int(line, pos, history%newton_iterations(i), 4)
+         do q = 1, 7
+            if (allocated(history%energy)) then
+               call put_es(line, pos, history%energy(ledger_columns(q), i), 17, 9)
+            else
+               call put_es(line, pos, 0.0_dp, 17, 9)
+            end if
          end do
-         if (allocated(history%energy)) write (unit, '(es17.9)', advance='no') history%energy(8, i)
-         write (unit, '(a)') ''
+         do j = 1, n_ends
+            call put_es(line, pos, norm2(history%ends(3:4, j, i)), 16, 8)
+            call put_es(line, pos, history%ends(5, j, i), 16, 8)
+            call put_es(line, pos, norm2(history%ends(6:7, j, i)), 16, 8)
+         end do
+         if (allocated(history%energy)) call put_es(line, pos, history%energy(8, i), 17, 9)
+         write (unit, '(a)') line(1:pos - 1)
       end do
       close (unit)
 

@@ -42,7 +42,7 @@
 !> after node; the momentum balance of node k involves nodes k-2 .. k+2, so
 !> the Jacobian has kl = ku = 5. A held end's rows are R = X(t).
 module xcable_model_rod
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, stat_numerics
    use xcable_strings, only: str
    use xcable_material_law, only: material_law
@@ -96,6 +96,18 @@ module xcable_model_rod
       ! Work arrays, allocated once by init.
       !> Old level: positions, velocities, M V, cell vectors, lengths, turning angles.
       real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
+      !> Old level's strain energy per unstretched length of each cell, J/m, and bending energy of
+      !> each node, J: the fixed ends of the divided differences, evaluated once per step by
+      !> prepare_step instead of at every Newton iteration (2 % of fast_180kN's instructions).
+      real(dp), allocatable :: w0(:), b0(:)
+      !> The last step evaluation's positions x, its geometry, and the strain and bending
+      !> energies it computed (memo_w_ok, memo_b_ok: where it computed them): prepare_step
+      !> takes the old level from here when r0 is x bit for bit (the accepted state, whose
+      !> geometry and energies would otherwise be computed again; rod_geometry and rod_energies,
+      !> the ledger's, take them too: 6 % of fast_180kN).
+      real(dp), allocatable :: memo_x(:), memo_e(:, :), memo_l(:), memo_th(:), memo_w(:), memo_b(:)
+      logical, allocatable :: memo_w_ok(:), memo_b_ok(:)
+      logical :: memo_valid = .false.
       !> New level: cell vectors, lengths, turning angles, cell forces; work (2, n).
       real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :)
       !> Cell quantities of the Jacobian: 2x2 blocks dN_c/de_c' for c' = c-1, c, c+1.
@@ -178,7 +190,8 @@ contains
       !> Vector.
       real(dp), intent(in) :: a(2)
       real(dp) :: p(2)
-      p = [-a(2), a(1)]
+      p(1) = -a(2)
+      p(2) = a(1)
    end function perp
 
    !> Scalar cross product a x b = a1 b2 - a2 b1.
@@ -245,6 +258,11 @@ contains
       self%mom = 0
       self%dmom = 0
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
+      allocate (self%w0(n - 1), self%b0(n))
+      call old_energies(self)
+      allocate (self%memo_x(2*n), self%memo_e(2, n - 1), self%memo_l(n - 1), self%memo_th(n), self%memo_w(n - 1), &
+                self%memo_b(n), self%memo_w_ok(n - 1), self%memo_b_ok(n))
+      self%memo_valid = .false.
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
       self%v1 = 0
       allocate (self%load_node(2, n), self%load_block(2, 2, 0:1, n - 1))
@@ -284,16 +302,29 @@ contains
       real(dp), intent(in) :: r(:, :)
       !> Cell vectors (2, n - 1), lengths (n - 1) and turning angles (n; 0 at the ends), rad.
       real(dp), intent(out) :: e(:, :), l(:), th(:)
+      ! The positions of the last step evaluation (the accepted state): its geometry, the same bits.
+      if (is_memo(self, r)) then
+         call copy_geometry(self%n, self%memo_e, self%memo_l, self%memo_th, e, l, th)
+      else
+         call geometry_of(self%n, self%ds, r, e, l, th)
+      end if
+   end subroutine rod_geometry
+
+   !> rod_geometry on explicit-shape arrays (the compiler keeps their addresses in registers).
+   pure subroutine geometry_of(n, ds, r, e, l, th)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: ds(n - 1), r(2, n)
+      real(dp), intent(out) :: e(2, n - 1), l(n - 1), th(n)
       integer :: c, k
-      do c = 1, self%n - 1
-         e(:, c) = (r(:, c + 1) - r(:, c))/self%ds(c)
+      do c = 1, n - 1
+         e(:, c) = (r(:, c + 1) - r(:, c))/ds(c)
          l(c) = norm2(e(:, c))
       end do
       th = 0
-      do k = 2, self%n - 1
+      do k = 2, n - 1
          th(k) = atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
       end do
-   end subroutine rod_geometry
+   end subroutine geometry_of
 
    !> Weight of node k (cable share and point mass), N.
    pure real(dp) function node_weight(self, k)
@@ -312,17 +343,28 @@ contains
       real(dp), intent(in) :: v(:, :)
       !> M V (2, n), kg m/s.
       real(dp), intent(out) :: mv(:, :)
+      call mass_product(self%n, self%mass, v, mv)
+   end subroutine rod_mass_times
+
+   !> M V with the band of M in mass(0:2, n), on explicit-shape arrays: the same
+   !> operations in the same order as on the assumed-shape arrays and the class
+   !> component, in 5 times fewer instructions (callgrind, fast_180kN; the other
+   !> kernels below: 2-3 times; docs/speed.md).
+   pure subroutine mass_product(n, mass, v, mv)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: mass(0:2, n), v(2, n)
+      real(dp), intent(out) :: mv(2, n)
       integer :: k, j
-      do k = 1, self%n
-         mv(:, k) = self%mass(0, k)*v(:, k)
+      do k = 1, n
+         mv(:, k) = mass(0, k)*v(:, k)
       end do
       do j = 1, 2
-         do k = 1, self%n - j
-            mv(:, k) = mv(:, k) + self%mass(j, k)*v(:, k + j)
-            mv(:, k + j) = mv(:, k + j) + self%mass(j, k)*v(:, k)
+         do k = 1, n - j
+            mv(:, k) = mv(:, k) + mass(j, k)*v(:, k + j)
+            mv(:, k + j) = mv(:, k + j) + mass(j, k)*v(:, k)
          end do
       end do
-   end subroutine rod_mass_times
+   end subroutine mass_product
 
    !> Energies of a state: strain, kinetic, bending, gravity (J), from the
    !> geometry e, l, th of R (as rod_geometry gives it).
@@ -335,8 +377,17 @@ contains
       real(dp), intent(in) :: l(:), th(:)
       real(dp) :: en(4)
       integer :: k, c
+      logical :: memo
+      ! At the last step evaluation's positions, the energies it computed (the same bits).
+      memo = is_memo(self, r)
       en = 0
       do c = 1, self%n - 1
+         if (memo) then
+            if (self%memo_w_ok(c) .and. same_bits(l(c), self%memo_l(c))) then
+               en(1) = en(1) + self%ds(c)*self%memo_w(c)
+               cycle
+            end if
+         end if
          en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
       end do
       do k = 1, self%n
@@ -350,6 +401,12 @@ contains
          en(2) = en(2) + self%mass(2, k)*dot_product(v(:, k), v(:, k + 2))
       end do
       do k = 2, self%n - 1
+         if (memo) then
+            if (self%memo_b_ok(k) .and. same_bits(th(k), self%memo_th(k))) then
+               en(3) = en(3) + self%memo_b(k)
+               cycle
+            end if
+         end if
          en(3) = en(3) + bend_energy(self, k, th(k))
       end do
    end function rod_energies
@@ -410,8 +467,82 @@ contains
       self%r0 = r0
       self%v0 = v0
       call self%mass_times(v0, self%mv0)
-      call self%geometry(r0, self%e0, self%l0, self%th0)
+      if (is_memo(self, r0)) then
+         call copy_geometry(self%n, self%memo_e, self%memo_l, self%memo_th, self%e0, self%l0, self%th0)
+         call old_energies(self, self%memo_w, self%memo_w_ok, self%memo_b, self%memo_b_ok)
+      else
+         call self%geometry(r0, self%e0, self%l0, self%th0)
+         call old_energies(self)
+      end if
    end subroutine rod_prepare_step
+
+   !> Copy a geometry (explicit shapes: a plain copy, not one through the
+   !> descriptors of class components).
+   pure subroutine copy_geometry(n, e, l, th, e_to, l_to, th_to)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: e(2, n - 1), l(n - 1), th(n)
+      real(dp), intent(out) :: e_to(2, n - 1), l_to(n - 1), th_to(n)
+      e_to = e
+      l_to = l
+      th_to = th
+   end subroutine copy_geometry
+
+   !> Copy m values.
+   pure subroutine copy_values(m, a, a_to)
+      integer, intent(in) :: m
+      real(dp), intent(in) :: a(m)
+      real(dp), intent(out) :: a_to(m)
+      a_to = a
+   end subroutine copy_values
+
+   !> Whether positions r are those of the last step evaluation, bit for bit.
+   pure logical function is_memo(self, r)
+      class(rod_piece), intent(in) :: self
+      real(dp), intent(in) :: r(:, :)
+      integer :: i, k
+      is_memo = .false.
+      if (.not. self%memo_valid) return
+      if (size(r, 1) /= 2 .or. size(r) /= size(self%memo_x)) return
+      do k = 1, size(r, 2)
+         do i = 1, 2
+            if (.not. same_bits(r(i, k), self%memo_x(2*k - 2 + i))) return
+         end do
+      end do
+      is_memo = .true.
+   end function is_memo
+
+   !> Whether a and b are the same number to the bit (unlike ==, which takes -0 for +0).
+   elemental logical function same_bits(a, b)
+      real(dp), intent(in) :: a, b
+      same_bits = transfer(a, 0_i8) == transfer(b, 0_i8)
+   end function same_bits
+
+   !> w0 and b0 from the old level's lengths and turning angles, or where given
+   !> (w_ok, b_ok) from w and b, the same values computed by the last evaluation.
+   subroutine old_energies(self, w, w_ok, b, b_ok)
+      class(rod_piece), intent(inout) :: self
+      real(dp), intent(in), optional :: w(:), b(:)
+      logical, intent(in), optional :: w_ok(:), b_ok(:)
+      integer :: c, k
+      do c = 1, self%n - 1
+         if (present(w)) then
+            if (w_ok(c)) then
+               self%w0(c) = w(c)
+               cycle
+            end if
+         end if
+         self%w0(c) = self%law%strain_energy(self%l0(c) - 1)
+      end do
+      do k = 1, self%n
+         if (present(b)) then
+            if (b_ok(k)) then
+               self%b0(k) = b(k)
+               cycle
+            end if
+         end if
+         self%b0(k) = bend_energy(self, k, self%th0(k))
+      end do
+   end subroutine old_energies
 
    !> New velocities from the new positions: V^n+1 = [(R^n+1 - R^n)/dt - (1 - theta) V^n] / theta.
    pure subroutine rod_new_velocity(self, r1, dt, theta, v1)
@@ -443,36 +574,67 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n, k
-      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
-      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
+      integer :: n, k
       n = self%n
       call self%geometry(reshape(x, [2, n]), self%e1, self%l1, self%th1)
-      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
+      call copy_values(2*n, x, self%memo_x)
+      call copy_geometry(n, self%e1, self%l1, self%th1, self%memo_e, self%memo_l, self%memo_th)
+      self%memo_b_ok = .false.
       do k = 2, n - 1
-         call bend_divided(self, k, self%th0(k), self%th1(k), self%mom(k), self%dmom(k))
+         call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k), &
+                           self%memo_b(k), self%memo_b_ok(k))
       end do
+      call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
+                      self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
+                      with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok)
+      self%memo_valid = .true.
+      call apply_loads(self, x, dt, theta, with_jacobian)
+      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
+   end subroutine rod_step_system
+
+   !> The cell forces N_c and, with_jacobian, their blocks dN_c/de_c' of a step (rod_step_system's
+   !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
+   !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1.
+   subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, w0, ds, mom, dmom, damping, dt, couple_first, couple_last, &
+                         with_jacobian, force, block, w1, w1_ok)
+      integer, intent(in) :: n
+      class(material_law), intent(in) :: law
+      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), w0(n - 1), ds(n - 1), mom(n), &
+                              dmom(n), damping, dt, couple_first, couple_last
+      logical, intent(in) :: with_jacobian
+      real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
+      !> W(eps1) of each cell where it was computed (w1_ok).
+      real(dp), intent(out) :: w1(n - 1)
+      logical, intent(out) :: w1_ok(n - 1)
+      integer :: c
+      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
+      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
+      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
       do c = 1, n - 1
-         associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
+         associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
             ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
             eps0 = l0 - 1
             eps1 = l1 - 1
             h = eps1 - eps0
             if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
-               q = self%law%tension(mid) + self%law%stiffness_slope(mid)*h*h/24
-               dq = 0.5_dp*self%law%stiffness(mid) + self%law%stiffness_slope(mid)*h/12
+               q = law%tension(mid) + law%stiffness_slope(mid)*h*h/24
+               dq = 0.5_dp*law%stiffness(mid) + law%stiffness_slope(mid)*h/12
+               w1(c) = 0
+               w1_ok(c) = .false.
             else
-               q = (self%law%strain_energy(eps1) - self%law%strain_energy(eps0))/h
-               dq = (self%law%tension(eps1) - q)/h
+               w1(c) = law%strain_energy(eps1)
+               w1_ok(c) = .true.
+               q = (w1(c) - w0(c))/h
+               dq = (law%tension(eps1) - q)/h
             end if
             lsum = l0 + l1
             wsum = e0 + e1
             ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
             ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
-            q = q + self%damping*h/dt
-            dq = dq + self%damping/dt
-            self%force(:, c) = q*wsum/lsum
+            q = q + damping*h/dt
+            dq = dq + damping/dt
+            force(:, c) = q*wsum/lsum
             ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
             em = 0.5_dp*wsum
             cross01 = cross2(e0, e1)
@@ -486,24 +648,27 @@ contains
             end if
             g = rho/(l0*l1)
             gvec = perp(em)*g
-            couple = cell_couple(self, c, t0, t0 + dt)
-            s_c = self%mom(c) - self%mom(c + 1) - couple
-            self%force(:, c) = self%force(:, c) + s_c/self%ds(c)*gvec
+            couple = 0
+            if (c == 1) then
+               couple = couple_first
+            else if (c == n - 1) then
+               couple = couple_last
+            end if
+            s_c = mom(c) - mom(c + 1) - couple
+            force(:, c) = force(:, c) + s_c/ds(c)*gvec
             if (.not. with_jacobian) cycle
             ds_dq = dq*e1/l1
             dstrain = outer(wsum/lsum, ds_dq) + q*(identity2()/lsum - outer(wsum, e1/l1)/lsum**2)
             dphi_de = perp(e1)/l1**2
             dg_de = drho*dphi_de/(l0*l1) - rho/(l0*l1**2)*e1/l1
             dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
-            ds_de = moment_difference_gradient(self, c)
-            self%block(:, :, 0, c) = dstrain + s_c/self%ds(c)*dgvec + outer(gvec, ds_de(:, 0))/self%ds(c)
-            self%block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/self%ds(c)
-            self%block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/self%ds(c)
+            ds_de = moment_gradient_of(n, c, e1_, l1_, dmom)
+            block(:, :, 0, c) = dstrain + s_c/ds(c)*dgvec + outer(gvec, ds_de(:, 0))/ds(c)
+            block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/ds(c)
+            block(:, :, 1, c) = outer(gvec, ds_de(:, 1))/ds(c)
          end associate
       end do
-      call apply_loads(self, x, dt, theta, with_jacobian)
-      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
-   end subroutine rod_step_system
+   end subroutine cell_terms
 
    !> d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1 (columns -1:1), with the moments' derivatives
    !> dmom with respect to the new turning angles (statics and steps alike): the turning
@@ -511,18 +676,26 @@ contains
    pure function moment_difference_gradient(self, c) result(d)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: c
+      real(dp) :: d(2, -1:1)
+      d = moment_gradient_of(self%n, c, self%e1, self%l1, self%dmom)
+   end function moment_difference_gradient
+
+   !> moment_difference_gradient on explicit-shape arrays.
+   pure function moment_gradient_of(n, c, e1, l1, dmom) result(d)
+      integer, intent(in) :: n, c
+      real(dp), intent(in) :: e1(2, n - 1), l1(n - 1), dmom(n)
       real(dp) :: d(2, -1:1), dth(2)
       d = 0
-      dth = perp(self%e1(:, c))/self%l1(c)**2
+      dth = perp(e1(:, c))/l1(c)**2
       if (c >= 2) then
-         d(:, 0) = d(:, 0) + self%dmom(c)*dth
-         d(:, -1) = -self%dmom(c)*perp(self%e1(:, c - 1))/self%l1(c - 1)**2
+         d(:, 0) = d(:, 0) + dmom(c)*dth
+         d(:, -1) = -dmom(c)*perp(e1(:, c - 1))/l1(c - 1)**2
       end if
-      if (c + 1 <= self%n - 1) then
-         d(:, 0) = d(:, 0) + self%dmom(c + 1)*dth
-         d(:, 1) = -self%dmom(c + 1)*perp(self%e1(:, c + 1))/self%l1(c + 1)**2
+      if (c + 1 <= n - 1) then
+         d(:, 0) = d(:, 0) + dmom(c + 1)*dth
+         d(:, 1) = -dmom(c + 1)*perp(e1(:, c + 1))/l1(c + 1)**2
       end if
-   end function moment_difference_gradient
+   end function moment_gradient_of
 
    !> The distributed loads at the positions x: each cell's force (the load per
    !> unstretched length times ds) goes half to each of its nodes. In a step
@@ -618,11 +791,15 @@ contains
    !> The discrete gradient of the bending energy of node k between the turning
    !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
    !> (Taylor forms when the two are close).
-   pure subroutine bend_divided(self, k, th0, th1, m, dm)
+   pure subroutine bend_divided(self, k, th0, th1, b0, m, dm, b1, b1_ok)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
-      real(dp), intent(in) :: th0, th1
+      !> Old and new turning angle, and the old one's bending energy B(th0).
+      real(dp), intent(in) :: th0, th1, b0
       real(dp), intent(out) :: m, dm
+      !> B(th1) when it was computed (b1_ok).
+      real(dp), intent(out) :: b1
+      logical, intent(out) :: b1_ok
       real(dp) :: h, mid, t, third
       h = th1 - th0
       if (abs(h) < small_rotation) then
@@ -632,8 +809,12 @@ contains
          third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
          m = bend_moment(self, k, mid) + third*h*h/24
          dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12
+         b1 = 0
+         b1_ok = .false.
       else
-         m = (bend_energy(self, k, th1) - bend_energy(self, k, th0))/h
+         b1 = bend_energy(self, k, th1)
+         b1_ok = .true.
+         m = (b1 - b0)/h
          dm = (bend_moment(self, k, th1) - m)/h
       end if
    end subroutine bend_divided
@@ -659,8 +840,8 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in), optional :: theta
-      integer :: n, c, k, j, side, cp, node, band0, a, b, row, col
-      real(dp) :: scale, rate, sgn, blk(2, 2), mv(2), vk(2), fext(2), t_new
+      integer :: n, c, k, j, side, node, band0, a, b, row, col
+      real(dp) :: scale, rate, mv(2), vk(2), fext(2), t_new
       logical :: held_a, held_b
       n = self%n
       scale = 1/self%tension_ref
@@ -676,7 +857,10 @@ contains
       do k = 1, n
          residual(2*k) = residual(2*k) + node_weight(self, k)
       end do
-      residual = residual - reshape(self%load_node, [2*n])
+      do k = 1, n
+         residual(2*k - 1) = residual(2*k - 1) - self%load_node(1, k)
+         residual(2*k) = residual(2*k) - self%load_node(2, k)
+      end do
       if (dynamic) then
          t_new = t1 + t2
          fext = 0.5_dp*(self%end_a%applied_force(t1) + self%end_a%applied_force(t_new))
@@ -685,9 +869,18 @@ contains
          residual(2*n - 1:2*n) = residual(2*n - 1:2*n) - fext
          ! Inertia: [M (V^n+1 - V^n)] / dt with V^n+1 from the new positions.
          rate = 1/(theta*t2*t2)
-         self%v1 = ((reshape(x, [2, n]) - self%r0)/t2 - (1 - theta)*self%v0)/theta
+         ! (Element by element: the array expressions cost 2-3 times more, in temporaries.)
+         do k = 1, n
+            do a = 1, 2
+               self%v1(a, k) = ((x(2*k - 2 + a) - self%r0(a, k))/t2 - (1 - theta)*self%v0(a, k))/theta
+            end do
+         end do
          call self%mass_times(self%v1, self%force_node)
-         residual = residual + reshape((self%force_node - self%mv0)/t2, [2*n])
+         do k = 1, n
+            do a = 1, 2
+               residual(2*k - 2 + a) = residual(2*k - 2 + a) + (self%force_node(a, k) - self%mv0(a, k))/t2
+            end do
+         end do
       else
          t_new = t1
          residual(1:2) = residual(1:2) - self%end_a%applied_force(t1)
@@ -699,49 +892,10 @@ contains
       if (held_b) residual(2*n - 1:2*n) = (x(2*n - 1:2*n) - self%end_b%position(t_new))/self%length_ref
       if (.not. with_jacobian) return
 
-      jacobian%ab = 0
-      jacobian%factorised = .false.
+      call jacobian%clear()
       band0 = jacobian%kl + jacobian%ku + 1
-      ! dN_c/dR_node: block(c, cp) * (+-1 / ds_cp) for the two nodes of cell cp.
-      do c = 1, n - 1
-         do cp = max(1, c - 1), min(n - 1, c + 1)
-            do side = 0, 1
-               node = cp + side
-               sgn = merge(1.0_dp, -1.0_dp, side == 1)/self%ds(cp)
-               blk = self%block(:, :, cp - c, c)*sgn*scale
-               ! Node c gets -N_c, node c+1 gets +N_c.
-               do j = 0, 1
-                  k = c + j
-                  if (k == 1 .and. held_a) cycle
-                  if (k == n .and. held_b) cycle
-                  do a = 1, 2
-                     do b = 1, 2
-                        row = 2*(k - 1) + a
-                        col = 2*(node - 1) + b
-                        jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                              + merge(1.0_dp, -1.0_dp, j == 1)*blk(a, b)
-                     end do
-                  end do
-               end do
-            end do
-         end do
-      end do
-      if (dynamic) then
-         do k = 1, n
-            if (k == 1 .and. held_a) cycle
-            if (k == n .and. held_b) cycle
-            do a = 1, 2
-               row = 2*(k - 1) + a
-               do j = -2, 2
-                  node = k + j
-                  if (node < 1 .or. node > n) cycle
-                  col = row + 2*j
-                  jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                        + self%mass(abs(j), min(k, node))*rate*scale
-               end do
-            end do
-         end do
-      end if
+      call add_jacobian(n, jacobian%ldab, band0, jacobian%ab, self%block, self%ds, self%mass, scale, rate, held_a, &
+                        held_b, dynamic)
       ! Distributed loads: node c and node c+1 each get -F_c / 2.
       if (allocated(self%loads)) then
          if (size(self%loads) > 0) then
@@ -780,6 +934,59 @@ contains
          end do
       end subroutine held_rows
    end subroutine assemble
+
+   !> The Jacobian's terms of the cell forces and of the mass into band storage
+   !> (explicit shapes, so that the compiler keeps the addresses in registers).
+   !> dN_c/dR_node is block(c, cp) (+-1 / ds_cp) for the two nodes of cell cp;
+   !> node c gets -N_c (rows 2c - 1, 2c), node c+1 gets +N_c (rows 2c + 1,
+   !> 2c + 2); A(row, col) is ab(band0 + row - col, col). Every entry gets its
+   !> terms in the order of the loops over c, cp, side, then the mass term.
+   pure subroutine add_jacobian(n, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b, dynamic)
+      integer, intent(in) :: n, ldab, band0
+      real(dp), intent(inout) :: ab(ldab, 2*n)
+      real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
+      logical, intent(in) :: held_a, held_b, dynamic
+      integer :: c, cp, side, node, col, row, k, a
+      real(dp) :: sgn, blk(2, 2)
+      do c = 1, n - 1
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            do side = 0, 1
+               node = cp + side
+               sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
+               blk = block(:, :, cp - c, c)*sgn*scale
+               col = 2*(node - 1)
+               if (.not. (c == 1 .and. held_a)) then
+                  row = 2*(c - 1) - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
+               end if
+               if (.not. (c + 1 == n .and. held_b)) then
+                  row = 2*c - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) + blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) + blk(2, 2)
+               end if
+            end do
+         end do
+      end do
+      if (.not. dynamic) return
+      ! The mass term, M_(k, k + j) / (theta dt^2) on the rows of node k and the columns of node k + j.
+      do k = 1, n
+         if (k == 1 .and. held_a) cycle
+         if (k == n .and. held_b) cycle
+         do a = 1, 2
+            row = 2*(k - 1) + a
+            if (k >= 3) ab(band0 + 4, row - 4) = ab(band0 + 4, row - 4) + mass(2, k - 2)*rate*scale
+            if (k >= 2) ab(band0 + 2, row - 2) = ab(band0 + 2, row - 2) + mass(1, k - 1)*rate*scale
+            ab(band0, row) = ab(band0, row) + mass(0, k)*rate*scale
+            if (k <= n - 1) ab(band0 - 2, row + 2) = ab(band0 - 2, row + 2) + mass(1, k)*rate*scale
+            if (k <= n - 2) ab(band0 - 4, row + 4) = ab(band0 - 4, row + 4) + mass(2, k)*rate*scale
+         end do
+      end do
+   end subroutine add_jacobian
 
    !> The force the support exerts on end node k (1 or n) to keep the balance of
    !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step

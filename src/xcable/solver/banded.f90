@@ -1,15 +1,44 @@
-!> Banded linear systems through LAPACK (dgbsv, dgbtrf, dgbtrs).
+!> Banded linear systems: own LU and substitution kernels, with LAPACK
+!> (dgbtrf, dgbtrs, dgbsv) as the reference and an option.
 !>
 !> The matrix is kept in LAPACK band storage for factorisation:
 !> A(i, j) is stored in ab(kl + ku + 1 + i - j, j) for
 !> max(1, j - ku) <= i <= min(n, j + kl); the first kl rows of ab are
 !> workspace for the fill-in of partial pivoting. Newton's method factorises
-!> with LAPACK's dgbtrf and keeps the factors for several substitutions; the
-!> substitution is dgbtrs('N') for one right-hand side written as two plain
-!> loops, because for the narrow band of the box scheme (kl = 7, ku = 10) the
-!> per-column reference-BLAS calls inside dgbtrs cost more than the arithmetic
-!> and the substitution is the most frequent operation of a run (simplified
-!> Newton). It is tested against a dense solve. `solve_banded` is dgbsv.
+!> and keeps the factors (ab and ipiv, the complete factorisation) for one or
+!> several substitutions.
+!>
+!> Own kernels (the default; `lapack = .true.` calls dgbtrf and dgbtrs).
+!> Why: at these band widths the reference BLAS calls that LAPACK makes per
+!> column (idamax, dswap, dscal, dger in dgbtf2; dger, dtbsv in dgbtrs) cost
+!> more than the arithmetic. Measured with callgrind on fast_180kN as shipped
+!> (the rod, 241 nodes, n = 482, kl = ku = 5, 1236 factorisations and
+!> substitutions): 251 000 instructions per factorisation with dgbtrf,
+!> 114 000 with band_lu; 72 000 per substitution with the former plain-loop
+!> copy of dgbtrs (136 000 with dgbtrs itself), 36 000 with band_substitute;
+!> the whole run 2.42e9 -> 2.20e9 instructions, results bit for bit the same
+!> (docs/speed.md).
+!> - `band_lu` does the operations of LAPACK's unblocked dgbtf2 (which dgbtrf
+!>   calls for kl < 32) in the same order: the first entry of largest
+!>   magnitude as pivot, the rows interchanged over columns j..ju, the
+!>   multipliers scaled by the reciprocal of the pivot, and the rank-one
+!>   update of columns j + 1..ju that skips zero entries of the pivot row. Its
+!>   factors and pivots are dgbtrf's bit for bit (tested on random matrices
+!>   and on Jacobians of the rod and the box scheme).
+!> - `band_substitute` runs L by columns (interchanges and multipliers, as
+!>   dgbtrs) and U by rows: each unknown is one sum over the unknowns already
+!>   found, accumulated in a register from the farthest to the nearest, then
+!>   divided by the diagonal. dgbtrs's column form does the same operations
+!>   in the same order but keeps the partial sums in memory, updating the
+!>   whole band of unknowns per column; the solutions are the same bit for
+!>   bit (tested).
+!> Both are compiled twice from one source (band_lu.inc, band_substitute.inc):
+!> for any widths, and with kl = ku = 5 as constants (the rod), which lets the
+!> compiler unroll the loops over the band: with the widths as variables the
+!> rod's factorisation took 237 000 instructions, about twice as many.
+!> The kernels read and write only ab and ipiv, the complete factorisation
+!> (what a checkpoint keeps); no other copy of the factors exists.
+!> `solve_banded` is dgbsv.
 module xcable_solver_banded
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_numerics
@@ -61,6 +90,8 @@ module xcable_solver_banded
       integer, allocatable :: ipiv(:)
       !> True once factorised (ab then holds the LU factors).
       logical :: factorised = .false.
+      !> Factorise and solve with LAPACK's dgbtrf and dgbtrs instead of band_lu and band_substitute.
+      logical :: lapack = .false.
    contains
       !> Allocate for order n with kl sub- and ku super-diagonals.
       procedure :: init => band_init
@@ -68,9 +99,9 @@ module xcable_solver_banded
       procedure :: clear => band_clear
       !> Row of ab that holds A(i, j).
       procedure :: row => band_row
-      !> Factorise in place (dgbtrf).
+      !> Factorise in place (band_lu, or dgbtrf).
       procedure :: factor => band_factor
-      !> Solve with the factors (the substitution of dgbtrs), overwriting b.
+      !> Solve with the factors (band_substitute, or dgbtrs), overwriting b.
       procedure :: solve => band_solve
       !> Multiply the (unfactorised) matrix by a vector.
       procedure :: matvec => band_matvec
@@ -119,20 +150,42 @@ contains
       r = self%kl + self%ku + 1 + i - j
    end function band_row
 
-   !> Factorise in place with dgbtrf.
+   !> Factorise in place with band_lu (or dgbtrf).
    subroutine band_factor(self, error)
       !> Matrix; holds the LU factors on return.
       class(band_matrix), intent(inout) :: self
       !> Error if the matrix is singular.
       type(error_type), allocatable, intent(out) :: error
       integer :: info
-      call dgbtrf(self%n, self%n, self%kl, self%ku, self%ab, self%ldab, self%ipiv, info)
+      if (self%lapack) then
+         call dgbtrf(self%n, self%n, self%kl, self%ku, self%ab, self%ldab, self%ipiv, info)
+      else if (self%kl == 5 .and. self%ku == 5) then
+         call band_lu_5_5(self%n, self%ab, self%ipiv, info)
+      else
+         call band_lu(self%n, self%kl, self%ku, self%ab, self%ipiv, info)
+      end if
       if (info /= 0) then
-         call fatal_error(error, info_message('dgbtrf', info), stat_numerics)
+         call fatal_error(error, info_message(trim(merge('dgbtrf ', 'band_lu', self%lapack)), info), stat_numerics)
          return
       end if
       self%factorised = .true.
    end subroutine band_factor
+
+   !> LU factorisation with partial pivoting of a square band matrix, the
+   !> operations of LAPACK's dgbtf2 (see the module header).
+   pure subroutine band_lu(n, kl, ku, ab, ipiv, info)
+      !> Order, sub- and super-diagonals.
+      integer, intent(in) :: n, kl, ku
+      include 'band_lu.inc'
+   end subroutine band_lu
+
+   !> band_lu with kl = ku = 5 (the rod) as constants.
+   pure subroutine band_lu_5_5(n, ab, ipiv, info)
+      !> Order.
+      integer, intent(in) :: n
+      integer, parameter :: kl = 5, ku = 5
+      include 'band_lu.inc'
+   end subroutine band_lu_5_5
 
    !> Solve A x = b with the factors; b is overwritten by x.
    subroutine band_solve(self, b, error)
@@ -142,6 +195,7 @@ contains
       real(dp), intent(inout) :: b(:)
       !> Error on a size mismatch or unfactorised matrix.
       type(error_type), allocatable, intent(out) :: error
+      integer :: info
       if (.not. self%factorised) then
          call fatal_error(error, 'band_solve: matrix is not factorised', stat_numerics)
          return
@@ -151,44 +205,30 @@ contains
                           ', matrix has order '//str(self%n), stat_numerics)
          return
       end if
-      call band_substitute(self%n, self%kl, self%ku, self%ab, self%ipiv, b)
+      if (self%lapack) then
+         call dgbtrs('N', self%n, self%kl, self%ku, 1, self%ab, self%ldab, self%ipiv, b, self%n, info)
+      else if (self%kl == 5 .and. self%ku == 5) then
+         call band_substitute_5_5(self%n, self%ab, self%ipiv, b)
+      else
+         call band_substitute(self%n, self%kl, self%ku, self%ab, self%ipiv, b)
+      end if
    end subroutine band_solve
 
-   !> Forward and back substitution with the LU factors of dgbtrf: the
-   !> operations of dgbtrs('N') for one right-hand side, in plain loops.
+   !> Forward substitution with L by columns, back substitution with U by
+   !> rows (see the module header).
    pure subroutine band_substitute(n, kl, ku, ab, ipiv, b)
       !> Order, sub- and super-diagonals.
       integer, intent(in) :: n, kl, ku
-      !> LU factors in LAPACK band storage.
-      real(dp), intent(in) :: ab(2*kl + ku + 1, n)
-      !> Row interchanges.
-      integer, intent(in) :: ipiv(n)
-      !> Right-hand side on entry, solution on return.
-      real(dp), intent(inout) :: b(n)
-      integer :: i, j, l, kd
-      real(dp) :: temp
-      kd = kl + ku + 1
-      ! L: the row interchanges and the multipliers, column by column.
-      do j = 1, n - 1
-         l = ipiv(j)
-         temp = b(l)
-         if (l /= j) then
-            b(l) = b(j)
-            b(j) = temp
-         end if
-         do i = 1, min(kl, n - j)
-            b(j + i) = b(j + i) - ab(kd + i, j)*temp
-         end do
-      end do
-      ! U, with kl + ku super-diagonals: back substitution, column by column.
-      do j = n, 1, -1
-         temp = b(j)/ab(kd, j)
-         b(j) = temp
-         do i = max(1, j - kl - ku), j - 1
-            b(i) = b(i) - ab(kd + i - j, j)*temp
-         end do
-      end do
+      include 'band_substitute.inc'
    end subroutine band_substitute
+
+   !> band_substitute with kl = ku = 5 (the rod) as constants.
+   pure subroutine band_substitute_5_5(n, ab, ipiv, b)
+      !> Order.
+      integer, intent(in) :: n
+      integer, parameter :: kl = 5, ku = 5
+      include 'band_substitute.inc'
+   end subroutine band_substitute_5_5
 
    !> y = A x for the unfactorised matrix.
    pure subroutine band_matvec(self, x, y)

@@ -86,13 +86,15 @@ program xcable_main
    end if
    call sim%time_step(dt, steps)
    if (check_only) then
-      write (output_unit, '(a)') trim(path)//': ok ('//trim(config%scheme)//' scheme, '//str(config%nodes)// &
+      write (output_unit, '(a)') trim(path)//': ok ('//trim(config%scheme)//' scheme, '//sim%model//' model, '// &
+         str(config%nodes)// &
          ' nodes, dt '//str(dt)//' s, '//str(steps)//' steps)'
       stop
    end if
 
    output%quiet = config%quiet
-   rod = sim%scheme /= 'box'
+   ! Checkpoints and SIGTERM: the planar rod only.
+   rod = sim%scheme /= 'box' .and. sim%model == '2d'
    ! SIGTERM (a batch system's time limit): from here on the rod run writes a
    ! checkpoint at its next step and stops (before the dynamics: at t = 0).
    if (rod) then
@@ -125,6 +127,7 @@ program xcable_main
       run_id = new_run_id()
       call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
                          config%gnuplot, trim(config%scheme), sim%terms, sim%piece_starts(), error, run_id=run_id)
+      if (.not. allocated(error)) call output%mark('model', sim%model, error)
       if (allocated(error)) then
          call output%finish('failed', error%message)
          call fail_input(error)

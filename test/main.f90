@@ -19,6 +19,7 @@ program xcable_tests
    use suite_fluid, only: collect_fluid
    use suite_checkpoint, only: collect_checkpoint
    use suite_rod3d, only: collect_rod3d
+   use suite_model3d, only: collect_model3d
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -42,7 +43,8 @@ program xcable_tests
              new_testsuite('registry', collect_registry), &
              new_testsuite('fluid', collect_fluid), &
              new_testsuite('checkpoint', collect_checkpoint), &
-             new_testsuite('rod3d', collect_rod3d)]
+             new_testsuite('rod3d', collect_rod3d), &
+             new_testsuite('model3d', collect_model3d)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

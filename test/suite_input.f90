@@ -602,7 +602,7 @@ contains
    subroutine test_harmonic_direction(error)
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, "&end_a kind = 'motion', direction_z = 0 /"//nl, &
-                        [character(40) :: path, '&end_a', 'direction_x = 0, direction_z = 0', 'must not be zero'])
+                        [character(40) :: path, '&end_a', 'direction_x = 0, direction_y = 0, direction_z = 0', 'must not be zero'])
    end subroutine test_harmonic_direction
 
    subroutine test_table_missing(error)

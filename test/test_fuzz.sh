@@ -350,8 +350,40 @@ begin 'force ramp without ramp_time' 'ramp_time = 0' "history = 'ramp'"
 from slow_315kN; add "&end_b kind = 'force', history = 'ramp' /"; set_in rupture 's_break = 30'; check
 begin 'harmonic motion with period = 0' 'period = 0' "motion = 'harmonic'"
 from slow_315kN; add "&end_a kind = 'motion', period = 0 /"; check
-begin 'harmonic motion without direction' 'direction_x = 0, direction_z = 0' 'must not be zero'
+begin 'harmonic motion without direction' 'direction_x = 0, direction_y = 0, direction_z = 0' 'must not be zero'
 from slow_315kN; add "&end_a kind = 'motion', direction_z = 0 /"; check
+begin 'harmonic motion direction of zero length (3 components)' 'direction_x = 0, direction_y = 0, direction_z = 0' \
+   'must not be zero'
+from slack_swing; edit "s|^&end_b .*|\&end_b kind = 'motion', x = 50, direction_x = 0, direction_y = 0, direction_z = 0 /|"
+check
+# The 3-D model (issue 15): 3-D data under model = '2d', GIp <= 0, and what the 3-D model does not do yet.
+begin "3-D data with model = '2d'" "model = '2d'" '&end_b y = 5' "allowed: model = '3d' or 'auto'"
+from slack_swing; edit "s|x = 50.0, z = 0.0|x = 50.0, y = 5.0, z = 0.0|"; set_in numerics "model = '2d'"; check
+begin "a torque with model = '2d'" "model = '2d'" '&end_b torque = 10' 'x-z plane'
+from slack_swing; edit "s|^&end_b .*|\&end_b kind = 'force', force_x = 100, torque = 10 /|"
+set_in rupture 'enabled = .false.'; set_in numerics "model = '2d'"; check
+begin "a cross current with model = '2d'" "model = '2d'" 'current_y = 0.5'
+from slack_swing; add '&fluid density = 1025, current_y = 0.5 /'; set_in numerics "model = '2d'"; check
+begin 'gip = -1' 'gip = -1' '1e-6'
+from slack_swing; add '&cable gip = -1 /'; check
+begin 'gip = 1e-300' 'gip' '1e-6'
+from slack_swing; add '&cable gip = 1e-300 /'; check
+begin 'model given as a word not allowed' "model = 'xyz'" "'auto'"
+from slack_swing; set_in numerics "model = 'xyz'"; check
+begin "model = '3d' with the box scheme" "scheme = 'box'" "model = '3d'" "scheme = 'rod'"
+from slow_315kN; set_in numerics "scheme = 'box', model = '3d'"; check
+begin "a 3-D scene with the box scheme (model 'auto')" "scheme = 'box'" '&end_a y = 1' 'planar'
+from slow_315kN; add "&end_a y = 1 /"; set_in numerics "scheme = 'box'"; check
+begin "model = '3d' with a break inside the cable" 's_break = 30' "model = '3d'" 'inside the cable'
+from inclined_break_middle; set_in numerics "model = '3d'"; check
+begin "model = '3d' with checkpoints" 'checkpoint_interval = 60' "model = '3d'" 'no checkpoints'
+from slack_swing; set_in numerics "model = '3d'"; set_in output 'checkpoint_interval = 60'; check
+begin 'current_y without a fluid' 'current_y = 0.5' 'needs a fluid'
+from slack_swing; add '&fluid current_y = 0.5 /'; check
+begin 'y of a free end' '&end_b' 'y = 2' "kind = 'free'" 'leave y out'
+from slack_swing; edit "s|^&end_b .*|\&end_b kind = 'free', y = 2 /|"; set_in rupture 'enabled = .false.'; check
+begin 'tension and end b y both given' 'tension = 315000' 'y = 3' 'both given'
+from slow_315kN; add '&end_b y = 3 /'; check
 begin 'break at a free end (the default s_break)' 's_break = 60 (the default, L)' "kind = 'free'" 'nothing to break'
 from slow_315kN; add "&end_b kind = 'free' /"; check
 begin 'table motion without a table' "motion = 'table' without a table"

@@ -111,6 +111,8 @@ module xcable_run_records
       procedure(snapshot_interface), deferred :: snapshot
       !> Progress of the run (default: nothing).
       procedure :: progress => observer_progress
+      !> Fields of a snapshot besides field_names, sent after it (the 3-D run's y, w, ...; default: nothing).
+      procedure :: snapshot_extra => observer_snapshot_extra
    end type run_observer
 
    abstract interface
@@ -145,6 +147,20 @@ contains
       !> Time reached and end of the run (s); wall time so far (s).
       real(dp), intent(in) :: t, t_end, wall
    end subroutine observer_progress
+
+   !> Default extra fields: ignored.
+   subroutine observer_snapshot_extra(self, t, names, fields, error)
+      !> Observer.
+      class(run_observer), intent(inout) :: self
+      !> Time, s.
+      real(dp), intent(in) :: t
+      !> Names of the fields.
+      character(*), intent(in) :: names(:)
+      !> Fields (nodes, size(names)).
+      real(dp), intent(in) :: fields(:, :)
+      !> Error when writing fails.
+      type(error_type), allocatable, intent(out) :: error
+   end subroutine observer_snapshot_extra
 
    !> Make room for at least n records (keeps the content).
    subroutine history_reserve(self, n, n_ends, energy)

@@ -24,6 +24,7 @@ module xcable_simulation
    use xcable_scene, only: scene_type, scene_from_config
    use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination
    use xcable_box_run, only: box_run
+   use xcable_rod3d_drive, only: rod3d_drive
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
    use xcable_io_checkpoint, only: checkpoint_file
    use xcable_version, only: code_version
@@ -53,9 +54,13 @@ module xcable_simulation
    type :: simulation
       !> 'rod' or 'box'.
       character(len=8) :: scheme = 'rod'
+      !> The model that runs: '2d' or '3d' (&numerics model; 'auto' resolved).
+      character(len=2) :: model = '2d'
       !> The run of each scheme (only one is used).
       type(rod_run) :: rod
       type(box_run) :: box
+      !> The 3-D run (model '3d'): it shares the grid, time step and records of rod.
+      type(rod3d_drive) :: rod3
       !> What the model computes, for the result file.
       character(:), allocatable :: terms
       !> Checkpoints (rod scheme).
@@ -124,14 +129,17 @@ contains
       type(scene_type) :: scene
       type(rod_run) :: fresh_rod
       type(box_run) :: fresh_box
+      type(rod3d_drive) :: fresh_rod3
       ! A simulation may be prepared again for another case (checkpoints are enabled after prepare).
       self%rod = fresh_rod
       self%box = fresh_box
+      self%rod3 = fresh_rod3
       self%checkpoints = checkpoint_settings()
       self%checkpoints_written = 0
       self%resumed = .false.
       self%interrupted = .false.
       self%scheme = trim(config%scheme)
+      self%model = config%model_to_run()
       select case (self%scheme)
       case ('box')
          call self%box%prepare(config, error)
@@ -140,8 +148,14 @@ contains
          call scene_from_config(config, scene, error)
          if (allocated(error)) return
          call self%rod%prepare(scene, run_options_from_config(config), error)
+         if (allocated(error)) return
          self%terms = terms_of(scene)
          if (config%damping > 0) self%terms = self%terms//' damping'
+         if (self%model == '3d') then
+            ! The 3-D statics start from the planar static state (driver/rod3d_drive.f90).
+            call self%rod3%prepare(self%rod, error)
+            self%terms = 'rod3d:'//self%terms(5:)//' twist'
+         end if
       end select
    end subroutine sim_prepare
 
@@ -178,6 +192,10 @@ contains
       case ('box')
          call self%box%run(observer, error)
       case default
+         if (self%model == '3d') then
+            call self%rod3%run_dynamics(self%rod, observer, error)
+            return
+         end if
          if (.not. allocated(self%checkpoints%path)) then
             call self%rod%run(observer, error)
             return
@@ -218,7 +236,7 @@ contains
       logical, intent(in) :: on_termination
       !> Accepted steps between checkpoints (0: none).
       integer, intent(in), optional :: every_steps
-      if (self%scheme == 'box') return
+      if (self%scheme == 'box' .or. self%model == '3d') return
       self%checkpoints%path = path
       self%checkpoints%fingerprint = fingerprint
       self%checkpoints%run_id = run_id
@@ -263,6 +281,10 @@ contains
       type(checkpoint_file) :: file
       if (self%scheme == 'box') then
          call fatal_error(error, path//': the box scheme writes no checkpoints and cannot resume', stat_input)
+         return
+      end if
+      if (self%model == '3d') then
+         call fatal_error(error, path//': the 3-D model writes no checkpoints yet and cannot resume', stat_input)
          return
       end if
       call file%open(path, error)

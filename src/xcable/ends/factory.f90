@@ -32,7 +32,7 @@ contains
       !> Error for an unknown kind.
       type(error_type), allocatable, intent(out) :: error
       type(time_table) :: table
-      real(dp) :: direction(2)
+      real(dp) :: direction(3)
       if (config%table_rows >= 2) then
          table%time = config%table_time(1:config%table_rows)
          allocate (table%value(2, config%table_rows))
@@ -41,19 +41,22 @@ contains
       end if
       select case (trim(config%kind))
       case ('fixed')
-         allocate (end, source=fixed_end(point=[config%x, config%z]))
+         allocate (end, source=fixed_end(point=[config%x, config%z], y=config%y))
       case ('free')
          allocate (end, source=free_end())
       case ('force')
          table%linear = .true.
          allocate (end, source=force_end(history=config%history, force0=[config%force_x, config%force_z], &
-                                         duration=config%ramp_time, table=table))
+                                         duration=config%ramp_time, table=table, force0_y=config%force_y, &
+                                         torque0=config%torque))
       case ('motion')
-         direction = [config%direction_x, config%direction_z]
+         ! The direction normalised over its three components (x, y, z).
+         direction = [config%direction_x, config%direction_y, config%direction_z]
          if (norm2(direction) > 0) direction = direction/norm2(direction)
          allocate (end, source=motion_end(motion=config%motion, origin=[config%x, config%z], &
                                           amplitude=config%amplitude, period=config%period, phase=config%phase, &
-                                          direction=direction, ramp_time=config%ramp_time, table=table))
+                                          direction=direction([1, 3]), ramp_time=config%ramp_time, table=table, &
+                                          origin_y=config%y, direction_y=direction(2)))
       case ('mass')
          allocate (end, source=mass_end(mass=config%mass))
       case default

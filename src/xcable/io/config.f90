@@ -19,8 +19,12 @@ module xcable_io_config
       character(len=16) :: kind = 'fixed'
       !> Position of a fixed end, or the mean position of a moving end, m (x horizontal, z up).
       real(dp) :: x = 0, z = 0
+      !> Its y (3-D model), m.
+      real(dp) :: y = 0
       !> Applied force of a force end (constant value, or the value the ramp starts from), N.
       real(dp) :: force_x = 0, force_z = 0
+      !> y component of the applied force (3-D model), N; torque about the end's outward tangent, N m.
+      real(dp) :: force_y = 0, torque = 0
       !> Force history: 'constant', 'ramp' (cos^2 to zero over ramp_time) or 'table'.
       character(len=16) :: history = 'constant'
       !> Duration of the force ramp, or of the smooth start of a motion, s.
@@ -29,6 +33,8 @@ module xcable_io_config
       character(len=16) :: motion = 'harmonic'
       !> Harmonic motion: amplitude (m), period (s), phase (rad) and direction (unit vector, x and z).
       real(dp) :: amplitude = 0, period = 1, phase = 0, direction_x = 0, direction_z = 1
+      !> y component of the direction of the harmonic motion (3-D model).
+      real(dp) :: direction_y = 0
       !> Point mass of a mass end, kg.
       real(dp) :: mass = 0
       !> Inline table: times (s) and x, z columns (force in N, or displacement in m).
@@ -58,6 +64,8 @@ module xcable_io_config
       real(dp) :: area = 0
       !> Bending stiffness EI, N m^2 (0: E pi d^4 / 64).
       real(dp) :: bending_stiffness = 0
+      !> Torsional stiffness GIp, N m^2 (0: EI / (1 + nu) with nu = 0.4).
+      real(dp) :: gip = 0
       ! &material
       !> 'tanh' (eq. 17), 'linear' or 'table' (rows of strain and tension).
       character(len=16) :: law = 'tanh'
@@ -79,6 +87,8 @@ module xcable_io_config
       real(dp) :: damping = 0
       !> &fluid: density (kg/m^3; 0: no fluid), drag and added-mass coefficients, uniform current (m/s).
       real(dp) :: fluid_density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_z = 0
+      !> &fluid current_y: the current's y component (3-D model), m/s.
+      real(dp) :: current_y = 0
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp
@@ -96,6 +106,8 @@ module xcable_io_config
       ! &numerics
       !> Discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme).
       character(len=16) :: scheme = 'rod'
+      !> Model: 'auto' (2-D for a planar scene, 3-D otherwise), '2d' or '3d'.
+      character(len=16) :: model = 'auto'
       !> Number of nodes.
       integer :: nodes = 121
       !> Time step, s (0: from courant).
@@ -141,6 +153,10 @@ module xcable_io_config
    contains
       !> Whether group%variable was assigned in the file.
       procedure :: is_given
+      !> Whether every end, load, current and motion lies in the x-z plane.
+      procedure :: is_planar
+      !> The model that runs: '2d' or '3d'.
+      procedure :: model_to_run
    end type case_config
 
 contains
@@ -155,4 +171,32 @@ contains
       if (.not. allocated(self%given)) return
       is_given = index(' '//self%given//' ', ' '//group//'%'//variable//' ') > 0
    end function is_given
+
+   !> Whether the scene is planar: every end position, force, motion direction,
+   !> current and torque in the x-z plane (y = 0 and no torque).
+   pure logical function is_planar(self)
+      !> The case.
+      class(case_config), intent(in) :: self
+      is_planar = self%current_y == 0 .and. end_planar(self%end_a) .and. end_planar(self%end_b)
+   end function is_planar
+
+   pure logical function end_planar(e)
+      type(end_config), intent(in) :: e
+      end_planar = e%y == 0 .and. e%force_y == 0 .and. e%direction_y == 0 .and. e%torque == 0
+   end function end_planar
+
+   !> '2d' or '3d': model = '2d' or '3d' as given; 'auto' takes 2-D for a planar scene.
+   pure function model_to_run(self) result(model)
+      !> The case.
+      class(case_config), intent(in) :: self
+      character(len=2) :: model
+      select case (trim(self%model))
+      case ('2d')
+         model = '2d'
+      case ('3d')
+         model = '3d'
+      case default
+         model = merge('2d', '3d', self%is_planar())
+      end select
+   end function model_to_run
 end module xcable_io_config

@@ -36,6 +36,8 @@ module xcable_io_input
 
    !> Most snapshots a run may ask for (t_end / interval).
    real(dp), parameter :: max_snapshots = 1.0e5_dp
+   !> Poisson ratio of the default torsional stiffness GIp = EI / (1 + nu) (a solid isotropic rod; nylon).
+   real(dp), parameter :: default_poisson = 0.4_dp
 
    !> Values longer than this are cut in messages.
    integer, parameter :: shown_length = 60
@@ -701,8 +703,8 @@ contains
       logical, intent(in) :: present_group(:)
       !> Error naming the group.
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness
-      character(len=16) :: law, compression, scheme, mass_matrix
+      real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness, gip
+      character(len=16) :: law, compression, scheme, mass_matrix, model
       real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
       real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval
       real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
@@ -710,24 +712,24 @@ contains
       logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot
       character(len=512) :: file, table_file
       character(len=256) :: fields
-      namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness
+      namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness, gip
       namelist /material/ law, p, ea, table_strain, table_tension, table_file, strain_max, compression, damping
       namelist /static/ tension
       namelist /rupture/ enabled, s_break, t_break, time
-      namelist /numerics/ scheme, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
+      namelist /numerics/ scheme, model, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
          reuse_jacobian, extrapolate, min_step_fraction, max_wall_time
       namelist /output/ file, interval, fields, quiet, energy, gnuplot, checkpoint_interval
       integer :: unit, ios, ig
       character(len=512) :: msg
 
       length = c%length; diameter = c%diameter; density = c%density; young = c%young
-      gravity = c%gravity; area = c%area; bending_stiffness = c%bending_stiffness
+      gravity = c%gravity; area = c%area; bending_stiffness = c%bending_stiffness; gip = c%gip
       law = c%law; p = c%p; ea = c%ea; strain_max = c%strain_max; compression = c%compression
       table_strain = c%material_table_strain; table_tension = c%material_table_tension
       table_file = c%material_table_file; damping = c%damping
       tension = c%tension
       enabled = c%break_enabled; s_break = c%s_break; t_break = c%t_break; time = c%break_time
-      scheme = c%scheme; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
+      scheme = c%scheme; model = c%model; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
       mass_matrix = c%mass_matrix; newton_tol = c%newton_tol; newton_max_iter = c%newton_max_iter
       reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
       max_wall_time = c%max_wall_time
@@ -774,13 +776,13 @@ contains
       close (unit)
 
       c%length = length; c%diameter = diameter; c%density = density; c%young = young
-      c%gravity = gravity; c%area = area; c%bending_stiffness = bending_stiffness
+      c%gravity = gravity; c%area = area; c%bending_stiffness = bending_stiffness; c%gip = gip
       c%law = law; c%p = p; c%ea = ea; c%strain_max = strain_max; c%compression = compression
       c%material_table_strain = table_strain; c%material_table_tension = table_tension
       c%material_table_file = table_file; c%damping = damping
       c%tension = tension
       c%break_enabled = enabled; c%s_break = s_break; c%t_break = t_break; c%break_time = time
-      c%scheme = scheme; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
+      c%scheme = scheme; c%model = model; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
       c%mass_matrix = mass_matrix; c%newton_tol = newton_tol; c%newton_max_iter = newton_max_iter
       c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction
       c%max_wall_time = max_wall_time
@@ -802,16 +804,18 @@ contains
       character(len=*), intent(inout) :: msg
       character(len=16) :: kind, history, motion
       real(dp) :: x, z, force_x, force_z, ramp_time, amplitude, period, phase, direction_x, direction_z, mass
+      real(dp) :: y, force_y, torque, direction_y
       real(dp) :: table_time(max_table_points), table_x(max_table_points), table_z(max_table_points)
       character(len=512) :: table_file
-      namelist /end_a/ kind, x, z, force_x, force_z, history, ramp_time, motion, amplitude, period, phase, &
-         direction_x, direction_z, mass, table_time, table_x, table_z, table_file
-      namelist /end_b/ kind, x, z, force_x, force_z, history, ramp_time, motion, amplitude, period, phase, &
-         direction_x, direction_z, mass, table_time, table_x, table_z, table_file
+      namelist /end_a/ kind, x, y, z, force_x, force_y, force_z, torque, history, ramp_time, motion, amplitude, &
+         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_z, table_file
+      namelist /end_b/ kind, x, y, z, force_x, force_y, force_z, torque, history, ramp_time, motion, amplitude, &
+         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_z, table_file
 
       kind = e%kind; x = e%x; z = e%z; force_x = e%force_x; force_z = e%force_z; history = e%history
       ramp_time = e%ramp_time; motion = e%motion; amplitude = e%amplitude; period = e%period; phase = e%phase
       direction_x = e%direction_x; direction_z = e%direction_z; mass = e%mass
+      y = e%y; force_y = e%force_y; torque = e%torque; direction_y = e%direction_y
       table_time = e%table_time; table_x = e%table_x; table_z = e%table_z; table_file = e%table_file
       if (group == 'end_a') then
          read (unit, nml=end_a, iostat=ios, iomsg=msg)
@@ -822,6 +826,7 @@ contains
       e%kind = kind; e%x = x; e%z = z; e%force_x = force_x; e%force_z = force_z; e%history = history
       e%ramp_time = ramp_time; e%motion = motion; e%amplitude = amplitude; e%period = period; e%phase = phase
       e%direction_x = direction_x; e%direction_z = direction_z; e%mass = mass
+      e%y = y; e%force_y = force_y; e%torque = torque; e%direction_y = direction_y
       e%table_time = table_time; e%table_x = table_x; e%table_z = table_z; e%table_file = table_file
    end subroutine read_end
 
@@ -835,14 +840,14 @@ contains
       integer, intent(out) :: ios
       !> iomsg of the read.
       character(len=*), intent(inout) :: msg
-      real(dp) :: density, cd_normal, cd_tangential, ca_normal, current_x, current_z
-      namelist /fluid/ density, cd_normal, cd_tangential, ca_normal, current_x, current_z
+      real(dp) :: density, cd_normal, cd_tangential, ca_normal, current_x, current_y, current_z
+      namelist /fluid/ density, cd_normal, cd_tangential, ca_normal, current_x, current_y, current_z
       density = c%fluid_density; cd_normal = c%cd_normal; cd_tangential = c%cd_tangential
-      ca_normal = c%ca_normal; current_x = c%current_x; current_z = c%current_z
+      ca_normal = c%ca_normal; current_x = c%current_x; current_z = c%current_z; current_y = c%current_y
       read (unit, nml=fluid, iostat=ios, iomsg=msg)
       if (ios /= 0) return
       c%fluid_density = density; c%cd_normal = cd_normal; c%cd_tangential = cd_tangential
-      c%ca_normal = ca_normal; c%current_x = current_x; c%current_z = current_z
+      c%ca_normal = ca_normal; c%current_x = current_x; c%current_z = current_z; c%current_y = current_y
    end subroutine read_fluid
 
    !> Get (store = .false.) or set (store = .true.) the value of a schema
@@ -874,6 +879,7 @@ contains
       case ('cable%gravity'); call move(c%gravity, v, store)
       case ('cable%area'); call move(c%area, v, store)
       case ('cable%bending_stiffness'); call move(c%bending_stiffness, v, store)
+      case ('cable%gip'); call move(c%gip, v, store)
       case ('material%law'); call move(c%law, v, store)
       case ('material%p'); call move(c%p, v, store)
       case ('material%ea'); call move(c%ea, v, store)
@@ -888,6 +894,7 @@ contains
       case ('fluid%cd_tangential'); call move(c%cd_tangential, v, store)
       case ('fluid%ca_normal'); call move(c%ca_normal, v, store)
       case ('fluid%current_x'); call move(c%current_x, v, store)
+      case ('fluid%current_y'); call move(c%current_y, v, store)
       case ('fluid%current_z'); call move(c%current_z, v, store)
       case ('static%tension'); call move(c%tension, v, store)
       case ('rupture%enabled'); call move(c%break_enabled, v, store)
@@ -895,6 +902,7 @@ contains
       case ('rupture%t_break'); call move(c%t_break, v, store)
       case ('rupture%time'); call move(c%break_time, v, store)
       case ('numerics%scheme'); call move(c%scheme, v, store)
+      case ('numerics%model'); call move(c%model, v, store)
       case ('numerics%nodes'); call move(c%nodes, v, store)
       case ('numerics%dt'); call move(c%dt, v, store)
       case ('numerics%courant'); call move(c%courant, v, store)
@@ -932,7 +940,11 @@ contains
       select case (name)
       case ('kind'); call move(e%kind, v, store)
       case ('x'); call move(e%x, v, store)
+      case ('y'); call move(e%y, v, store)
       case ('z'); call move(e%z, v, store)
+      case ('force_y'); call move(e%force_y, v, store)
+      case ('torque'); call move(e%torque, v, store)
+      case ('direction_y'); call move(e%direction_y, v, store)
       case ('force_x'); call move(e%force_x, v, store)
       case ('force_z'); call move(e%force_z, v, store)
       case ('history'); call move(e%history, v, store)
@@ -1068,6 +1080,7 @@ contains
       real(dp), parameter :: pi = acos(-1.0_dp)
       if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
       if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
+      if (c%gip == 0) c%gip = c%bending_stiffness/(1 + default_poisson)
       if (c%law == 'linear' .and. c%ea == 0) c%ea = c%young*c%area
       if (c%s_break < 0) c%s_break = c%length
    end subroutine derive_defaults
@@ -1140,6 +1153,8 @@ contains
          return
       end if
       call check_scene(c, error)
+      if (allocated(error)) return
+      call check_model(c, error)
       if (allocated(error)) return
       if (trim(c%file) == c%source .or. './'//trim(c%file) == c%source .or. trim(c%file) == './'//c%source) then
          call fatal_error(error, c%source//": &output: file = '"//trim(c%file)//"': is the input file itself", &
@@ -1299,9 +1314,12 @@ contains
       if (allocated(error)) return
       c%end_b = e
 
-      if (c%is_given('static', 'tension') .and. (c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z'))) then
+      if (c%is_given('static', 'tension') .and. (c%is_given('end_b', 'x') .or. c%is_given('end_b', 'y') .or. &
+                                                 c%is_given('end_b', 'z'))) then
          if (c%is_given('end_b', 'x')) then
             position = 'x = '//real_text(c%end_b%x)
+         else if (c%is_given('end_b', 'y')) then
+            position = 'y = '//real_text(c%end_b%y)
          else
             position = 'z = '//real_text(c%end_b%z)
          end if
@@ -1311,9 +1329,11 @@ contains
          return
       end if
 
-      if (c%fluid_density == 0 .and. (c%current_x /= 0 .or. c%current_z /= 0)) then
+      if (c%fluid_density == 0 .and. (c%current_x /= 0 .or. c%current_y /= 0 .or. c%current_z /= 0)) then
          if (c%current_x /= 0) then
             position = 'current_x = '//real_text(c%current_x)
+         else if (c%current_y /= 0) then
+            position = 'current_y = '//real_text(c%current_y)
          else
             position = 'current_z = '//real_text(c%current_z)
          end if
@@ -1362,6 +1382,63 @@ contains
       end if
    end subroutine check_scene
 
+   !> The model against the scene: 3-D data under model = '2d', and what the
+   !> 3-D model does not do yet (the box scheme, a break inside the cable,
+   !> checkpoints).
+   subroutine check_model(c, error)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: what
+      if (trim(c%model) == '2d' .and. .not. c%is_planar()) then
+         what = out_of_plane(c)
+         call fatal_error(error, c%source//': &numerics: model = '//"'2d'"//' with '//what// &
+                          ': the 2-D model keeps the cable in the x-z plane; allowed: model = '//"'3d' or 'auto'"// &
+                          ', or y components and torques of 0', stat_input)
+         return
+      end if
+      if (c%model_to_run() /= '3d') return
+      what = "model = '"//trim(c%model)//"'"
+      if (trim(c%model) == 'auto') what = what//' (3-D: '//out_of_plane(c)//')'
+      if (trim(c%scheme) == 'box') then
+         call fatal_error(error, c%source//": &numerics: scheme = 'box' with "//what//': the box scheme is '// &
+                          "planar; allowed: scheme = 'rod' for the 3-D model", stat_input)
+      else if (c%break_enabled .and. c%s_break > 0 .and. c%s_break < c%length) then
+         call fatal_error(error, c%source//': &rupture: s_break = '//real_text(c%s_break)//' with '//what// &
+                          ': the 3-D model does not yet break inside the cable; allowed: s_break = 0 or L (a break '// &
+                          'at an end), or enabled = .false.', stat_input)
+      else if (c%checkpoint_interval > 0) then
+         call fatal_error(error, c%source//': &output: checkpoint_interval = '//real_text(c%checkpoint_interval)// &
+                          ' with '//what//': the 3-D model writes no checkpoints yet; allowed: 0', stat_input)
+      end if
+   end subroutine check_model
+
+   !> The first datum of a case that leaves the x-z plane, as 'group: variable = value'.
+   function out_of_plane(c) result(text)
+      type(case_config), intent(in) :: c
+      character(:), allocatable :: text
+      text = ''
+      call end_datum(c%end_a, 'end_a')
+      call end_datum(c%end_b, 'end_b')
+      if (len(text) == 0 .and. c%current_y /= 0) text = '&fluid current_y = '//real_text(c%current_y)
+   contains
+      subroutine end_datum(e, group)
+         type(end_config), intent(in) :: e
+         character(*), intent(in) :: group
+         if (len(text) > 0) return
+         if (e%y /= 0) then
+            text = '&'//group//' y = '//real_text(e%y)
+         else if (e%force_y /= 0) then
+            text = '&'//group//' force_y = '//real_text(e%force_y)
+         else if (e%direction_y /= 0) then
+            text = '&'//group//' direction_y = '//real_text(e%direction_y)
+         else if (e%torque /= 0) then
+            text = '&'//group//' torque = '//real_text(e%torque)
+         end if
+      end subroutine end_datum
+   end function out_of_plane
+
    !> The conditions of one end: no position where the statics give it, a
    !> positive mass, ramp time and period, a direction (normalised here), and
    !> a table of at least 2 rows with increasing times where one is used.
@@ -1390,6 +1467,11 @@ contains
                              "'free', 'force' or 'mass' end follows from the statics; leave z out", stat_input)
             return
          end if
+         if (c%is_given(group, 'y')) then
+            call fatal_error(error, prefix//'y = '//real_text(e%y)//': given for '//kind//': the position of a '// &
+                             "'free', 'force' or 'mass' end follows from the statics; leave y out", stat_input)
+            return
+         end if
       end if
       if (e%kind == 'mass' .and. .not. e%mass > 0) then
          call fatal_error(error, prefix//'mass = '//real_text(e%mass)//': must be > 0 for '//kind, stat_input)
@@ -1406,15 +1488,16 @@ contains
                              stat_input)
             return
          end if
-         if (e%direction_x == 0 .and. e%direction_z == 0) then
-            call fatal_error(error, prefix//'direction_x = 0, direction_z = 0: the direction of the harmonic motion '// &
-                             'must not be zero', stat_input)
+         if (e%direction_x == 0 .and. e%direction_y == 0 .and. e%direction_z == 0) then
+            call fatal_error(error, prefix//'direction_x = 0, direction_y = 0, direction_z = 0: the direction of the '// &
+                             'harmonic motion must not be zero (a vector of nonzero length)', stat_input)
             return
          end if
       end if
-      norm = hypot(e%direction_x, e%direction_z)
+      norm = norm2([e%direction_x, e%direction_y, e%direction_z])
       if (norm > 0) then
          e%direction_x = e%direction_x/norm
+         e%direction_y = e%direction_y/norm
          e%direction_z = e%direction_z/norm
       end if
 
@@ -1809,7 +1892,7 @@ contains
       type(schema_entry), intent(in) :: e
       logical :: position_b
       type(end_config) :: side
-      position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'z')
+      position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'y') .or. c%is_given('end_b', 'z')
       echoed = .true.
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
@@ -1829,7 +1912,7 @@ contains
          side = c%end_b
       end if
       select case (e%name)
-      case ('x', 'z')
+      case ('x', 'y', 'z')
          echoed = .not. is_word(side%kind, 'free force mass')
          if (e%group == 'end_b') echoed = echoed .and. position_b
       case ('table_time', 'table_x', 'table_z')

@@ -5,8 +5,9 @@
 !>      failure_reason, failure_time, warnings, namelist, input_file,
 !>      code_version, compiler_version, compiler_options, scheme, terms,
 !>      run_id (the run's identifier, also in its checkpoints), resumes (how
-!>      often it was resumed from a checkpoint)
-!>   /s, /time, and one 2-D dataset per field asked for in &output fields
+!>      often it was resumed from a checkpoint), model ('2d' or '3d')
+!>   /s, /time, and one 2-D dataset per field asked for in &output fields;
+!>      a 3-D run also /y, /w, /curvature_z, /twist (driver/rod3d_drive.f90)
 !>   /static/{s,x,z,tension,shear,strain,u,v,curvature} (+ beta0, beta3 of the
 !>      box scheme), attributes span, sag, end_angle, tension_a, tension_b,
 !>      newton_iterations
@@ -71,6 +72,10 @@ module xcable_io_output
       procedure :: write_history => result_write_history
       procedure :: write_summary => result_write_summary
       procedure :: finish => result_finish
+      !> The 3-D run's extra fields of a snapshot (y, w, ...): one 2-D dataset each.
+      procedure :: snapshot_extra => result_snapshot_extra
+      !> A text attribute of the file (the model that ran).
+      procedure :: mark => result_mark
    end type result_file
 
 contains
@@ -537,6 +542,43 @@ contains
          flush (self%text_unit)
       end if
    end subroutine result_snapshot
+
+   !> Extra fields of the snapshot just written, one 2-D dataset per name
+   !> (a 3-D run's y, w, curvature_z, twist).
+   subroutine result_snapshot_extra(self, t, names, fields, error)
+      !> Result file.
+      class(result_file), intent(inout) :: self
+      !> Time, s.
+      real(dp), intent(in) :: t
+      !> Dataset names.
+      character(*), intent(in) :: names(:)
+      !> Fields (nodes, size(names)).
+      real(dp), intent(in) :: fields(:, :)
+      !> Error when writing fails.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: i
+      logical :: ok
+      ok = .true.
+      do i = 1, size(names)
+         call append(self%file, trim(names(i)), fields(:, i), 2, ok)
+      end do
+      if (.not. ok) call fatal_error(error, 'writing the 3-D fields at t = '//str(t)//" s to '"//self%path// &
+                                     "' failed", stat_io)
+   end subroutine result_snapshot_extra
+
+   !> Write a text attribute of the file's root.
+   subroutine result_mark(self, name, text, error)
+      !> Result file.
+      class(result_file), intent(inout) :: self
+      !> Attribute name and value.
+      character(*), intent(in) :: name, text
+      !> Error when writing fails.
+      type(error_type), allocatable, intent(out) :: error
+      logical :: ok
+      ok = .true.
+      call put_text_attr(self%file, name, text, ok)
+      if (.not. ok) call fatal_error(error, "writing the attribute '"//name//"' to '"//self%path//"' failed", stat_io)
+   end subroutine result_mark
 
    !> Write the history of the run (and its gnuplot text).
    subroutine result_write_history(self, history, error)

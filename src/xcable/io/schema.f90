@@ -88,6 +88,10 @@ contains
                zero_means='pi d^2 / 4')
       call add(t, 'cable', 'bending_stiffness', 'real', 'N m^2', '0', 'bending stiffness EI (70.6 N m^2 for the paper)', &
                1.0e-6_dp, 1.0e12_dp, zero_means='E pi d^4 / 64')
+      call add(t, 'cable', 'gip', 'real', 'N m^2', '0', &
+               'torsional stiffness GIp of the 3-D model (a solid isotropic rod has GIp = EI / (1 + nu)); a torque '// &
+               'sets a uniform twist rate M_t / GIp, not coupled to the centreline', 1.0e-6_dp, 1.0e12_dp, &
+               zero_means='EI / 1.4 (nu = 0.4)')
       ! &material
       call add(t, 'material', 'law', 'string', '-', "'tanh'", &
                "'tanh': T = p1 tanh(p2 eps + p3) + p4 + p5 eps (eq. 17); 'linear': T = EA eps; 'table': T from "// &
@@ -127,6 +131,8 @@ contains
                'normal added-mass coefficient, on the displaced volume (MoorDyn Can, OrcaFlex normal Ca)', 0.0_dp, 1.0e3_dp)
       call add(t, 'fluid', 'current_x', 'real', 'm/s', '0', 'uniform current, horizontal (needs density > 0)', &
                -1.0e3_dp, 1.0e3_dp)
+      call add(t, 'fluid', 'current_y', 'real', 'm/s', '0', &
+               'uniform current, horizontal across the x-z plane (3-D model), as current_x', -1.0e3_dp, 1.0e3_dp)
       call add(t, 'fluid', 'current_z', 'real', 'm/s', '0', 'uniform current, vertical (up), as current_x', &
                -1.0e3_dp, 1.0e3_dp)
       ! &static
@@ -143,11 +149,18 @@ contains
                   'horizontal position of a fixed end, or mean position of a motion end (not for free, force and mass '// &
                   'ends, whose position follows from the statics; &end_b: not together with &static tension)', &
                   -1.0e5_dp, 1.0e5_dp)
+         call add(t, ends(k), 'y', 'real', 'm', '0', &
+                  'horizontal position across the x-z plane (3-D model), as x', -1.0e5_dp, 1.0e5_dp)
          call add(t, ends(k), 'z', 'real', 'm', '0', 'vertical position (up), as x', -1.0e5_dp, 1.0e5_dp)
          call add(t, ends(k), 'force_x', 'real', 'N', '0', &
                   'horizontal force on a force end (the constant value, or the value a ramp starts from)', &
                   -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'force_y', 'real', 'N', '0', &
+                  'force on a force end across the x-z plane (3-D model), as force_x', -1.0e9_dp, 1.0e9_dp)
          call add(t, ends(k), 'force_z', 'real', 'N', '0', 'vertical force on a force end, as force_x', -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'torque', 'real', 'N m', '0', &
+                  'torque on a force end about its outward tangent (3-D model; ramped with the force)', &
+                  -1.0e9_dp, 1.0e9_dp)
          call add(t, ends(k), 'history', 'string', '-', "'constant'", &
                   "force history: 'constant', 'ramp' (cos^2 to zero over ramp_time) or 'table'", length=16, &
                   choices='constant ramp table')
@@ -159,8 +172,10 @@ contains
          call add(t, ends(k), 'period', 'real', 's', '1', 'period of the harmonic motion (> 0)', 0.0_dp, 1.0e4_dp)
          call add(t, ends(k), 'phase', 'real', 'rad', '0', 'phase of the harmonic motion', -1.0e3_dp, 1.0e3_dp)
          call add(t, ends(k), 'direction_x', 'real', '-', '0', &
-                  'direction of the harmonic motion, x component (the direction is normalised; not both zero)', &
+                  'direction of the harmonic motion, x component (the direction (x, y, z) is normalised; not all zero)', &
                   -1.0e6_dp, 1.0e6_dp)
+         call add(t, ends(k), 'direction_y', 'real', '-', '0', &
+                  'direction of the harmonic motion, y component (3-D model)', -1.0e6_dp, 1.0e6_dp)
          call add(t, ends(k), 'direction_z', 'real', '-', '1', 'direction of the harmonic motion, z component', &
                   -1.0e6_dp, 1.0e6_dp)
          call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0)', 0.0_dp, 1.0e9_dp)
@@ -189,6 +204,10 @@ contains
       call add(t, 'numerics', 'scheme', 'string', '-', "'rod'", &
                "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &
                choices='rod box')
+      call add(t, 'numerics', 'model', 'string', '-', "'auto'", &
+               "'2d' (the cable in the x-z plane), '3d' (positions x, y, z and twist; the rod scheme, no break "// &
+               "inside the cable, no checkpoints) or 'auto': 2-D when every end, force, motion, current and torque "// &
+               'lies in the x-z plane, 3-D otherwise', length=16, choices='auto 2d 3d')
       call add(t, 'numerics', 'nodes', 'integer', '-', '121', 'number of nodes, uniform in unstretched arc length '// &
                '(uniform on each side of a break inside the cable, the break point a node)', &
                3.0_dp, 100001.0_dp)

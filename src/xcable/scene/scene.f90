@@ -31,6 +31,8 @@ module xcable_scene
       real(dp) :: length = 60, mass = 0, weight = 0
       !> Gravity, m/s^2; bending stiffness EI, N m^2.
       real(dp) :: gravity = 9.81_dp, ei = 0
+      !> Torsional stiffness GIp of the 3-D model, N m^2 (0: EI / 1.4).
+      real(dp) :: gip = 0
       !> Tension-strain law (with the compression option applied).
       class(material_law), allocatable :: law
       !> End a (s = 0) and end b (s = L).
@@ -117,11 +119,14 @@ contains
       scene%gravity = config%gravity
       scene%weight = scene%mass*config%gravity
       scene%ei = ei
+      scene%gip = config%gip
+      if (scene%gip == 0) scene%gip = ei/1.4_dp
       ! Distributed loads, one line each; their lift (buoyancy) comes off the weight.
       allocate (scene%loads(0))
       if (config%fluid_density > 0) call add_load(scene%loads, fluid_load(density=config%fluid_density, &
          cd_normal=config%cd_normal, cd_tangential=config%cd_tangential, ca_normal=config%ca_normal, &
-         current=[config%current_x, config%current_z], diameter=config%diameter, area=area, gravity=config%gravity))
+         current=[config%current_x, config%current_z], current_y=config%current_y, diameter=config%diameter, area=area, &
+         gravity=config%gravity))
       do k = 1, size(scene%loads)
          scene%weight = scene%weight - scene%loads(k)%load%lift()
       end do
@@ -139,7 +144,8 @@ contains
 
       ! The paper's symmetric case: both ends fixed and no position given for end b.
       scene%from_tension = trim(config%end_a%kind) == 'fixed' .and. trim(config%end_b%kind) == 'fixed' .and. &
-                           .not. (config%is_given('end_b', 'x') .or. config%is_given('end_b', 'z'))
+                           .not. (config%is_given('end_b', 'x') .or. config%is_given('end_b', 'y') .or. &
+                                  config%is_given('end_b', 'z'))
       scene%tension = config%tension
       if (scene%from_tension) then
          if (scene%law%strain_at(config%tension) > config%strain_max) then

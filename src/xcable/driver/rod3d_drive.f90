@@ -1,0 +1,572 @@
+!> The 3-D rod (model/rod3d.f90) as a run of the program: &numerics model
+!> = '3d', or 'auto' for a scene that leaves the x-z plane.
+!>
+!> It builds on a prepared planar run (driver/rod_run.f90), whose grid, time
+!> step, output nodes, records and summary it shares: the planar static
+!> state, with y interpolated linearly between the ends, is the first guess
+!> of the 3-D statics. The dynamics take the planar run's steps (dt, the last
+!> one shortened to land on t_end and on the start of a break), snapshots at
+!> the same times (cubic Hermite inside a step), and the same history and
+!> ledger columns; the twist energy is booked with the strain energy.
+!>
+!> Not yet: a break inside the cable (one piece only), step control (a step
+!> whose Newton iteration fails stops the run with an error), checkpoints.
+!> The input refuses these for a 3-D case (io/input.f90, check_model).
+module xcable_rod3d_drive
+   use xcable_kinds, only: dp, i8
+   use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
+   use xcable_strings, only: str
+   use xcable_rod_run, only: rod_run
+   use xcable_rod3d_run, only: rod3d_run
+   use xcable_model_rod3d, only: rod3d_piece
+   use xcable_ends_force, only: force_end
+   use xcable_run_records, only: run_observer, n_fields
+   implicit none
+   private
+   public :: rod3d_drive, n_fields3, field3_names
+
+   !> Fields a 3-D run writes besides the planar ones (field_names): y, the
+   !> velocity along y (w), the curvature about z (the plan view's) and the
+   !> twist rate Omega1 = dpsi/ds.
+   integer, parameter :: n_fields3 = 4
+   character(len=*), parameter :: field3_names(n_fields3) = &
+      [character(len=11) :: 'y', 'w', 'curvature_z', 'twist']
+
+   !> A 3-D run.
+   type :: rod3d_drive
+      !> The 3-D stepper (its piece, state and ledger).
+      type(rod3d_run) :: run
+      !> The previous time level (for snapshots inside a step).
+      real(dp), allocatable :: x_prev(:), v_prev(:, :)
+      !> Force of the supports on the end nodes at the current time (held ends), N.
+      real(dp) :: reaction(3, 2) = 0
+      !> Next snapshot.
+      integer :: snapshot_index = 1
+      !> Whether the break (at an end) has happened.
+      logical :: broken = .false.
+      !> Extra fields of the static state (n, n_fields3).
+      real(dp), allocatable :: static_extra(:, :)
+   contains
+      !> The 3-D statics from the planar run's static state; static fields and records.
+      procedure :: prepare => drive_prepare
+      !> The dynamics to t_end.
+      procedure :: run_dynamics => drive_run
+   end type rod3d_drive
+
+contains
+
+   !> Set up the 3-D piece on the prepared planar run's grid and solve its statics.
+   subroutine drive_prepare(self, rod, error)
+      !> 3-D run.
+      class(rod3d_drive), intent(inout) :: self
+      !> Planar run, prepared (its scene, grid, time step; its static fields are replaced).
+      type(rod_run), intent(inout) :: rod
+      !> Error: stat_input for what the 3-D run cannot do, stat_numerics when the statics fails.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, k
+      real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2)
+      real(dp), allocatable :: guess(:)
+      !> Steps of the continuation in the distributed loads when Newton fails from the planar guess.
+      integer, parameter :: continuation_steps = 20
+      if (rod%scene%interior_break()) then
+         call fatal_error(error, rod%scene%source//': &rupture: the 3-D model does not yet break inside the cable', &
+                          stat_input)
+         return
+      end if
+      n = rod%options%nodes
+      associate (scene => rod%scene, piece => self%run%problem%piece)
+         call piece%init(rod%s, scene%mass, scene%weight, scene%ei, scene%gip, scene%gravity, rod%options%mu, &
+                         scene%law, scene%end_a, scene%end_b, rod%pieces(1)%problem%piece%tension_ref, error, &
+                         rod%options%mu2, rod%options%damping)
+         if (allocated(error)) then
+            call prefix_error(error, scene%source//': &cable: ')
+            return
+         end if
+         if (allocated(scene%loads)) then
+            call piece%set_loads(scene%loads, error)
+            if (allocated(error)) then
+               call prefix_error(error, scene%source//': ')
+               return
+            end if
+         end if
+         ! The statics to 1e-10, as the planar statics.
+         call self%run%init(1.0e-10_dp)
+         ! First guess: the planar static state, y from end a's to end b's (a held end's y).
+         ya = 0
+         yb = 0
+         if (scene%end_a%held()) ya = component(scene%end_a%position3(0.0_dp), 2)
+         if (scene%end_b%held()) yb = component(scene%end_b%position3(0.0_dp), 2)
+         if (.not. scene%end_a%held()) ya = yb
+         if (.not. scene%end_b%held()) yb = ya
+         length = rod%s(n) - rod%s(1)
+         pa = rod%static%r(:, 1)
+         d2 = rod%static%r(1, n) - pa(1)
+         d3 = [rod%static%r(1, n) - pa(1), yb - ya]
+         do k = 1, n
+            if (scene%end_a%held() .and. scene%end_b%held() .and. abs(d2) > 1.0e-6_dp*length) then
+               ! Both ends held: the planar shape turned (and stretched horizontally) onto the chord's vertical plane.
+               self%run%x(3*k - 2:3*k) = [pa(1) + (rod%static%r(1, k) - pa(1))/d2*d3(1), &
+                                          ya + (rod%static%r(1, k) - pa(1))/d2*d3(2), rod%static%r(2, k)]
+            else
+               self%run%x(3*k - 2:3*k) = [rod%static%r(1, k), ya + (yb - ya)*(rod%s(k) - rod%s(1))/length, &
+                                          rod%static%r(2, k)]
+            end if
+         end do
+         self%run%x(3*n + 1:) = 0
+         guess = self%run%x
+         call self%run%statics(0.0_dp, error)
+         if (allocated(error)) then
+            ! Newton from the planar guess failed: continuation in the distributed loads (a strong cross current).
+            deallocate (error)
+            self%run%x = guess
+            do k = 1, continuation_steps
+               piece%load_factor = real(k, dp)/continuation_steps
+               call self%run%statics(0.0_dp, error)
+               if (allocated(error)) exit
+            end do
+            piece%load_factor = 1
+            if (allocated(error)) then
+               error%stat = stat_numerics
+               call prefix_error(error, scene%source//': ')
+               return
+            end if
+         end if
+         ! The supports' forces of the static state.
+         call self%run%problem%evaluate(self%run%x, self%run%work%residual, self%run%work%jacobian, .false.)
+         self%run%work%usable = .false.
+         self%reaction(:, 1) = piece%reaction(1, 0.0_dp)
+         self%reaction(:, 2) = piece%reaction(n, 0.0_dp)
+         ! Held ends start with their own velocity (a motion end).
+         if (scene%end_a%held()) self%run%v(:, 1) = scene%end_a%velocity3(0.0_dp)
+         if (scene%end_b%held()) self%run%v(:, n) = scene%end_b%velocity3(0.0_dp)
+         call self%run%start(self%run%x, self%run%v, 0.0_dp)
+      end associate
+      ! Newton in a step: the planar run's policy (driver/rod_run.f90).
+      self%run%options = rod%options%newton
+      self%run%options%estimate_error = .true.
+      self%run%options%max_contraction = 0.5_dp
+      self%run%options%refresh_contraction = 0.05_dp
+      ! The static state's records, now those of the 3-D statics.
+      call fields3(self%run%problem%piece, self%run%x, self%run%v, rod%info%fields, extra)
+      self%static_extra = extra
+      associate (r => self%run%x, f => rod%info%fields)
+         rod%info%span = norm2(r(3*n - 2:3*n - 1) - r(1:2))
+         rod%info%sag = sag3(r, n)
+         rod%info%tension_a = f(1, 1)
+         rod%info%tension_b = f(n, 1)
+         if (rod%scene%end_a%held()) rod%info%tension_a = norm2(self%reaction(:, 1))
+         if (rod%scene%end_b%held()) rod%info%tension_b = norm2(self%reaction(:, 2))
+      end associate
+      rod%summary%min_strain = minval(self%run%problem%piece%l1) - 1
+      rod%summary%max_strain = maxval(self%run%problem%piece%l1) - 1
+   end subroutine drive_prepare
+
+   !> Largest vertical distance of a node below the chord between the end nodes, the chord's
+   !> height taken where the node's horizontal projection onto it falls, m.
+   pure real(dp) function sag3(x, n) result(sag)
+      real(dp), intent(in) :: x(:)
+      integer, intent(in) :: n
+      real(dp) :: d(2), p
+      integer :: k
+      d = x(3*n - 2:3*n - 1) - x(1:2)
+      sag = 0
+      do k = 1, n
+         p = 0
+         if (norm2(d) > 0) p = dot_product(x(3*k - 2:3*k - 1) - x(1:2), d)/dot_product(d, d)
+         sag = max(sag, x(3) + p*(x(3*n) - x(3)) - x(3*k))
+      end do
+   end function sag3
+
+   !> Component i of a vector (for a function result).
+   pure real(dp) function component(v, i)
+      real(dp), intent(in) :: v(:)
+      integer, intent(in) :: i
+      component = v(i)
+   end function component
+
+   !> The dynamics: the static snapshot, steps to t_end with the break at an end, snapshots, records, summary.
+   subroutine drive_run(self, rod, observer, error)
+      !> 3-D run (prepared).
+      class(rod3d_drive), intent(inout) :: self
+      !> The planar run it shares its records with.
+      type(rod_run), intent(inout) :: rod
+      !> Receives the static state and the snapshots.
+      class(run_observer), intent(inout), optional :: observer
+      !> Error when the run cannot go on (the records hold what was done).
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: t_stop, h, h_try, wall, last_report
+      integer(i8) :: now
+      logical :: landing
+      integer :: capacity, iterations0
+      call system_clock(rod%clock%start, rod%clock%rate)
+      last_report = 0
+      rod%t = 0
+      h = rod%dt
+      self%snapshot_index = 1
+      call start_records(self, rod)
+      capacity = int(min(rod%options%t_end/rod%dt, 1.0e6_dp)) + 16
+      call rod%history%reserve(capacity, size(rod%history%end_labels), rod%options%energy)
+      if (present(observer)) then
+         call observer%static(rod%info, error)
+         if (.not. allocated(error)) call observer%snapshot(0.0_dp, rod%info%fields, error)
+         if (.not. allocated(error)) call observer%snapshot_extra(0.0_dp, field3_names, self%static_extra, error)
+         if (allocated(error)) then
+            call finish(self, rod)
+            return
+         end if
+      end if
+      associate (scene => rod%scene)
+         if (scene%breaks .and. scene%break_time <= 0) call split(self, rod)
+         ! Nothing moves before the break if no end moves or changes its load: skip to it.
+         if (scene%breaks .and. .not. self%broken .and. .not. ends_change(rod)) then
+            call emit(self, rod, observer, scene%break_time, .true., error)
+            if (allocated(error)) then
+               call finish(self, rod)
+               return
+            end if
+            rod%t = scene%break_time
+            self%run%t = rod%t
+            call record(self, rod, 0, rod%t - rod%history%time(rod%history%n))
+            call split(self, rod)
+         end if
+         do while (rod%t < rod%options%t_end*(1 - 1.0e-12_dp))
+            call system_clock(now)
+            wall = real(now - rod%clock%start, dp)/rod%clock%rate
+            if (rod%options%max_wall_time > 0 .and. wall > rod%options%max_wall_time) then
+               call fatal_error(error, 'wall-clock limit of '//str(rod%options%max_wall_time)//' s reached at t = '// &
+                                str(rod%t)//' s', stat_numerics)
+               exit
+            end if
+            t_stop = rod%options%t_end
+            if (scene%breaks .and. .not. self%broken .and. scene%break_time > rod%t) &
+               t_stop = min(t_stop, scene%break_time)
+            h_try = h
+            landing = rod%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (rod%t + h_try) < 1.0e-6_dp*h
+            if (landing) h_try = t_stop - rod%t
+            self%x_prev = self%run%x
+            self%v_prev = self%run%v
+            iterations0 = self%run%iterations
+            self%run%t = rod%t
+            call self%run%step(h_try, rod%options%theta, error)
+            if (allocated(error)) then
+               error%stat = stat_numerics
+               error%message = error%message//' (the 3-D model has no step control yet: try a smaller dt or courant)'
+               exit
+            end if
+            self%reaction(:, 1) = self%run%problem%piece%reaction(1, h_try)
+            self%reaction(:, 2) = self%run%problem%piece%reaction(self%run%problem%piece%n, h_try)
+            call emit(self, rod, observer, rod%t + h_try, .false., error)
+            if (allocated(error)) exit
+            rod%t = rod%t + h_try
+            if (abs(rod%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) rod%t = t_stop
+            self%run%t = rod%t
+            if (.not. landing) rod%summary%dt_used = max(rod%summary%dt_used, h_try)
+            call record(self, rod, self%run%iterations - iterations0, h_try)
+            if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) &
+               call split(self, rod)
+            if (present(observer) .and. wall - last_report >= 1.0_dp) then
+               last_report = wall
+               call observer%progress(rod%t, rod%options%t_end, wall)
+            end if
+         end do
+      end associate
+      call finish(self, rod)
+   end subroutine drive_run
+
+   !> The summary (the planar run's summarise, on the shared records).
+   subroutine finish(self, rod)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      call rod%finish()
+      associate (s => rod%summary)
+         s%newton_iterations = self%run%iterations
+         ! Full Newton: one factorisation per iteration.
+         s%factorisations = self%run%iterations
+      end associate
+   end subroutine finish
+
+   !> Whether an end moves or changes its load in time.
+   logical function ends_change(rod)
+      type(rod_run), intent(in) :: rod
+      ends_change = rod%scene%end_a%time_dependent() .or. rod%scene%end_b%time_dependent() .or. &
+                    rod%scene%end_a%kind() == 'motion' .or. rod%scene%end_b%kind() == 'motion'
+   end function ends_change
+
+   !> History labels, slots and the record of t = 0.
+   subroutine start_records(self, rod)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      if (allocated(rod%history%end_labels)) deallocate (rod%history%end_labels)
+      allocate (rod%history%end_labels(2))
+      rod%history%end_labels = [character(len=8) :: 'end_a', 'end_b']
+      rod%pieces(1)%end_slot = [1, 2]
+      call rod%history%reserve(16, 2, rod%options%energy)
+      rod%history%n = -1
+      call record(self, rod, 0, 0.0_dp)
+   end subroutine start_records
+
+   !> Append a history record at the current time (the x and z components of
+   !> the end quantities, as the planar run's; y is in the snapshots).
+   subroutine record(self, rod, iterations, step)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      integer, intent(in) :: iterations
+      real(dp), intent(in) :: step
+      integer :: i, side, k, n
+      real(dp) :: f(3), en(5)
+      associate (h => rod%history, piece => self%run%problem%piece, x => self%run%x)
+         n = piece%n
+         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), 2, rod%options%energy)
+         i = h%n + 1
+         h%n = i
+         h%time(i) = rod%t
+         h%step(i) = step
+         h%newton_iterations(i) = iterations
+         h%rejected(i) = 0
+         if (i > 0) rod%summary%max_newton_iterations = max(rod%summary%max_newton_iterations, iterations)
+         call piece%geometry(reshape(x(1:3*n), [3, n]), piece%e1, piece%l1, piece%th1)
+         do side = 1, 2
+            k = merge(1, n, side == 1)
+            if (side == 1) then
+               f = self%reaction(:, 1)
+               if (.not. piece%end_a%held()) f = piece%end_a%applied_force3(rod%t)
+            else
+               f = self%reaction(:, 2)
+               if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(rod%t)
+            end if
+            h%ends(:, side, i) = [x(3*k - 2), x(3*k), self%run%v(1, k), self%run%v(3, k), end_tension(piece, side), &
+                                  f(1), f(3)]
+         end do
+         rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
+         rod%summary%min_strain = min(rod%summary%min_strain, minval(piece%l1) - 1)
+         rod%summary%max_strain = max(rod%summary%max_strain, maxval(piece%l1) - 1)
+         if (rod%options%energy) then
+            en = self%run%energies()
+            h%energy(1:4, i) = [en(1) + en(5), en(2:4)]
+            h%energy(5, i) = self%run%end_work
+            h%energy(6, i) = self%run%dissipated
+            h%energy(7, i) = sum(en) - self%run%end_work - self%run%load_work + self%run%dissipated
+            h%energy(8, i) = self%run%load_work
+         end if
+      end associate
+   end subroutine record
+
+   !> Tension at an end (side 1: node 1, side 2: node n) from its end cells
+   !> (piece%l1 set), extrapolated as the planar run's end values.
+   real(dp) function end_tension(piece, side)
+      type(rod3d_piece), intent(in) :: piece
+      integer, intent(in) :: side
+      real(dp) :: cells(3)
+      integer :: j, c, m
+      m = min(3, piece%n - 1)
+      do j = 1, m
+         c = merge(j, piece%n - j, side == 1)
+         cells(j) = piece%law%tension(piece%l1(c) - 1)
+      end do
+      end_tension = max(end_value(cells(1:m), 1), piece%law%tension(-0.99_dp))
+   end function end_tension
+
+   !> The break at a held end: the end lets go with the support's force, ramped to zero over t_break.
+   subroutine split(self, rod)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      type(force_end) :: cut
+      real(dp) :: f(3)
+      self%broken = .true.
+      rod%broken = .true.
+      f = self%reaction(:, merge(2, 1, rod%scene%break_at_b))
+      cut = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
+                      force0=[f(1), f(3)], force0_y=f(2))
+      associate (piece => self%run%problem%piece, planar => rod%pieces(1)%problem%piece)
+         if (rod%scene%break_at_b) then
+            cut%label = 'end_b'
+            deallocate (piece%end_b, planar%end_b)
+            allocate (piece%end_b, source=cut)
+            allocate (planar%end_b, source=cut)
+         else
+            cut%label = 'end_a'
+            deallocate (piece%end_a, planar%end_a)
+            allocate (piece%end_a, source=cut)
+            allocate (planar%end_a, source=cut)
+         end if
+      end associate
+      self%run%work%usable = .false.
+   end subroutine split
+
+   !> Snapshots up to t_new: the static fields (static) or interpolated inside the step just taken.
+   subroutine emit(self, rod, observer, t_new, static, error)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      class(run_observer), intent(inout), optional :: observer
+      real(dp), intent(in) :: t_new
+      logical, intent(in) :: static
+      type(error_type), allocatable, intent(inout) :: error
+      real(dp) :: ts, fields(rod%n_out, n_fields), extra(rod%n_out, n_fields3)
+      do
+         ts = snapshot_time(rod, self%snapshot_index)
+         if (ts > t_new*(1 + 1.0e-12_dp)) exit
+         if (static) then
+            fields = rod%info%fields
+            extra = self%static_extra
+         else
+            call interpolated(self, rod%t, t_new - rod%t, ts, fields, extra)
+         end if
+         self%snapshot_index = self%snapshot_index + 1
+         rod%progress%snapshot_index = self%snapshot_index
+         if (present(observer)) then
+            call observer%snapshot(ts, fields, error)
+            if (.not. allocated(error)) call observer%snapshot_extra(ts, field3_names, extra, error)
+            if (allocated(error)) then
+               call prefix_error(error, 'output: ')
+               return
+            end if
+         end if
+      end do
+   end subroutine emit
+
+   !> Time of snapshot i (i >= 1); huge when there is none (as the planar run's).
+   pure real(dp) function snapshot_time(rod, i)
+      type(rod_run), intent(in) :: rod
+      integer, intent(in) :: i
+      if (rod%options%interval > 0) then
+         snapshot_time = i*rod%options%interval
+         if (snapshot_time > rod%options%t_end*(1 + 1.0e-9_dp)) snapshot_time = huge(1.0_dp)
+      else
+         snapshot_time = merge(rod%options%t_end, huge(1.0_dp), i == 1)
+      end if
+   end function snapshot_time
+
+   !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
+   !> and velocities of its two levels, the twist angles linear.
+   subroutine interpolated(self, t0, h, ts, fields, extra)
+      type(rod3d_drive), intent(inout) :: self
+      real(dp), intent(in) :: t0, h, ts
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), v(:, :)
+      real(dp) :: u, h00, h10, h01, h11, d00, d10, d01, d11
+      integer :: n
+      n = self%run%problem%piece%n
+      u = min(max((ts - t0)/h, 0.0_dp), 1.0_dp)
+      h00 = (1 + 2*u)*(1 - u)**2
+      h10 = u*(1 - u)**2
+      h01 = u*u*(3 - 2*u)
+      h11 = u*u*(u - 1)
+      d00 = 6*u*u - 6*u
+      d10 = 3*u*u - 4*u + 1
+      d01 = 6*u - 6*u*u
+      d11 = 3*u*u - 2*u
+      r0 = reshape(self%x_prev(1:3*n), [3, n])
+      r1 = reshape(self%run%x(1:3*n), [3, n])
+      x = self%run%x
+      x(1:3*n) = reshape(h00*r0 + h10*h*self%v_prev + h01*r1 + h11*h*self%run%v, [3*n])
+      x(3*n + 1:) = (1 - u)*self%x_prev(3*n + 1:) + u*self%run%x(3*n + 1:)
+      v = (d00*r0 + d01*r1)/h + d10*self%v_prev + d11*self%run%v
+      call fields3(self%run%problem%piece, x, v, fields, extra)
+   end subroutine interpolated
+
+   !> Fields on the nodes of a one-piece 3-D state (unknowns x, velocities v):
+   !> the planar fields in the order of field_names and the extra ones of
+   !> field3_names. Tension, strain and u as in the planar run (cell means,
+   !> ends extrapolated; u along the node tangent); v along the normal in the
+   !> vertical plane of the tangent, n = (t_z, 0, -t_x) / |(t_x, t_z)| (the
+   !> paper's normal for a planar scene); shear and curvature the components
+   !> about -y and y of the bending moment's derivative and of the discrete
+   !> curvature vector 2 tan(th/2) / h (c x d) / |c x d| of consecutive cells
+   !> c, d (the planar fields for a planar scene); curvature_z its component
+   !> about z; twist the rate dpsi/ds.
+   subroutine fields3(piece, x, v, fields, extra)
+      type(rod3d_piece), intent(in) :: piece
+      real(dp), intent(in) :: x(:), v(:, :)
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      real(dp) :: r(3, piece%n), e(3, piece%n - 1), l(piece%n - 1), th(piece%n), ten(piece%n - 1), &
+                  eps(piece%n - 1), shear(piece%n - 1), m_y(piece%n), kap(3, piece%n), tau(piece%n - 1), &
+                  c(3), tk(3), nk(3), a, t2
+      integer :: n, k
+      n = piece%n
+      r = reshape(x(1:3*n), [3, n])
+      call piece%geometry(r, e, l, th)
+      kap = 0
+      m_y = 0
+      do k = 2, n - 1
+         c = cross(e(:, k - 1), e(:, k))
+         a = norm2(c)
+         if (a > 0) then
+            c = c/a
+            t2 = tan(0.5_dp*th(k))
+            kap(:, k) = 2*t2/piece%dual_length(k)*c
+            ! The moment 2 EI t (1 + t^2) / h about -y.
+            m_y(k) = -2*piece%ei*t2*(1 + t2*t2)/piece%dual_length(k)*c(2)
+         end if
+      end do
+      do k = 1, n - 1
+         eps(k) = l(k) - 1
+         ten(k) = piece%law%tension(eps(k))
+         if (piece%damping > 0) ten(k) = ten(k) + piece%damping*dot_product(e(:, k), v(:, k + 1) - v(:, k))/ &
+                                         (piece%ds(k)*l(k))
+         shear(k) = (m_y(k + 1) - m_y(k))/(piece%ds(k)*l(k))
+      end do
+      tau = piece%twist_rates(x)
+      do k = 1, n
+         if (k == 1) then
+            fields(k, 1) = max(end_value(ten, 1), piece%law%tension(-0.99_dp))
+            fields(k, 2) = end_value(shear, 1)
+            fields(k, 3) = max(end_value(eps, 1), -0.99_dp)
+            tk = r(:, 2) - r(:, 1)
+            extra(k, 4) = tau(1)
+         else if (k == n) then
+            fields(k, 1) = max(end_value(ten, 2), piece%law%tension(-0.99_dp))
+            fields(k, 2) = end_value(shear, 2)
+            fields(k, 3) = max(end_value(eps, 2), -0.99_dp)
+            tk = r(:, n) - r(:, n - 1)
+            extra(k, 4) = tau(n - 1)
+         else
+            fields(k, 1) = 0.5_dp*(ten(k - 1) + ten(k))
+            fields(k, 2) = 0.5_dp*(shear(k - 1) + shear(k))
+            fields(k, 3) = 0.5_dp*(eps(k - 1) + eps(k))
+            tk = (r(:, k + 1) - r(:, k))/norm2(r(:, k + 1) - r(:, k)) + (r(:, k) - r(:, k - 1))/norm2(r(:, k) - r(:, k - 1))
+            extra(k, 4) = 0.5_dp*(tau(k - 1) + tau(k))
+         end if
+         tk = tk/max(norm2(tk), tiny(1.0_dp))
+         nk = [tk(3), 0.0_dp, -tk(1)]
+         nk = nk/max(norm2(nk), tiny(1.0_dp))
+         fields(k, 4) = dot_product(v(:, k), tk)
+         fields(k, 5) = dot_product(v(:, k), nk)
+         fields(k, 6) = r(1, k)
+         fields(k, 7) = r(3, k)
+         fields(k, 8) = kap(2, k)
+         extra(k, 1) = r(2, k)
+         extra(k, 2) = v(2, k)
+         extra(k, 3) = kap(3, k)
+      end do
+   end subroutine fields3
+
+   pure function cross(a, b) result(c)
+      real(dp), intent(in) :: a(3), b(3)
+      real(dp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross
+
+   !> A cell field's value at an end node, as driver/rod_run.f90's end_value: the end cell's value
+   !> extrapolated half a cell, unless the three end cells zig-zag.
+   pure real(dp) function end_value(cells, side)
+      real(dp), intent(in) :: cells(:)
+      integer, intent(in) :: side
+      integer :: m
+      real(dp) :: c1, c2, c3
+      m = size(cells)
+      if (m < 3) then
+         end_value = merge(cells(1), cells(m), side == 1)
+         return
+      end if
+      if (side == 1) then
+         c1 = cells(1); c2 = cells(2); c3 = cells(3)
+      else
+         c1 = cells(m); c2 = cells(m - 1); c3 = cells(m - 2)
+      end if
+      if ((c1 - c2)*(c2 - c3) < 0) then
+         end_value = c1
+      else
+         end_value = c1 + 0.5_dp*(c1 - c2)
+      end if
+   end function end_value
+end module xcable_rod3d_drive

@@ -19,7 +19,7 @@ module xcable_loads_load
    use xcable_kinds, only: dp
    implicit none
    private
-   public :: cable_load, load_slot
+   public :: cable_load, load_slot, cell_kinematics
 
    !> A distributed load.
    type, abstract :: cable_load
@@ -59,6 +59,39 @@ module xcable_loads_load
    end interface
 
 contains
+
+   !> A cell's kinematics for its load, in any dimension (the planar and the 3-D rod). In a
+   !> step (dt > 0) they are centred on the step: stretch vector (e0 + e1) / 2, velocity
+   !> (R1 - R0) / dt and acceleration (V1 - V0) / dt, with V1 from the theta rule, each the
+   !> mean of the cell's two nodes; in statics (dt = 0) the stretch vector e1 at rest.
+   !> de_coef is de/de1 (1/2 in a step, 1 in statics).
+   pure subroutine cell_kinematics(e0, e1, r0, v0, r1, dt, theta, e, w, a, de_coef)
+      !> Stretch vectors of the cell at the old and new level.
+      real(dp), intent(in) :: e0(:), e1(:)
+      !> Old positions and velocities of the cell's two nodes (dimension, 2).
+      real(dp), intent(in) :: r0(:, :), v0(:, :)
+      !> New positions of the two nodes (dimension, 2).
+      real(dp), intent(in) :: r1(:, :)
+      !> Step (0: statics) and time weight.
+      real(dp), intent(in) :: dt, theta
+      !> Stretch vector, velocity and acceleration of the cell.
+      real(dp), intent(out) :: e(:), w(:), a(:)
+      !> de/de1.
+      real(dp), intent(out) :: de_coef
+      real(dp) :: v1(size(e), 2)
+      if (dt > 0) then
+         e = 0.5_dp*(e0 + e1)
+         w = 0.5_dp*((r1(:, 1) - r0(:, 1)) + (r1(:, 2) - r0(:, 2)))/dt
+         v1 = ((r1 - r0)/dt - (1 - theta)*v0)/theta
+         a = 0.5_dp*((v1(:, 1) - v0(:, 1)) + (v1(:, 2) - v0(:, 2)))/dt
+         de_coef = 0.5_dp
+      else
+         e = e1
+         w = 0
+         a = 0
+         de_coef = 1
+      end if
+   end subroutine cell_kinematics
 
    pure logical function load_has_3d(self)
       class(cable_load), intent(in) :: self

@@ -49,7 +49,7 @@ module xcable_model_rod
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
-   use xcable_loads_load, only: load_slot
+   use xcable_loads_load, only: load_slot, cell_kinematics
    implicit none
    private
    public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
@@ -709,7 +709,7 @@ contains
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
       integer :: c, i, n
-      real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), v1(2, 2), de_coef, kin(2, 2)
+      real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), de_coef, kin(2, 2)
       self%load_node = 0
       if (.not. allocated(self%loads)) return
       if (size(self%loads) == 0) return
@@ -717,18 +717,8 @@ contains
       self%load_block = 0
       do c = 1, n - 1
          r1 = reshape(x(2*c - 1:2*c + 2), [2, 2])
-         if (dt > 0) then
-            e = 0.5_dp*(self%e0(:, c) + self%e1(:, c))
-            w = 0.5_dp*((r1(:, 1) - self%r0(:, c)) + (r1(:, 2) - self%r0(:, c + 1)))/dt
-            v1 = ((r1 - self%r0(:, c:c + 1))/dt - (1 - theta)*self%v0(:, c:c + 1))/theta
-            a = 0.5_dp*((v1(:, 1) - self%v0(:, c)) + (v1(:, 2) - self%v0(:, c + 1)))/dt
-            de_coef = 0.5_dp
-         else
-            e = self%e1(:, c)
-            w = 0
-            a = 0
-            de_coef = 1
-         end if
+         call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
+                              e, w, a, de_coef)
          do i = 1, size(self%loads)
             call self%loads(i)%load%cell_force(e, w, a, f, df_de, df_dw, df_da)
             f = self%load_factor*f

@@ -70,7 +70,7 @@ module xcable_model_rod3d
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
-   use xcable_loads_load, only: load_slot
+   use xcable_loads_load, only: load_slot, cell_kinematics
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
@@ -1003,7 +1003,7 @@ contains
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
       integer :: c, i, n
-      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), v1(3, 2), de_coef, kin(3, 3)
+      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3)
       self%load_node = 0
       if (.not. allocated(self%loads)) return
       if (size(self%loads) == 0) return
@@ -1011,18 +1011,8 @@ contains
       self%load_block = 0
       do c = 1, n - 1
          r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
-         if (dt > 0) then
-            e = 0.5_dp*(self%e0(:, c) + self%e1(:, c))
-            w = 0.5_dp*((r1(:, 1) - self%r0(:, c)) + (r1(:, 2) - self%r0(:, c + 1)))/dt
-            v1 = ((r1 - self%r0(:, c:c + 1))/dt - (1 - theta)*self%v0(:, c:c + 1))/theta
-            a = 0.5_dp*((v1(:, 1) - self%v0(:, c)) + (v1(:, 2) - self%v0(:, c + 1)))/dt
-            de_coef = 0.5_dp
-         else
-            e = self%e1(:, c)
-            w = 0
-            a = 0
-            de_coef = 1
-         end if
+         call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
+                              e, w, a, de_coef)
          do i = 1, size(self%loads)
             call self%loads(i)%load%cell_force3(e, w, a, f, df_de, df_dw, df_da)
             f = self%load_factor*f

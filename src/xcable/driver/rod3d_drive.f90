@@ -16,7 +16,7 @@ module xcable_rod3d_drive
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
-   use xcable_rod_run, only: rod_run
+   use xcable_rod_run, only: rod_run, end_value
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece
    use xcable_ends_force, only: force_end
@@ -545,28 +545,4 @@ contains
       real(dp) :: c(3)
       c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
    end function cross
-
-   !> A cell field's value at an end node, as driver/rod_run.f90's end_value: the end cell's value
-   !> extrapolated half a cell, unless the three end cells zig-zag.
-   pure real(dp) function end_value(cells, side)
-      real(dp), intent(in) :: cells(:)
-      integer, intent(in) :: side
-      integer :: m
-      real(dp) :: c1, c2, c3
-      m = size(cells)
-      if (m < 3) then
-         end_value = merge(cells(1), cells(m), side == 1)
-         return
-      end if
-      if (side == 1) then
-         c1 = cells(1); c2 = cells(2); c3 = cells(3)
-      else
-         c1 = cells(m); c2 = cells(m - 1); c3 = cells(m - 2)
-      end if
-      if ((c1 - c2)*(c2 - c3) < 0) then
-         end_value = c1
-      else
-         end_value = c1 + 0.5_dp*(c1 - c2)
-      end if
-   end function end_value
 end module xcable_rod3d_drive

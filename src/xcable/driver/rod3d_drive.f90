@@ -16,7 +16,8 @@ module xcable_rod3d_drive
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
-   use xcable_rod_run, only: rod_run, end_value
+   use xcable_rod_run, only: rod_run, end_value, snapshot_time
+   use xcable_vector3, only: cross3
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece
    use xcable_ends_force, only: force_end
@@ -424,18 +425,6 @@ contains
       end do
    end subroutine emit
 
-   !> Time of snapshot i (i >= 1); huge when there is none (as the planar run's).
-   pure real(dp) function snapshot_time(rod, i)
-      type(rod_run), intent(in) :: rod
-      integer, intent(in) :: i
-      if (rod%options%interval > 0) then
-         snapshot_time = i*rod%options%interval
-         if (snapshot_time > rod%options%t_end*(1 + 1.0e-9_dp)) snapshot_time = huge(1.0_dp)
-      else
-         snapshot_time = merge(rod%options%t_end, huge(1.0_dp), i == 1)
-      end if
-   end function snapshot_time
-
    !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
    !> and velocities of its two levels, the twist angles linear.
    subroutine interpolated(self, t0, h, ts, fields, extra)
@@ -488,7 +477,7 @@ contains
       kap = 0
       m_y = 0
       do k = 2, n - 1
-         c = cross(e(:, k - 1), e(:, k))
+         c = cross3(e(:, k - 1), e(:, k))
          a = norm2(c)
          if (a > 0) then
             c = c/a
@@ -539,10 +528,4 @@ contains
          extra(k, 3) = kap(3, k)
       end do
    end subroutine fields3
-
-   pure function cross(a, b) result(c)
-      real(dp), intent(in) :: a(3), b(3)
-      real(dp) :: c(3)
-      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
-   end function cross
 end module xcable_rod3d_drive

@@ -21,6 +21,7 @@
 module xcable_loads_fluid
    use xcable_kinds, only: dp
    use xcable_loads_load, only: cable_load
+   use xcable_vector3, only: outer3, identity3
    implicit none
    private
    public :: fluid_load
@@ -137,23 +138,6 @@ contains
          m = 0
       end if
    end function dg3
-
-   pure function outer3(a, b) result(m)
-      real(dp), intent(in) :: a(3), b(3)
-      real(dp) :: m(3, 3)
-      integer :: j
-      do j = 1, 3
-         m(:, j) = a*b(j)
-      end do
-   end function outer3
-
-   pure function identity3() result(m)
-      real(dp) :: m(3, 3)
-      m = 0
-      m(1, 1) = 1
-      m(2, 2) = 1
-      m(3, 3) = 1
-   end function identity3
 
    !> d(|V| V)/dV = |V| I + V V^T / |V| (0 at V = 0).
    pure function dg(v) result(m)

@@ -71,6 +71,7 @@ module xcable_model_rod3d
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
    use xcable_loads_load, only: load_slot, cell_kinematics
+   use xcable_vector3, only: outer3, identity3
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
@@ -616,7 +617,7 @@ contains
          call self%law%tension_stiffness(self%l1(c) - 1, f, fp)
          tc = self%e1(:, c)/self%l1(c)
          self%force(:, c) = f*tc
-         if (with_jacobian) self%block(:, :, 0, c) = fp*outer(tc, tc) + f/self%l1(c)*(identity3() - outer(tc, tc))
+         if (with_jacobian) self%block(:, :, 0, c) = fp*outer3(tc, tc) + f/self%l1(c)*(identity3() - outer3(tc, tc))
       end do
       call add_couples(self, t, t, .false., with_jacobian)
       do k = 2, n - 1
@@ -702,8 +703,8 @@ contains
             lsum = l0 + l1
             wsum = e0 + e1
             self%force(:, c) = q*wsum/lsum
-            if (with_jacobian) self%block(:, :, 0, c) = outer(wsum/lsum, dq*e1/l1) &
-                                                        + q*(identity3()/lsum - outer(wsum, e1/l1)/lsum**2)
+            if (with_jacobian) self%block(:, :, 0, c) = outer3(wsum/lsum, dq*e1/l1) &
+                                                        + q*(identity3()/lsum - outer3(wsum, e1/l1)/lsum**2)
          end associate
       end do
       do k = 2, n - 1
@@ -1118,22 +1119,6 @@ contains
       r(2:4) = p(1)*q(2:4) + q(1)*p(2:4) + [p(3)*q(4) - p(4)*q(3), p(4)*q(2) - p(2)*q(4), p(2)*q(3) - p(3)*q(2)]
    end function quaternion_product
 
-   pure function outer(a, b) result(m)
-      real(dp), intent(in) :: a(3), b(3)
-      real(dp) :: m(3, 3)
-      integer :: j
-      do j = 1, 3
-         m(:, j) = a*b(j)
-      end do
-   end function outer
-
-   pure function identity3() result(m)
-      real(dp) :: m(3, 3)
-      m = 0
-      m(1, 1) = 1
-      m(2, 2) = 1
-      m(3, 3) = 1
-   end function identity3
    ! ---- dual-number arithmetic ----
 
    !> A constant (no derivatives).

@@ -1,0 +1,36 @@
+!> Small 3-D vector algebra shared by the 3-D rod, its driver and the fluid
+!> loads: the outer product, the identity and the cross product.
+module xcable_vector3
+   use xcable_kinds, only: dp
+   implicit none
+   private
+   public :: outer3, identity3, cross3
+
+contains
+
+   !> a b^T.
+   pure function outer3(a, b) result(m)
+      real(dp), intent(in) :: a(3), b(3)
+      real(dp) :: m(3, 3)
+      integer :: j
+      do j = 1, 3
+         m(:, j) = a*b(j)
+      end do
+   end function outer3
+
+   !> The 3x3 identity.
+   pure function identity3() result(m)
+      real(dp) :: m(3, 3)
+      m = 0
+      m(1, 1) = 1
+      m(2, 2) = 1
+      m(3, 3) = 1
+   end function identity3
+
+   !> a x b.
+   pure function cross3(a, b) result(c)
+      real(dp), intent(in) :: a(3), b(3)
+      real(dp) :: c(3)
+      c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
+   end function cross3
+end module xcable_vector3

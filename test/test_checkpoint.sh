@@ -4,9 +4,10 @@
 #   test/test_checkpoint.sh [path/to/xcable]        (default bin/xcable)
 #
 # One case (the paper's rupture at 180 kN in water with a current and
-# Kelvin-Voigt damping, 481 nodes, 1184 steps, about 2.5 s) is run three ways:
+# Kelvin-Voigt damping, 481 nodes, 2114 steps, about 1.8 s on an idle core of
+# the development machine) is run three ways:
 #   reference  uninterrupted, without checkpoints;
-#   killed     checkpoint_interval = 1 s, SIGKILL once its first checkpoint
+#   killed     checkpoint_interval = 0.2 s, SIGKILL once its first checkpoint
 #              is there and a snapshot has been written after it (the file
 #              stays 'running'; the resume cuts that snapshot), then --resume;
 #   stopped    no checkpoint interval, SIGTERM 0.3 s after the result file
@@ -77,7 +78,7 @@ write_case() {
 &rupture  t_break = 0.005 /
 &material damping = 2000 /
 &fluid    density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_x = 0.5 /
-&numerics nodes = 481, courant = 1.0, t_end = 0.14 /
+&numerics nodes = 481, courant = 1.0, t_end = 0.25 /
 &output   file = '$1.h5', interval = 0.01, gnuplot = .true., energy = .true.$2 /
 EOF
 }
@@ -107,7 +108,7 @@ steps=$(int_attr ref.h5 /summary/steps)
 differs() { ! same_as_reference "$1" >/dev/null; }
 
 echo "test_checkpoint: SIGKILL after the first checkpoint, then --resume"
-write_case killed ', checkpoint_interval = 1'
+write_case killed ', checkpoint_interval = 0.2'
 # snapshots FILE: snapshots in a result file; counted CHECKPOINT: those its checkpoint counts.
 snapshots() { HDF5_USE_FILE_LOCKING=FALSE h5dump -H -d /time "$1" 2>/dev/null | sed -n 's/.*SIMPLE { ( \([0-9]*\) ).*/\1/p'; }
 counted() { h5dump -d /progress/snapshot_index "$1" 2>/dev/null | sed -n 's/^ *(0): \([0-9]*\)$/\1/p'; }
@@ -117,8 +118,9 @@ beyond_checkpoint() {
    c=$(counted killed.h5.ckpt)
    [[ -n $n && -n $c ]] && ((n > c))
 }
-# The first checkpoint (after 1 s of dynamics), then a snapshot written after it (1 s before the
-# next). A new checkpoint between that look and the kill would leave nothing to cut: then again
+# The first checkpoint (after 0.2 s of dynamics), then a snapshot written after it (before the
+# next, 0.2 s later; a snapshot comes every 0.01 s of the run's time, about 0.07 s of wall
+# time). A new checkpoint between that look and the kill would leave nothing to cut: then again
 # (at most three times).
 for attempt in 1 2 3; do
    rm -f killed.h5 killed.h5.ckpt killed.h5.ckpt.tmp killed.snapshots.dat killed.history.dat

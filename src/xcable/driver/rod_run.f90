@@ -1043,8 +1043,11 @@ contains
                   return
                end if
             end do
+            ! Each cell's rotation once (dphi_b of node k is dphi_a of node k + 1): it halves the
+            ! atan2 calls here, 2 % of fast_180kN's instructions.
+            if (piece%n >= 3) dphi_b = atan2(cross2(piece%e0(:, 1), piece%e1(:, 1)), dot_product(piece%e0(:, 1), piece%e1(:, 1)))
             do k = 2, piece%n - 1
-               dphi_a = atan2(cross2(piece%e0(:, k - 1), piece%e1(:, k - 1)), dot_product(piece%e0(:, k - 1), piece%e1(:, k - 1)))
+               dphi_a = dphi_b
                dphi_b = atan2(cross2(piece%e0(:, k), piece%e1(:, k)), dot_product(piece%e0(:, k), piece%e1(:, k)))
                if (abs(piece%th1(k) - piece%th0(k) - (dphi_b - dphi_a)) > 3.0_dp) then
                   call fatal_error(error, 'the turning angle at node '//str(k)//' of piece '//str(p)// &

@@ -39,6 +39,8 @@ module xcable_material_law
       procedure :: strain_at
       !> Tension and stiffness together (one evaluation where the law allows).
       procedure :: tension_stiffness
+      !> Tension, stiffness and its slope together (one evaluation where the law allows).
+      procedure :: tension_stiffness_slope
    end type material_law
 
    abstract interface
@@ -71,6 +73,7 @@ module xcable_material_law
       procedure :: strain_energy => tanh_strain_energy
       procedure :: name => tanh_name
       procedure :: tension_stiffness => tanh_tension_stiffness
+      procedure :: tension_stiffness_slope => tanh_tension_stiffness_slope
    end type tanh_law
 
    !> T = EA eps.
@@ -164,6 +167,34 @@ contains
       f = self%tension(eps)
       fp = self%stiffness(eps)
    end subroutine tension_stiffness
+
+   !> Tension f(eps), stiffness f'(eps) and its slope f''(eps) of any law (three calls).
+   pure subroutine tension_stiffness_slope(self, eps, f, fp, fpp)
+      !> The law.
+      class(material_law), intent(in) :: self
+      !> Strain.
+      real(dp), intent(in) :: eps
+      !> Tension, stiffness and slope of the stiffness, N.
+      real(dp), intent(out) :: f, fp, fpp
+      f = self%tension(eps)
+      fp = self%stiffness(eps)
+      fpp = self%stiffness_slope(eps)
+   end subroutine tension_stiffness_slope
+
+   !> tanh_tension, tanh_stiffness and tanh_stiffness_slope with one tanh and one cosh:
+   !> the same expressions, so the same bits as the three calls.
+   pure subroutine tanh_tension_stiffness_slope(self, eps, f, fp, fpp)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp), intent(out) :: f, fp, fpp
+      real(dp) :: x, t, c
+      x = self%p(2)*eps + self%p(3)
+      t = tanh(x)
+      c = cosh(x)
+      f = self%p(1)*t + self%p(4) + self%p(5)*eps
+      fp = self%p(1)*self%p(2)/c**2 + self%p(5)
+      fpp = -2*self%p(1)*self%p(2)**2*t/c**2
+   end subroutine tanh_tension_stiffness_slope
 
    !> Tension and stiffness of the tanh law from one exponential q = exp(2 x):
    !> tanh x = 1 - 2 d and 1 / cosh^2 x = 4 q d^2 with d = 1 / (1 + q). Near

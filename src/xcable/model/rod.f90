@@ -607,7 +607,7 @@ contains
       real(dp), intent(out) :: w1(n - 1)
       logical, intent(out) :: w1_ok(n - 1)
       integer :: c
-      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid
+      real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid, f, fp, fpp
       real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
       jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
       do c = 1, n - 1
@@ -618,8 +618,11 @@ contains
             h = eps1 - eps0
             if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
-               q = law%tension(mid) + law%stiffness_slope(mid)*h*h/24
-               dq = 0.5_dp*law%stiffness(mid) + law%stiffness_slope(mid)*h/12
+               ! f, f', f'' in one call: the tanh law's share one tanh and one cosh
+               ! (separate calls computed three of each).
+               call law%tension_stiffness_slope(mid, f, fp, fpp)
+               q = f + fpp*h*h/24
+               dq = 0.5_dp*fp + fpp*h/12
                w1(c) = 0
                w1_ok(c) = .false.
             else
@@ -747,8 +750,16 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: th
       bend_energy = 0
-      if (k >= 2 .and. k <= self%n - 1) bend_energy = 2*self%ei*tan(0.5_dp*th)**2/self%dual(k)
+      if (k >= 2 .and. k <= self%n - 1) bend_energy = bend_energy_of(self, k, tan(0.5_dp*th))
    end function bend_energy
+
+   !> bend_energy from t = tan(th / 2).
+   pure real(dp) function bend_energy_of(self, k, t)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: t
+      bend_energy_of = 2*self%ei*t**2/self%dual(k)
+   end function bend_energy_of
 
    !> The discrete curvature 2 tan(th / 2) / h_k of node k, 1/m (counter-clockwise positive).
    pure real(dp) function bend_curvature(self, k, th)
@@ -763,10 +774,16 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      real(dp) :: t
-      t = tan(0.5_dp*th)
-      bend_moment = 2*self%ei*t*(1 + t*t)/self%dual(k)
+      bend_moment = bend_moment_of(self, k, tan(0.5_dp*th))
    end function bend_moment
+
+   !> bend_moment from t = tan(th / 2).
+   pure real(dp) function bend_moment_of(self, k, t)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: t
+      bend_moment_of = 2*self%ei*t*(1 + t*t)/self%dual(k)
+   end function bend_moment_of
 
    !> d2B/dth2 of node k, N m.
    pure real(dp) function bend_stiffness(self, k, th)
@@ -802,10 +819,12 @@ contains
          b1 = 0
          b1_ok = .false.
       else
-         b1 = bend_energy(self, k, th1)
+         ! One tan for B(th1) and its moment (the compiler called tan twice here).
+         t = tan(0.5_dp*th1)
+         b1 = bend_energy_of(self, k, t)
          b1_ok = .true.
          m = (b1 - b0)/h
-         dm = (bend_moment(self, k, th1) - m)/h
+         dm = (bend_moment_of(self, k, t) - m)/h
       end if
    end subroutine bend_divided
 

@@ -66,6 +66,9 @@ module xcable_material_law
    type, extends(material_law) :: tanh_law
       !> Coefficients p1..p5.
       real(dp) :: p(5) = paper_tanh_coefficients
+      !> p3 and log cosh p3, the strain energy's constant term, as new_law sets them; used
+      !> while p(3) is lc3(1). It saves an exp and a log per strain energy (3 % of fast_180kN).
+      real(dp) :: lc3(2) = [huge(1.0_dp), 0.0_dp]
    contains
       procedure :: tension => tanh_tension
       procedure :: stiffness => tanh_stiffness
@@ -106,7 +109,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       select case (name)
       case ('tanh')
-         allocate (law, source=tanh_law(p=p, strain_max=strain_max))
+         allocate (law, source=tanh_law(p=p, strain_max=strain_max, lc3=[p(3), log_cosh(p(3))]))
       case ('linear')
          allocate (law, source=linear_law(ea=ea, strain_max=strain_max))
       case default
@@ -237,8 +240,13 @@ contains
    elemental function tanh_strain_energy(self, eps) result(val)
       class(tanh_law), intent(in) :: self
       real(dp), intent(in) :: eps
-      real(dp) :: val
-      val = self%p(1)/self%p(2)*(log_cosh(self%p(2)*eps + self%p(3)) - log_cosh(self%p(3))) &
+      real(dp) :: val, c3
+      if (self%lc3(1) == self%p(3)) then
+         c3 = self%lc3(2)
+      else
+         c3 = log_cosh(self%p(3))
+      end if
+      val = self%p(1)/self%p(2)*(log_cosh(self%p(2)*eps + self%p(3)) - c3) &
             + self%p(4)*eps + 0.5_dp*self%p(5)*eps**2
    end function tanh_strain_energy
 

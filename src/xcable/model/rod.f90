@@ -790,10 +790,16 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      real(dp) :: t
-      t = tan(0.5_dp*th)
-      bend_stiffness = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual(k)
+      bend_stiffness = bend_stiffness_of(self, k, tan(0.5_dp*th))
    end function bend_stiffness
+
+   !> bend_stiffness from t = tan(th / 2).
+   pure real(dp) function bend_stiffness_of(self, k, t)
+      class(rod_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: t
+      bend_stiffness_of = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual(k)
+   end function bend_stiffness_of
 
    !> The discrete gradient of the bending energy of node k between the turning
    !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
@@ -814,8 +820,8 @@ contains
          t = tan(0.5_dp*mid)
          ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
          third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
-         m = bend_moment(self, k, mid) + third*h*h/24
-         dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12
+         m = bend_moment_of(self, k, t) + third*h*h/24
+         dm = 0.5_dp*bend_stiffness_of(self, k, t) + third*h/12
          b1 = 0
          b1_ok = .false.
       else

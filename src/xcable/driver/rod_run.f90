@@ -33,7 +33,7 @@ module xcable_rod_run
    use xcable_strings, only: str
    use xcable_scene, only: scene_type, scene_grid
    use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
-                               bend_curvature
+                               bend_curvature, cell_rotations
    use xcable_ends_end, only: end_condition
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
@@ -1028,6 +1028,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: p, c, k
       real(dp) :: dphi_a, dphi_b
+      real(dp), allocatable :: dphi(:)
       do p = 1, size(self%pieces)
          associate (piece => self%pieces(p)%problem%piece, x => self%pieces(p)%x)
             if (.not. all(ieee_is_finite(x))) then
@@ -1043,12 +1044,13 @@ contains
                   return
                end if
             end do
-            ! Each cell's rotation once (dphi_b of node k is dphi_a of node k + 1): it halves the
-            ! atan2 calls here, 2 % of fast_180kN's instructions.
-            if (piece%n >= 3) dphi_b = atan2(cross2(piece%e0(:, 1), piece%e1(:, 1)), dot_product(piece%e0(:, 1), piece%e1(:, 1)))
+            ! Each cell's rotation once, the last evaluation's where it was at x (cell_rotations).
+            if (allocated(dphi)) deallocate (dphi)
+            allocate (dphi(piece%n - 1))
+            call cell_rotations(piece, reshape(x, [2, piece%n]), dphi)
             do k = 2, piece%n - 1
-               dphi_a = dphi_b
-               dphi_b = atan2(cross2(piece%e0(:, k), piece%e1(:, k)), dot_product(piece%e0(:, k), piece%e1(:, k)))
+               dphi_a = dphi(k - 1)
+               dphi_b = dphi(k)
                if (abs(piece%th1(k) - piece%th0(k) - (dphi_b - dphi_a)) > 3.0_dp) then
                   call fatal_error(error, 'the turning angle at node '//str(k)//' of piece '//str(p)// &
                                    ' passed half a turn within one step of '//str(h)//' s (a fold)', stat_numerics)

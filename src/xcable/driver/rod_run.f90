@@ -1195,6 +1195,7 @@ contains
                self%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
             end do
             if (self%options%energy) then
+               call piece%complete_memo()
                call piece%geometry(run_piece%r, piece%e1, piece%l1, piece%th1)
                en = en + piece%energies(run_piece%r, run_piece%v, piece%l1, piece%th1)
             end if

@@ -139,6 +139,8 @@ module xcable_model_rod
       procedure :: geometry => rod_geometry
       !> Strain, kinetic, bending and gravity energy, J.
       procedure :: energies => rod_energies
+      !> The strain and bending energies of the last step evaluation where it skipped them.
+      procedure :: complete_memo => rod_complete_memo
       !> M V.
       procedure :: mass_times => rod_mass_times
       !> Residual and Jacobian of the static equilibrium at time t.
@@ -367,6 +369,26 @@ contains
          end do
       end do
    end subroutine mass_product
+
+   !> Fill in the energies that the last step evaluation did not compute (memo_w of the
+   !> cells it took by the Taylor form, memo_b likewise): the same values that
+   !> rod_energies and the next prepare_step's old_energies would each compute (it saves
+   !> computing them twice per step when the ledger is kept, 2 % of fast_180kN).
+   subroutine rod_complete_memo(self)
+      class(rod_piece), intent(inout) :: self
+      integer :: c, k
+      if (.not. self%memo_valid) return
+      do c = 1, self%n - 1
+         if (self%memo_w_ok(c)) cycle
+         self%memo_w(c) = self%law%strain_energy(self%memo_l(c) - 1)
+         self%memo_w_ok(c) = .true.
+      end do
+      do k = 2, self%n - 1
+         if (self%memo_b_ok(k)) cycle
+         self%memo_b(k) = bend_energy(self, k, self%memo_th(k))
+         self%memo_b_ok(k) = .true.
+      end do
+   end subroutine rod_complete_memo
 
    !> Energies of a state: strain, kinetic, bending, gravity (J), from the
    !> geometry e, l, th of R (as rod_geometry gives it).

@@ -198,7 +198,7 @@ echo "$PROG: a moved sweep, interrupted and killed tasks resumed with --failed-o
 # Three copies of one case (max_wall_time may differ on --resume; it changes nothing else).
 mkdir -p "$tmp/here"
 "$here/sweep-generate" "$repo/input/fast_180kN.nml" "$tmp/here/ck" numerics%max_wall_time=0,1000,2000 \
-  numerics%nodes=481 output%checkpoint_interval=0.5 >/dev/null
+  numerics%nodes=961 output%checkpoint_interval=0.2 >/dev/null
 mkdir -p "$tmp/there"
 mv "$tmp/here/ck" "$tmp/there/ck"
 rmdir "$tmp/here"

@@ -16,7 +16,7 @@ module xcable_rod3d_drive
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
-   use xcable_rod_run, only: rod_run, end_value, snapshot_time
+   use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change
    use xcable_vector3, only: cross3
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece
@@ -285,13 +285,6 @@ contains
          s%factorisations = self%run%iterations
       end associate
    end subroutine finish
-
-   !> Whether an end moves or changes its load in time.
-   logical function ends_change(rod)
-      type(rod_run), intent(in) :: rod
-      ends_change = rod%scene%end_a%time_dependent() .or. rod%scene%end_b%time_dependent() .or. &
-                    rod%scene%end_a%kind() == 'motion' .or. rod%scene%end_b%kind() == 'motion'
-   end function ends_change
 
    !> History labels, slots and the record of t = 0.
    subroutine start_records(self, rod)

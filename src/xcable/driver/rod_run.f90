@@ -48,7 +48,7 @@ module xcable_rod_run
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
-   public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time
+   public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
 
    !> Why advance returned: the run ended (t_end or an error), a checkpoint is
    !> due, or SIGTERM arrived.

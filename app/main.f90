@@ -126,7 +126,8 @@ program xcable_main
       call remove_checkpoint(checkpoint)
       run_id = new_run_id()
       call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
-                         config%gnuplot, trim(config%scheme), sim%terms, sim%piece_starts(), error, run_id=run_id)
+                         config%gnuplot, trim(config%scheme), sim%terms, sim%piece_starts(), error, run_id=run_id, &
+                         three_d=sim%model == '3d')
       if (.not. allocated(error)) call output%mark('model', sim%model, error)
       if (allocated(error)) then
          call output%finish('failed', error%message)

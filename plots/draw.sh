@@ -6,7 +6,8 @@
 # figure). Works for any scene (ends held, free, loaded, moved or carrying a mass; a break at an
 # end or inside the cable). Writes <outdir>/{motion,tension,velocity,ends,energy,map}.<png|pdf>;
 # the map (tension against s and t) only from 30 snapshots up (&output interval), the energy
-# figure only for a run with the energy ledger. The titles and the names of the ends in the keys
+# figure only for a run with the energy ledger; for a 3-D run also motion3d (perspective, to
+# scale) and plan (seen from above). The titles and the names of the ends in the keys
 # come from the namelist in <stem>.h5 when h5dump is installed.
 set -euo pipefail
 
@@ -40,8 +41,13 @@ if [ -n "$text" ]; then
   labels="label_a='$(end_label "$text" a)'; label_b='$(end_label "$text" b)'; "
 fi
 nsnap=$(grep -c '^# t = ' "$stem.snapshots.dat" || true)
+kinds="motion tension velocity ends energy map"
+# A 3-D run (its snapshot text has y in column 10): a view in perspective and a plan view too.
+if sed -n '2p' "$stem.snapshots.dat" | grep -q ' y\[m\]'; then
+  kinds="$kinds motion3d plan"
+fi
 failed=()
-for kind in motion tension velocity ends energy map; do
+for kind in $kinds; do
   out="$outdir/$kind.$ext"
   rm -f "$out"
   if [ "$kind" = map ] && [ "$nsnap" -lt 30 ]; then

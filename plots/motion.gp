@@ -1,4 +1,5 @@
-# Motion of the cable in the vertical plane, one line per snapshot (the paper's figures 2 and 5).
+# Motion of the cable in the vertical plane, one line per snapshot (the paper's figures 2 and 5);
+# for a 3-D run its projection on the x-z plane (plots/motion3d.gp and plots/plan.gp show the rest).
 #   gnuplot -e "stem='results/slow_315kN'; out='motion.png'" plots/motion.gp
 # Optional: title='...' (the case, for the title), label_a, label_b, vexag. Variables: see plots/common.gp.
 # x and z are drawn with equal lengths per unit, except that the vertical scale is exaggerated
@@ -14,6 +15,9 @@ if (!exists("plotdir")) { plotdir = _lastslash(ARG0, strlen(ARG0)) ? ARG0[1:_las
 load plotdir."/common.gp"
 load plotdir."/snapshots.gp"
 
+# A 3-D run (y in column 10 of its snapshot text): this figure is its projection on the x-z plane.
+_plane = int(system(sprintf("awk '/^#/ || NF == 0 { next } { print NF; exit }' '%s'", snap))) >= 15 ? \
+         "projected on the vertical x-z plane" : "in the vertical plane"
 # The chord at t = 0: from the first point of the first snapshot (end a) to its last (end b).
 _chord = system(sprintf("awk '/^# t = / { if (n++) exit; next } /^#/ || NF == 0 { next } { if (!k++) { print $2, $3 } x = $2; z = $3 } END { print x, z }' '%s'", snap))
 ca_x = real(word(_chord, 1)); ca_z = real(word(_chord, 2))
@@ -77,14 +81,14 @@ if (!exists("panel")) {
     load plotdir."/terminal.gp"
     _what = v0_ex == 1 ? " (drawn to scale)" : sprintf(" (vertical scale exaggerated %d×)", v0_ex)
     if (two_views) {
-        set multiplot title sprintf("Motion of the cable in the vertical plane%s, and its deflection from the chord a–b (exaggerated %d×)\n%s", \
-            _what, v1_ex, title)
+        set multiplot title sprintf("Motion of the cable %s%s, and its deflection from the chord a–b (exaggerated %d×)\n%s", \
+            _plane, _what, v1_ex, title)
         set lmargin 12
         set rmargin 18
         set size 1, (_h0 + 0.0) / fig_h
         set origin 0, (_h1 + 0.0) / fig_h
     } else {
-        set title sprintf("Motion of the cable in the vertical plane%s\n%s", _what, title)
+        set title sprintf("Motion of the cable %s%s\n%s", _plane, _what, title)
     }
 } else {
     set title title

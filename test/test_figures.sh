@@ -8,6 +8,8 @@
 #                          two pieces in the snapshots, four ends in the history; 41 nodes, 30 ms
 #   heave                  a hanging 200 kg mass, the top moved up and down (a line that stays
 #                          on one vertical; a moving end and a mass end); 21 nodes, 1.5 s
+#   sway3d                 the 3-D model: a slack line, end b 20 m off the x-z plane, let go;
+#                          21 nodes, 0.5 s: y columns in the text, 3-D and plan views
 set -euo pipefail
 
 root=$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)
@@ -62,6 +64,47 @@ run heave "&end_a    kind = 'motion', amplitude = 0.5, period = 1.0, ramp_time =
 &rupture  enabled = .false. /
 &numerics nodes = 21, courant = 1.0, t_end = 1.5 /" "interval = 0.05"
 stem_m=$tmp/break_middle stem_h=$tmp/heave
+# The 3-D model: end b off the x-z plane, released at once; snapshots every 50 ms.
+run sway3d "&end_b    kind = 'fixed', x = 40.0, y = 20.0, z = 0.0 /
+&rupture  s_break = 60.0, t_break = 0.0 /
+&numerics model = '3d', nodes = 21, courant = 2.0, t_end = 0.5 /" "interval = 0.05"
+stem_3=$tmp/sway3d
+
+# The 3-D run's text: the snapshot header names the 3-D columns 10-15 and every data line has
+# 15 columns, y (column 10) reaching end b's 20 m; the history names each end's y, vy, force_y.
+want3="y[m] w[m/s] curvature_z[1/m] twist[1/m] binormal_shear[N] curvature_n[1/m]"
+if sed -n 2p "$stem_3.snapshots.dat" | grep -qF "curvature[1/m] $want3"; then
+  pass "sway3d: the snapshot header names the 3-D columns"
+else
+  fail "sway3d: snapshot header '$(sed -n 2p "$stem_3.snapshots.dat")' lacks '$want3'"
+fi
+cols=$(awk '/^#/ || NF == 0 { next } { print NF }' "$stem_3.snapshots.dat" | sort -u | tr '\n' ' ')
+ymax=$(awk '/^#/ || NF == 0 { next } { if ($10 > m) m = $10 } END { print m + 0 }' "$stem_3.snapshots.dat")
+if [ "$cols" = "15 " ] && awk -v y="$ymax" 'BEGIN { exit !(y > 19.9 && y < 20.1) }'; then
+  pass "sway3d: 15 columns in every snapshot line, largest y $ymax m"
+else
+  fail "sway3d: snapshot lines have '$cols' columns, largest y '$ymax' (expected 15 columns, y up to 20 m)"
+fi
+if head -n 1 "$stem_3.history.dat" | grep -qF "end_b:y[m] end_b:vy[m/s] end_b:force_y[N]"; then
+  pass "sway3d: the history names the ends' y columns"
+else
+  fail "sway3d: history header lacks end_b:y[m] end_b:vy[m/s] end_b:force_y[N]: $(head -n 1 "$stem_3.history.dat")"
+fi
+if command -v h5ls >/dev/null 2>&1; then
+  missing=""
+  listing=$(h5ls -r "$stem_3.h5")
+  for d in /binormal_shear /curvature_n /static/binormal_shear /static/y /history/end_a/force_y /history/end_b/y \
+           /history/end_b/vy; do
+    printf '%s\n' "$listing" | grep -q "^$d " || missing="$missing $d"
+  done
+  if [ -z "$missing" ]; then pass "sway3d: the HDF5 file has the 3-D fields, static fields and end history"
+  else fail "sway3d: the HDF5 file lacks$missing"; fi
+  if h5ls -r "$stem_b.h5" | grep -q "binormal_shear\|/y "; then
+    fail "short_315 (a planar run) has 3-D datasets: $(h5ls -r "$stem_b.h5" | grep "binormal_shear\|/y ")"
+  else
+    pass "short_315: a planar run has no 3-D datasets"
+  fi
+fi
 
 # What the scripts read from the files: the pieces of the snapshots and the ends of the history.
 # probe <stem>: prints "npieces nsnap nends Lcab" as the plot scripts see them.
@@ -99,13 +142,26 @@ check() {
   pass "$name"
 }
 
-# Each single-run script on each run (the paper's layout, the break in the middle, the heave).
-for stem in "$stem_a" "$stem_b" "$stem_m" "$stem_h"; do
+# Each single-run script on each run (the paper's layout, the break in the middle, the heave, 3-D).
+for stem in "$stem_a" "$stem_b" "$stem_m" "$stem_h" "$stem_3"; do
   for kind in motion tension velocity ends energy map; do
     out=$stem.$kind.png rc=0
     gnuplot -e "stem='$stem'; out='$out'" "$plots/$kind.gp" 2> "$stem.$kind.err" || rc=$?
     check "$kind.gp ($(basename "$stem"))" "$out" "$stem.$kind.err" "$rc"
   done
+done
+# The 3-D views of the 3-D run, and a clear refusal of a planar run.
+for kind in motion3d plan; do
+  out=$stem_3.$kind.png rc=0
+  gnuplot -e "stem='$stem_3'; out='$out'" "$plots/$kind.gp" 2> "$stem_3.$kind.err" || rc=$?
+  check "$kind.gp (sway3d)" "$out" "$stem_3.$kind.err" "$rc"
+  rc=0
+  gnuplot -e "stem='$stem_b'; out='$tmp/planar_$kind.png'" "$plots/$kind.gp" 2> "$tmp/planar_$kind.err" || rc=$?
+  if [ "$rc" -ne 0 ] && [ ! -e "$tmp/planar_$kind.png" ] && grep -q "not a 3-D run" "$tmp/planar_$kind.err"; then
+    pass "$kind.gp refuses a planar run"
+  else
+    fail "$kind.gp on a planar run: exit $rc, messages: $(cat "$tmp/planar_$kind.err")"
+  fi
 done
 # The other fields of the map.
 for field in strain u v; do
@@ -126,12 +182,16 @@ done
 
 # The drivers: draw.sh on each kind of run, in PNG, and in PDF; draw.sh's messages are not
 # warnings (it says which figures it skips and why).
-for stem in "$stem_b" "$stem_m" "$stem_h"; do
+for stem in "$stem_b" "$stem_m" "$stem_h" "$stem_3"; do
   name=$(basename "$stem") rc=0
   "$plots/draw.sh" "$stem" "$tmp/draw_$name" > "$tmp/draw_$name.log" 2> "$tmp/draw_$name.err" || rc=$?
   for kind in motion tension velocity ends energy; do
     check "draw.sh $kind.png ($name)" "$tmp/draw_$name/$kind.png" "$tmp/draw_$name.err" "$rc"
   done
+done
+for kind in motion3d plan; do
+  check "draw.sh $kind.png (sway3d)" "$tmp/draw_sway3d/$kind.png" "$tmp/draw_sway3d.err" 0
+  if [ -e "$tmp/draw_short_315/$kind.png" ]; then fail "draw.sh drew $kind.png for a planar run (short_315)"; fi
 done
 check "draw.sh map.png (break_middle)" "$tmp/draw_break_middle/map.png" "$tmp/draw_break_middle.err" 0
 if [ ! -e "$tmp/draw_short_315/map.png" ] && grep -q "map not drawn" "$tmp/draw_short_315.log"; then

@@ -7,6 +7,7 @@
 !> side of end a and of end b). For each end the history keeps its position,
 !> velocity, the tension of its cell and the external force on it (the
 !> support's reaction for a held end, the applied force for a loaded one).
+!> A 3-D run also keeps the y components (ends_y: y, vy, force_y).
 module xcable_run_records
    use xcable_kinds, only: dp
    use xcable_error, only: error_type
@@ -14,11 +15,15 @@ module xcable_run_records
    private
    public :: run_history, run_summary, static_info, run_observer, end_summary
    public :: n_end_quantities, end_quantity_names, n_energy, energy_names, field_names, n_fields
+   public :: n_end_quantities_y, end_quantity_names_y, n_fields3, field3_names, field3_units
 
    !> Quantities recorded per end and step.
    integer, parameter :: n_end_quantities = 7
    character(len=*), parameter :: end_quantity_names(n_end_quantities) = &
       [character(len=8) :: 'x', 'z', 'vx', 'vz', 'tension', 'force_x', 'force_z']
+   !> The y components a 3-D run records per end and step besides them.
+   integer, parameter :: n_end_quantities_y = 3
+   character(len=*), parameter :: end_quantity_names_y(n_end_quantities_y) = [character(len=8) :: 'y', 'vy', 'force_y']
    !> Energy ledger columns (J): ledger = strain + kinetic + bending + gravity - work - loads + dissipation;
    !> work: of the ends; loads: of the distributed loads (fluid drag and added mass).
    integer, parameter :: n_energy = 8
@@ -28,6 +33,14 @@ module xcable_run_records
    integer, parameter :: n_fields = 8
    character(len=*), parameter :: field_names(n_fields) = &
       [character(len=9) :: 'tension', 'shear', 'strain', 'u', 'v', 'x', 'z', 'curvature']
+   !> Fields a 3-D run writes besides them (driver/rod3d_fields.f90): y, the
+   !> velocity along y (w), the curvature about z (the plan view's), the
+   !> twist rate Omega1 = dpsi/ds, the shear force along the binormal (Sb)
+   !> and the curvature about the normal (Omega2); and their units.
+   integer, parameter :: n_fields3 = 6
+   character(len=*), parameter :: field3_names(n_fields3) = &
+      [character(len=14) :: 'y', 'w', 'curvature_z', 'twist', 'binormal_shear', 'curvature_n']
+   character(len=*), parameter :: field3_units(n_fields3) = [character(len=3) :: 'm', 'm/s', '1/m', '1/m', 'N', '1/m']
 
    !> One record per accepted step (index 0: the static state at t = 0).
    type :: run_history
@@ -41,6 +54,8 @@ module xcable_run_records
       character(len=8), allocatable :: end_labels(:)
       !> End quantities (n_end_quantities, ends, 0:n).
       real(dp), allocatable :: ends(:, :, :)
+      !> The y components of a 3-D run (n_end_quantities_y, ends, 0:n); not allocated for a planar run.
+      real(dp), allocatable :: ends_y(:, :, :)
       !> Energy ledger (n_energy, 0:n), J, when asked for.
       real(dp), allocatable :: energy(:, :)
    contains
@@ -100,6 +115,9 @@ module xcable_run_records
       integer :: newton_iterations = 0
       !> Euler parameters of the box scheme (absent for the rod).
       real(dp), allocatable :: beta0(:), beta3(:)
+      !> Fields of a 3-D run besides field_names (nodes, n_fields3), in the order of field3_names
+      !> (absent in 2-D).
+      real(dp), allocatable :: extra(:, :)
    end type static_info
 
    !> Receives the static state and the snapshots of a run (the output file, or a test).
@@ -163,7 +181,7 @@ contains
    end subroutine observer_snapshot_extra
 
    !> Make room for at least n records (keeps the content).
-   subroutine history_reserve(self, n, n_ends, energy)
+   subroutine history_reserve(self, n, n_ends, energy, with_y)
       !> History.
       class(run_history), intent(inout) :: self
       !> Records needed (steps).
@@ -172,9 +190,17 @@ contains
       integer, intent(in) :: n_ends
       !> Whether the energy ledger is kept.
       logical, intent(in) :: energy
+      !> Keep the y components too (a 3-D run; ends_y). Once kept, they grow with the rest.
+      logical, intent(in), optional :: with_y
       real(dp), allocatable :: r(:), e(:, :), q(:, :, :)
       integer, allocatable :: i(:)
       integer :: m
+      if (present(with_y)) then
+         if (with_y .and. .not. allocated(self%ends_y) .and. allocated(self%time)) then
+            allocate (self%ends_y(n_end_quantities_y, n_ends, 0:ubound(self%time, 1)))
+            self%ends_y = 0
+         end if
+      end if
       if (allocated(self%time)) then
          if (ubound(self%time, 1) >= n) return
       end if
@@ -183,6 +209,12 @@ contains
          allocate (self%ends(n_end_quantities, n_ends, 0:n))
          self%ends = 0
          if (energy) allocate (self%energy(n_energy, 0:n))
+         if (present(with_y)) then
+            if (with_y) then
+               allocate (self%ends_y(n_end_quantities_y, n_ends, 0:n))
+               self%ends_y = 0
+            end if
+         end if
          return
       end if
       m = self%n
@@ -192,6 +224,10 @@ contains
       allocate (i(0:n)); i(0:m) = self%rejected(0:m); call move_alloc(i, self%rejected)
       allocate (q(n_end_quantities, n_ends, 0:n)); q = 0; q(:, :, 0:m) = self%ends(:, :, 0:m)
       call move_alloc(q, self%ends)
+      if (allocated(self%ends_y)) then
+         allocate (q(n_end_quantities_y, n_ends, 0:n)); q = 0; q(:, :, 0:m) = self%ends_y(:, :, 0:m)
+         call move_alloc(q, self%ends_y)
+      end if
       if (energy) then
          allocate (e(n_energy, 0:n)); e(:, 0:m) = self%energy(:, 0:m); call move_alloc(e, self%energy)
       end if

@@ -7,7 +7,9 @@
 !> of the 3-D statics. The dynamics take the planar run's steps (dt, the last
 !> one shortened to land on t_end and on the start of a break), snapshots at
 !> the same times (cubic Hermite inside a step), and the same history and
-!> ledger columns; the twist energy is booked with the strain energy.
+!> ledger columns; the twist energy is booked with the strain energy. The
+!> fields of a state are those of driver/rod3d_fields.f90; the history keeps
+!> the y components of the ends too (run_history%ends_y).
 !>
 !> Not yet: a break inside the cable (one piece only), step control (a step
 !> whose Newton iteration fails stops the run with an error), checkpoints.
@@ -17,21 +19,14 @@ module xcable_rod3d_drive
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
    use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change
-   use xcable_vector3, only: cross3
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece
    use xcable_ends_force, only: force_end
    use xcable_run_records, only: run_observer, n_fields
+   use xcable_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
    public :: rod3d_drive, n_fields3, field3_names
-
-   !> Fields a 3-D run writes besides the planar ones (field_names): y, the
-   !> velocity along y (w), the curvature about z (the plan view's) and the
-   !> twist rate Omega1 = dpsi/ds.
-   integer, parameter :: n_fields3 = 4
-   character(len=*), parameter :: field3_names(n_fields3) = &
-      [character(len=11) :: 'y', 'w', 'curvature_z', 'twist']
 
    !> A 3-D run.
    type :: rod3d_drive
@@ -150,6 +145,7 @@ contains
       ! The static state's records, now those of the 3-D statics.
       call fields3(self%run%problem%piece, self%run%x, self%run%v, rod%info%fields, extra)
       self%static_extra = extra
+      rod%info%extra = extra
       associate (r => self%run%x, f => rod%info%fields)
          rod%info%span = norm2(r(3*n - 2:3*n - 1) - r(1:2))
          rod%info%sag = sag3(r, n)
@@ -294,13 +290,13 @@ contains
       allocate (rod%history%end_labels(2))
       rod%history%end_labels = [character(len=8) :: 'end_a', 'end_b']
       rod%pieces(1)%end_slot = [1, 2]
-      call rod%history%reserve(16, 2, rod%options%energy)
+      call rod%history%reserve(16, 2, rod%options%energy, with_y=.true.)
       rod%history%n = -1
       call record(self, rod, 0, 0.0_dp)
    end subroutine start_records
 
-   !> Append a history record at the current time (the x and z components of
-   !> the end quantities, as the planar run's; y is in the snapshots).
+   !> Append a history record at the current time: the end quantities of the
+   !> planar run's (x and z components) and their y components (ends_y).
    subroutine record(self, rod, iterations, step)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
@@ -330,6 +326,7 @@ contains
             end if
             h%ends(:, side, i) = [x(3*k - 2), x(3*k), self%run%v(1, k), self%run%v(3, k), end_tension(piece, side), &
                                   f(1), f(3)]
+            h%ends_y(:, side, i) = [x(3*k - 1), self%run%v(2, k), f(2)]
          end do
          rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
          rod%summary%min_strain = min(rod%summary%min_strain, minval(piece%l1) - 1)
@@ -445,80 +442,4 @@ contains
       v = (d00*r0 + d01*r1)/h + d10*self%v_prev + d11*self%run%v
       call fields3(self%run%problem%piece, x, v, fields, extra)
    end subroutine interpolated
-
-   !> Fields on the nodes of a one-piece 3-D state (unknowns x, velocities v):
-   !> the planar fields in the order of field_names and the extra ones of
-   !> field3_names. Tension, strain and u as in the planar run (cell means,
-   !> ends extrapolated; u along the node tangent); v along the normal in the
-   !> vertical plane of the tangent, n = (t_z, 0, -t_x) / |(t_x, t_z)| (the
-   !> paper's normal for a planar scene); shear and curvature the components
-   !> about -y and y of the bending moment's derivative and of the discrete
-   !> curvature vector 2 tan(th/2) / h (c x d) / |c x d| of consecutive cells
-   !> c, d (the planar fields for a planar scene); curvature_z its component
-   !> about z; twist the rate dpsi/ds.
-   subroutine fields3(piece, x, v, fields, extra)
-      type(rod3d_piece), intent(in) :: piece
-      real(dp), intent(in) :: x(:), v(:, :)
-      real(dp), intent(out) :: fields(:, :), extra(:, :)
-      real(dp) :: r(3, piece%n), e(3, piece%n - 1), l(piece%n - 1), th(piece%n), ten(piece%n - 1), &
-                  eps(piece%n - 1), shear(piece%n - 1), m_y(piece%n), kap(3, piece%n), tau(piece%n - 1), &
-                  c(3), tk(3), nk(3), a, t2
-      integer :: n, k
-      n = piece%n
-      r = reshape(x(1:3*n), [3, n])
-      call piece%geometry(r, e, l, th)
-      kap = 0
-      m_y = 0
-      do k = 2, n - 1
-         c = cross3(e(:, k - 1), e(:, k))
-         a = norm2(c)
-         if (a > 0) then
-            c = c/a
-            t2 = tan(0.5_dp*th(k))
-            kap(:, k) = 2*t2/piece%dual_length(k)*c
-            ! The moment 2 EI t (1 + t^2) / h about -y.
-            m_y(k) = -2*piece%ei*t2*(1 + t2*t2)/piece%dual_length(k)*c(2)
-         end if
-      end do
-      do k = 1, n - 1
-         eps(k) = l(k) - 1
-         ten(k) = piece%law%tension(eps(k))
-         if (piece%damping > 0) ten(k) = ten(k) + piece%damping*dot_product(e(:, k), v(:, k + 1) - v(:, k))/ &
-                                         (piece%ds(k)*l(k))
-         shear(k) = (m_y(k + 1) - m_y(k))/(piece%ds(k)*l(k))
-      end do
-      tau = piece%twist_rates(x)
-      do k = 1, n
-         if (k == 1) then
-            fields(k, 1) = max(end_value(ten, 1), piece%law%tension(-0.99_dp))
-            fields(k, 2) = end_value(shear, 1)
-            fields(k, 3) = max(end_value(eps, 1), -0.99_dp)
-            tk = r(:, 2) - r(:, 1)
-            extra(k, 4) = tau(1)
-         else if (k == n) then
-            fields(k, 1) = max(end_value(ten, 2), piece%law%tension(-0.99_dp))
-            fields(k, 2) = end_value(shear, 2)
-            fields(k, 3) = max(end_value(eps, 2), -0.99_dp)
-            tk = r(:, n) - r(:, n - 1)
-            extra(k, 4) = tau(n - 1)
-         else
-            fields(k, 1) = 0.5_dp*(ten(k - 1) + ten(k))
-            fields(k, 2) = 0.5_dp*(shear(k - 1) + shear(k))
-            fields(k, 3) = 0.5_dp*(eps(k - 1) + eps(k))
-            tk = (r(:, k + 1) - r(:, k))/norm2(r(:, k + 1) - r(:, k)) + (r(:, k) - r(:, k - 1))/norm2(r(:, k) - r(:, k - 1))
-            extra(k, 4) = 0.5_dp*(tau(k - 1) + tau(k))
-         end if
-         tk = tk/max(norm2(tk), tiny(1.0_dp))
-         nk = [tk(3), 0.0_dp, -tk(1)]
-         nk = nk/max(norm2(nk), tiny(1.0_dp))
-         fields(k, 4) = dot_product(v(:, k), tk)
-         fields(k, 5) = dot_product(v(:, k), nk)
-         fields(k, 6) = r(1, k)
-         fields(k, 7) = r(3, k)
-         fields(k, 8) = kap(2, k)
-         extra(k, 1) = r(2, k)
-         extra(k, 2) = v(2, k)
-         extra(k, 3) = kap(3, k)
-      end do
-   end subroutine fields3
 end module xcable_rod3d_drive

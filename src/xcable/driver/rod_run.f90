@@ -1397,6 +1397,8 @@ contains
             e%max_tension = self%history%ends(5, j, 0)
             do i = 0, n
                speed = norm2(self%history%ends(3:4, j, i))
+               ! A 3-D run (driver/rod3d_drive.f90): with the y velocity.
+               if (allocated(self%history%ends_y)) speed = hypot(speed, self%history%ends_y(2, j, i))
                if (speed > e%peak_speed) then
                   e%peak_speed = speed
                   e%peak_speed_time = self%history%time(i)

@@ -7,12 +7,14 @@
 !>      run_id (the run's identifier, also in its checkpoints), resumes (how
 !>      often it was resumed from a checkpoint), model ('2d' or '3d')
 !>   /s, /time, and one 2-D dataset per field asked for in &output fields;
-!>      a 3-D run also /y, /w, /curvature_z, /twist (driver/rod3d_drive.f90)
+!>      a 3-D run also /y, /w, /curvature_z, /twist, /binormal_shear,
+!>      /curvature_n (field3_names; driver/rod3d_fields.f90)
 !>   /static/{s,x,z,tension,shear,strain,u,v,curvature} (+ beta0, beta3 of the
-!>      box scheme), attributes span, sag, end_angle, tension_a, tension_b,
-!>      newton_iterations
+!>      box scheme; + the 3-D fields of a 3-D run), attributes span, sag,
+!>      end_angle, tension_a, tension_b, newton_iterations
 !>   /history/{time,step,newton_iterations,rejected}
-!>   /history/<end>/{x,z,vx,vz,tension,force_x,force_z} for each end
+!>   /history/<end>/{x,z,vx,vz,tension,force_x,force_z} for each end (+ y, vy,
+!>      force_y of a 3-D run)
 !>   /history/energy/{strain,kinetic,bending,gravity,work,dissipation,ledger} with the ledger
 !>   /summary attributes
 !> The status is 'running' from creation, so a run that is killed never looks
@@ -28,7 +30,8 @@ module xcable_io_output
    use xcable_error, only: error_type, fatal_error, stat_io, stat_input
    use xcable_strings, only: str
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
-                                 field_names, n_fields, n_end_quantities, end_quantity_names
+                                 field_names, n_fields, n_end_quantities, end_quantity_names, n_end_quantities_y, &
+                                 end_quantity_names_y, n_fields3, field3_names, field3_units
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr, &
                              get_text_attr, get_int_attr, delete_attr
    use xcable_system_posix, only: replace_file
@@ -64,6 +67,11 @@ module xcable_io_output
       character(:), allocatable :: text_stem
       !> Output columns where a new piece starts (a blank line in the gnuplot text).
       integer, allocatable :: piece_starts(:)
+      !> A 3-D run: its snapshots come with the fields of field3_names (snapshot_extra),
+      !> which the gnuplot text appends as columns 10-15; the planar fields wait in
+      !> pending until they arrive.
+      logical :: three_d = .false.
+      real(dp), allocatable :: pending(:, :)
    contains
       procedure :: create => result_create
       procedure :: reopen => result_reopen
@@ -82,7 +90,7 @@ contains
 
    !> Create the file (status 'running') and write the provenance.
    subroutine result_create(self, path, s, fields, namelist_text, input_file, gnuplot, scheme, terms, piece_starts, error, &
-                            run_id)
+                            run_id, three_d)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Path of the HDF5 file.
@@ -105,6 +113,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       !> Identifier of the run (written as the attribute run_id; its checkpoints carry it too).
       character(*), intent(in), optional :: run_id
+      !> A 3-D run (its snapshots come with the fields of field3_names; default: no).
+      logical, intent(in), optional :: three_d
       integer :: hdferr, i, ios, status
       integer(hid_t) :: access
       character(len=256) :: msg
@@ -112,6 +122,8 @@ contains
       self%path = path
       self%s = s
       self%piece_starts = piece_starts
+      self%three_d = .false.
+      if (present(three_d)) self%three_d = three_d
       do i = 1, n_fields
          self%want(i) = has_word(fields, trim(field_names(i)))
       end do
@@ -162,9 +174,26 @@ contains
          self%gnuplot_text = .true.
          write (self%text_unit, '(a)') '# xcable snapshots: one block per time (gnuplot index), blocks separated by '// &
             'two blank lines; a single blank line separates the pieces of a broken cable'
-         write (self%text_unit, '(a)') '# columns: s[m] x[m] z[m] tension[N] strain[-] u[m/s] v[m/s] shear[N] '// &
-            'curvature[1/m]'
+         if (self%three_d) then
+            write (self%text_unit, '(a)') '# columns: s[m] x[m] z[m] tension[N] strain[-] u[m/s] v[m/s] shear[N] '// &
+               'curvature[1/m]'//extra_header()
+         else
+            write (self%text_unit, '(a)') '# columns: s[m] x[m] z[m] tension[N] strain[-] u[m/s] v[m/s] shear[N] '// &
+               'curvature[1/m]'
+         end if
       end if
+
+   contains
+
+      !> The 3-D columns of the header: ' y[m] w[m/s] ...'.
+      function extra_header() result(text)
+         character(:), allocatable :: text
+         integer :: q
+         text = ''
+         do q = 1, n_fields3
+            text = text//' '//trim(field3_names(q))//'['//trim(field3_units(q))//']'
+         end do
+      end function extra_header
    end subroutine result_create
 
    !> Reopen the result file of a run that continues from a checkpoint. It
@@ -490,6 +519,11 @@ contains
             call put_real_vector(group, 'beta0', info%beta0, ok)
             call put_real_vector(group, 'beta3', info%beta3, ok)
          end if
+         if (allocated(info%extra)) then
+            do i = 1, n_fields3
+               call put_real_vector(group, trim(field3_names(i)), info%extra(:, i), ok, trim(field3_units(i)))
+            end do
+         end if
          call put_real_attr(group, 'span', info%span, ok)
          call put_real_attr(group, 'sag', info%sag, ok)
          call put_real_attr(group, 'end_angle', info%end_angle, ok)
@@ -512,9 +546,8 @@ contains
       real(dp), intent(in) :: fields(:, :)
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
-      integer :: i, k, hdferr, pos, q
+      integer :: i, hdferr
       logical :: ok
-      character(len=9*16) :: line
       ok = .true.
       self%snapshots = self%snapshots + 1
       call append(self%file, 'time', [t], 1, ok)
@@ -527,21 +560,42 @@ contains
          return
       end if
       if (self%gnuplot_text) then
-         if (self%snapshots > 1) write (self%text_unit, '(/)')
-         write (self%text_unit, '(a,es14.6)') '# t = ', t
-         do k = 1, size(self%s)
-            if (any(self%piece_starts == k)) write (self%text_unit, '(a)') ''
-            ! columns: s x z tension strain u v shear curvature, as '(9es16.8)' (put_es)
-            pos = 1
-            call put_es(line, pos, self%s(k), 16, 8)
-            do q = 1, 8
-               call put_es(line, pos, fields(k, text_columns(q)), 16, 8)
-            end do
-            write (self%text_unit, '(a)') line
-         end do
-         flush (self%text_unit)
+         if (self%three_d) then
+            ! The text waits for the 3-D fields (result_snapshot_extra).
+            self%pending = fields
+         else
+            call write_text_block(self, t, fields)
+         end if
       end if
    end subroutine result_snapshot
+
+   !> One snapshot block of the gnuplot text: columns s x z tension strain u
+   !> v shear curvature, and with extra (a 3-D run) the fields of
+   !> field3_names, as '(9es16.8[,6es16.8])' (put_es).
+   subroutine write_text_block(self, t, fields, extra)
+      type(result_file), intent(inout) :: self
+      real(dp), intent(in) :: t, fields(:, :)
+      real(dp), intent(in), optional :: extra(:, :)
+      character(len=(9 + n_fields3)*16) :: line
+      integer :: k, q, pos
+      if (self%snapshots > 1) write (self%text_unit, '(/)')
+      write (self%text_unit, '(a,es14.6)') '# t = ', t
+      do k = 1, size(self%s)
+         if (any(self%piece_starts == k)) write (self%text_unit, '(a)') ''
+         pos = 1
+         call put_es(line, pos, self%s(k), 16, 8)
+         do q = 1, 8
+            call put_es(line, pos, fields(k, text_columns(q)), 16, 8)
+         end do
+         if (present(extra)) then
+            do q = 1, size(extra, 2)
+               call put_es(line, pos, extra(k, q), 16, 8)
+            end do
+         end if
+         write (self%text_unit, '(a)') line(1:pos - 1)
+      end do
+      flush (self%text_unit)
+   end subroutine write_text_block
 
    !> Extra fields of the snapshot just written, one 2-D dataset per name
    !> (a 3-D run's y, w, curvature_z, twist).
@@ -562,8 +616,14 @@ contains
       do i = 1, size(names)
          call append(self%file, trim(names(i)), fields(:, i), 2, ok)
       end do
-      if (.not. ok) call fatal_error(error, 'writing the 3-D fields at t = '//str(t)//" s to '"//self%path// &
-                                     "' failed", stat_io)
+      if (.not. ok) then
+         call fatal_error(error, 'writing the 3-D fields at t = '//str(t)//" s to '"//self%path//"' failed", stat_io)
+         return
+      end if
+      if (self%gnuplot_text .and. self%three_d .and. allocated(self%pending)) then
+         call write_text_block(self, t, self%pending, fields)
+         deallocate (self%pending)
+      end if
    end subroutine result_snapshot_extra
 
    !> Write a text attribute of the file's root.
@@ -592,6 +652,7 @@ contains
       integer :: hdferr, n, i, j, q, unit, ios, n_ends, pos
       logical :: ok
       character(:), allocatable :: header, line
+      character(len=3), parameter :: units_y(n_end_quantities_y) = [character(len=3) :: 'm', 'm/s', 'N']
       n = history%n
       n_ends = size(history%end_labels)
       call h5gcreate_f(self%file, 'history', group, hdferr)
@@ -608,6 +669,12 @@ contains
             do q = 1, n_end_quantities
                call put_real_vector(egroup, trim(end_quantity_names(q)), history%ends(q, j, 0:n), ok, end_unit(q))
             end do
+            if (allocated(history%ends_y)) then
+               do q = 1, n_end_quantities_y
+                  call put_real_vector(egroup, trim(end_quantity_names_y(q)), history%ends_y(q, j, 0:n), ok, &
+                                       trim(units_y(q)))
+               end do
+            end if
             call h5gclose_f(egroup, hdferr)
          end do
          if (allocated(history%energy)) then
@@ -635,22 +702,26 @@ contains
       ! Columns 1-4: t, velocity u of end b along the cable (the released end of the
       ! paper's case), tension at end a, Newton iterations; 5-11 the energy ledger
       ! (strain kinetic bending gravity work ledger dissipation) or zeros without it;
-      ! then per end: speed, tension of the end cell, |external force|; last, with the ledger,
-      ! the work of the distributed loads (fluid).
+      ! then per end: speed, tension of the end cell, |external force| (with the y components
+      ! in 3-D); then, with the ledger, the work of the distributed loads (fluid); last, for a
+      ! 3-D run, per end: y, vy, force_y.
       header = '# columns: t[s] end_b_u[m/s] end_a_tension[N] newton_iterations E_strain[J] E_kinetic[J] '// &
                'E_bending[J] E_gravity[J] W_end[J] ledger[J] dissipation[J]'
       do j = 1, n_ends
          header = header//' '//trim(history%end_labels(j))//':speed[m/s] '//trim(history%end_labels(j))// &
                   ':tension[N] '//trim(history%end_labels(j))//':force[N]'
       end do
-      if (allocated(history%energy)) then
-         header = header//' W_loads[J]'
-      else
-         header = header//' (no energy ledger)'
+      if (allocated(history%energy)) header = header//' W_loads[J]'
+      if (allocated(history%ends_y)) then
+         do j = 1, n_ends
+            header = header//' '//trim(history%end_labels(j))//':y[m] '//trim(history%end_labels(j))// &
+                     ':vy[m/s] '//trim(history%end_labels(j))//':force_y[N]'
+         end do
       end if
+      if (.not. allocated(history%energy)) header = header//' (no energy ledger)'
       write (unit, '(a)') header
-      ! One line per record, as '(3es16.8,i4,7es17.9,<3 n_ends>es16.8[,es17.9])' (put_es).
-      allocate (character(len=3*16 + 4 + 8*17 + 3*16*n_ends) :: line)
+      ! One line per record, as '(3es16.8,i4,7es17.9,<3 n_ends>es16.8[,es17.9][,<3 n_ends>es16.8])' (put_es).
+      allocate (character(len=3*16 + 4 + 8*17 + 6*16*n_ends) :: line)
       do i = 0, n
          pos = 1
          call put_es(line, pos, history%time(i), 16, 8)
@@ -665,11 +736,18 @@ contains
             end if
          end do
          do j = 1, n_ends
-            call put_es(line, pos, norm2(history%ends(3:4, j, i)), 16, 8)
+            call put_es(line, pos, magnitude(history%ends(3:4, j, i), 2, j, i), 16, 8)
             call put_es(line, pos, history%ends(5, j, i), 16, 8)
-            call put_es(line, pos, norm2(history%ends(6:7, j, i)), 16, 8)
+            call put_es(line, pos, magnitude(history%ends(6:7, j, i), 3, j, i), 16, 8)
          end do
          if (allocated(history%energy)) call put_es(line, pos, history%energy(8, i), 17, 9)
+         if (allocated(history%ends_y)) then
+            do j = 1, n_ends
+               do q = 1, n_end_quantities_y
+                  call put_es(line, pos, history%ends_y(q, j, i), 16, 8)
+               end do
+            end do
+         end if
          write (unit, '(a)') line(1:pos - 1)
       end do
       close (unit)
@@ -679,7 +757,15 @@ contains
       !> Velocity of end b along the direction from end a to end b at the start (the recoil is negative).
       real(dp) function end_b_u(i)
          integer, intent(in) :: i
-         real(dp) :: d(2)
+         real(dp) :: d(2), d3(3)
+         if (allocated(history%ends_y)) then
+            d3 = [history%ends(1, 2, 0) - history%ends(1, 1, 0), history%ends_y(1, 2, 0) - history%ends_y(1, 1, 0), &
+                  history%ends(2, 2, 0) - history%ends(2, 1, 0)]
+            end_b_u = 0
+            if (norm2(d3) > 0) end_b_u = dot_product([history%ends(3, 2, i), history%ends_y(2, 2, i), &
+                                                      history%ends(4, 2, i)], d3)/norm2(d3)
+            return
+         end if
          d = history%ends(1:2, 2, 0) - history%ends(1:2, 1, 0)
          if (norm2(d) > 0) then
             end_b_u = dot_product(history%ends(3:4, 2, i), d)/norm2(d)
@@ -687,6 +773,18 @@ contains
             end_b_u = 0
          end if
       end function end_b_u
+
+      !> Length of an end vector given by its x and z components xz and, in a 3-D run, its
+      !> y component q of ends_y (2 velocity, 3 force) for end j in record i.
+      real(dp) function magnitude(xz, q, j, i)
+         real(dp), intent(in) :: xz(2)
+         integer, intent(in) :: q, j, i
+         if (allocated(history%ends_y)) then
+            magnitude = norm2([xz(1), history%ends_y(q, j, i), xz(2)])
+         else
+            magnitude = norm2(xz)
+         end if
+      end function magnitude
    end subroutine result_write_history
 
    !> Write the summary figures as attributes of /summary.

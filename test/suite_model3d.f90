@@ -43,7 +43,8 @@ contains
                new_unittest('auto_picks_model', test_auto), &
                new_unittest('end_b_off_plane_released', test_off_plane), &
                new_unittest('cross_current', test_cross_current), &
-               new_unittest('moment_balance_out_of_plane', test_moment_balance)]
+               new_unittest('moment_balance_out_of_plane', test_moment_balance), &
+               new_unittest('twisted_frames', test_twisted_frames)]
    end subroutine collect_model3d
 
    subroutine keeper_static(self, info, error)
@@ -424,4 +425,80 @@ contains
          end associate
       end subroutine balance
    end subroutine test_moment_balance
+
+   !> A torque turns the material frames without moving the line (the twist
+   !> is not coupled to the centreline): psi = tau s with tau = M_t / GIp
+   !> from the held end a, and cell c's frame is the untwisted one turned by
+   !> its mean angle pbar_c = tau (s_c + s_c+1) / 2 about t. So the static
+   !> state of a planar line under an end force and a torque (3-D; a cable
+   !> 60 m long, one turn of twist over 60 m) has, at node k, in closed form
+   !> from the untwisted run's curvature Omega3_0 (b = y there):
+   !>     curvature   = Omega3_0 (cos pbar_k-1 + cos pbar_k) / 2,
+   !>     curvature_n = Omega3_0 (sin pbar_k-1 + sin pbar_k) / 2,
+   !> and twist = tau. With the frame turning (Omega1 = tau) the moment
+   !> balance by central differences of the output reads Sb = EI (dOmega2/ds
+   !> - tau Omega3) / (1 + eps) and Sn = -EI (dOmega3/ds + tau Omega2) /
+   !> (1 + eps), on the middle 80 % of the line (the bending boundary layers
+   !> at the pinned ends are a few cells wide). The difference is the central
+   !> difference's error on the turning frame, (tau h)^2 / 6 = 4.6e-4 of the
+   !> term EI tau Omega, with h = 0.5 m. The closed form holds to the
+   !> statics' tolerance (the two runs take their own Newton iterations).
+   subroutine test_twisted_frames(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: scene = "&end_b kind = 'force', force_x = 3000, force_z = 1000, "
+      character(len=*), parameter :: rest = "&rupture enabled = .false. /"//new_line('a')// &
+                                            "&numerics model = '3d', nodes = 121, dt = 0.001, t_end = 0.001 /"// &
+                                            new_line('a')//"&output interval = 0.001, quiet = .true. /"
+      type(simulation) :: sim0, sim
+      type(keeper) :: obs0, obs
+      real(dp), allocatable :: s(:), pbar(:)
+      real(dp) :: tau, torque, ei, worst_closed, worst_twist, worst_b, worst_n, fd, scale
+      character(len=32) :: torque_text
+      integer :: k, n
+      call run_case(scene//"torque = 0 /"//new_line('a')//rest, sim0, obs0, error)
+      if (allocated(error)) return
+      ! One turn over the 60 m: tau = 2 pi / 60 1/m, M_t = GIp tau.
+      tau = 2*acos(-1.0_dp)/60
+      torque = sim0%rod%scene%gip*tau
+      write (torque_text, '(es24.16)') torque
+      call run_case(scene//"torque = "//trim(torque_text)//" /"//new_line('a')//rest, sim, obs, error)
+      if (allocated(error)) return
+      s = sim%output_s()
+      n = size(s)
+      ei = sim%rod%scene%ei
+      pbar = tau*0.5_dp*(s(1:n - 1) + s(2:n))
+      worst_closed = 0
+      worst_twist = maxval(abs(obs%extra(:, 4, 1) - tau))/tau
+      scale = maxval(abs(obs0%fields(:, 8, 1)))
+      do k = 2, n - 1
+         worst_closed = max(worst_closed, abs(obs%fields(k, 8, 1) - obs0%fields(k, 8, 1)*0.5_dp* &
+                                              (cos(pbar(k - 1)) + cos(pbar(k)))), &
+                            abs(obs%extra(k, 6, 1) - obs0%fields(k, 8, 1)*0.5_dp*(sin(pbar(k - 1)) + sin(pbar(k)))))
+      end do
+      worst_closed = worst_closed/scale
+      worst_b = 0
+      worst_n = 0
+      associate (f => obs%fields(:, :, 1), x3 => obs%extra(:, :, 1))
+         ! The middle 80 %: the bending boundary layers at the pinned ends (a few cells wide) need finer cells.
+         do k = n/10, n - n/10
+            fd = ei*((x3(k + 1, 6) - x3(k - 1, 6))/(s(k + 1) - s(k - 1)) - tau*f(k, 8))/(1 + f(k, 3))
+            worst_b = max(worst_b, abs(x3(k, 5) - fd))
+            fd = -ei*((f(k + 1, 8) - f(k - 1, 8))/(s(k + 1) - s(k - 1)) + tau*x3(k, 6))/(1 + f(k, 3))
+            worst_n = max(worst_n, abs(f(k, 2) - fd))
+         end do
+         ! The terms of the balance: EI dOmega/ds and EI tau Omega (the second the larger here).
+         scale = max(maxval(abs(obs0%fields(n/10:n - n/10, 2, 1))), ei*tau*maxval(abs(obs0%fields(n/10:n - n/10, 8, 1))))
+      end associate
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a,es9.2,a,es9.2,a)') 'twisted frames (one turn over 60 m): curvature '// &
+         'components against the closed form ', worst_closed, ' of the largest curvature; twist rate ', worst_twist, &
+         ' of tau; moment balance with tau: Sb ', worst_b/scale, ', Sn ', worst_n/scale, ' of its largest term'
+      call check(error, sim%model == '3d' .and. worst_twist < 1.0e-13_dp, 'twist rate off tau = M_t / GIp by '// &
+                 str(worst_twist))
+      if (allocated(error)) return
+      call check(error, worst_closed < 1.0e-11_dp, 'the curvature components of the twisted frames differ from '// &
+                 'the closed form by '//str(worst_closed))
+      if (allocated(error)) return
+      call check(error, max(worst_b, worst_n)/scale < 1.0e-3_dp, 'the twisted output breaks the moment balance by '// &
+                 str(worst_b/scale)//' (Sb) and '//str(worst_n/scale)//' (Sn)')
+   end subroutine test_twisted_frames
 end module suite_model3d

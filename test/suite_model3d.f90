@@ -229,6 +229,7 @@ contains
    !> let go at end b: it runs to t_end, the ledger closes, and the motion stays
    !> in the vertical plane of the chord (y / x = 2/3 at every node and
    !> snapshot, to 1e-9 of the length) while end b moves across x-z (0.68 m in y by 2 s).
+   !> Its frames lie in that turned plane: no binormal shear, no curvature about n.
    !> The end history keeps y: end b starts at y = 20 m, the support's force at
    !> end a stays in the chord's plane (f_y / f_x = 2/3), and end b's peak speed
    !> in the summary is that of (vx, vy, vz) in the history.
@@ -238,7 +239,7 @@ contains
       type(keeper) :: obs
       type(run_summary), pointer :: s
       type(run_history), pointer :: h
-      real(dp) :: y_moved, off_chord_plane, force_off_plane, peak
+      real(dp) :: y_moved, off_chord_plane, force_off_plane, peak, turned, turned_static
       integer :: i
       call run_case("&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
                     "&end_b kind = 'fixed', x = 30, y = 20, z = 0 /"//new_line('a')// &
@@ -260,6 +261,19 @@ contains
       call check(error, y_moved > 0.3_dp, 'end b moved only '//str(y_moved)//' m in y')
       if (allocated(error)) return
       call check(error, off_chord_plane < 1.0e-9_dp, 'the motion left the chord''s plane by '//str(off_chord_plane))
+      if (allocated(error)) return
+      ! The frames of a line in a turned vertical plane: n in the plane, b along its normal, so
+      ! the binormal shear and the curvature about n vanish: in the statics to round-off, in the
+      ! motion to the size its 2e-13 of the length off the plane (Newton's tolerance) gives them.
+      turned_static = max(maxval(abs(obs%static_extra(:, 5)))/maxval(abs(obs%fields(:, 2, 1))), &
+                          maxval(abs(obs%static_extra(:, 6)))/maxval(abs(obs%fields(:, 8, 1))))
+      turned = max(maxval(abs(obs%extra(:, 5, :)))/maxval(abs(obs%fields(:, 2, :))), &
+                   maxval(abs(obs%extra(:, 6, :)))/maxval(abs(obs%fields(:, 8, :))))
+      write (output_unit, '(4x,a,es9.2,a,es9.2)') 'line in a turned plane: binormal shear and curvature about n / '// &
+         'shear and curvature, statics ', turned_static, ', snapshots ', turned
+      call check(error, turned_static < 2.0e-13_dp .and. turned < 3.0e-10_dp, 'in a turned vertical plane the '// &
+                 'binormal shear or the curvature about n is '//str(turned_static)//' (statics), '//str(turned)// &
+                 ' (snapshots) of the in-plane one: the frames are not in the plane')
       if (allocated(error)) return
       h => sim%history()
       call check(error, allocated(h%ends_y), 'no y components in the history of a 3-D run')

@@ -23,9 +23,10 @@
 !> which is exact for these rows.
 !>
 !> The material frame of cell c is a unit quaternion (Euler parameters
-!> beta0..beta3, rotating the fixed frame onto t, n, b): the minimal rotation
-!> of the fixed x axis onto e_1, carried from cell to cell by the minimal
-!> rotation between consecutive cells (parallel transport), then turned about
+!> beta0..beta3, rotating the fixed frame onto t, n, b): (x, -z, y) turned
+!> about z onto the vertical plane of e_1, the minimal rotation onto e_1,
+!> carried from cell to cell by the minimal rotation between consecutive
+!> cells (parallel transport), then turned about
 !> the tangent by the cell's mean psi. frames() gives them; their norm is not
 !> re-imposed, so |beta| - 1 measures the drift.
 !>
@@ -1057,9 +1058,11 @@ contains
    !> Material frames of the cells of x as unit quaternions (4, n - 1), [beta0, beta1, beta2, beta3]:
    !> the rotation of the fixed frame (x, y, z) onto (t, n, b) of each cell. The frame of a
    !> cell along x is (x, -z, y), the paper's convention (n the in-plane normal, down for a
-   !> horizontal cable, b out of the plane along y); it is carried to the first cell and on from
-   !> cell to cell by the smallest rotations between tangents, then turned by the cell's mean
-   !> psi about t. paper_euler_parameters gives the paper's parameters.
+   !> horizontal cable, b out of the plane along y). It is turned about z onto the vertical
+   !> plane of the first cell, carried to the first cell and on from cell to cell by the
+   !> smallest rotations between tangents, then turned by the cell's mean psi about t; so a
+   !> line in any vertical plane has n in that plane and b along its normal.
+   !> paper_euler_parameters gives the paper's parameters.
    pure subroutine rod3d_frames(self, x, beta)
       !> Piece.
       class(rod3d_piece), intent(in) :: self
@@ -1068,12 +1071,23 @@ contains
       !> Quaternions (4, n - 1).
       real(dp), intent(out) :: beta(:, :)
       real(dp) :: r(3, self%n), psi(self%n), e(3, self%n - 1), l(self%n - 1), th(self%n), q(4), prev(3), angle
+      real(dp) :: h(2), azimuth
       integer :: c
       call unpack(x, r, psi)
       call self%geometry(r, e, l, th)
+      ! The base frame: a quarter turn about x, (x, y, z) onto (x, -z, y), then turned about z
+      ! onto the vertical plane of the first cell, h = its horizontal direction with h_x >= 0
+      ! (so that b is that plane's normal and n lies in it; an x-z scene keeps (x, -z, y)
+      ! exactly). A vertical first cell keeps the x-z plane.
       prev = [1.0_dp, 0.0_dp, 0.0_dp]
-      ! A quarter turn about x: (x, y, z) onto (x, -z, y).
       q = [sqrt(0.5_dp), -sqrt(0.5_dp), 0.0_dp, 0.0_dp]
+      h = [e(1, 1), e(2, 1)]
+      if (h(1) < 0 .or. (h(1) == 0 .and. h(2) < 0)) h = -h
+      if (h(2) /= 0 .and. norm2(h) > 1.0e-6_dp*l(1)) then
+         azimuth = atan2(h(2), h(1))
+         prev = [cos(azimuth), sin(azimuth), 0.0_dp]
+         q = quaternion_product([cos(0.5_dp*azimuth), 0.0_dp, 0.0_dp, sin(0.5_dp*azimuth)], q)
+      end if
       do c = 1, self%n - 1
          q = quaternion_product(minimal_rotation(prev, e(:, c)/l(c)), q)
          prev = e(:, c)/l(c)

@@ -3,7 +3,7 @@
 #                      thread, both schemes, the slack releases to 2 s; about 25 minutes on one free core):
 #                      writes docs/stress.md and docs/stress.csv; docs/stability.md reads them
 #   make stress-quick  a smoke test of the sweep (under a minute), tables in build/stress-quick/
-#   make stress-3d     the 3-D scenes of the sweep alone (only=scenes3d, a few minutes): writes
+#   make stress-3d     the 3-D scenes of the sweep alone (only=scenes3d, under a minute): writes
 #                      docs/stress3d.md and docs/stress3d.csv (make stress writes them too)
 #   make test-fuzz     bad-input fuzzing of bin/xcable (test/test_fuzz.sh, malformed namelists)
 # The slack positions are compared with the peer runs in bench/peer/runs (if present). The code

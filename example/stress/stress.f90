@@ -34,7 +34,7 @@
 !>   ramped force with a torque; on 61 and 121 nodes (31 and 61 for the
 !>   fairlead) at Courant 1, 4 and 10, EI the paper's and / 1000. Its table
 !>   goes to <out>/stress3d.md and stress3d.csv, so that `only=scenes3d`
-!>   (make stress-3d, about two minutes) regenerates it alone.
+!>   (make stress-3d, under a minute) regenerates it alone.
 !> `quick` is a smoke test of about 15 s: grid21 with both schemes, the
 !> slack releases on 61 nodes (rod, and the box at 2 and 50 kN) and a short
 !> compression study. `only=` runs the studies it lists (comma-separated),
@@ -608,6 +608,8 @@ contains
          'the axial wave speed of the static state (rod: the largest over its cells; box: at the end strain; the '// &
          'same here): 294 m/s at 2 kN to 491 m/s at 50 kN. The peer reference below takes c at the stiffest point of '// &
          'the law (1110 m/s): its Courant 0.5 is about 0.13 to 0.22 of ours.'
+      write (u, '(a)') '- `scenes3d`: three scenes of the 3-D model at Courant 1, 4 and 10 (36 runs); their rows are '// &
+         'in stress.csv, their table in [stress3d.md](stress3d.md).'
       write (u, '(a)') ''
    end subroutine design_section
 

@@ -44,7 +44,8 @@ contains
                new_unittest('rejected_steps_planar_3d_equals_2d', test_rejections_planar), &
                new_unittest('rejected_steps_off_plane_release', test_rejections_off_plane), &
                new_unittest('driver_equals_bare_stepper', test_bare_stepper), &
-               new_unittest('collapse_stops_named', test_collapse)]
+               new_unittest('collapse_stops_named', test_collapse), &
+               new_unittest('wall_clock_and_step_floor', test_limits)]
    end subroutine collect_model3d
 
    subroutine keeper_static(self, info, error)
@@ -456,5 +457,43 @@ contains
                  s%rejected_steps > sum(h%rejected(1:h%n)), 'time reached '//str(s%time_reached)//', last record '// &
                  str(h%time(h%n))//'; rejected '//str(s%rejected_steps)//', in the history '//str(sum(h%rejected(1:h%n))))
    end subroutine test_collapse
+
+   !> The limits of the step control in 3-D: a wall-clock limit of 1 ns stops
+   !> the off-plane slack release before t_end with the named error; with no
+   !> room to halve (min_step_fraction = 1) its first failing step (Newton, at
+   !> Courant 10 with EI / 1000) stops it with the step control's error.
+   subroutine test_limits(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: scene = "&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+                                            "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                                            "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
+                                            "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
+                                            "&output interval = 0.1, energy = .true., quiet = .true. /"//new_line('a')
+      type(simulation) :: sim_wall, sim_floor
+      type(keeper) :: obs
+      type(error_type), allocatable :: run_error
+      type(run_summary), pointer :: s
+      call run_case(scene//"&numerics nodes = 121, courant = 10, t_end = 2.0, max_wall_time = 1e-9 /", sim_wall, obs, &
+                    run_error)
+      call check(error, allocated(run_error), 'a 1 ns wall-clock limit did not stop the 3-D run')
+      if (allocated(error)) return
+      s => sim_wall%summary()
+      call check(error, index(run_error%message, 'wall-clock limit') == 1 .and. s%time_reached < 2.0_dp, &
+                 'message: '//run_error%message//'; time reached '//str(s%time_reached))
+      if (allocated(error)) return
+      deallocate (run_error)
+      obs = keeper()
+      call run_case(scene//"&numerics nodes = 121, courant = 10, t_end = 2.0, min_step_fraction = 1 /", sim_floor, obs, &
+                    run_error)
+      call check(error, allocated(run_error), 'the 3-D run did not stop without room to halve the step')
+      if (allocated(error)) return
+      s => sim_floor%summary()
+      write (output_unit, '(4x,a,f7.4,a)') 'min_step_fraction = 1: stopped at t = ', s%time_reached, ' s: '// &
+         run_error%message(1:min(90, len(run_error%message)))
+      call check(error, index(run_error%message, 'step control: step fell below') == 1 .and. &
+                 index(run_error%message, 'Newton') > 0 .and. s%time_reached < 2.0_dp .and. s%rejected_steps == 1, &
+                 'message: '//run_error%message//'; time reached '//str(s%time_reached)//', rejected '// &
+                 str(s%rejected_steps))
+   end subroutine test_limits
 
 end module suite_model3d

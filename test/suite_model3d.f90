@@ -8,6 +8,10 @@
 !> shear forces and curvatures satisfy the moment balance dM/ds + (1 + eps)
 !> t x F = 0 by finite differences of the output; the history keeps the
 !> ends' y components.
+!> Step control: a planar scene whose steps are rejected
+!> rejects the same attempts in 3-D as in 2-D; an off-plane slack release
+!> at Courant 10 completes only through rejected steps; without rejections
+!> the driver gives the bare stepper's numbers bit for bit.
 module suite_model3d
    use xcable_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
@@ -15,6 +19,7 @@ module suite_model3d
    use xcable_io_input, only: read_config
    use xcable_io_config, only: case_config
    use xcable_simulation, only: simulation
+   use xcable_rod3d_run, only: rod3d_run
    use xcable_run_records, only: run_observer, static_info, run_history, run_summary, n_fields, field_names
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -44,7 +49,12 @@ contains
                new_unittest('end_b_off_plane_released', test_off_plane), &
                new_unittest('cross_current', test_cross_current), &
                new_unittest('moment_balance_out_of_plane', test_moment_balance), &
-               new_unittest('twisted_frames', test_twisted_frames)]
+               new_unittest('twisted_frames', test_twisted_frames), &
+               new_unittest('rejected_steps_planar_3d_equals_2d', test_rejections_planar), &
+               new_unittest('rejected_steps_off_plane_release', test_rejections_off_plane), &
+               new_unittest('driver_equals_bare_stepper', test_bare_stepper), &
+               new_unittest('collapse_stops_named', test_collapse), &
+               new_unittest('wall_clock_and_step_floor', test_limits)]
    end subroutine collect_model3d
 
    subroutine keeper_static(self, info, error)
@@ -103,6 +113,17 @@ contains
       call sim%run(obs, error)
    end subroutine run_case
 
+   !> A scene run with model = '2d' and with '3d' (numerics: the rest of &numerics).
+   subroutine run_pair(scene, numerics, sim2, obs2, sim3, obs3, error)
+      character(*), intent(in) :: scene, numerics
+      type(simulation), intent(inout) :: sim2, sim3
+      type(keeper), intent(inout) :: obs2, obs3
+      type(error_type), allocatable, intent(out) :: error
+      call run_case(scene//new_line('a')//"&numerics model = '2d', "//numerics, sim2, obs2, error)
+      if (allocated(error)) return
+      call run_case(scene//new_line('a')//"&numerics model = '3d', "//numerics, sim3, obs3, error)
+   end subroutine run_pair
+
    !> The paper's fast 315 kN rupture on 41 nodes (to 0.08 s, past the
    !> reflection at end a), Newton to 1e-12, once with model = '2d' and once
    !> with '3d': the snapshot fields, the end history (positions, velocities,
@@ -112,10 +133,9 @@ contains
    !> to 5e-10 (near the released end at 167 m/s); y and w stay 0.
    subroutine test_reduction(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: scene = &
-         "&static tension = 315000 /"//new_line('a')// &
-         "&rupture t_break = 0.005 /"//new_line('a')// &
-         "&output interval = 0.01, energy = .true., quiet = .true. /"
+      character(len=*), parameter :: scene = "&static tension = 315000 /"//new_line('a')// &
+                                            "&rupture t_break = 0.005 /"//new_line('a')// &
+                                            "&output interval = 0.01, energy = .true., quiet = .true. /"
       character(len=*), parameter :: numerics = "nodes = 41, t_end = 0.08, newton_tol = 1e-12 /"
       type(simulation) :: sim2, sim3
       type(keeper) :: obs2, obs3
@@ -123,9 +143,7 @@ contains
       real(dp) :: worst, d, scale, worst_derived, sb, ends_y
       integer :: i, j, q
       character(len=16) :: where
-      call run_case(scene//new_line('a')//"&numerics model = '2d', "//numerics, sim2, obs2, error)
-      if (allocated(error)) return
-      call run_case(scene//new_line('a')//"&numerics model = '3d', "//numerics, sim3, obs3, error)
+      call run_pair(scene, numerics, sim2, obs2, sim3, obs3, error)
       if (allocated(error)) return
       call check(error, sim2%model == '2d' .and. sim3%model == '3d', 'models run: '//sim2%model//', '//sim3%model)
       if (allocated(error)) return
@@ -515,4 +533,216 @@ contains
       call check(error, max(worst_b, worst_n)/scale < 1.0e-3_dp, 'the twisted output breaks the moment balance by '// &
                  str(worst_b/scale)//' (Sb) and '//str(worst_n/scale)//' (Sn)')
    end subroutine test_twisted_frames
+   !> The paper's 400 kN break (5 ms) with EI / 1000 on 121 nodes at Courant 10,
+   !> to 0.1 s: Newton fails in some steps (a slack zone at the fixed end) and
+   !> the step control rejects them. With model = '3d' the same attempts are
+   !> rejected as with '2d' (history%rejected and history%step equal), and
+   !> the snapshots agree as in the reduction test (measured 5.0e-10 of each
+   !> field's largest value: 8.4e-10).
+   subroutine test_rejections_planar(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: scene = &
+         "&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+         "&static tension = 400000 /"//new_line('a')// &
+         "&rupture t_break = 0.005 /"//new_line('a')// &
+         "&output interval = 0.02, energy = .true., quiet = .true. /"
+      character(len=*), parameter :: numerics = "nodes = 121, courant = 10, t_end = 0.1 /"
+      type(simulation) :: sim2, sim3
+      type(keeper) :: obs2, obs3
+      type(run_history), pointer :: h2, h3
+      type(run_summary), pointer :: s2, s3
+      real(dp) :: worst, d
+      integer :: j
+      call run_pair(scene, numerics, sim2, obs2, sim3, obs3, error)
+      if (allocated(error)) return
+      h2 => sim2%history()
+      h3 => sim3%history()
+      s2 => sim2%summary()
+      s3 => sim3%summary()
+      call check(error, h2%n == h3%n .and. obs2%n == obs3%n, 'steps: '//str(h2%n)//' and '//str(h3%n))
+      if (allocated(error)) return
+      call check(error, all(h2%rejected(0:h2%n) == h3%rejected(0:h3%n)) .and. all(h2%step(0:h2%n) == h3%step(0:h3%n)), &
+                 'the 3-D run rejected other attempts ('//str(s3%rejected_steps)//') than the 2-D run ('// &
+                 str(s2%rejected_steps)//')')
+      if (allocated(error)) return
+      call check(error, s3%rejected_steps == s2%rejected_steps .and. s3%rejected_steps >= 4 .and. &
+                 sum(h3%rejected(1:h3%n)) == s3%rejected_steps, 'rejected: '//str(s3%rejected_steps)// &
+                 ' in 3-D (history: '//str(sum(h3%rejected(1:h3%n)))//'), '//str(s2%rejected_steps)//' in 2-D')
+      if (allocated(error)) return
+      worst = 0
+      do j = 1, n_fields
+         d = maxval(abs(obs2%fields(:, j, :) - obs3%fields(:, j, :)))/max(maxval(abs(obs2%fields(:, j, :))), tiny(1.0_dp))
+         worst = max(worst, d)
+      end do
+      write (output_unit, '(4x,a,i0,a,es9.2,a)') 'planar 400 kN break at Courant 10: ', s3%rejected_steps, &
+         ' rejected attempts in both models; snapshots 3d vs 2d ', worst, ' of the largest value'
+      call check(error, worst < 2.0e-9_dp, 'model 3d differs from 2d by '//str(worst))
+   end subroutine test_rejections_planar
+
+   !> The off-plane slack release of end_b_off_plane_released on 121 nodes,
+   !> EI / 1000, at Courant 10 (dt 18 ms) to 2 s: at the requested step Newton
+   !> diverges at t = 0.128 s (the run stopped there before the step control).
+   !> The run completes through rejected and halved steps, records them
+   !> against the steps that followed, grows the step back to dt, warns of
+   !> them, and its ledger closes (measured 6.2e-9 of the strain energy).
+   subroutine test_rejections_off_plane(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(keeper) :: obs
+      type(run_summary), pointer :: s
+      type(run_history), pointer :: h
+      real(dp) :: dt
+      integer :: smallest, first_rejection, steps
+      call run_case("&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+                    "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                    "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
+                    "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
+                    "&numerics nodes = 121, courant = 10, t_end = 2.0 /"//new_line('a')// &
+                    "&output interval = 0.1, energy = .true., quiet = .true. /", sim, obs, error)
+      if (allocated(error)) return
+      s => sim%summary()
+      h => sim%history()
+      call sim%time_step(dt, steps)
+      ! The last step is shortened to land on t_end.
+      smallest = minloc(h%step(1:h%n - 1), 1)
+      write (output_unit, '(4x,a,i0,a,i0,a,es9.2,a,es9.2)') 'off-plane slack release at Courant 10: ', &
+         s%rejected_steps, ' rejected attempts, ', h%n, ' steps, smallest dt / ', dt/h%step(smallest), &
+         '; ledger drift ', s%energy_drift
+      call check(error, sim%model == '3d' .and. s%time_reached >= 2.0_dp - 1.0e-12_dp, 'model '//sim%model// &
+                 ', reached t = '//str(s%time_reached))
+      if (allocated(error)) return
+      call check(error, s%rejected_steps > 10 .and. sum(h%rejected(1:h%n)) == s%rejected_steps .and. h%rejected(0) == 0, &
+                 'rejected '//str(s%rejected_steps)//', in the history '//str(sum(h%rejected(0:h%n))))
+      if (allocated(error)) return
+      call check(error, all(h%step(1:h%n) <= dt*(1 + 1.0e-12_dp)) .and. h%step(smallest) <= 0.5_dp*dt*(1 + 1.0e-12_dp) &
+                 .and. h%step(smallest) >= dt/1024*(1 - 1.0e-12_dp), 'steps from '//str(h%step(smallest))//' to '// &
+                 str(maxval(h%step(1:h%n)))//' s, dt '//str(dt)//' s')
+      if (allocated(error)) return
+      ! The step grows after its smallest value, and is dt again after a rejection.
+      first_rejection = findloc(h%rejected(1:h%n) > 0, .true., 1)
+      call check(error, smallest < h%n .and. maxval(h%step(smallest:h%n)) >= 1.99_dp*h%step(smallest) .and. &
+                 maxval(h%step(first_rejection:h%n)) >= dt*(1 - 1.0e-12_dp), 'the step did not grow back (smallest '// &
+                 str(h%step(smallest))//' s at step '//str(smallest)//', first rejection at step '// &
+                 str(first_rejection)//')')
+      if (allocated(error)) return
+      call check(error, index(s%warnings, 'step attempts were rejected') > 0, 'no warning of the rejections: '//s%warnings)
+      if (allocated(error)) return
+      call check(error, s%energy_drift >= 0 .and. s%energy_drift < 3.0e-8_dp, 'ledger drift '//str(s%energy_drift))
+   end subroutine test_rejections_off_plane
+
+   !> Without rejections the step control changes nothing: the cross-current
+   !> scene of cross_current run by the driver, against the bare stepper
+   !> (rod3d_run%step) from the driver's static state with the driver's steps
+   !> and times: positions, velocities, twist and ledger equal bit for bit.
+   subroutine test_bare_stepper(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(keeper) :: obs
+      type(rod3d_run) :: bare
+      type(run_history), pointer :: h
+      type(case_config) :: config
+      integer :: unit, i
+      open (newunit=unit, file=path, status='replace', action='write')
+      write (unit, '(a)') "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+         "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
+         "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
+         "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
+         new_line('a')//"&rupture enabled = .false. /"//new_line('a')// &
+         "&numerics nodes = 31, dt = 0.01, t_end = 1.0, newton_tol = 1e-10 /"//new_line('a')// &
+         "&output interval = 0.5, energy = .true., quiet = .true. /"
+      close (unit)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call sim%prepare(config, error)
+      if (allocated(error)) return
+      bare = sim%rod3%run
+      call sim%run(obs, error)
+      if (allocated(error)) return
+      h => sim%history()
+      call check(error, sim%model == '3d' .and. sum(h%rejected(0:h%n)) == 0 .and. h%n == 100, 'model '//sim%model// &
+                 ', '//str(h%n)//' steps, '//str(sum(h%rejected(0:h%n)))//' rejected')
+      if (allocated(error)) return
+      do i = 1, h%n
+         bare%t = h%time(i - 1)
+         call bare%step(h%step(i), 0.5_dp, error)
+         if (allocated(error)) return
+      end do
+      write (output_unit, '(4x,a,2es9.2,a,es9.2)') 'driver against the bare stepper, 100 steps: largest difference '// &
+         'of the unknowns, velocities ', maxval(abs(bare%x - sim%rod3%run%x)), maxval(abs(bare%v - sim%rod3%run%v)), &
+         '; of the ledger ', abs(bare%imbalance() - sim%rod3%run%imbalance())
+      call check(error, all(bare%x == sim%rod3%run%x) .and. all(bare%v == sim%rod3%run%v) .and. &
+                 bare%imbalance() == sim%rod3%run%imbalance() .and. bare%iterations == sim%rod3%run%iterations, &
+                 'the driver''s steps differ from the bare stepper''s')
+   end subroutine test_bare_stepper
+   !> The scene of rejected_steps_planar_3d_equals_2d run on to 0.3 s: the
+   !> compressed zone at the fixed end collapses (a cell below 5 % of its
+   !> length) in 3-D as in 2-D, and the run stops with the step control's
+   !> named error once the step is at its floor; the summary holds what was
+   !> done (time reached = the last record; the failing attempts counted
+   !> in the summary besides those in the history).
+   subroutine test_collapse(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(keeper) :: obs
+      type(error_type), allocatable :: run_error
+      type(run_summary), pointer :: s
+      type(run_history), pointer :: h
+      call run_case("&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+                    "&static tension = 400000 /"//new_line('a')// &
+                    "&rupture t_break = 0.005 /"//new_line('a')// &
+                    "&output interval = 0.1, energy = .true., quiet = .true. /"//new_line('a')// &
+                    "&numerics model = '3d', nodes = 121, courant = 10, t_end = 0.3 /", sim, obs, run_error)
+      call check(error, allocated(run_error), 'the collapsing 3-D run did not stop')
+      if (allocated(error)) return
+      s => sim%summary()
+      h => sim%history()
+      write (output_unit, '(4x,a,f7.4,a,i0,a)') '3-D collapse stopped at t = ', s%time_reached, ' s after ', &
+         s%rejected_steps, ' rejected attempts: '//run_error%message(1:min(80, len(run_error%message)))
+      call check(error, index(run_error%message, 'step control: step fell below') == 1 .and. &
+                 index(run_error%message, 'squeezed') > 0 .and. index(run_error%message, 'collapsed') > 0, &
+                 'message: '//run_error%message)
+      if (allocated(error)) return
+      call check(error, s%time_reached < 0.3_dp .and. s%time_reached == h%time(h%n) .and. &
+                 s%rejected_steps > sum(h%rejected(1:h%n)), 'time reached '//str(s%time_reached)//', last record '// &
+                 str(h%time(h%n))//'; rejected '//str(s%rejected_steps)//', in the history '//str(sum(h%rejected(1:h%n))))
+   end subroutine test_collapse
+
+   !> The limits of the step control in 3-D: a wall-clock limit of 1 ns stops
+   !> the off-plane slack release before t_end with the named error; with no
+   !> room to halve (min_step_fraction = 1) its first failing step (Newton, at
+   !> Courant 10 with EI / 1000) stops it with the step control's error.
+   subroutine test_limits(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: scene = "&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+                                            "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                                            "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
+                                            "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
+                                            "&output interval = 0.1, energy = .true., quiet = .true. /"//new_line('a')
+      type(simulation) :: sim_wall, sim_floor
+      type(keeper) :: obs
+      type(error_type), allocatable :: run_error
+      type(run_summary), pointer :: s
+      call run_case(scene//"&numerics nodes = 121, courant = 10, t_end = 2.0, max_wall_time = 1e-9 /", sim_wall, obs, &
+                    run_error)
+      call check(error, allocated(run_error), 'a 1 ns wall-clock limit did not stop the 3-D run')
+      if (allocated(error)) return
+      s => sim_wall%summary()
+      call check(error, index(run_error%message, 'wall-clock limit') == 1 .and. s%time_reached < 2.0_dp, &
+                 'message: '//run_error%message//'; time reached '//str(s%time_reached))
+      if (allocated(error)) return
+      deallocate (run_error)
+      obs = keeper()
+      call run_case(scene//"&numerics nodes = 121, courant = 10, t_end = 2.0, min_step_fraction = 1 /", sim_floor, obs, &
+                    run_error)
+      call check(error, allocated(run_error), 'the 3-D run did not stop without room to halve the step')
+      if (allocated(error)) return
+      s => sim_floor%summary()
+      write (output_unit, '(4x,a,f7.4,a)') 'min_step_fraction = 1: stopped at t = ', s%time_reached, ' s: '// &
+         run_error%message(1:min(90, len(run_error%message)))
+      call check(error, index(run_error%message, 'step control: step fell below') == 1 .and. &
+                 index(run_error%message, 'Newton') > 0 .and. s%time_reached < 2.0_dp .and. s%rejected_steps == 1, &
+                 'message: '//run_error%message//'; time reached '//str(s%time_reached)//', rejected '// &
+                 str(s%rejected_steps))
+   end subroutine test_limits
+
 end module suite_model3d

@@ -76,7 +76,8 @@ contains
                new_unittest('every_end_kind', test_every_end_kind), &
                new_unittest('fluid_reduction_symmetry_ledger', test_fluid), &
                new_unittest('ends_with_y_torque', test_ends_y), &
-               new_unittest('statics_and_steps_every_end_kind', test_statics_kinds)]
+               new_unittest('statics_and_steps_every_end_kind', test_statics_kinds), &
+               new_unittest('fold_check_3d', test_fold_check)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -1277,4 +1278,91 @@ contains
       if (allocated(error)) return
       call check(error, worst_run < 1.0e-11_dp, 'a 3-D run differs from the planar one by more than 1e-11')
    end subroutine test_statics_kinds
+
+   !> The step control's fold check in 3-D (rod3d_piece%turning_folds):
+   !> (a) cells 3 and 4 of a 5-node line turned by 0.2 rad so that the
+   !> turning angle at node 3 goes from pi - 0.1 through half a turn: 2 pi at
+   !> node 3, 0 elsewhere, in the x-z plane and turned out of it by a
+   !> rotation; (b) a planar pair of curved states (turning angles of both
+   !> signs, none through half a turn): the planar rod's value, 0; (c) a 3-D
+   !> change of a curved state scaled by 1 and 1/2: first order out of the
+   !> plane (ratio near 2), far below 3.
+   subroutine test_fold_check(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_problem) :: p
+      real(dp) :: r0(3, 5), r1(3, 5), v0(3, 5), fold(5), q(3, 3), a, c, s, worst, planar(5), ang0(4), ang1(4)
+      real(dp), allocatable :: x(:), rc(:, :), vc(:, :), f1(:), f2(:)
+      integer :: k, n
+      call make_piece3(p, 5, 4.0_dp, end3(is_held=.true.), error)
+      if (allocated(error)) return
+      v0 = 0
+      ! (a) Cells at the angles (about -y, in x-z) 0, 0, pi - 0.1, pi - 0.1, then 0, 0, pi + 0.1, pi + 0.1.
+      ang0 = [0.0_dp, 0.0_dp, pi - 0.1_dp, pi - 0.1_dp]
+      ang1 = [0.0_dp, 0.0_dp, pi + 0.1_dp, pi + 0.1_dp]
+      call polyline(ang0, r0)
+      call polyline(ang1, r1)
+      ! A rotation out of the plane (about (1, 2, 3) by 0.8 rad, Rodrigues).
+      a = 0.8_dp
+      c = cos(a)
+      s = sin(a)
+      block
+         real(dp) :: u(3)
+         u = [1.0_dp, 2.0_dp, 3.0_dp]/sqrt(14.0_dp)
+         q = reshape([c + u(1)**2*(1 - c), u(2)*u(1)*(1 - c) + u(3)*s, u(3)*u(1)*(1 - c) - u(2)*s, &
+                      u(1)*u(2)*(1 - c) - u(3)*s, c + u(2)**2*(1 - c), u(3)*u(2)*(1 - c) + u(1)*s, &
+                      u(1)*u(3)*(1 - c) + u(2)*s, u(2)*u(3)*(1 - c) - u(1)*s, c + u(3)**2*(1 - c)], [3, 3])
+      end block
+      worst = 0
+      do k = 1, 2
+         call p%piece%prepare_step(r0, v0)
+         call p%piece%turning_folds(r1, fold)
+         worst = max(worst, abs(fold(3) - 2*pi), maxval(abs(fold([1, 2, 4, 5]))))
+         r0 = matmul(q, r0)
+         r1 = matmul(q, r1)
+      end do
+      write (output_unit, '(4x,a,es9.2)') 'fold check through half a turn, in and out of the plane: off 2 pi (node 3) '// &
+         'and 0 (others) by ', worst
+      call check(error, worst < 1.0e-14_dp, 'fold check through half a turn off by '//str(worst))
+      if (allocated(error)) return
+      ! (b) A planar pair: cells at angles 0.3 k and 0.3 k + 0.5 sin(k) (turning angles of either sign).
+      ang0 = [(0.3_dp*k, k=1, 4)]
+      ang1 = [(0.3_dp*k + 0.5_dp*sin(real(3*k, dp)), k=1, 4)]
+      call polyline(ang0, r0)
+      call polyline(ang1, r1)
+      call p%piece%prepare_step(r0, v0)
+      call p%piece%turning_folds(r1, fold)
+      ! The planar rod's |th1 - th0 - (dphi_b - dphi_a)| with th = angle(b) - angle(a) and dphi = angle1 - angle0
+      ! of each cell: 0 while no angle wraps through half a turn.
+      planar = 0
+      worst = maxval(abs(fold - planar))
+      write (output_unit, '(4x,a,es9.2)') 'fold check of a planar pair against the planar formula: ', worst
+      call check(error, worst < 1.0e-15_dp, 'planar fold check differs from the planar rod''s by '//str(worst))
+      if (allocated(error)) return
+      ! (c) First order in the change of a curved 3-D state.
+      n = 9
+      call make_piece3(p, n, 8.0_dp, end3(is_held=.true.), error)
+      if (allocated(error)) return
+      call curved_state(n, 8.0_dp, x, rc, vc)
+      allocate (f1(n), f2(n))
+      call p%piece%prepare_step(rc, vc)
+      call p%piece%turning_folds(rc + 0.1_dp*(reshape(x(1:3*n), [3, n]) - rc), f1)
+      call p%piece%turning_folds(rc + 0.05_dp*(reshape(x(1:3*n), [3, n]) - rc), f2)
+      write (output_unit, '(4x,a,es9.2,a,f6.2)') 'fold check of a small 3-D change: largest ', maxval(f1), &
+         ', ratio at half the change ', maxval(f1)/maxval(f2)
+      call check(error, maxval(f1) < 0.1_dp .and. maxval(f1)/maxval(f2) > 1.8_dp .and. maxval(f1)/maxval(f2) < 2.2_dp, &
+                 'fold check of a small change: '//str(maxval(f1))//', ratio '//str(maxval(f1)/maxval(f2)))
+
+   contains
+
+      !> Nodes of a line of unit cells at the angles ang (about -y: the direction (cos, 0, sin)).
+      subroutine polyline(ang, r)
+         real(dp), intent(in) :: ang(:)
+         real(dp), intent(out) :: r(:, :)
+         integer :: j
+         r(:, 1) = 0
+         do j = 1, size(ang)
+            r(:, j + 1) = r(:, j) + [cos(ang(j)), 0.0_dp, sin(ang(j))]
+         end do
+      end subroutine polyline
+   end subroutine test_fold_check
 end module suite_rod3d

@@ -28,6 +28,13 @@
 !> reaches the fixed end, reflects and returns to the breaking end (the
 !> compression phase included). The box studies are those of version 0.1,
 !> so that its map stays reproducible.
+!> - scenes3d: the 3-D model (&numerics model = '3d') on three scenes of
+!>   stress_runs%scene_namelist: the slack line released off its plane, a
+!>   fairlead moving across the plane in water with a cross current, and a
+!>   ramped force with a torque; on 61 and 121 nodes (31 and 61 for the
+!>   fairlead) at Courant 1, 4 and 10, EI the paper's and / 1000. Its table
+!>   goes to <out>/stress3d.md and stress3d.csv, so that `only=scenes3d`
+!>   (make stress-3d, under a minute) regenerates it alone.
 !> `quick` is a smoke test of about 15 s: grid21 with both schemes, the
 !> slack releases on 61 nodes (rod, and the box at 2 and 50 kN) and a short
 !> compression study. `only=` runs the studies it lists (comma-separated),
@@ -146,9 +153,15 @@ program stress
    end do
    call system_clock(clock_now)
    total_wall = real(clock_now - clock_start, dp)/clock_rate
-   call write_csv(trim(out_dir)//'/stress.csv')
-   call write_markdown(trim(out_dir)//'/stress.md')
-   write (output_unit, '(a,f8.1,a)') 'stress: wrote '//trim(out_dir)//'/stress.md and stress.csv in ', total_wall, ' s'
+   if (any(specs%study /= 'scenes3d')) then
+      call write_csv(trim(out_dir)//'/stress.csv')
+      call write_markdown(trim(out_dir)//'/stress.md')
+      write (output_unit, '(a,f8.1,a)') 'stress: wrote '//trim(out_dir)//'/stress.md and stress.csv in ', total_wall, ' s'
+   end if
+   if (any(specs%study == 'scenes3d')) then
+      call write_scenes3d(trim(out_dir))
+      write (output_unit, '(a)') 'stress: wrote '//trim(out_dir)//'/stress3d.md and stress3d.csv'
+   end if
 
 contains
 
@@ -207,7 +220,28 @@ contains
          call add_compression(scheme)
       end do
       call add_slack()
+      call add_scenes3d()
    end subroutine build_design
+
+   !> The 3-D scenes (stress_runs%scene_namelist) at Courant 1, 4 and 10.
+   subroutine add_scenes3d()
+      character(len=12), parameter :: scenes(3) = [character(len=12) :: 'slack3d', 'fairlead3d', 'torque3d']
+      real(dp), parameter :: scene_courants(3) = [1.0_dp, 4.0_dp, 10.0_dp], t_ends(3) = [2.0_dp, 4.0_dp, 2.0_dp]
+      integer :: isc, ig, ic, ie, nodes
+      do isc = 1, size(scenes)
+         do ig = 1, 2
+            nodes = merge(61, 121, ig == 1)
+            if (scenes(isc) == 'fairlead3d') nodes = (nodes + 1)/2
+            do ic = 1, size(scene_courants)
+               do ie = 1, size(ei_factors)
+                  if (quick .and. (ig /= 1 .or. ic /= 2 .or. ie /= 1)) cycle
+                  call add('scenes3d', 'rod', 0.0_dp, 0.0_dp, nodes, scene_courants(ic), ei_factors(ie), 0.5_dp, &
+                           t_ends(isc), 0.0_dp, wall_short, scenes(isc))
+               end do
+            end do
+         end do
+      end do
+   end subroutine add_scenes3d
 
    !> The compression study: grids up to 961 nodes, to t = 0.16 s, a snapshot every millisecond.
    subroutine add_compression(scheme)
@@ -264,11 +298,12 @@ contains
    end subroutine add_slack
 
    !> Append a run (unless filtered out by only= or scheme=).
-   subroutine add(study, scheme, tension, t_break, nodes, courant, ei_factor, theta, t_end, interval, wall_limit)
+   subroutine add(study, scheme, tension, t_break, nodes, courant, ei_factor, theta, t_end, interval, wall_limit, scene)
       character(*), intent(in) :: study, scheme
       real(dp), intent(in) :: tension, t_break, courant, ei_factor, theta
       integer, intent(in) :: nodes
       real(dp), intent(in), optional :: t_end, interval, wall_limit
+      character(*), intent(in), optional :: scene
       type(run_spec) :: spec
       if (len_trim(only_study) > 0 .and. index(','//trim(only_study)//',', ','//trim(study)//',') == 0) return
       if (len_trim(only_scheme) > 0 .and. trim(only_scheme) /= scheme) return
@@ -284,6 +319,7 @@ contains
       if (present(t_end)) spec%t_end = t_end
       if (present(interval)) spec%interval = interval
       if (present(wall_limit)) spec%wall_limit = wall_limit
+      if (present(scene)) spec%scene = scene
       specs = [specs, spec]
    end subroutine add
 
@@ -395,6 +431,76 @@ contains
       close (u)
    end subroutine write_csv
 
+   !> The 3-D scenes: <dir>/stress3d.md (a table, one row per run) and <dir>/stress3d.csv.
+   subroutine write_scenes3d(dir)
+      character(*), intent(in) :: dir
+      integer :: u, k, ios, runs, done
+      character(len=512) :: msg
+      real(dp) :: wall
+      open (newunit=u, file=dir//'/stress3d.csv', status='replace', action='write', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         write (error_unit, '(a)') 'stress: cannot write '//dir//'/stress3d.csv: '//trim(msg)
+         error stop 1
+      end if
+      write (u, '(a)') 'scene,nodes,courant,bending_stiffness,t_end,dt,outcome,time_reached,energy_drift,steps,rejected,'// &
+         'newton_per_step,max_newton,smallest_step_fraction,max_turning_angle,min_strain,wall_s,warnings,reason'
+      do k = 1, n
+         if (specs(k)%study /= 'scenes3d') cycle
+         associate (s => specs(k), o => outcomes(k))
+            write (u, '(a,",",i0,",",g0.3,",",g0.4,",",g0.4,",",g0.6,",",a,2(",",g0.5),2(",",i0),",",g0.4,",",i0,'// &
+                   '4(",",g0.4),",""",a,""",""",a,"""")') trim(s%scene), s%nodes, s%courant, &
+               s%ei_factor*paper_bending_stiffness, o%t_end, o%dt, tag(k), o%time_reached, o%energy_drift, o%steps, &
+               o%rejected, o%newton_per_step, o%max_newton, o%min_step/max(o%dt, tiny(1.0_dp)), o%max_turning_angle, &
+               o%min_strain, o%wall, one_line(o%warnings), one_line(o%reason)
+         end associate
+      end do
+      close (u)
+      open (newunit=u, file=dir//'/stress3d.md', status='replace', action='write', iostat=ios, iomsg=msg)
+      if (ios /= 0) then
+         write (error_unit, '(a)') 'stress: cannot write '//dir//'/stress3d.md: '//trim(msg)
+         error stop 1
+      end if
+      runs = count(specs%study == 'scenes3d')
+      done = 0
+      wall = 0
+      do k = 1, n
+         if (specs(k)%study /= 'scenes3d') cycle
+         if (outcomes(k)%complete) done = done + 1
+         wall = wall + outcomes(k)%wall
+      end do
+      write (u, '(a)') '# Stress tests of the 3-D model'
+      write (u, '(a)') ''
+      write (u, '(a)') 'Generated by `make stress-3d` (example/stress `only=scenes3d`; also part of `make stress`): '// &
+         itext(runs)//' runs, '//itext(done)//' complete, dynamics '//num(wall, 0)//' s on a shared two-core '// &
+         'machine. Code: '//trim(code_version)//'. Every run is a row of [stress3d.csv](stress3d.csv); the planar '// &
+         'sweep is [stress.md](stress.md), its measures and outcome names apply here.'
+      write (u, '(a)') ''
+      write (u, '(a)') 'Scenes (example/stress/stress_runs.f90, `scene_namelist`; 60 m of the paper''s cable, '// &
+         '`&numerics model = ''3d''`, theta 0.5, the step control of the program): `slack3d`, a slack line hanging '// &
+         'between (0, 0, 0) and (40, 20, 0) m let go at end b, to 2 s; `fairlead3d`, in water with a current of '// &
+         '0.3 m/s across the plane, the fairlead at (50, 0, 0) m moving 1 m along y (period 2 s), to 4 s; '// &
+         '`torque3d`, end b loaded by a force (3000, 500, 1000) N and a torque of 200 N m ramped up over 0.5 s, '// &
+         'to 2 s. The Courant number is c dt / ds with c the largest axial wave speed of the static state. '// &
+         '*smallest step*: the smallest accepted step / dt (the last step, shortened to land on t_end, '// &
+         'left out). *drift*: the ledger''s drift / the initial strain energy.'
+      write (u, '(a)') ''
+      write (u, '(a)') '| scene | nodes | Courant | EI N m^2 | dt s | outcome | t reached s | steps | rejected | '// &
+         'smallest step | Newton / step | max Newton | drift | max turn rad | warnings | wall s |'
+      write (u, '(a)') '|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|---|'
+      do k = 1, n
+         if (specs(k)%study /= 'scenes3d') cycle
+         associate (s => specs(k), o => outcomes(k))
+            write (u, '(a)') '| '//trim(s%scene)//' | '//itext(s%nodes)//' | '//num(s%courant, 0)//' | '// &
+               sci(s%ei_factor*paper_bending_stiffness, 2)//' | '//sci(o%dt, 2)//' | '//tag(k)//' | '// &
+               num(o%time_reached, 3)//' | '//itext(o%steps)//' | '//itext(o%rejected)//' | '// &
+               num(o%min_step/max(o%dt, tiny(1.0_dp)), 3)//' | '//num(o%newton_per_step, 1)//' | '// &
+               itext(o%max_newton)//' | '//sci(o%energy_drift, 1)//' | '//num(o%max_turning_angle, 2)//' | '// &
+               warning_codes(o%warnings)//' | '//num(o%wall, 1)//' |'
+         end associate
+      end do
+      close (u)
+   end subroutine write_scenes3d
+
    !> An empty field for NaN (CSV).
    function nan_blank(text) result(t)
       character(*), intent(in) :: text
@@ -419,7 +525,8 @@ contains
          'one thread): ', n, ' runs in '//num(total_wall, 0)//' s ('//num(total_wall/60, 1)//' min) on a shared '// &
          'two-core machine. Code: '//trim(code_version)//'. Compiler: '//compiler_version()//', options: '// &
          compiler_options()//'. The stability map that reads these tables is '// &
-         '[stability.md](stability.md); every run is a row of [stress.csv](stress.csv).'
+         '[stability.md](stability.md); every run is a row of [stress.csv](stress.csv). The 3-D scenes '// &
+         '(study scenes3d, `make stress-3d`) have their own page, [stress3d.md](stress3d.md).'
       write (u, '(a)') ''
       call measures_section(u)
       call design_section(u)
@@ -501,6 +608,8 @@ contains
          'the axial wave speed of the static state (rod: the largest over its cells; box: at the end strain; the '// &
          'same here): 294 m/s at 2 kN to 491 m/s at 50 kN. The peer reference below takes c at the stiffest point of '// &
          'the law (1110 m/s): its Courant 0.5 is about 0.13 to 0.22 of ours.'
+      write (u, '(a)') '- `scenes3d`: three scenes of the 3-D model at Courant 1, 4 and 10 (36 runs); their rows are '// &
+         'in stress.csv, their table in [stress3d.md](stress3d.md).'
       write (u, '(a)') ''
    end subroutine design_section
 

@@ -31,6 +31,7 @@ module stress_runs
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, stat_input
    use xcable_io_config, only: case_config
+   use xcable_io_input, only: read_config
    use xcable_material_law, only: material_law, new_law
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
@@ -39,7 +40,7 @@ module stress_runs
    implicit none
    private
    public :: run_spec, run_outcome, stress_run, compression_probe, paper_bending_stiffness, wall_reflection
-   public :: release_times, outcome_tag
+   public :: release_times, outcome_tag, scene_namelist
 
    !> E pi d^4 / 64 of the paper's cable, N m^2.
    real(dp), parameter :: paper_bending_stiffness = 230.0e6_dp*acos(-1.0_dp)*0.05_dp**4/64
@@ -66,6 +67,8 @@ module stress_runs
       real(dp) :: interval = 0.01_dp
       !> Wall-clock limit of the dynamics, s.
       real(dp) :: wall_limit = 30
+      !> A 3-D scene (scene_namelist) instead of the paper's break ('': the break).
+      character(len=12) :: scene = ''
    end type run_spec
 
    !> Compression at the fixed end, one record per snapshot.
@@ -103,6 +106,8 @@ module stress_runs
       !> Newton iterations in the hardest step and per accepted step; rejected attempts; accepted steps.
       integer :: max_newton = 0, rejected = 0, steps = 0
       real(dp) :: newton_per_step = 0
+      !> Smallest accepted step but the last (which lands on t_end), s.
+      real(dp) :: min_step = 0
       !> Wall time of the dynamics, s.
       real(dp) :: wall = 0
       !> Smallest fixed-end tension, N; peak speed of the released end, m/s.
@@ -180,8 +185,9 @@ contains
       config%max_wall_time = spec%wall_limit
       config%t_end = spec%t_end
       if (spec%t_end <= 0) config%t_end = spec%t_break + 2.2_dp*config%length/wave_speed(law, mass, eps0)
+      if (len_trim(spec%scene) > 0) call scene_config(spec, config, error)
       outcome%t_end = config%t_end
-      call sim%prepare(config, error)
+      if (.not. allocated(error)) call sim%prepare(config, error)
       if (allocated(error)) then
          outcome%reason = error%message
          if (error%stat == stat_input) outcome%reason = 'input: '//error%message
@@ -210,6 +216,8 @@ contains
       outcome%max_newton = summary%max_newton_iterations
       outcome%rejected = summary%rejected_steps
       outcome%steps = summary%steps
+      outcome%min_step = summary%dt_requested
+      if (history%n >= 2) outcome%min_step = minval(history%step(1:history%n - 1))
       outcome%newton_per_step = real(summary%newton_iterations, dp)/max(summary%steps, 1)
       outcome%wall = summary%wall_time
       outcome%min_wall_tension = summary%min_fixed_end_tension
@@ -252,7 +260,76 @@ contains
          outcome%drop_error = summary%front_arrival_time - &
                               wall_drop_time(law, mass, config%length, eps0, spec%t_break, 0.01_dp)
       end if
+      ! The break's measures do not apply to the 3-D scenes.
+      if (len_trim(spec%scene) > 0) then
+         outcome%overshoot = nan
+         outcome%ringing = nan
+         outcome%speed_error = nan
+         outcome%drop_error = nan
+      end if
    end subroutine stress_run
+
+   !> The namelist of a 3-D scene (&numerics model = '3d'; nodes, Courant
+   !> number, EI and t_end from the spec, 60 m of the paper's cable):
+   !> - slack3d: a slack line hanging between (0, 0, 0) and (40, 20, 0), let go
+   !>   at end b over t_break (the off-plane slack release), to 2 s;
+   !> - fairlead3d: in water (Morison drag, added mass), a current of 0.3 m/s
+   !>   across the plane (y), the fairlead at (50, 0, 0) moving 1 m along y
+   !>   (period 2 s, ramped over 0.5 s), to 4 s;
+   !> - torque3d: end b loaded by a force (3000, 500, 1000) N and a torque of
+   !>   200 N m, both ramped up over 0.5 s, to 2 s.
+   function scene_namelist(spec) result(text)
+      !> What to run (spec%scene names the scene).
+      type(run_spec), intent(in) :: spec
+      character(:), allocatable :: text
+      character(len=200) :: numerics
+      character(len=*), parameter :: nl = new_line('a')
+      write (numerics, '(a,i0,a,g0.6,a,g0.6,a)') "&numerics model = '3d', nodes = ", spec%nodes, ', courant = ', &
+         spec%courant, ', t_end = ', spec%t_end, ' /'
+      text = "&cable bending_stiffness = "//real_text(spec%ei_factor*paper_bending_stiffness)//" /"//nl// &
+             "&end_a kind = 'fixed', x = 0, z = 0 /"//nl//trim(numerics)//nl
+      select case (trim(spec%scene))
+      case ('slack3d')
+         text = text//"&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//nl// &
+                "&rupture s_break = 60, t_break = "//real_text(spec%t_break)//" /"
+      case ('fairlead3d')
+         text = text//"&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, "// &
+                "direction_y = 1, direction_z = 0, ramp_time = 0.5 /"//nl// &
+                "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
+                nl//"&rupture enabled = .false. /"
+      case ('torque3d')
+         text = text//"&end_b kind = 'force', force_x = 3000, force_y = 500, force_z = 1000, torque = 200, "// &
+                "history = 'ramp', ramp_time = 0.5 /"//nl//"&rupture enabled = .false. /"
+      case default
+         text = ''
+      end select
+   contains
+      function real_text(x) result(t)
+         real(dp), intent(in) :: x
+         character(:), allocatable :: t
+         character(len=32) :: buf
+         write (buf, '(es22.15)') x
+         t = trim(adjustl(buf))
+      end function real_text
+   end function scene_namelist
+
+   !> The case of a 3-D scene: its namelist read as the program reads one
+   !> (through build/stress_scene.nml), with the sweep's output settings.
+   subroutine scene_config(spec, config, error)
+      type(run_spec), intent(in) :: spec
+      type(case_config), intent(inout) :: config
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: path = 'build/stress_scene.nml'
+      character(:), allocatable :: text
+      integer :: unit
+      text = scene_namelist(spec)
+      open (newunit=unit, file=path, status='replace', action='write')
+      write (unit, '(a)') text//new_line('a')//"&output interval = 0, energy = .true., quiet = .true. /"
+      close (unit)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      config%max_wall_time = spec%wall_limit
+   end subroutine scene_config
 
    !> Position of the released end (slot 2) at time t, linear between the
    !> two records around it; NaN if the run did not get there.

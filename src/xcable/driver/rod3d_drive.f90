@@ -11,14 +11,19 @@
 !> fields of a state are those of driver/rod3d_fields.f90; the history keeps
 !> the y components of the ends too (run_history%ends_y).
 !>
-!> Not yet: a break inside the cable (one piece only), step control (a step
-!> whose Newton iteration fails stops the run with an error), checkpoints.
-!> The input refuses these for a 3-D case (io/input.f90, check_model).
+!> Step control as the planar run's (its module header; the same procedures
+!> plan_step, reject_attempt, advance_time and check_range, and the fold
+!> check in 3-D form, rod3d_piece%turning_folds): a failed or out-of-range
+!> attempt is rejected and the step halved, then grown back.
+!>
+!> Not yet: a break inside the cable (one piece only), checkpoints. The
+!> input refuses these for a 3-D case (io/input.f90, check_model).
 module xcable_rod3d_drive
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
-   use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change
+   use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
+                             advance_time, jacobian_kept, check_range, check_folds
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece
    use xcable_ends_force, only: force_end
@@ -191,14 +196,17 @@ contains
       class(run_observer), intent(inout), optional :: observer
       !> Error when the run cannot go on (the records hold what was done).
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: t_stop, h, h_try, wall, last_report
+      real(dp) :: t_stop, h_try, wall, last_report
       integer(i8) :: now
-      logical :: landing
-      integer :: capacity, iterations0
+      logical :: landing, kept, newton_failed
+      integer :: capacity
+      type(error_type), allocatable :: step_error
       call system_clock(rod%clock%start, rod%clock%rate)
       last_report = 0
       rod%t = 0
-      h = rod%dt
+      rod%progress%h = rod%dt
+      rod%progress%n_good = 0
+      rod%progress%rejected_here = 0
       self%snapshot_index = 1
       call start_records(self, rod)
       capacity = int(min(rod%options%t_end/rod%dt, 1.0e6_dp)) + 16
@@ -229,36 +237,34 @@ contains
          do while (rod%t < rod%options%t_end*(1 - 1.0e-12_dp))
             call system_clock(now)
             wall = real(now - rod%clock%start, dp)/rod%clock%rate
-            if (rod%options%max_wall_time > 0 .and. wall > rod%options%max_wall_time) then
-               call fatal_error(error, 'wall-clock limit of '//str(rod%options%max_wall_time)//' s reached at t = '// &
-                                str(rod%t)//' s', stat_numerics)
-               exit
-            end if
-            t_stop = rod%options%t_end
-            if (scene%breaks .and. .not. self%broken .and. scene%break_time > rod%t) &
-               t_stop = min(t_stop, scene%break_time)
-            h_try = h
-            landing = rod%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (rod%t + h_try) < 1.0e-6_dp*h
-            if (landing) h_try = t_stop - rod%t
+            call wall_limit(rod, wall, error)
+            if (allocated(error)) exit
+            call plan_step(rod, h_try, t_stop, landing, error)
+            if (allocated(error)) exit
             self%x_prev = self%run%x
             self%v_prev = self%run%v
-            iterations0 = self%run%iterations
             self%run%t = rod%t
-            call self%run%step(h_try, rod%options%theta, error)
-            if (allocated(error)) then
-               error%stat = stat_numerics
-               error%message = error%message//' (the 3-D model has no step control yet: try a smaller dt or courant)'
-               exit
+            kept = jacobian_kept(self%run%options, self%run%work)
+            call self%run%attempt(h_try, rod%options%theta, step_error)
+            newton_failed = allocated(step_error)
+            if (.not. newton_failed) call check_state3(self%run%problem%piece, self%run%x, h_try, step_error)
+            if (allocated(step_error)) then
+               call self%run%reject()
+               call reject_attempt(rod, step_error%message, newton_failed .and. kept, error)
+               deallocate (step_error)
+               if (allocated(error)) exit
+               cycle
             end if
+            call self%run%accept(h_try, rod%options%theta)
             self%reaction(:, 1) = self%run%problem%piece%reaction(1, h_try)
             self%reaction(:, 2) = self%run%problem%piece%reaction(self%run%problem%piece%n, h_try)
             call emit(self, rod, observer, rod%t + h_try, .false., error)
             if (allocated(error)) exit
-            rod%t = rod%t + h_try
-            if (abs(rod%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) rod%t = t_stop
+            call advance_time(rod, h_try, t_stop, landing)
             self%run%t = rod%t
-            if (.not. landing) rod%summary%dt_used = max(rod%summary%dt_used, h_try)
-            call record(self, rod, self%run%iterations - iterations0, h_try)
+            call record(self, rod, self%run%last_iterations, h_try)
+            rod%history%rejected(rod%history%n) = rod%progress%rejected_here
+            rod%progress%rejected_here = 0
             if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) &
                call split(self, rod)
             if (present(observer) .and. wall - last_report >= 1.0_dp) then
@@ -269,6 +275,24 @@ contains
       end associate
       call finish(self, rod)
    end subroutine drive_run
+
+   !> The step control's range check of an attempt (the planar run's
+   !> check_state in 3-D form): finite unknowns, no cell squeezed below 5 % of
+   !> its length, no turning angle through half a turn within the step of h.
+   subroutine check_state3(piece, x, h, error)
+      type(rod3d_piece), intent(in) :: piece
+      !> Unknowns of the attempt's new level.
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: h
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: r(3, piece%n), e(3, piece%n - 1), l(piece%n - 1), th(piece%n), fold(piece%n)
+      r = reshape(x(1:3*piece%n), [3, piece%n])
+      call piece%geometry(r, e, l, th)
+      call check_range(x, l, piece%law, 1, error)
+      if (allocated(error)) return
+      call piece%turning_folds(r, fold)
+      call check_folds(fold, 1, h, error)
+   end subroutine check_state3
 
    !> The summary (the planar run's summarise, on the shared records).
    subroutine finish(self, rod)

@@ -1,9 +1,10 @@
 !> A run of the 3-D rod (model/rod3d.f90) on one piece: the static state by
 !> Newton from a given guess, then steps of a given size, with the energy
 !> ledger (stored energy minus the work of the ends plus what damping took).
-!> The step control, breaks, snapshots and output of the planar driver
-!> (driver/rod_run.f90) are not yet wired to the 3-D model; this stepper is
-!> what the 3-D tests and a future driver build on.
+!> A step is an attempt (Newton from R + dt V) followed by accept (new
+!> velocities, the ledger) or reject (back to the old level), so that a
+!> driver can check the attempt first (driver/rod3d_drive.f90 runs the
+!> planar driver's step control on it); step does both without a check.
 module xcable_rod3d_run
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, prefix_error
@@ -28,8 +29,10 @@ module xcable_rod3d_run
       !> Stored energy at the start (J), work done by the ends and by the distributed loads (J),
       !> energy taken by damping and theta > 1/2 (J).
       real(dp) :: energy0 = 0, end_work = 0, load_work = 0, dissipated = 0
-      !> Newton iterations of all steps.
-      integer :: iterations = 0
+      !> Newton iterations of all attempts, and of the last attempt.
+      integer :: iterations = 0, last_iterations = 0
+      !> Unknowns at the old level of the attempt in x.
+      real(dp), allocatable :: x_old(:)
    contains
       !> Set up the work arrays after problem%piece has been initialised.
       procedure :: init => run_init
@@ -37,8 +40,14 @@ module xcable_rod3d_run
       procedure :: statics => run_statics
       !> Start from a given state (x, v) at time t.
       procedure :: start => run_start
-      !> One step of size dt.
+      !> One step of size dt (attempt, then accept).
       procedure :: step => run_step
+      !> Newton for the step of size dt from the current state (x becomes the new level).
+      procedure :: attempt => run_attempt
+      !> Take the attempted step: new velocities, time and ledger.
+      procedure :: accept => run_accept
+      !> Drop the attempted step: x back to the old level.
+      procedure :: reject => run_reject
       !> Stored energies [strain, kinetic, bending, gravity, twist], J.
       procedure :: energies => run_energies
       !> Ledger: stored energy - initial - work of ends and loads + dissipated, J (0 when it closes).
@@ -100,30 +109,58 @@ contains
       class(rod3d_run), intent(inout) :: self
       !> Step (s) and time weight.
       real(dp), intent(in) :: dt, theta
+      !> Error when Newton fails (x is then back at the old level).
+      type(error_type), allocatable, intent(out) :: error
+      call self%attempt(dt, theta, error)
+      if (allocated(error)) then
+         call self%reject()
+         return
+      end if
+      call self%accept(dt, theta)
+   end subroutine run_step
+
+   subroutine run_attempt(self, dt, theta, error)
+      class(rod3d_run), intent(inout) :: self
+      !> Step (s) and time weight.
+      real(dp), intent(in) :: dt, theta
       !> Error when Newton fails.
       type(error_type), allocatable, intent(out) :: error
       type(newton_report) :: report
-      real(dp), allocatable :: x0(:), r0(:, :), r1(:, :), v1(:, :)
-      real(dp) :: eps0, eps1, dv(3)
-      integer :: n, k, c
+      integer :: n, k
       associate (piece => self%problem%piece)
          n = piece%n
-         x0 = self%x
-         r0 = reshape(x0(1:3*n), [3, n])
-         call piece%prepare_step(r0, self%v)
+         self%x_old = self%x
+         call piece%prepare_step(reshape(self%x_old(1:3*n), [3, n]), self%v)
          self%problem%dt = dt
          self%problem%t0 = self%t
          self%problem%theta = theta
          ! First guess: R + dt V.
          do k = 1, n
-            self%x(3*k - 2:3*k) = x0(3*k - 2:3*k) + dt*self%v(:, k)
+            self%x(3*k - 2:3*k) = self%x_old(3*k - 2:3*k) + dt*self%v(:, k)
          end do
          call newton_solve(self%problem, self%x, self%work, self%options, report, error)
-         if (allocated(error)) then
-            call prefix_error(error, '3-D step at t = '//str(self%t)//' s: ')
-            return
-         end if
+         self%last_iterations = report%iterations
          self%iterations = self%iterations + report%iterations
+         if (allocated(error)) call prefix_error(error, '3-D step at t = '//str(self%t)//' s: ')
+      end associate
+   end subroutine run_attempt
+
+   subroutine run_reject(self)
+      class(rod3d_run), intent(inout) :: self
+      self%x = self%x_old
+      self%work%usable = .false.
+   end subroutine run_reject
+
+   subroutine run_accept(self, dt, theta)
+      class(rod3d_run), intent(inout) :: self
+      !> Step (s) and time weight of the attempt.
+      real(dp), intent(in) :: dt, theta
+      real(dp), allocatable :: r0(:, :), r1(:, :), v1(:, :)
+      real(dp) :: eps0, eps1, dv(3)
+      integer :: n, k, c
+      associate (piece => self%problem%piece, x0 => self%x_old)
+         n = piece%n
+         r0 = reshape(x0(1:3*n), [3, n])
          r1 = reshape(self%x(1:3*n), [3, n])
          allocate (v1(3, n))
          call piece%new_velocity(r1, dt, theta, v1)
@@ -165,8 +202,8 @@ contains
             else
                force = 0.5_dp*(piece%end_b%applied_force3(self%t) + piece%end_b%applied_force3(self%t + dt))
             end if
-            self%end_work = self%end_work + dot_product(force, self%x(3*k - 2:3*k) - x0(3*k - 2:3*k))
-            dpsi = self%x(3*n + k) - x0(3*n + k)
+            self%end_work = self%end_work + dot_product(force, self%x(3*k - 2:3*k) - self%x_old(3*k - 2:3*k))
+            dpsi = self%x(3*n + k) - self%x_old(3*n + k)
             if (k == 1) then
                torque0 = -piece%end_a%applied_torque(self%t)
                torque1 = -piece%end_a%applied_torque(self%t + dt)
@@ -204,7 +241,7 @@ contains
          end associate
          mass_dot = dot_product(mw, dvk)
       end function mass_dot
-   end subroutine run_step
+   end subroutine run_accept
 
    function run_energies(self) result(en)
       class(rod3d_run), intent(in) :: self

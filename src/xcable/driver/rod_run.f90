@@ -18,7 +18,9 @@
 !> down to min_step_fraction dt; after four good steps the step doubles back
 !> towards dt. The rejected attempts of a run are bounded by 1000 + the number
 !> of requested steps, and the wall clock (max_wall_time) is checked before
-!> every attempt.
+!> every attempt. The 3-D run (driver/rod3d_drive.f90) takes the same step
+!> control through the public procedures wall_limit, plan_step,
+!> reject_attempt, advance_time, check_range and check_folds.
 !>
 !> Newton in a time step (this is the policy, not a silent override of the
 !> case's settings): the case's tolerance, iteration limit and
@@ -35,6 +37,7 @@ module xcable_rod_run
    use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
                                bend_curvature, cell_rotations
    use xcable_ends_end, only: end_condition
+   use xcable_material_law, only: material_law
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
@@ -49,6 +52,7 @@ module xcable_rod_run
    implicit none
    private
    public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
+   public :: wall_limit, plan_step, reject_attempt, advance_time, jacobian_kept, check_range, check_folds
 
    !> Why advance returned: the run ended (t_end or an error), a checkpoint is
    !> due, or SIGTERM arrived.
@@ -501,22 +505,17 @@ contains
       integer, intent(out) :: pause
       type(error_type), allocatable :: step_error
       integer(i8) :: clock_now
-      real(dp) :: h_try, wall, t_stop, max_rejections
+      real(dp) :: h_try, wall, t_stop
       integer :: p, iterations
       logical :: newton_failed, kept, any_kept, landing, due
-      character(:), allocatable :: reason
 
       pause = pause_none
-      max_rejections = 1000 + self%options%t_end/self%dt
       associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
          do while (self%t < self%options%t_end*(1 - 1.0e-12_dp))
             call system_clock(clock_now)
             wall = real(clock_now - self%clock%start, dp)/self%clock%rate
-            if (self%options%max_wall_time > 0 .and. wall > self%options%max_wall_time) then
-               call fatal_error(error, 'wall-clock limit of '//str(self%options%max_wall_time)//' s reached at t = '// &
-                                str(self%t)//' s', stat_numerics)
-               exit
-            end if
+            call wall_limit(self, wall, error)
+            if (allocated(error)) exit
             ! A pause, where the state is that of an accepted step (or of the start).
             if (self%options%stop_on_termination) then
                if (termination_requested()) then
@@ -537,18 +536,8 @@ contains
                   return
                end if
             end if
-            ! Land on t_end and on the start of the break.
-            t_stop = self%options%t_end
-            if (self%scene%breaks .and. .not. self%broken .and. self%scene%break_time > self%t) &
-               t_stop = min(t_stop, self%scene%break_time)
-            h_try = h
-            landing = self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*h
-            if (landing) h_try = t_stop - self%t
-            if (.not. (self%t + h_try > self%t)) then
-               call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
-                                str(self%t)//' s', stat_numerics)
-               exit
-            end if
+            call plan_step(self, h_try, t_stop, landing, error)
+            if (allocated(error)) exit
             ! One attempt on every piece.
             newton_failed = .false.
             any_kept = .false.
@@ -563,45 +552,19 @@ contains
             end do
             if (.not. allocated(step_error)) call check_state(self, h_try, step_error)
             if (allocated(step_error)) then
-               self%summary%rejected_steps = self%summary%rejected_steps + 1
-               rejected_here = rejected_here + 1
                do p = 1, size(self%pieces)
                   self%pieces(p)%work%usable = .false.
                end do
-               reason = step_error%message
+               call reject_attempt(self, step_error%message, newton_failed .and. any_kept, error)
                deallocate (step_error)
-               if (self%summary%rejected_steps > max_rejections) then
-                  call fatal_error(error, 'step control: '//str(self%summary%rejected_steps)//' rejected attempts by t = '// &
-                                   str(self%t)//' s: the step stays far below dt = '//str(self%dt)//' s; last: '//reason// &
-                                   '; try a smaller dt or courant, or theta = 0.55', stat_numerics)
-                  exit
-               end if
-               if (newton_failed .and. any_kept) cycle
-               h = 0.5_dp*h
-               n_good = 0
-               if (h < self%dt*self%options%min_step_fraction) then
-                  call fatal_error(error, 'step control: step fell below '//str(self%dt*self%options%min_step_fraction)// &
-                                   ' s at t = '//str(self%t)//' s after '//str(rejected_here)//' rejected attempts; last: '// &
-                                   reason//'; try a smaller dt or courant, more nodes, or theta = 0.55', stat_numerics)
-                  exit
-               end if
+               if (allocated(error)) exit
                cycle
             end if
             ! Accept: snapshots inside the step, then the new level.
             call accept(self, h_try)
             call emit_snapshots(self, observer, self%t + h_try, .false., error)
             if (allocated(error)) exit
-            self%t = self%t + h_try
-            if (abs(self%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) self%t = t_stop
-            ! The step taken: a step shortened only to land on t_end or the break is not a change of dt.
-            if (.not. landing) self%summary%dt_used = max(self%summary%dt_used, h_try)
-            if (h < self%dt) then
-               n_good = n_good + 1
-               if (n_good >= 4) then
-                  h = min(2*h, self%dt)
-                  n_good = 0
-               end if
-            end if
+            call advance_time(self, h_try, t_stop, landing)
             call record(self, iterations, rejected_here, h_try)
             rejected_here = 0
             if (self%scene%breaks .and. .not. self%broken .and. self%t >= self%scene%break_time*(1 - 1.0e-12_dp)) then
@@ -966,6 +929,108 @@ contains
       end if
    end function snapshot_time
 
+   !> Step control (either model, see the module header): the error when the
+   !> wall time of the dynamics so far, wall (s), is past options%max_wall_time.
+   subroutine wall_limit(self, wall, error)
+      !> Run.
+      type(rod_run), intent(in) :: self
+      !> Wall time of this process's dynamics, s.
+      real(dp), intent(in) :: wall
+      !> Error when the limit is reached.
+      type(error_type), allocatable, intent(out) :: error
+      if (self%options%max_wall_time > 0 .and. wall > self%options%max_wall_time) &
+         call fatal_error(error, 'wall-clock limit of '//str(self%options%max_wall_time)//' s reached at t = '// &
+                          str(self%t)//' s', stat_numerics)
+   end subroutine wall_limit
+
+   !> Step control: the step to try from self%t, progress%h shortened to land
+   !> on t_stop (t_end, or the start of the break). Error when it no longer
+   !> advances the time.
+   subroutine plan_step(self, h_try, t_stop, landing, error)
+      !> Run.
+      type(rod_run), intent(in) :: self
+      !> Step to try and where the run lands (s); whether the step was shortened to land there.
+      real(dp), intent(out) :: h_try, t_stop
+      logical, intent(out) :: landing
+      !> Error when the step no longer advances the time.
+      type(error_type), allocatable, intent(out) :: error
+      t_stop = self%options%t_end
+      if (self%scene%breaks .and. .not. self%broken .and. self%scene%break_time > self%t) &
+         t_stop = min(t_stop, self%scene%break_time)
+      h_try = self%progress%h
+      landing = self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*self%progress%h
+      if (landing) h_try = t_stop - self%t
+      if (.not. (self%t + h_try > self%t)) &
+         call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
+                          str(self%t)//' s', stat_numerics)
+   end subroutine plan_step
+
+   !> Step control after a rejected attempt: count it; try the same step again
+   !> (retry: Newton failed from a kept factorisation, the next attempt takes
+   !> a fresh one) or half of it. Error when the run has rejected more than
+   !> 1000 + the requested steps, or the step fell below min_step_fraction dt.
+   subroutine reject_attempt(self, reason, retry, error)
+      !> Run.
+      type(rod_run), intent(inout) :: self
+      !> Why the attempt was rejected.
+      character(*), intent(in) :: reason
+      !> Whether to retry the same step.
+      logical, intent(in) :: retry
+      !> Error when the step control gives up.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: max_rejections
+      max_rejections = 1000 + self%options%t_end/self%dt
+      associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
+         self%summary%rejected_steps = self%summary%rejected_steps + 1
+         rejected_here = rejected_here + 1
+         if (self%summary%rejected_steps > max_rejections) then
+            call fatal_error(error, 'step control: '//str(self%summary%rejected_steps)//' rejected attempts by t = '// &
+                             str(self%t)//' s: the step stays far below dt = '//str(self%dt)//' s; last: '//reason// &
+                             '; try a smaller dt or courant, or theta = 0.55', stat_numerics)
+            return
+         end if
+         if (retry) return
+         h = 0.5_dp*h
+         n_good = 0
+         if (h < self%dt*self%options%min_step_fraction) &
+            call fatal_error(error, 'step control: step fell below '//str(self%dt*self%options%min_step_fraction)// &
+                             ' s at t = '//str(self%t)//' s after '//str(rejected_here)//' rejected attempts; last: '// &
+                             reason//'; try a smaller dt or courant, more nodes, or theta = 0.55', stat_numerics)
+      end associate
+   end subroutine reject_attempt
+
+   !> Step control after an accepted step of h_try: the time moves on (onto
+   !> t_stop when it lands there), the step taken is recorded, and after four
+   !> good steps a halved step doubles back towards dt.
+   subroutine advance_time(self, h_try, t_stop, landing)
+      !> Run.
+      type(rod_run), intent(inout) :: self
+      !> The step taken and the time it was to land on (plan_step), s; whether it was shortened to land there.
+      real(dp), intent(in) :: h_try, t_stop
+      logical, intent(in) :: landing
+      self%t = self%t + h_try
+      if (abs(self%t - t_stop) <= 1.0e-12_dp*max(t_stop, 1.0_dp)) self%t = t_stop
+      ! The step taken: a step shortened only to land on t_end or the break is not a change of dt.
+      if (.not. landing) self%summary%dt_used = max(self%summary%dt_used, h_try)
+      associate (h => self%progress%h, n_good => self%progress%n_good)
+         if (h < self%dt) then
+            n_good = n_good + 1
+            if (n_good >= 4) then
+               h = min(2*h, self%dt)
+               n_good = 0
+            end if
+         end if
+      end associate
+   end subroutine advance_time
+
+   !> Whether a Newton solve with opts starts from the kept factorisation of work.
+   pure logical function jacobian_kept(opts, work)
+      !> Newton controls and work arrays.
+      type(newton_options), intent(in) :: opts
+      type(newton_workspace), intent(in) :: work
+      jacobian_kept = opts%reuse_jacobian .and. work%usable .and. work%contraction <= opts%refresh_contraction
+   end function jacobian_kept
+
    !> Whether an end moves or changes its load in time.
    logical function ends_change(self)
       type(rod_run), intent(in) :: self
@@ -1012,7 +1077,7 @@ contains
          ! A factorisation made for another step size is stale (the mass term goes as 1/dt^2).
          if (abs(piece%factor_step - h) > 1.0e-12_dp*h) piece%work%usable = .false.
          opts = step_newton(self)
-         kept = opts%reuse_jacobian .and. piece%work%usable .and. piece%work%contraction <= opts%refresh_contraction
+         kept = jacobian_kept(opts, piece%work)
          call newton_solve(piece%problem, piece%x, piece%work, opts, report, error)
          iterations = max(iterations, report%iterations)
          if (report%factorisations > 0) piece%factor_step = h
@@ -1026,46 +1091,79 @@ contains
       type(rod_run), intent(inout) :: self
       real(dp), intent(in) :: h
       type(error_type), allocatable, intent(out) :: error
-      integer :: p, c, k
-      real(dp) :: dphi_a, dphi_b
-      real(dp), allocatable :: dphi(:)
+      integer :: p, k
+      real(dp), allocatable :: dphi(:), fold(:)
       do p = 1, size(self%pieces)
          associate (piece => self%pieces(p)%problem%piece, x => self%pieces(p)%x)
-            if (.not. all(ieee_is_finite(x))) then
-               call fatal_error(error, 'non-finite positions in piece '//str(p), stat_numerics)
-               return
-            end if
             ! The last evaluation (final residual) was at x: e1, l1, th1 are those of the new level.
-            do c = 1, piece%n - 1
-               if (piece%l1(c) < 0.05_dp) then
-                  call fatal_error(error, 'cell '//str(c)//' of piece '//str(p)//' squeezed to '// &
-                                   str(100*piece%l1(c))//' % of its length (strain '//str(piece%l1(c) - 1)// &
-                                   '): the compressed zone has collapsed'//trim(squeeze_advice(piece)), stat_numerics)
-                  return
-               end if
-            end do
+            call check_range(x, piece%l1, piece%law, p, error)
+            if (allocated(error)) return
             ! Each cell's rotation once, the last evaluation's where it was at x (cell_rotations).
-            if (allocated(dphi)) deallocate (dphi)
-            allocate (dphi(piece%n - 1))
+            if (allocated(dphi)) deallocate (dphi, fold)
+            allocate (dphi(piece%n - 1), fold(piece%n))
             call cell_rotations(piece, reshape(x, [2, piece%n]), dphi)
+            fold = 0
             do k = 2, piece%n - 1
-               dphi_a = dphi(k - 1)
-               dphi_b = dphi(k)
-               if (abs(piece%th1(k) - piece%th0(k) - (dphi_b - dphi_a)) > 3.0_dp) then
-                  call fatal_error(error, 'the turning angle at node '//str(k)//' of piece '//str(p)// &
-                                   ' passed half a turn within one step of '//str(h)//' s (a fold)', stat_numerics)
-                  return
-               end if
+               fold(k) = abs(piece%th1(k) - piece%th0(k) - (dphi(k) - dphi(k - 1)))
             end do
+            call check_folds(fold, p, h, error)
+            if (allocated(error)) return
          end associate
       end do
    end subroutine check_state
 
+   !> The model's range after an attempt on piece p (either model): finite
+   !> unknowns x and no cell squeezed below 5 % of its length (l: cell lengths
+   !> / unstretched lengths at the new level). Error stat_numerics naming the first.
+   subroutine check_range(x, l, law, p, error)
+      !> Unknowns of the new level; cell length ratios.
+      real(dp), intent(in) :: x(:), l(:)
+      !> The piece's law (for the advice) and its index.
+      class(material_law), intent(in) :: law
+      integer, intent(in) :: p
+      type(error_type), allocatable, intent(out) :: error
+      integer :: c
+      if (.not. all(ieee_is_finite(x))) then
+         call fatal_error(error, 'non-finite positions in piece '//str(p), stat_numerics)
+         return
+      end if
+      do c = 1, size(l)
+         if (l(c) < 0.05_dp) then
+            call fatal_error(error, 'cell '//str(c)//' of piece '//str(p)//' squeezed to '// &
+                             str(100*l(c))//' % of its length (strain '//str(l(c) - 1)// &
+                             '): the compressed zone has collapsed'//trim(squeeze_advice(law)), stat_numerics)
+            return
+         end if
+      end do
+   end subroutine check_range
+
+   !> The model's range (either model): no turning angle passed half a turn
+   !> within the step of h s. fold(k) is how far node k's change of turning
+   !> angle in the step is from the change its two cells' rotations give (rad:
+   !> near 0, or near 2 pi when the angle went through half a turn); error
+   !> stat_numerics for the first node above 3 rad (or not a number).
+   subroutine check_folds(fold, p, h, error)
+      !> Mismatch at each node (0 at the ends), rad.
+      real(dp), intent(in) :: fold(:)
+      !> Piece index; the step, s.
+      integer, intent(in) :: p
+      real(dp), intent(in) :: h
+      type(error_type), allocatable, intent(out) :: error
+      integer :: k
+      do k = 1, size(fold)
+         if (.not. (fold(k) <= 3.0_dp)) then
+            call fatal_error(error, 'the turning angle at node '//str(k)//' of piece '//str(p)// &
+                             ' passed half a turn within one step of '//str(h)//' s (a fold)', stat_numerics)
+            return
+         end if
+      end do
+   end subroutine check_folds
+
    !> What to try when a cell collapses.
-   function squeeze_advice(piece) result(advice)
-      type(rod_piece), intent(in) :: piece
+   function squeeze_advice(law) result(advice)
+      class(material_law), intent(in) :: law
       character(:), allocatable :: advice
-      if (index(piece%law%name(), 'without compression') > 0) then
+      if (index(law%name(), 'without compression') > 0) then
          advice = ' (with compression = ''none'' nothing resists the shortening of the cable: the slack material '// &
                   'piles up into the cells; the law''s compressive branch, compression = ''law'', resists it)'
       else

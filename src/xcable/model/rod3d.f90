@@ -166,6 +166,8 @@ module xcable_model_rod3d
       procedure :: unknowns => rod3d_unknowns
       !> Cell vectors, lengths and turning angles of positions R (3, n).
       procedure :: geometry => rod3d_geometry
+      !> How far each node's change of turning in a step is from its cells' rotations (the fold check).
+      procedure :: turning_folds => rod3d_turning_folds
       !> Strain, kinetic, bending, gravity and twist energy, J.
       procedure :: energies => rod3d_energies
       !> M V.
@@ -500,6 +502,48 @@ contains
          th(k) = turning_angle(e(:, k - 1), e(:, k))
       end do
    end subroutine rod3d_geometry
+
+   !> The fold check of the step control (driver/rod_run.f90, check_folds) in
+   !> 3-D: for each interior node k, |phi(e1_k-1, e1_k) - phi(e0_k-1, e0_k) -
+   !> (rho_k - rho_k-1)|, with phi the rotation vector of the node's turning
+   !> and rho_c that of cell c from the old level (prepare_step) to the
+   !> positions r1. In a plane it is the planar rod's |th1 - th0 - (dphi_b -
+   !> dphi_a)|: 0 to round-off, or about 2 pi when the angle went through half
+   !> a turn. Out of the plane it is first order in the cells' rotations (a
+   !> rotation omega of both cells adds |omega x phi|, at most pi |omega|,
+   !> and near th = pi the axis of phi swings fast): it passes 3 rad when a
+   !> turning angle goes through or close around half a turn, or a sharp bend
+   !> turns by about 1 rad out of its plane in one step.
+   pure subroutine rod3d_turning_folds(self, r1, fold)
+      !> Piece (holds the old level).
+      class(rod3d_piece), intent(in) :: self
+      !> New positions (3, n), m.
+      real(dp), intent(in) :: r1(:, :)
+      !> Mismatch at each node (n; 0 at the ends), rad.
+      real(dp), intent(out) :: fold(:)
+      real(dp) :: e1(3, self%n - 1), rho(3, self%n - 1)
+      integer :: c, k
+      do c = 1, self%n - 1
+         e1(:, c) = r1(:, c + 1) - r1(:, c)
+         rho(:, c) = rotation(self%e0(:, c), e1(:, c))
+      end do
+      fold = 0
+      do k = 2, self%n - 1
+         fold(k) = norm2(rotation(e1(:, k - 1), e1(:, k)) - rotation(self%e0(:, k - 1), self%e0(:, k)) - &
+                         (rho(:, k) - rho(:, k - 1)))
+      end do
+
+   contains
+
+      !> The rotation vector phi(a, b) (rotation_vector) as reals.
+      pure function rotation(a, b) result(phi)
+         real(dp), intent(in) :: a(3), b(3)
+         real(dp) :: phi(3)
+         type(dual) :: p(3)
+         call rotation_vector(constant(a), constant(b), p)
+         phi = p%v
+      end function rotation
+   end subroutine rod3d_turning_folds
 
    !> Weight of node k (cable share and point mass), N.
    pure real(dp) function node_weight(self, k)

@@ -93,8 +93,8 @@ program xcable_main
    end if
 
    output%quiet = config%quiet
-   ! Checkpoints and SIGTERM: the planar rod only.
-   rod = sim%scheme /= 'box' .and. sim%model == '2d'
+   ! Checkpoints and SIGTERM: the rod scheme (either model).
+   rod = sim%scheme /= 'box'
    ! SIGTERM (a batch system's time limit): from here on the rod run writes a
    ! checkpoint at its next step and stops (before the dynamics: at t = 0).
    if (rod) then
@@ -114,7 +114,8 @@ program xcable_main
       call sim%resume(checkpoint, fingerprint, run_id, error)
       if (allocated(error)) call fail_input(error)
       call output%reopen(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
-                         config%gnuplot, sim%piece_starts(), sim%snapshots_written(), run_id, error)
+                         config%gnuplot, sim%piece_starts(), sim%snapshots_written(), run_id, error, &
+                         three_d=sim%model == '3d')
       if (allocated(error)) then
          if (error%stat == stat_input) call fail_input(error)
          call fail_run(error, sim%rod%t)

@@ -7,15 +7,20 @@
 !> paper's rupture (a released end, the energy ledger), a line parting in
 !> the middle while end a moves (a checkpoint before and one after the
 !> split into two pieces), and a kept Newton factorisation (reuse_jacobian,
-!> theta 0.55, internal damping). Damaged, truncated, foreign (another
-!> version, another namelist) and missing checkpoints are refused.
+!> theta 0.55, internal damping). The 3-D model the same way
+!> (driver/rod3d_drive.f90): a fairlead moving across the plane in water,
+!> its end let go during the run (checkpoints before and after the break),
+!> and a release off the plane whose steps are rejected and halved; the
+!> snapshots' 3-D fields and the history's y components are compared too.
+!> Damaged, truncated, foreign (another version, another namelist, the
+!> other model) and missing checkpoints are refused.
 module suite_checkpoint
    use xcable_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_strings, only: str
    use xcable_error, only: stat_input
    use xcable_io_config, only: case_config
-   use xcable_io_input, only: config_text
+   use xcable_io_input, only: config_text, read_config
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_observer, static_info, run_history, run_summary, n_fields
    use xcable_io_checkpoint, only: checkpoint_file, remove_checkpoint
@@ -33,14 +38,44 @@ module suite_checkpoint
       !> Snapshots recorded, their times and fields (nodes, n_fields, snapshot).
       integer :: n = 0
       real(dp), allocatable :: times(:), fields(:, :, :)
+      !> The 3-D fields of the snapshots (nodes, n_fields3, snapshot), when sent.
+      integer :: n_extra = 0
+      real(dp), allocatable :: extra(:, :, :)
       !> Raise SIGTERM when this snapshot (1: the one at t = 0) has been recorded (0: never).
       integer :: raise_at = 0
    contains
       procedure :: static => recorder_static
       procedure :: snapshot => recorder_snapshot
+      procedure :: snapshot_extra => recorder_extra
    end type recorder
 
    character(len=*), parameter :: path = 'build/test_checkpoint.ckpt'
+   !> Where the 3-D cases' namelists are written to be read.
+   character(len=*), parameter :: namelist_path = 'build/test_checkpoint3d.nml'
+
+   !> 3-D: a line in water between a fixed end and a fairlead moving across
+   !> the plane (1 m along y, period 2 s), a current across the plane
+   !> (0.3 m/s along y), the ledger kept; the fairlead end breaks at 0.6 s
+   !> (its force ramped to zero over 0.5 s). 31 nodes, dt 10 ms, to 1.2 s.
+   character(len=*), parameter :: fairlead3d = &
+      "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+      "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
+      "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
+      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
+      new_line('a')//"&rupture s_break = 60, t_break = 0.5, time = 0.6 /"//new_line('a')// &
+      "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
+      "&output interval = 0.1, energy = .true., quiet = .true. /"
+
+   !> 3-D: a slack line (end b 40 m along x, 20 m along y) let go at end b,
+   !> EI / 1000, 121 nodes, Courant 10 (dt 18 ms), to 0.5 s: 4 attempts are
+   !> rejected (the first at 0.128 s), steps halved and doubled back.
+   character(len=*), parameter :: release3d = &
+      "&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+      "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+      "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
+      "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
+      "&numerics nodes = 121, courant = 10, t_end = 0.5 /"//new_line('a')// &
+      "&output interval = 0.02, energy = .true., quiet = .true. /"
 
 contains
 
@@ -48,7 +83,10 @@ contains
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('sigterm_then_resume_is_bitwise', test_sigterm), &
                new_unittest('periodic_checkpoints_change_nothing', test_periodic), &
-               new_unittest('refuses_bad_checkpoints', test_refusals)]
+               new_unittest('refuses_bad_checkpoints', test_refusals), &
+               new_unittest('sigterm_then_resume_is_bitwise_3d', test_sigterm_3d), &
+               new_unittest('periodic_checkpoints_change_nothing_3d', test_periodic_3d), &
+               new_unittest('refuses_the_other_model', test_other_model)]
    end subroutine collect_checkpoint
 
    subroutine recorder_static(self, info, error)
@@ -74,6 +112,22 @@ contains
       self%n = self%n + 1
       if (self%n == self%raise_at) call raise_termination()
    end subroutine recorder_snapshot
+
+   !> The 3-D fields of the snapshot just recorded.
+   subroutine recorder_extra(self, t, names, fields, error)
+      class(recorder), intent(inout) :: self
+      real(dp), intent(in) :: t
+      character(*), intent(in) :: names(:)
+      real(dp), intent(in) :: fields(:, :)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: stored(:, :, :)
+      if (.not. allocated(self%extra)) allocate (self%extra(size(fields, 1), size(fields, 2), 0))
+      allocate (stored(size(fields, 1), size(fields, 2), self%n_extra + 1))
+      stored(:, :, 1:self%n_extra) = self%extra(:, :, 1:self%n_extra)
+      stored(:, :, self%n_extra + 1) = fields
+      call move_alloc(stored, self%extra)
+      self%n_extra = self%n_extra + 1
+   end subroutine recorder_extra
 
    !> The paper's rupture at 180 kN on 61 nodes, the end released in 5 ms, with the ledger.
    function paper_scene() result(c)
@@ -131,6 +185,18 @@ contains
       c%courant = 2
       c%newton_max_iter = 2
    end function halving_scene
+
+   !> A case from namelist text, read as the program reads it.
+   subroutine case_of(text, c, error)
+      character(*), intent(in) :: text
+      type(case_config), intent(out) :: c
+      type(error_type), allocatable, intent(out) :: error
+      integer :: unit
+      open (newunit=unit, file=namelist_path, status='replace', action='write')
+      write (unit, '(a)') text
+      close (unit)
+      call read_config(namelist_path, c, error)
+   end subroutine case_of
 
    !> Run a case to the end without checkpoints.
    subroutine plain_run(c, sim, store, error)
@@ -192,13 +258,15 @@ contains
       call stopped_and_resumed('step halved (2 Newton iterations at most)', halving_scene(), 4, error, halved=.true.)
    end subroutine test_sigterm
 
-   subroutine stopped_and_resumed(what, c, k, error, halved)
+   subroutine stopped_and_resumed(what, c, k, error, halved, broken)
       character(*), intent(in) :: what
       type(case_config), intent(in) :: c
       integer, intent(in) :: k
       type(error_type), allocatable, intent(out) :: error
       !> Whether the stop must find the step halved and growing back (the step control's state matters).
       logical, intent(in), optional :: halved
+      !> Whether the stop must find the cable broken (.true.) or not yet (.false.).
+      logical, intent(in), optional :: broken
       type(simulation) :: reference, stopped, resumed
       type(recorder) :: whole, first, rest
       call plain_run(c, reference, whole, error)
@@ -219,7 +287,11 @@ contains
                                                                  what//': no factorisation kept at the checkpoint')
       if (allocated(error)) return
       ! With fluid loads their work so far is part of the state (the ledger's loads).
-      if (c%fluid_density > 0) call check(error, stopped%rod%load_work /= 0, what//': no work of the loads at the stop')
+      if (c%fluid_density > 0) call check(error, merge(stopped%rod3%run%load_work, stopped%rod%load_work, &
+                                                       stopped%model == '3d') /= 0, what//': no work of the loads at the stop')
+      if (allocated(error)) return
+      if (present(broken)) call check(error, stopped%rod%broken .eqv. broken, what//': broken at the stop: '// &
+                                      merge('yes', 'no ', stopped%rod%broken))
       if (allocated(error)) return
       if (present(halved)) call check(error, stopped%rod%progress%h < stopped%rod%dt .and. &
                                       stopped%rod%progress%n_good > 0, what//': the step is not halved at the stop')
@@ -307,6 +379,26 @@ contains
       if (allocated(ha%energy)) call check(error, all(ha%energy(:, 0:n) == hb%energy(:, 0:n)), &
                                            what//': the energy ledger differs')
       if (allocated(error)) return
+      ! A 3-D run: the ends' y components and the snapshots' 3-D fields.
+      call check(error, allocated(ha%ends_y) .eqv. allocated(hb%ends_y), what//': y components in one history only')
+      if (allocated(error)) return
+      if (allocated(ha%ends_y)) call check(error, all(ha%ends_y(:, :, 0:n) == hb%ends_y(:, :, 0:n)), &
+                                           what//': the history''s y components differ')
+      if (allocated(error)) return
+      call check(error, first%n_extra + rest%n_extra == whole%n_extra .and. &
+                 (whole%n_extra == 0 .or. whole%n_extra == whole%n), what//': '//str(first%n_extra)//' + '// &
+                 str(rest%n_extra)//' snapshots of 3-D fields, the reference has '//str(whole%n_extra))
+      if (allocated(error)) return
+      do j = 1, whole%n_extra
+         if (j <= first%n_extra) then
+            call check(error, all(first%extra(:, :, j) == whole%extra(:, :, j)), what//': 3-D fields of snapshot '// &
+                       str(j)//' differ')
+         else
+            call check(error, all(rest%extra(:, :, j - first%n_extra) == whole%extra(:, :, j)), &
+                       what//': 3-D fields of snapshot '//str(j)//' differ')
+         end if
+         if (allocated(error)) return
+      end do
       call check(error, sa%peak_end_speed == sb%peak_end_speed .and. sa%peak_end_speed_time == sb%peak_end_speed_time &
                  .and. sa%min_fixed_end_tension == sb%min_fixed_end_tension .and. &
                  sa%front_arrival_time == sb%front_arrival_time .and. sa%energy_drift == sb%energy_drift .and. &
@@ -439,6 +531,107 @@ contains
          call run%resume(path, text, run_id, error)
       end subroutine resumed_check
    end subroutine test_refusals
+
+   !> The 3-D model: SIGTERM at snapshot k, the checkpoint, the resumed run
+   !> bit for bit as the run that was not stopped (snapshots with their 3-D
+   !> fields, history with the y components, ledger, summary).
+   subroutine test_sigterm_3d(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      character(:), allocatable :: problem
+      problem = install_termination_handler()
+      call check(error, len(problem) == 0, problem)
+      if (allocated(error)) return
+      call case_of(fairlead3d, c, error)
+      if (allocated(error)) return
+      call check(error, c%model_to_run() == '3d', 'the fairlead scene does not run 3-D')
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D fairlead in a current, SIGTERM before the break', c, 4, error, broken=.false.)
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D fairlead in a current, SIGTERM after the break', c, 9, error, broken=.true.)
+      if (allocated(error)) return
+      call case_of(release3d, c, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D release off the plane, step halved', c, 8, error, halved=.true., broken=.true.)
+   end subroutine test_sigterm_3d
+
+   !> The 3-D fairlead with a checkpoint every 7 steps: the run is as without
+   !> them; resumed from the last, the same end again.
+   subroutine test_periodic_3d(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: reference, periodic, resumed
+      type(recorder) :: whole, with_checkpoints, rest, none
+      type(case_config) :: c
+      integer :: kept
+      call case_of(fairlead3d, c, error)
+      if (allocated(error)) return
+      call plain_run(c, reference, whole, error)
+      if (allocated(error)) return
+      call checkpointed(c, periodic, 7, error)
+      if (allocated(error)) return
+      call periodic%run(with_checkpoints, error)
+      if (allocated(error)) return
+      call same_run('3-D, a checkpoint every 7 steps', reference, periodic, whole, with_checkpoints, none, error)
+      if (allocated(error)) return
+      call check(error, periodic%checkpoints_written == (reference%rod%history%n - 1)/7, 'checkpoints written: '// &
+                 str(periodic%checkpoints_written)//' for '//str(reference%rod%history%n)//' steps')
+      if (allocated(error)) return
+      call resumed_run(c, resumed, rest, error)
+      if (allocated(error)) return
+      kept = whole%n - rest%n
+      with_checkpoints%n = kept
+      with_checkpoints%n_extra = kept
+      call same_run('3-D, resumed from the last of them', reference, resumed, whole, with_checkpoints, rest, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,i0,a,i0,a)') '3-D fairlead: ', periodic%checkpoints_written, &
+         ' checkpoints (every 7 steps) change nothing; resumed from the last (', kept, &
+         ' snapshots kept): bitwise equal'
+      call remove_checkpoint(path)
+   end subroutine test_periodic_3d
+
+   !> A checkpoint resumes only with the model that wrote it: the paper's
+   !> rupture checkpointed in 2-D is refused by the same case with model =
+   !> '3d', and checkpointed in 3-D by the case with model = '2d'; the
+   !> message names the models (not only the namelist line that differs).
+   subroutine test_other_model(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c2, c3
+      c2 = paper_scene()
+      c2%model = '2d'
+      c3 = c2
+      c3%model = '3d'
+      call written_then_refused(c2, c3, 'was written by a 2-D run, this case runs the 3-D model', error)
+      if (allocated(error)) return
+      call written_then_refused(c3, c2, 'was written by a 3-D run, this case runs the 2-D model', error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a)') 'a 2-D checkpoint refused by a 3-D case, a 3-D one by a 2-D case'
+      call remove_checkpoint(path)
+
+   contains
+
+      subroutine written_then_refused(writer, reader, expect, error)
+         type(case_config), intent(in) :: writer, reader
+         character(*), intent(in) :: expect
+         type(error_type), allocatable, intent(out) :: error
+         type(simulation) :: sim, other
+         type(recorder) :: store
+         type(error_type), allocatable :: resume_error
+         character(:), allocatable :: run_id
+         call checkpointed(writer, sim, 20, error)
+         if (allocated(error)) return
+         call sim%run(store, error)
+         if (allocated(error)) return
+         call check(error, sim%checkpoints_written > 0, 'no checkpoint written by the '//sim%model//' run')
+         if (allocated(error)) return
+         call other%prepare(reader, error)
+         if (allocated(error)) return
+         call other%resume(path, config_text(reader, fingerprint=.true.), run_id, resume_error)
+         call check(error, allocated(resume_error), 'a '//sim%model//' checkpoint was resumed by a '//other%model//' case')
+         if (allocated(error)) return
+         call check(error, resume_error%stat == stat_input .and. index(resume_error%message, expect) > 0, &
+                    'message "'//resume_error%message//'" lacks "'//expect//'"')
+      end subroutine written_then_refused
+   end subroutine test_other_model
 
    !> The bytes of a file.
    function read_bytes(file_path) result(bytes)

@@ -178,7 +178,8 @@ contains
       call check(error, manifest_version == code_version, 'fpm.toml says version "'//manifest_version// &
                  '", src/xcable/version.f90 says "'//code_version//'": change both (and CHANGELOG.md)')
       if (allocated(error)) return
-      ! The newest entry of the changelog and the README follow it.
+      ! The newest entry of the changelog (above it, an "## Unreleased" entry may collect what is
+      ! not released yet) and the README follow it.
       line = first_line('CHANGELOG.md', '## ')
       call check(error, index(line, '## '//code_version//' ') == 1, 'CHANGELOG.md''s newest entry is "'// &
                  trim(line)//'", the version is '//code_version)
@@ -201,7 +202,7 @@ contains
          do
             read (u, '(a)', iostat=stat) text
             if (stat /= 0) exit
-            if (index(text, prefix) == 1) then
+            if (index(text, prefix) == 1 .and. index(text, '## Unreleased') /= 1) then
                found = text
                exit
             end if

@@ -23,6 +23,14 @@
 # every summary figure but the wall time (h5diff without tolerance), and the
 # gnuplot text files byte for byte.
 #
+# The 3-D model the same two ways (a fairlead moving 1 m across the plane in
+# water with a current across it, its end let go at 1.5 s, 121 nodes, 500
+# steps, about 1.3 s): killed after its first checkpoint and resumed (the
+# snapshots of the 3-D fields written after the checkpoint are cut too), and
+# stopped by SIGTERM and resumed; both equal their reference bit for bit, the
+# 3-D fields (/y, /w, ...) and the history's y components included. The 2-D
+# checkpoint offered to the 3-D case is refused (exit 2, naming both models).
+#
 # The kill and the SIGTERM wait for events (a file, a status), not for a
 # fixed time after the start, so a loaded machine slows the test but does
 # not change what it checks. Exit code: 0 all checks passed, 1 otherwise.
@@ -70,7 +78,7 @@ wait_for() {
    return 1
 }
 
-# case NAME [OUTPUT EXTRA]: the namelist NAME.nml writing NAME.h5.
+# write_case NAME [OUTPUT EXTRA]: the namelist NAME.nml writing NAME.h5.
 write_case() {
    cat >"$1.nml" <<EOF
 ! test/test_checkpoint.sh: the paper's rupture at 180 kN in water, damped
@@ -83,19 +91,48 @@ write_case() {
 EOF
 }
 
-# same_as_reference NAME: bitwise equal to ref.h5 but for the wall time (h5diff, cmp).
+# write_case3 NAME [OUTPUT EXTRA]: the 3-D namelist NAME.nml writing NAME.h5.
+write_case3() {
+   cat >"$1.nml" <<EOF
+! test/test_checkpoint.sh: a fairlead moving across the plane in water (3-D), its end let go
+&end_a    kind = 'fixed', x = 0, z = 0 /
+&end_b    kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1,
+          direction_z = 0, ramp_time = 0.5 /
+&fluid    density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /
+&rupture  s_break = 60, t_break = 0.5, time = 1.5 /
+&numerics model = '3d', nodes = 121, dt = 0.005, t_end = 2.5 /
+&output   file = '$1.h5', interval = 0.02, gnuplot = .true., energy = .true.$2 /
+EOF
+}
+
+# shape FILE DATASET: the dataspace line of a dataset (h5diff passes datasets of other shapes
+# as "not comparable" with exit code 0, so the shapes are compared first).
+shape() { h5dump -H -d "$2" "$1" 2>/dev/null | grep -m1 DATASPACE; }
+# same_as_reference NAME [REF]: bitwise equal to REF.h5 (default ref) but for the wall time (h5diff, cmp);
+# the 3-D fields are compared when REF.h5 has them, and must be absent from NAME.h5 otherwise.
 same_as_reference() {
-   local name=$1 d attr bad=0
+   local name=$1 ref=${2:-ref} d attr bad=0
    for d in /time /s /tension /shear /strain /u /v /x /z /curvature /static /history; do
-      h5diff -q ref.h5 "$name.h5" "$d" "$d" >/dev/null 2>&1 || { echo "    $d differs"; bad=1; }
+      h5diff -q "$ref.h5" "$name.h5" "$d" "$d" >/dev/null 2>&1 || { echo "    $d differs"; bad=1; }
    done
-   for attr in $(h5dump -A -g /summary ref.h5 | sed -n 's/^ *ATTRIBUTE "\([a-z0-9_]*\)".*/\1/p'); do
+   for d in /time /tension /shear /strain /u /v /x /z /curvature /history/time; do
+      [[ "$(shape "$ref.h5" "$d")" == "$(shape "$name.h5" "$d")" ]] || { echo "    $d has another shape"; bad=1; }
+   done
+   for d in /y /w /curvature_z /twist /binormal_shear /curvature_n; do
+      if h5dump -H -d "$d" "$ref.h5" >/dev/null 2>&1; then
+         h5diff -q "$ref.h5" "$name.h5" "$d" "$d" >/dev/null 2>&1 || { echo "    $d differs"; bad=1; }
+         [[ "$(shape "$ref.h5" "$d")" == "$(shape "$name.h5" "$d")" ]] || { echo "    $d has another shape"; bad=1; }
+      else
+         ! h5dump -H -d "$d" "$name.h5" >/dev/null 2>&1 || { echo "    $d only in $name.h5"; bad=1; }
+      fi
+   done
+   for attr in $(h5dump -A -g /summary "$ref.h5" | sed -n 's/^ *ATTRIBUTE "\([a-z0-9_]*\)".*/\1/p'); do
       [[ $attr == wall_time ]] && continue
-      [[ "$(h5dump -a "/summary/$attr" ref.h5 | tail -n +2)" == "$(h5dump -a "/summary/$attr" "$name.h5" | tail -n +2)" ]] ||
+      [[ "$(h5dump -a "/summary/$attr" "$ref.h5" | tail -n +2)" == "$(h5dump -a "/summary/$attr" "$name.h5" | tail -n +2)" ]] ||
          { echo "    /summary $attr differs"; bad=1; }
    done
-   cmp -s ref.snapshots.dat "$name.snapshots.dat" || { echo "    $name.snapshots.dat differs"; bad=1; }
-   cmp -s ref.history.dat "$name.history.dat" || { echo "    $name.history.dat differs"; bad=1; }
+   cmp -s "$ref.snapshots.dat" "$name.snapshots.dat" || { echo "    $name.snapshots.dat differs"; bad=1; }
+   cmp -s "$ref.history.dat" "$name.history.dat" || { echo "    $name.history.dat differs"; bad=1; }
    return $bad
 }
 
@@ -107,46 +144,54 @@ steps=$(int_attr ref.h5 /summary/steps)
 # differs NAME: the comparison sees a difference (its control).
 differs() { ! same_as_reference "$1" >/dev/null; }
 
-echo "test_checkpoint: SIGKILL after the first checkpoint, then --resume"
-write_case killed ', checkpoint_interval = 0.2'
 # snapshots FILE: snapshots in a result file; counted CHECKPOINT: those its checkpoint counts.
 snapshots() { HDF5_USE_FILE_LOCKING=FALSE h5dump -H -d /time "$1" 2>/dev/null | sed -n 's/.*SIMPLE { ( \([0-9]*\) ).*/\1/p'; }
 counted() { h5dump -d /progress/snapshot_index "$1" 2>/dev/null | sed -n 's/^ *(0): \([0-9]*\)$/\1/p'; }
 beyond_checkpoint() {
    local n c
-   n=$(snapshots killed.h5)
-   c=$(counted killed.h5.ckpt)
+   n=$(snapshots "$1.h5")
+   c=$(counted "$1.h5.ckpt")
    [[ -n $n && -n $c ]] && ((n > c))
 }
+# killed_and_resumed NAME REF STEPS: NAME.nml (checkpoint_interval = 0.2) killed by SIGKILL
+# after its first checkpoint, then --resume; it must equal REF.h5 (STEPS steps).
 # The first checkpoint (after 0.2 s of dynamics), then a snapshot written after it (before the
-# next, 0.2 s later; a snapshot comes every 0.01 s of the run's time, about 0.07 s of wall
-# time). A new checkpoint between that look and the kill would leave nothing to cut: then again
-# (at most three times).
-for attempt in 1 2 3; do
-   rm -f killed.h5 killed.h5.ckpt killed.h5.ckpt.tmp killed.snapshots.dat killed.history.dat
-   "$exe" killed.nml 2>killed.err &
-   pid=$!
-   wait_for 120 test -s killed.h5.ckpt
-   wait_for 120 beyond_checkpoint
-   kill -KILL "$pid" 2>/dev/null
-   wait "$pid" 2>/dev/null
+# next, 0.2 s later; a snapshot comes every 0.07 s of wall time in 2-D, 0.05 s in 3-D). A new
+# checkpoint between that look and the kill would leave nothing to cut: then again (at most
+# three times).
+killed_and_resumed() {
+   local name=$1 ref=$2 steps=$3 attempt kept cut_at
+   for attempt in 1 2 3; do
+      rm -f "$name.h5" "$name.h5.ckpt" "$name.h5.ckpt.tmp" "$name.snapshots.dat" "$name.history.dat"
+      "$exe" "$name.nml" 2>"$name.err" &
+      pid=$!
+      wait_for 120 test -s "$name.h5.ckpt"
+      wait_for 120 beyond_checkpoint "$name"
+      kill -KILL "$pid" 2>/dev/null
+      wait "$pid" 2>/dev/null
+      code=$?
+      pid=""
+      beyond_checkpoint "$name" && break
+      echo "    attempt $attempt: a checkpoint came just before the kill; again"
+   done
+   check "killed by SIGKILL (exit $code) after its first checkpoint, the file left 'running'" \
+      test "$code" -eq 137 -a -s "$name.h5.ckpt" -a "$(status_of "$name.h5")" = running
+   kept=$(snapshots "$name.h5")
+   cut_at=$(counted "$name.h5.ckpt")
+   check "killed with $kept snapshots written, $cut_at of them before the checkpoint (the rest is cut on resume)" \
+      test "${kept:-0}" -gt "${cut_at:-0}"
+   "$exe" --resume "$name.nml" 2>"$name.resume.err"
    code=$?
-   pid=""
-   beyond_checkpoint && break
-   echo "    attempt $attempt: a checkpoint came just before the kill; again"
-done
-check "killed by SIGKILL (exit $code) after its first checkpoint, the file left 'running'" \
-   test "$code" -eq 137 -a -s killed.h5.ckpt -a "$(status_of killed.h5)" = running
-kept=$(snapshots killed.h5)
-cut_at=$(counted killed.h5.ckpt)
-check "killed with $kept snapshots written, $cut_at of them before the checkpoint (the rest is cut on resume)" \
-   test "${kept:-0}" -gt "${cut_at:-0}"
-"$exe" --resume killed.nml 2>killed.resume.err
-code=$?
-check "--resume completes it (exit $code): 'complete', resumes = 1, no checkpoint left" \
-   test "$code" -eq 0 -a "$(status_of killed.h5)" = complete -a "$(int_attr killed.h5 /resumes)" = 1 -a ! -e killed.h5.ckpt
-check "the resumed run equals the uninterrupted one bit for bit ($steps steps, snapshots, history, summary, text)" \
-   same_as_reference killed
+   check "--resume completes it (exit $code): 'complete', resumes = 1, no checkpoint left" \
+      test "$code" -eq 0 -a "$(status_of "$name.h5")" = complete -a "$(int_attr "$name.h5" /resumes)" = 1 \
+      -a ! -e "$name.h5.ckpt"
+   check "the resumed run equals the uninterrupted one bit for bit ($steps steps, snapshots, history, summary, text)" \
+      same_as_reference "$name" "$ref"
+}
+
+echo "test_checkpoint: SIGKILL after the first checkpoint, then --resume"
+write_case killed ', checkpoint_interval = 0.2'
+killed_and_resumed killed ref "$steps"
 
 echo "test_checkpoint: SIGTERM, damaged checkpoints refused, then --resume"
 write_case stopped ''
@@ -194,6 +239,49 @@ code=$?
 check "--resume of the intact checkpoint completes it (exit $code), no checkpoint left" \
    test "$code" -eq 0 -a "$(status_of stopped.h5)" = complete -a ! -e stopped.h5.ckpt
 check "the resumed run equals the uninterrupted one bit for bit" same_as_reference stopped
+
+echo "test_checkpoint: 3-D reference run"
+write_case3 ref3 ''
+"$exe" ref3.nml 2>ref3.err
+check "the 3-D reference run completes, with the 3-D fields and the ends' y history" \
+   test "$(status_of ref3.h5)" = complete -a ! -e ref3.h5.ckpt
+h5dump -H -d /y ref3.h5 >/dev/null 2>&1 && h5dump -H -d /history/end_b/y ref3.h5 >/dev/null 2>&1 ||
+   { failures=$((failures + 1)); echo "  FAIL the 3-D reference has no /y or /history/end_b/y"; }
+steps3=$(int_attr ref3.h5 /summary/steps)
+
+echo "test_checkpoint: 3-D, SIGKILL after the first checkpoint, then --resume"
+write_case3 killed3 ', checkpoint_interval = 0.2'
+killed_and_resumed killed3 ref3 "$steps3"
+
+echo "test_checkpoint: 3-D, SIGTERM, the 2-D checkpoint refused, then --resume"
+write_case3 stopped3 ''
+"$exe" stopped3.nml 2>stopped3.err &
+pid=$!
+wait_for 120 running stopped3.h5
+sleep 0.3
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"
+code=$?
+pid=""
+check "SIGTERM: exit 3, 'interrupted', a checkpoint" \
+   test "$code" -eq 3 -a "$(status_of stopped3.h5)" = interrupted -a -s stopped3.h5.ckpt
+not_same3() { ! same_as_reference stopped3 ref3 >/dev/null; }
+check "control: the comparison tells the interrupted file from the reference" not_same3
+cp stopped3.h5.ckpt good3.ckpt
+cp good.ckpt stopped3.h5.ckpt
+before=$(md5sum stopped3.h5 stopped3.snapshots.dat)
+"$exe" --resume stopped3.nml >refused.out 2>refused.err
+code=$?
+check "the 2-D checkpoint offered to the 3-D case: exit $code, $(head -c 150 refused.err)" \
+   test "$code" -eq 2 -a "$(wc -l <refused.err)" -eq 1 -a "$before" = "$(md5sum stopped3.h5 stopped3.snapshots.dat)"
+grep -q -F "was written by a 2-D run, this case runs the 3-D model" refused.err ||
+   { failures=$((failures + 1)); echo "  FAIL the refusal does not name the two models"; }
+cp good3.ckpt stopped3.h5.ckpt
+"$exe" --resume stopped3.nml 2>stopped3.resume.err
+code=$?
+check "--resume completes it (exit $code), no checkpoint left" \
+   test "$code" -eq 0 -a "$(status_of stopped3.h5)" = complete -a ! -e stopped3.h5.ckpt
+check "the resumed 3-D run equals the uninterrupted one bit for bit ($steps3 steps)" same_as_reference stopped3 ref3
 
 echo "test_checkpoint: $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s, $passes passed, $failures failed"
 ((failures == 0))

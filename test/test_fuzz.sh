@@ -376,8 +376,6 @@ begin "a 3-D scene with the box scheme (model 'auto')" "scheme = 'box'" '&end_a 
 from slow_315kN; add "&end_a y = 1 /"; set_in numerics "scheme = 'box'"; check
 begin "model = '3d' with a break inside the cable" 's_break = 30' "model = '3d'" 'inside the cable'
 from inclined_break_middle; set_in numerics "model = '3d'"; check
-begin "model = '3d' with checkpoints" 'checkpoint_interval = 60' "model = '3d'" 'no checkpoints'
-from slack_swing; set_in numerics "model = '3d'"; set_in output 'checkpoint_interval = 60'; check
 begin 'current_y without a fluid' 'current_y = 0.5' 'needs a fluid'
 from slack_swing; add '&fluid current_y = 0.5 /'; check
 begin 'y of a free end' '&end_b' 'y = 2' "kind = 'free'" 'leave y out'
@@ -636,6 +634,9 @@ begin '--resume of a complete run' 'already complete'
 resume_base; stopped; set_attrs "$dir/results/fast_180kN.h5" status=complete; args=(--resume case.nml); check
 begin '--resume with the box scheme' 'box scheme'
 resume_base; set_in numerics "scheme = 'box'"; stopped; args=(--resume case.nml); check
+begin "--resume of a 2-D checkpoint with model = '3d'" 'results/fast_180kN.h5.ckpt' 'written by a 2-D run' \
+   'runs the 3-D model'
+resume_base; set_in numerics "model = '3d'"; stopped; args=(--resume case.nml); check
 begin '--resume with no case' '--resume' 'without a case file' 'usage'
 args=(--resume); check
 begin '--resume with two cases' 'usage'

@@ -16,14 +16,21 @@
 !> check in 3-D form, rod3d_piece%turning_folds): a failed or out-of-range
 !> attempt is rejected and the step halved, then grown back.
 !>
-!> Not yet: a break inside the cable (one piece only), checkpoints. The
-!> input refuses these for a 3-D case (io/input.f90, check_model).
+!> Checkpoints as the planar run's: start, advance (pausing where the
+!> planar run's checkpoint_pause says), finish; save_state and load_state
+!> list the state (exchange3) with the planar run's sync procedures
+!> (io/archive.f90) and its exchange_progress and exchange_records.
+!>
+!> Not yet: a break inside the cable (one piece only). The input refuses it
+!> for a 3-D case (io/input.f90, check_model).
 module xcable_rod3d_drive
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_strings, only: str
    use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
-                             advance_time, jacobian_kept, check_range, check_folds
+                             advance_time, jacobian_kept, check_range, check_folds, checkpoint_pause, pause_none, &
+                             exchange_progress, exchange_records
+   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece
    use xcable_ends_force, only: force_end
@@ -41,17 +48,23 @@ module xcable_rod3d_drive
       real(dp), allocatable :: x_prev(:), v_prev(:, :)
       !> Force of the supports on the end nodes at the current time (held ends), N.
       real(dp) :: reaction(3, 2) = 0
-      !> Next snapshot.
-      integer :: snapshot_index = 1
-      !> Whether the break (at an end) has happened.
+      !> Whether the break (at an end) has happened, and the force (x, y, z) the released end starts from, N.
       logical :: broken = .false.
+      real(dp) :: cut_force(3) = 0
       !> Extra fields of the static state (n, n_fields3).
       real(dp), allocatable :: static_extra(:, :)
    contains
       !> The 3-D statics from the planar run's static state; static fields and records.
       procedure :: prepare => drive_prepare
-      !> The dynamics to t_end.
+      !> The dynamics to t_end (start, advance until done, finish).
       procedure :: run_dynamics => drive_run
+      !> The parts of run_dynamics: the records of t = 0; the steps until t_end or a pause; the summary.
+      procedure :: start => drive_start
+      procedure :: advance => drive_advance
+      procedure :: finish => finish
+      !> The state between two steps to an archive (a checkpoint), and back into a prepared run.
+      procedure :: save_state => drive_save_state
+      procedure :: load_state => drive_load_state
    end type rod3d_drive
 
 contains
@@ -186,7 +199,8 @@ contains
       component = v(i)
    end function component
 
-   !> The dynamics: the static snapshot, steps to t_end with the break at an end, snapshots, records, summary.
+   !> The dynamics: start, advance until done, finish (a run that writes
+   !> checkpoints goes through the parts itself, driver/simulation.f90).
    subroutine drive_run(self, rod, observer, error)
       !> 3-D run (prepared).
       class(rod3d_drive), intent(inout) :: self
@@ -196,18 +210,37 @@ contains
       class(run_observer), intent(inout), optional :: observer
       !> Error when the run cannot go on (the records hold what was done).
       type(error_type), allocatable, intent(out) :: error
-      real(dp) :: t_stop, h_try, wall, last_report
-      integer(i8) :: now
-      logical :: landing, kept, newton_failed
+      integer :: pause
+      call self%start(rod, observer, error)
+      if (.not. allocated(error)) then
+         do
+            call self%advance(rod, observer, error, pause)
+            if (allocated(error) .or. pause == pause_none) exit
+         end do
+      end if
+      call self%finish(rod)
+   end subroutine drive_run
+
+   !> The start of the dynamics: the record of t = 0, the static state and
+   !> its snapshot to the observer, a break at t = 0, and the skip to a later
+   !> break when nothing moves before it.
+   subroutine drive_start(self, rod, observer, error)
+      !> 3-D run (prepared).
+      class(rod3d_drive), intent(inout) :: self
+      !> The planar run it shares its records with.
+      type(rod_run), intent(inout) :: rod
+      !> Receives the static state and the snapshots.
+      class(run_observer), intent(inout), optional :: observer
+      !> Error when the output fails.
+      type(error_type), allocatable, intent(out) :: error
       integer :: capacity
-      type(error_type), allocatable :: step_error
       call system_clock(rod%clock%start, rod%clock%rate)
-      last_report = 0
+      rod%clock%last_report = 0
       rod%t = 0
       rod%progress%h = rod%dt
       rod%progress%n_good = 0
       rod%progress%rejected_here = 0
-      self%snapshot_index = 1
+      rod%progress%snapshot_index = 1
       call start_records(self, rod)
       capacity = int(min(rod%options%t_end/rod%dt, 1.0e6_dp)) + 16
       call rod%history%reserve(capacity, size(rod%history%end_labels), rod%options%energy)
@@ -215,30 +248,51 @@ contains
          call observer%static(rod%info, error)
          if (.not. allocated(error)) call observer%snapshot(0.0_dp, rod%info%fields, error)
          if (.not. allocated(error)) call observer%snapshot_extra(0.0_dp, field3_names, self%static_extra, error)
-         if (allocated(error)) then
-            call finish(self, rod)
-            return
-         end if
+         if (allocated(error)) return
       end if
       associate (scene => rod%scene)
          if (scene%breaks .and. scene%break_time <= 0) call split(self, rod)
          ! Nothing moves before the break if no end moves or changes its load: skip to it.
          if (scene%breaks .and. .not. self%broken .and. .not. ends_change(rod)) then
             call emit(self, rod, observer, scene%break_time, .true., error)
-            if (allocated(error)) then
-               call finish(self, rod)
-               return
-            end if
+            if (allocated(error)) return
             rod%t = scene%break_time
             self%run%t = rod%t
             call record(self, rod, 0, rod%t - rod%history%time(rod%history%n))
             call split(self, rod)
          end if
+      end associate
+      rod%clock%records_at_checkpoint = rod%history%n
+   end subroutine drive_start
+
+   !> Time steps until t_end, an error, or a pause (the planar run's
+   !> checkpoint_pause, checked before every attempt: SIGTERM, or a
+   !> checkpoint due). After a pause the state can be saved (save_state) and
+   !> advance called again.
+   subroutine drive_advance(self, rod, observer, error, pause)
+      !> 3-D run (started, or loaded from a checkpoint).
+      class(rod3d_drive), intent(inout) :: self
+      !> The planar run it shares its records with.
+      type(rod_run), intent(inout) :: rod
+      !> Receives the snapshots.
+      class(run_observer), intent(inout), optional :: observer
+      !> Error when the run cannot go on (the records hold what was done).
+      type(error_type), allocatable, intent(out) :: error
+      !> Why it returned: pause_none (t_end or an error), pause_checkpoint or pause_termination.
+      integer, intent(out) :: pause
+      real(dp) :: t_stop, h_try, wall
+      integer(i8) :: now
+      logical :: landing, kept, newton_failed
+      type(error_type), allocatable :: step_error
+      pause = pause_none
+      associate (scene => rod%scene)
          do while (rod%t < rod%options%t_end*(1 - 1.0e-12_dp))
             call system_clock(now)
             wall = real(now - rod%clock%start, dp)/rod%clock%rate
             call wall_limit(rod, wall, error)
             if (allocated(error)) exit
+            pause = checkpoint_pause(rod, wall)
+            if (pause /= pause_none) return
             call plan_step(rod, h_try, t_stop, landing, error)
             if (allocated(error)) exit
             self%x_prev = self%run%x
@@ -267,14 +321,117 @@ contains
             rod%progress%rejected_here = 0
             if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) &
                call split(self, rod)
-            if (present(observer) .and. wall - last_report >= 1.0_dp) then
-               last_report = wall
+            if (present(observer) .and. wall - rod%clock%last_report >= 1.0_dp) then
+               rod%clock%last_report = wall
                call observer%progress(rod%t, rod%options%t_end, wall)
             end if
          end do
       end associate
-      call finish(self, rod)
-   end subroutine drive_run
+   end subroutine drive_advance
+
+   !> Save the state of the run between two steps (after start, or a pause
+   !> of advance) to an archive (see exchange3). archive%ok tells whether it was stored.
+   subroutine drive_save_state(self, rod, archive)
+      !> 3-D run.
+      class(rod3d_drive), intent(inout) :: self
+      !> The planar run it shares its records with.
+      type(rod_run), intent(inout) :: rod
+      !> Where the state goes.
+      class(state_archive), intent(inout) :: archive
+      type(error_type), allocatable :: error
+      call exchange3(self, rod, archive, .true., error)
+   end subroutine drive_save_state
+
+   !> Load a state saved by save_state into a run prepared from the same case,
+   !> ready for advance. Errors (stat_input) when the archive fails or holds a
+   !> state this run cannot have.
+   subroutine drive_load_state(self, rod, archive, error)
+      !> 3-D run, prepared.
+      class(rod3d_drive), intent(inout) :: self
+      !> The planar run it shares its records with (prepared).
+      type(rod_run), intent(inout) :: rod
+      !> Where the state comes from.
+      class(state_archive), intent(inout) :: archive
+      !> Error.
+      type(error_type), allocatable, intent(out) :: error
+      call exchange3(self, rod, archive, .false., error)
+      if (allocated(error)) return
+      if (.not. archive%ok) then
+         call fatal_error(error, archive%message, stat_input)
+         return
+      end if
+      rod%pieces(1)%end_slot = [1, 2]
+      self%run%t = rod%t
+      self%run%work%usable = .false.
+      call system_clock(rod%clock%start, rod%clock%rate)
+      rod%clock%last_report = 0
+      rod%clock%last_checkpoint = 0
+      rod%clock%records_at_checkpoint = rod%history%n
+   end subroutine drive_load_state
+
+   !> The state of a 3-D run, listed once for saving (saving = .true.) and
+   !> loading. Besides what the planar run keeps of the step loop and the
+   !> records (rod_run's exchange_progress, exchange_records: the step
+   !> control, the next snapshot, the wall time, every history record with
+   !> its y components, the summary's counters), it is:
+   !>  - time and step size asked for (run/t, run/dt);
+   !>  - the break at an end (whether it happened, and the force, x, y, z, of
+   !>    the support the released end starts from);
+   !>  - the piece (rod3d/): its nodes, the unknowns (positions and twist
+   !>    angles, 4 per node) and velocities at the current time, the
+   !>    ledger's accumulators (stored energy at the start, work of the ends
+   !>    and of the loads, dissipation) and the Newton iterations so far.
+   !> Not saved: the previous time level (x_prev, v_prev: set before every
+   !> attempt), the forces of the supports on the end nodes (accept sets
+   !> them before the history and the break read them), the piece's work
+   !> arrays (prepare_step and the residual set them), Newton's workspace (a
+   !> 3-D step keeps no factorisation: accept and reject leave it unusable),
+   !> and what prepare computes from the case (the grid, the 3-D static
+   !> state, the ends and loads).
+   subroutine exchange3(self, rod, a, saving, error)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      class(state_archive), intent(inout) :: a
+      logical, intent(in) :: saving
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, iterations(1)
+      real(dp) :: ledger(4)
+      call sync_real(a, 'run/t', rod%t, saving)
+      call sync_real(a, 'run/dt', rod%dt, saving)
+      call sync_logical(a, 'run/broken', self%broken, saving)
+      call sync_reals(a, 'rod3d/cut_force', self%cut_force, saving)
+      call exchange_progress(rod, a, saving)
+      n = self%run%problem%piece%n
+      call sync_int(a, 'rod3d/nodes', n, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (n /= self%run%problem%piece%n) then
+            call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes, this case '// &
+                             str(self%run%problem%piece%n), stat_input)
+            return
+         end if
+         if (self%broken .and. .not. rod%scene%breaks) then
+            call fatal_error(error, 'the checkpoint holds a broken cable, the case has no break', stat_input)
+            return
+         end if
+         rod%broken = self%broken
+         if (self%broken) call release_end(self, rod)
+      end if
+      call sync_reals(a, 'rod3d/x', self%run%x, saving)
+      call sync_matrix(a, 'rod3d/v', self%run%v, saving)
+      ledger = [self%run%energy0, self%run%end_work, self%run%load_work, self%run%dissipated]
+      call sync_reals(a, 'rod3d/ledger', ledger, saving)
+      iterations = self%run%iterations
+      call sync_ints(a, 'rod3d/newton_iterations', iterations, saving)
+      if (.not. saving) then
+         self%run%energy0 = ledger(1)
+         self%run%end_work = ledger(2)
+         self%run%load_work = ledger(3)
+         self%run%dissipated = ledger(4)
+         self%run%iterations = iterations(1)
+      end if
+      call exchange_records(rod, a, saving, 2, error, with_y=.true.)
+   end subroutine exchange3
 
    !> The step control's range check of an attempt (the planar run's
    !> check_state in 3-D form): finite unknowns, no cell squeezed below 5 % of
@@ -296,7 +453,7 @@ contains
 
    !> The summary (the planar run's summarise, on the shared records).
    subroutine finish(self, rod)
-      type(rod3d_drive), intent(inout) :: self
+      class(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
       call rod%finish()
       associate (s => rod%summary)
@@ -385,11 +542,21 @@ contains
    subroutine split(self, rod)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
-      type(force_end) :: cut
-      real(dp) :: f(3)
       self%broken = .true.
       rod%broken = .true.
-      f = self%reaction(:, merge(2, 1, rod%scene%break_at_b))
+      self%cut_force = self%reaction(:, merge(2, 1, rod%scene%break_at_b))
+      call release_end(self, rod)
+   end subroutine split
+
+   !> The broken end of the 3-D piece and of the planar run's piece (its
+   !> summary asks whether an end is held): a force end starting from
+   !> cut_force, ramped to zero over t_break.
+   subroutine release_end(self, rod)
+      type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      type(force_end) :: cut
+      real(dp) :: f(3)
+      f = self%cut_force
       cut = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
                       force0=[f(1), f(3)], force0_y=f(2))
       associate (piece => self%run%problem%piece, planar => rod%pieces(1)%problem%piece)
@@ -406,7 +573,7 @@ contains
          end if
       end associate
       self%run%work%usable = .false.
-   end subroutine split
+   end subroutine release_end
 
    !> Snapshots up to t_new: the static fields (static) or interpolated inside the step just taken.
    subroutine emit(self, rod, observer, t_new, static, error)
@@ -418,7 +585,7 @@ contains
       type(error_type), allocatable, intent(inout) :: error
       real(dp) :: ts, fields(rod%n_out, n_fields), extra(rod%n_out, n_fields3)
       do
-         ts = snapshot_time(rod, self%snapshot_index)
+         ts = snapshot_time(rod, rod%progress%snapshot_index)
          if (ts > t_new*(1 + 1.0e-12_dp)) exit
          if (static) then
             fields = rod%info%fields
@@ -426,8 +593,7 @@ contains
          else
             call interpolated(self, rod%t, t_new - rod%t, ts, fields, extra)
          end if
-         self%snapshot_index = self%snapshot_index + 1
-         rod%progress%snapshot_index = self%snapshot_index
+         rod%progress%snapshot_index = rod%progress%snapshot_index + 1
          if (present(observer)) then
             call observer%snapshot(ts, fields, error)
             if (.not. allocated(error)) call observer%snapshot_extra(ts, field3_names, extra, error)

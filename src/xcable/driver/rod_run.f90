@@ -46,13 +46,15 @@ module xcable_rod_run
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
                                  n_end_quantities
    use xcable_theory, only: wave_speed
-   use xcable_io_archive, only: state_archive
+   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, &
+                                sync_logical
    use xcable_system_posix, only: termination_requested
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
    public :: wall_limit, plan_step, reject_attempt, advance_time, jacobian_kept, check_range, check_folds
+   public :: checkpoint_pause, exchange_progress, exchange_records
 
    !> Why advance returned: the run ended (t_end or an error), a checkpoint is
    !> due, or SIGTERM arrived.
@@ -507,7 +509,7 @@ contains
       integer(i8) :: clock_now
       real(dp) :: h_try, wall, t_stop
       integer :: p, iterations
-      logical :: newton_failed, kept, any_kept, landing, due
+      logical :: newton_failed, kept, any_kept, landing
 
       pause = pause_none
       associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
@@ -517,25 +519,8 @@ contains
             call wall_limit(self, wall, error)
             if (allocated(error)) exit
             ! A pause, where the state is that of an accepted step (or of the start).
-            if (self%options%stop_on_termination) then
-               if (termination_requested()) then
-                  pause = pause_termination
-                  return
-               end if
-            end if
-            if (self%history%n > self%clock%records_at_checkpoint) then
-               due = .false.
-               if (self%options%checkpoint_interval > 0) &
-                  due = wall - self%clock%last_checkpoint >= self%options%checkpoint_interval
-               if (self%options%checkpoint_steps > 0) &
-                  due = due .or. self%history%n - self%clock%records_at_checkpoint >= self%options%checkpoint_steps
-               if (due) then
-                  self%clock%last_checkpoint = wall
-                  self%clock%records_at_checkpoint = self%history%n
-                  pause = pause_checkpoint
-                  return
-               end if
-            end if
+            pause = checkpoint_pause(self, wall)
+            if (pause /= pause_none) return
             call plan_step(self, h_try, t_stop, landing, error)
             if (allocated(error)) exit
             ! One attempt on every piece.
@@ -580,6 +565,39 @@ contains
          end do
       end associate
    end subroutine run_advance
+
+   !> Whether the step loop pauses before its next attempt (either model):
+   !> pause_termination when SIGTERM has arrived (options%stop_on_termination),
+   !> pause_checkpoint when a checkpoint is due (every
+   !> options%checkpoint_interval seconds of wall time, or every
+   !> options%checkpoint_steps accepted steps; at least one step since the
+   !> last), else pause_none. The clock notes a checkpoint pause.
+   integer function checkpoint_pause(self, wall) result(pause)
+      !> Run (its history counts the steps).
+      type(rod_run), intent(inout) :: self
+      !> Wall time of this process's dynamics, s.
+      real(dp), intent(in) :: wall
+      logical :: due
+      pause = pause_none
+      if (self%options%stop_on_termination) then
+         if (termination_requested()) then
+            pause = pause_termination
+            return
+         end if
+      end if
+      if (self%history%n > self%clock%records_at_checkpoint) then
+         due = .false.
+         if (self%options%checkpoint_interval > 0) &
+            due = wall - self%clock%last_checkpoint >= self%options%checkpoint_interval
+         if (self%options%checkpoint_steps > 0) &
+            due = due .or. self%history%n - self%clock%records_at_checkpoint >= self%options%checkpoint_steps
+         if (due) then
+            self%clock%last_checkpoint = wall
+            self%clock%records_at_checkpoint = self%history%n
+            pause = pause_checkpoint
+         end if
+      end if
+   end function checkpoint_pause
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings.
@@ -667,8 +685,8 @@ contains
       class(state_archive), intent(inout) :: a
       logical, intent(in) :: saving
       type(error_type), allocatable, intent(out) :: error
-      integer :: n_pieces, p, n, n_records, n_ends, flags(2), kb, expected_nodes(2)
-      real(dp) :: newton_reals(2), wall
+      integer :: n_pieces, p, n, flags(2), kb, expected_nodes(2)
+      real(dp) :: newton_reals(2)
       character(:), allocatable :: prefix
 
       call sync_real(a, 'run/t', self%t, saving)
@@ -679,14 +697,7 @@ contains
       call sync_logical(a, 'run/broken', self%broken, saving)
       call sync_matrix(a, 'run/cut_force', self%cut_force, saving)
       call sync_reals(a, 'run/cut_couple', self%cut_couple, saving)
-      call sync_real(a, 'progress/h', self%progress%h, saving)
-      call sync_int(a, 'progress/n_good', self%progress%n_good, saving)
-      call sync_int(a, 'progress/rejected_here', self%progress%rejected_here, saving)
-      call sync_int(a, 'progress/snapshot_index', self%progress%snapshot_index, saving)
-      ! The wall time of the dynamics so far (this process's and the earlier ones').
-      if (saving) wall = self%wall_time()
-      call sync_real(a, 'progress/wall_time', wall, saving)
-      if (.not. saving) self%progress%wall_before = wall
+      call exchange_progress(self, a, saving)
 
       ! The pieces: one, or two after a break inside the cable.
       n_pieces = 0
@@ -741,10 +752,55 @@ contains
          end associate
       end do
 
+      call exchange_records(self, a, saving, merge(4, 2, self%break_node > 0), error)
+   end subroutine exchange_state
+
+   !> Where the step loop stands (run_progress), listed for saving and
+   !> loading: the step to try, the good steps since it was halved, the
+   !> rejections since the last accepted step, the next snapshot, the wall
+   !> time so far. Either model (exchange_state, driver/rod3d_drive.f90).
+   subroutine exchange_progress(self, a, saving)
+      !> Run.
+      type(rod_run), intent(inout) :: self
+      !> Archive.
+      class(state_archive), intent(inout) :: a
+      !> Save (.true.) or load.
+      logical, intent(in) :: saving
+      real(dp) :: wall
+      call sync_real(a, 'progress/h', self%progress%h, saving)
+      call sync_int(a, 'progress/n_good', self%progress%n_good, saving)
+      call sync_int(a, 'progress/rejected_here', self%progress%rejected_here, saving)
+      call sync_int(a, 'progress/snapshot_index', self%progress%snapshot_index, saving)
+      ! The wall time of the dynamics so far (this process's and the earlier ones').
+      if (saving) wall = self%wall_time()
+      call sync_real(a, 'progress/wall_time', wall, saving)
+      if (.not. saving) self%progress%wall_before = wall
+   end subroutine exchange_progress
+
+   !> The records so far, listed for saving and loading: every history
+   !> record (with the y components, ends_y, of a 3-D run) and the summary's
+   !> counters and extremes. Either model (exchange_state,
+   !> driver/rod3d_drive.f90); loading sets up the history with n_ends ends.
+   subroutine exchange_records(self, a, saving, n_ends, error, with_y)
+      !> Run.
+      type(rod_run), intent(inout) :: self
+      !> Archive.
+      class(state_archive), intent(inout) :: a
+      !> Save (.true.) or load.
+      logical, intent(in) :: saving
+      !> Ends of the history (2, or 4 with a break inside the cable).
+      integer, intent(in) :: n_ends
+      !> Error (stat_input) when the archive's history does not fit.
+      type(error_type), allocatable, intent(inout) :: error
+      !> The y components too (a 3-D run; default .false.).
+      logical, intent(in), optional :: with_y
+      integer :: n_records
+      logical :: y_kept
+      y_kept = .false.
+      if (present(with_y)) y_kept = with_y
       ! The history: every record so far.
       n_records = self%history%n
       call sync_int(a, 'history/n', n_records, saving)
-      n_ends = merge(4, 2, self%break_node > 0)
       if (.not. saving) then
          if (.not. a%ok) return
          if (n_records < 0 .or. a%stored_size('history/time') /= n_records + 1) then
@@ -752,11 +808,12 @@ contains
                              str(a%stored_size('history/time'))//' times', stat_input)
             return
          end if
+         if (allocated(self%history%end_labels)) deallocate (self%history%end_labels)
          allocate (self%history%end_labels(n_ends))
          self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
          if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
          call self%history%reserve(max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, &
-                                   n_ends, self%options%energy)
+                                   n_ends, self%options%energy, with_y=y_kept)
          self%history%n = n_records
       end if
       associate (h => self%history, m => n_records)
@@ -766,6 +823,7 @@ contains
          call sync_ints(a, 'history/rejected', h%rejected(0:m), saving)
          call sync_cube(a, 'history/ends', h%ends(:, :, 0:m), saving)
          if (self%options%energy) call sync_matrix(a, 'history/energy', h%energy(:, 0:m), saving)
+         if (y_kept) call sync_cube(a, 'history/ends_y', h%ends_y(:, :, 0:m), saving)
       end associate
 
       ! The summary's counters and extremes so far (summarise derives the rest at the end).
@@ -781,110 +839,7 @@ contains
          call sync_real(a, 'summary/min_strain', s%min_strain, saving)
          call sync_real(a, 'summary/max_strain', s%max_strain, saving)
       end associate
-   end subroutine exchange_state
-
-   !> Put (saving) or get a real under a name.
-   subroutine sync_real(a, name, x, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      real(dp), intent(inout) :: x
-      logical, intent(in) :: saving
-      real(dp) :: buffer(1)
-      if (saving) then
-         call a%put_reals(name, [x])
-      else
-         call a%get_reals(name, buffer)
-         x = buffer(1)
-      end if
-   end subroutine sync_real
-
-   !> Put (saving) or get reals under a name.
-   subroutine sync_reals(a, name, x, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      real(dp), intent(inout) :: x(:)
-      logical, intent(in) :: saving
-      if (saving) then
-         call a%put_reals(name, x)
-      else
-         call a%get_reals(name, x)
-      end if
-   end subroutine sync_reals
-
-   !> Put (saving) or get a matrix under a name (stored column by column).
-   subroutine sync_matrix(a, name, x, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      real(dp), intent(inout) :: x(:, :)
-      logical, intent(in) :: saving
-      real(dp), allocatable :: buffer(:)
-      if (saving) then
-         call a%put_reals(name, reshape(x, [size(x)]))
-      else
-         allocate (buffer(size(x)))
-         call a%get_reals(name, buffer)
-         x = reshape(buffer, shape(x))
-      end if
-   end subroutine sync_matrix
-
-   !> Put (saving) or get a rank-3 array under a name.
-   subroutine sync_cube(a, name, x, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      real(dp), intent(inout) :: x(:, :, :)
-      logical, intent(in) :: saving
-      real(dp), allocatable :: buffer(:)
-      if (saving) then
-         call a%put_reals(name, reshape(x, [size(x)]))
-      else
-         allocate (buffer(size(x)))
-         call a%get_reals(name, buffer)
-         x = reshape(buffer, shape(x))
-      end if
-   end subroutine sync_cube
-
-   !> Put (saving) or get an integer under a name.
-   subroutine sync_int(a, name, i, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      integer, intent(inout) :: i
-      logical, intent(in) :: saving
-      integer :: buffer(1)
-      if (saving) then
-         call a%put_ints(name, [i])
-      else
-         call a%get_ints(name, buffer)
-         i = buffer(1)
-      end if
-   end subroutine sync_int
-
-   !> Put (saving) or get integers under a name.
-   subroutine sync_ints(a, name, i, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      integer, intent(inout) :: i(:)
-      logical, intent(in) :: saving
-      if (saving) then
-         call a%put_ints(name, i)
-      else
-         call a%get_ints(name, i)
-      end if
-   end subroutine sync_ints
-
-   !> Put (saving) or get a logical under a name (as 0 or 1).
-   subroutine sync_logical(a, name, flag, saving)
-      class(state_archive), intent(inout) :: a
-      character(*), intent(in) :: name
-      logical, intent(inout) :: flag
-      logical, intent(in) :: saving
-      integer :: buffer(1)
-      if (saving) then
-         call a%put_ints(name, [merge(1, 0, flag)])
-      else
-         call a%get_ints(name, buffer)
-         flag = buffer(1) == 1
-      end if
-   end subroutine sync_logical
+   end subroutine exchange_records
 
    !> Snapshots due up to time t_new: inside the step just accepted
    !> (interpolated), or of the static state (static = .true.).

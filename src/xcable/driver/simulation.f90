@@ -9,13 +9,15 @@
 !> prepare returns stat_input errors for an inconsistent case (nothing has
 !> been written yet) and stat_numerics when the statics fails.
 !>
-!> Checkpoints (rod scheme): after `enable_checkpoints`, run writes the
+!> Checkpoints (rod scheme, either model): after `enable_checkpoints`, run writes the
 !> state to a checkpoint file (io/checkpoint.f90) every so many seconds of
 !> wall time, and when SIGTERM arrives it writes one and stops (`interrupted`
 !> is then set). `resume` loads a checkpoint into a prepared simulation, so
 !> that run continues from it; the resumed run computes what the
 !> uninterrupted one would have, to the last bit on the same machine and
-!> build (the state saved is listed in driver/rod_run.f90, exchange_state).
+!> build (the state saved is listed in driver/rod_run.f90, exchange_state,
+!> and for the 3-D model in driver/rod3d_drive.f90, exchange3). A
+!> checkpoint resumes only with the model that wrote it.
 module xcable_simulation
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
@@ -193,7 +195,7 @@ contains
          call self%box%run(observer, error)
       case default
          if (self%model == '3d') then
-            call self%rod3%run_dynamics(self%rod, observer, error)
+            call run_3d(self, observer, error)
             return
          end if
          if (.not. allocated(self%checkpoints%path)) then
@@ -218,10 +220,36 @@ contains
       end select
    end subroutine sim_run
 
+   !> The 3-D run (model '3d'), with checkpoints as the planar one's.
+   subroutine run_3d(self, observer, error)
+      type(simulation), intent(inout) :: self
+      class(run_observer), intent(inout), optional :: observer
+      type(error_type), allocatable, intent(out) :: error
+      integer :: pause
+      if (.not. allocated(self%checkpoints%path)) then
+         call self%rod3%run_dynamics(self%rod, observer, error)
+         return
+      end if
+      if (.not. self%resumed) call self%rod3%start(self%rod, observer, error)
+      if (.not. allocated(error)) then
+         do
+            call self%rod3%advance(self%rod, observer, error, pause)
+            if (allocated(error) .or. pause == pause_none) exit
+            call write_checkpoint(self, error)
+            if (allocated(error)) exit
+            if (pause == pause_termination) then
+               self%interrupted = .true.
+               exit
+            end if
+         end do
+      end if
+      call self%rod3%finish(self%rod)
+   end subroutine run_3d
+
    !> Write checkpoints to path during run: every interval seconds of wall
    !> time (0: none), every every_steps accepted steps (0: none; tests), and,
    !> with on_termination, when SIGTERM arrives (then the run stops and
-   !> interrupted is set). The rod scheme only (the box scheme refuses a
+   !> interrupted is set). The rod scheme only, either model (the box scheme refuses a
    !> checkpoint interval in prepare and is left alone here).
    subroutine sim_enable_checkpoints(self, path, fingerprint, run_id, interval, on_termination, every_steps)
       !> Simulation (prepared).
@@ -236,7 +264,7 @@ contains
       logical, intent(in) :: on_termination
       !> Accepted steps between checkpoints (0: none).
       integer, intent(in), optional :: every_steps
-      if (self%scheme == 'box' .or. self%model == '3d') return
+      if (self%scheme == 'box') return
       self%checkpoints%path = path
       self%checkpoints%fingerprint = fingerprint
       self%checkpoints%run_id = run_id
@@ -257,7 +285,11 @@ contains
       call file%create(self%checkpoints%path, code_version, self%checkpoints%fingerprint, self%checkpoints%run_id, &
                        self%rod%t, error)
       if (allocated(error)) return
-      call self%rod%save_state(file)
+      if (self%model == '3d') then
+         call self%rod3%save_state(self%rod, file)
+      else
+         call self%rod%save_state(file)
+      end if
       call file%commit(error)
       if (.not. allocated(error)) self%checkpoints_written = self%checkpoints_written + 1
    end subroutine write_checkpoint
@@ -283,13 +315,17 @@ contains
          call fatal_error(error, path//': the box scheme writes no checkpoints and cannot resume', stat_input)
          return
       end if
-      if (self%model == '3d') then
-         call fatal_error(error, path//': the 3-D model writes no checkpoints yet and cannot resume', stat_input)
-         return
-      end if
       call file%open(path, error)
       if (allocated(error)) return
       run_id = file%run_id
+      ! A checkpoint of the other model (its namelist differs in model, or in what 'auto' looks at).
+      if ((file%stored_size('rod3d/x') >= 0) .neqv. (self%model == '3d')) then
+         call fatal_error(error, "checkpoint '"//path//"' was written by a "//merge('3-D', '2-D', self%model == '2d')// &
+                          ' run, this case runs the '//merge('3-D', '2-D', self%model == '3d')//" model (&numerics "// &
+                          "model): a checkpoint resumes only with the model that wrote it", stat_input)
+         call file%close()
+         return
+      end if
       if (file%code_version /= code_version) then
          call fatal_error(error, "checkpoint '"//path//"' was written by xcable "//file%code_version//', this is '// &
                           code_version//': a checkpoint resumes only with the version that wrote it', stat_input)
@@ -302,7 +338,11 @@ contains
          call file%close()
          return
       end if
-      call self%rod%load_state(file, error)
+      if (self%model == '3d') then
+         call self%rod3%load_state(self%rod, file, error)
+      else
+         call self%rod%load_state(file, error)
+      end if
       if (allocated(error)) then
          error%message = "checkpoint '"//path//"': "//error%message
          call file%close()

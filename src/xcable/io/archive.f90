@@ -2,6 +2,10 @@
 !> and integers. A run lists its own state (driver/rod_run.f90, save_state
 !> and load_state); a checkpoint file (io/checkpoint.f90) stores the arrays.
 !>
+!> The sync_* procedures put (saving) or get one item, so that a run lists
+!> its state once for both directions (rod_run%exchange_state, and the 3-D
+!> run's in driver/rod3d_drive.f90).
+!>
 !> Names are paths ('history/time', 'pieces/2/r'). A get reads exactly the
 !> number of values its array holds: a missing array, or one of another
 !> size, is a failure. Failures are collected (the first one's message is
@@ -12,6 +16,7 @@ module xcable_io_archive
    implicit none
    private
    public :: state_archive
+   public :: sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, sync_logical
 
    !> A store of named arrays.
    type, abstract :: state_archive
@@ -89,4 +94,107 @@ contains
       if (self%ok) self%message = message
       self%ok = .false.
    end subroutine archive_fail
+
+   !> Put (saving) or get a real under a name.
+   subroutine sync_real(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x
+      logical, intent(in) :: saving
+      real(dp) :: buffer(1)
+      if (saving) then
+         call a%put_reals(name, [x])
+      else
+         call a%get_reals(name, buffer)
+         x = buffer(1)
+      end if
+   end subroutine sync_real
+
+   !> Put (saving) or get reals under a name.
+   subroutine sync_reals(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x(:)
+      logical, intent(in) :: saving
+      if (saving) then
+         call a%put_reals(name, x)
+      else
+         call a%get_reals(name, x)
+      end if
+   end subroutine sync_reals
+
+   !> Put (saving) or get a matrix under a name (stored column by column).
+   subroutine sync_matrix(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x(:, :)
+      logical, intent(in) :: saving
+      real(dp), allocatable :: buffer(:)
+      if (saving) then
+         call a%put_reals(name, reshape(x, [size(x)]))
+      else
+         allocate (buffer(size(x)))
+         call a%get_reals(name, buffer)
+         x = reshape(buffer, shape(x))
+      end if
+   end subroutine sync_matrix
+
+   !> Put (saving) or get a rank-3 array under a name.
+   subroutine sync_cube(a, name, x, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      real(dp), intent(inout) :: x(:, :, :)
+      logical, intent(in) :: saving
+      real(dp), allocatable :: buffer(:)
+      if (saving) then
+         call a%put_reals(name, reshape(x, [size(x)]))
+      else
+         allocate (buffer(size(x)))
+         call a%get_reals(name, buffer)
+         x = reshape(buffer, shape(x))
+      end if
+   end subroutine sync_cube
+
+   !> Put (saving) or get an integer under a name.
+   subroutine sync_int(a, name, i, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      integer, intent(inout) :: i
+      logical, intent(in) :: saving
+      integer :: buffer(1)
+      if (saving) then
+         call a%put_ints(name, [i])
+      else
+         call a%get_ints(name, buffer)
+         i = buffer(1)
+      end if
+   end subroutine sync_int
+
+   !> Put (saving) or get integers under a name.
+   subroutine sync_ints(a, name, i, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      integer, intent(inout) :: i(:)
+      logical, intent(in) :: saving
+      if (saving) then
+         call a%put_ints(name, i)
+      else
+         call a%get_ints(name, i)
+      end if
+   end subroutine sync_ints
+
+   !> Put (saving) or get a logical under a name (as 0 or 1).
+   subroutine sync_logical(a, name, flag, saving)
+      class(state_archive), intent(inout) :: a
+      character(*), intent(in) :: name
+      logical, intent(inout) :: flag
+      logical, intent(in) :: saving
+      integer :: buffer(1)
+      if (saving) then
+         call a%put_ints(name, [merge(1, 0, flag)])
+      else
+         call a%get_ints(name, buffer)
+         flag = buffer(1) == 1
+      end if
+   end subroutine sync_logical
 end module xcable_io_archive

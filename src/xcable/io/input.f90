@@ -1383,8 +1383,7 @@ contains
    end subroutine check_scene
 
    !> The model against the scene: 3-D data under model = '2d', and what the
-   !> 3-D model does not do yet (the box scheme, a break inside the cable,
-   !> checkpoints).
+   !> 3-D model does not do yet (the box scheme, a break inside the cable).
    subroutine check_model(c, error)
       !> The case.
       type(case_config), intent(in) :: c
@@ -1408,9 +1407,6 @@ contains
          call fatal_error(error, c%source//': &rupture: s_break = '//real_text(c%s_break)//' with '//what// &
                           ': the 3-D model does not yet break inside the cable; allowed: s_break = 0 or L (a break '// &
                           'at an end), or enabled = .false.', stat_input)
-      else if (c%checkpoint_interval > 0) then
-         call fatal_error(error, c%source//': &output: checkpoint_interval = '//real_text(c%checkpoint_interval)// &
-                          ' with '//what//': the 3-D model writes no checkpoints yet; allowed: 0', stat_input)
       end if
    end subroutine check_model
 

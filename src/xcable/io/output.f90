@@ -206,7 +206,7 @@ contains
    !> an earlier stop removed, the provenance updated (namelist, input_file;
    !> resumes counted) and the status set to 'running'.
    subroutine result_reopen(self, path, s, fields, namelist_text, input_file, gnuplot, piece_starts, snapshots, run_id, &
-                            error)
+                            error, three_d)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Path of the HDF5 file.
@@ -229,6 +229,8 @@ contains
       character(*), intent(in) :: run_id
       !> Error (stat_input) naming what does not fit; the file is then unchanged.
       type(error_type), allocatable, intent(out) :: error
+      !> A 3-D run: its snapshots have the fields of field3_names too (default .false.).
+      logical, intent(in), optional :: three_d
       integer :: hdferr, i, resumes, ios
       logical :: ok, exists
       character(:), allocatable :: status, stored_id, reason, lines(:)
@@ -237,6 +239,8 @@ contains
       self%path = path
       self%s = s
       self%piece_starts = piece_starts
+      self%three_d = .false.
+      if (present(three_d)) self%three_d = three_d
       do i = 1, n_fields
          self%want(i) = has_word(fields, trim(field_names(i)))
       end do
@@ -296,6 +300,13 @@ contains
             return
          end if
       end do
+      do i = 1, merge(n_fields3, 0, self%three_d)
+         if (dataset_length(self%file, trim(field3_names(i)), 2) < snapshots) then
+            call refuse("the result file '"//path//"' lacks snapshots of "//trim(field3_names(i))// &
+                        ' (a 3-D run writes them)'//fresh)
+            return
+         end if
+      end do
       if (gnuplot) then
          self%text_stem = text_stem_of(path)
          call kept_text(self%text_stem//'.snapshots.dat', snapshots, lines, keep_lines, reason)
@@ -308,6 +319,9 @@ contains
       call truncate(self%file, 'time', 1, snapshots, ok)
       do i = 1, n_fields
          if (self%want(i)) call truncate(self%file, trim(field_names(i)), 2, snapshots, ok)
+      end do
+      do i = 1, merge(n_fields3, 0, self%three_d)
+         call truncate(self%file, trim(field3_names(i)), 2, snapshots, ok)
       end do
       call delete_link(self%file, 'history', ok)
       call delete_link(self%file, 'summary', ok)

@@ -144,7 +144,11 @@ module xcable_model_rod3d
       real(dp) :: tension_ref = 1, length_ref = 1
       !> Old level: positions, velocities, M V (3, n), cell vectors (3, n - 1), lengths, turning angles.
       real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
+      !> Old level: rotation vectors phi(e0_k-1, e0_k) of the interior nodes' turnings (3, n).
+      real(dp), allocatable :: phi_old(:, :)
       !> New level: cell vectors, lengths, turning angles, cell forces (3, n - 1), work (3, n), velocities.
+      !> A step evaluation sets th1 only when it does not form the Jacobian (Newton's last residual
+      !> and the ledger's evaluation are such); the bending in a step does not use it.
       real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :), v1(:, :)
       !> dN_c/de_c' for c' = c-1, c, c+1 (3, 3, -1:1, n - 1).
       real(dp), allocatable :: block(:, :, :, :)
@@ -280,6 +284,9 @@ contains
       self%tension_ref = tension_ref
       self%length_ref = sum(self%ds)/(n - 1)
       allocate (self%r0(3, n), self%v0(3, n), self%mv0(3, n), self%e0(3, n - 1), self%l0(n - 1), self%th0(n))
+      if (allocated(self%phi_old)) deallocate (self%phi_old)
+      allocate (self%phi_old(3, n))
+      self%phi_old = 0
       allocate (self%e1(3, n - 1), self%l1(n - 1), self%th1(n), self%force(3, n - 1), self%force_node(3, n))
       allocate (self%v1(3, n), self%block(3, 3, -1:1, n - 1), self%mass(0:2, n))
       if (allocated(self%load_node)) deallocate (self%load_node, self%load_block)
@@ -404,7 +411,7 @@ contains
       if (cc%v <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)%v**2 + x1(2)%v**2 + x1(3)%v**2)) return
       dx = x1 - constant(x0)
       do i = 1, 3
-         bracket(i) = delta(i) - dot3(jac(i, :), dx)
+         bracket(i) = delta(i) - (jac(i, 1)*dx(1) + jac(i, 2)*dx(2) + jac(i, 3)*dx(3))
       end do
       w = cross3(c, xm)/cc
       do j = 1, 3
@@ -503,6 +510,26 @@ contains
       end do
    end subroutine rod3d_geometry
 
+   !> Cell vectors e_c = (R_c+1 - R_c) / ds_c and their lengths (the geometry without the
+   !> turning angles), on explicit-shape arrays.
+   pure subroutine cell_vectors(n, r, ds, e, l)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: r(3, n), ds(n - 1)
+      real(dp), intent(out) :: e(3, n - 1), l(n - 1)
+      integer :: c
+      do c = 1, n - 1
+         e(:, c) = (r(:, c + 1) - r(:, c))/ds(c)
+         l(c) = norm2(e(:, c))
+      end do
+   end subroutine cell_vectors
+
+   !> a = 0 for a contiguous array of m values.
+   pure subroutine clear(m, a)
+      integer, intent(in) :: m
+      real(dp), intent(out) :: a(m)
+      a = 0
+   end subroutine clear
+
    !> The fold check of the step control (driver/rod_run.f90, check_folds) in
    !> 3-D: for each interior node k, |phi(e1_k-1, e1_k) - phi(e0_k-1, e0_k) -
    !> (rho_k - rho_k-1)|, with phi the rotation vector of the node's turning
@@ -539,9 +566,7 @@ contains
       pure function rotation(a, b) result(phi)
          real(dp), intent(in) :: a(3), b(3)
          real(dp) :: phi(3)
-         type(dual) :: p(3)
-         call rotation_vector(constant(a), constant(b), p)
-         phi = p%v
+         call rotation_vector_r(a, b, phi)
       end function rotation
    end subroutine rod3d_turning_folds
 
@@ -689,10 +714,14 @@ contains
       class(rod3d_piece), intent(inout) :: self
       !> Positions and velocities at the old level (3, n).
       real(dp), intent(in) :: r0(:, :), v0(:, :)
+      integer :: k
       self%r0 = r0
       self%v0 = v0
       call self%mass_times(v0, self%mv0)
       call self%geometry(r0, self%e0, self%l0, self%th0)
+      do k = 2, self%n - 1
+         call rotation_vector_r(self%e0(:, k - 1), self%e0(:, k), self%phi_old(:, k))
+      end do
    end subroutine rod3d_prepare_step
 
    !> New velocities V^n+1 = [(R^n+1 - R^n)/dt - (1 - theta) V^n] / theta.
@@ -722,14 +751,21 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n, k, i
-      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n)
-      type(dual) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
-      type(dual) :: ja(3, 3), jb(3, 3), fa(3), fb(3)
+      integer :: c, n, k, i, j
+      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n), f, fp, fpp
       n = self%n
       call unpack(x, r, psi)
-      call self%geometry(r, self%e1, self%l1, self%th1)
-      self%block = 0
+      call cell_vectors(n, r, self%ds, self%e1, self%l1)
+      if (with_jacobian) then
+         call clear(size(self%block), self%block)
+      else
+         ! Turning angles of the state (for the drivers' records), in the evaluations without the Jacobian.
+         do k = 2, n - 1
+            self%th1(k) = turning_angle(self%e1(:, k - 1), self%e1(:, k))
+         end do
+         self%th1(1) = 0
+         self%th1(n) = 0
+      end if
       do c = 1, n - 1
          associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
             eps0 = l0 - 1
@@ -737,8 +773,10 @@ contains
             h = eps1 - eps0
             if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
-               q = self%law%tension(mid) + self%law%stiffness_slope(mid)*h*h/24
-               dq = 0.5_dp*self%law%stiffness(mid) + self%law%stiffness_slope(mid)*h/12
+               ! f, f', f'' at mid in one call (the tanh law: one tanh and one cosh, the same bits).
+               call self%law%tension_stiffness_slope(mid, f, fp, fpp)
+               q = f + fpp*h*h/24
+               dq = 0.5_dp*fp + fpp*h/12
             else
                q = (self%law%strain_energy(eps1) - self%law%strain_energy(eps0))/h
                dq = (self%law%tension(eps1) - q)/h
@@ -748,42 +786,217 @@ contains
             lsum = l0 + l1
             wsum = e0 + e1
             self%force(:, c) = q*wsum/lsum
-            if (with_jacobian) self%block(:, :, 0, c) = outer3(wsum/lsum, dq*e1/l1) &
-                                                        + q*(identity3()/lsum - outer3(wsum, e1/l1)/lsum**2)
+            if (with_jacobian) then
+               ! outer(wsum / lsum, dq e1 / l1) + q (I / lsum - outer(wsum, e1 / l1) / lsum^2), written out.
+               do j = 1, 3
+                  do i = 1, 3
+                     self%block(i, j, 0, c) = wsum(i)/lsum*(dq*e1(j)/l1) &
+                                              + q*(merge(1.0_dp, 0.0_dp, i == j)/lsum - wsum(i)*(e1(j)/l1)/lsum**2)
+                  end do
+               end do
+            end if
          end associate
       end do
-      do k = 2, n - 1
-         do i = 1, 3
-            a(i) = seeded(self%e1(i, k - 1), i)
-            b(i) = seeded(self%e1(i, k), i + 3)
+      if (with_jacobian) then
+         do k = 2, n - 1
+            call step_bending_jacobian(self, k)
          end do
-         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0):
-         ! Ja carries the mean of the changes of a at b0 and at b1, Jb that of the changes of b at
-         ! a0 and at a1, each about the Jacobian at the mid vectors.
-         a0 = constant(self%e0(:, k - 1))
-         b0 = constant(self%e0(:, k))
-         call rotation_vector(a0, b0, phi0)
-         call rotation_vector(a, b, phi1)
-         call rotation_vector(a, b0, phi_a1b0)
-         call rotation_vector(a0, b, phi_a0b1)
-         q1 = dot3(phi1, phi1)
-         coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
-         psum = (phi1 + phi0)*coef
-         ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
-         ja = discrete_jacobian(self%e0(:, k - 1), a, (b0 + b)*0.5_dp, 1.0_dp, &
-                                ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
-         jb = discrete_jacobian(self%e0(:, k), b, (a0 + a)*0.5_dp, -1.0_dp, &
-                                ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
-         do i = 1, 3
-            fa(i) = dot3(ja(:, i), psum)
-            fb(i) = dot3(jb(:, i), psum)
+      else
+         do k = 2, n - 1
+            call step_bending(self, k)
          end do
-         call add_node_bending(self, k, fa, fb, with_jacobian)
-      end do
+      end if
       call add_couples(self, t0, t0 + dt, .true., with_jacobian)
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
    end subroutine rod3d_step_system
+
+   !> Node k's bending force in a step, values only (the step_bending_jacobian's forces to the
+   !> same bits): B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) +
+   !> Jb (b1 - b0), Ja carrying the mean of the changes of a at b0 and at b1, Jb that of the
+   !> changes of b at a0 and at a1, each about the Jacobian at the mid vectors.
+   subroutine step_bending(self, k)
+      class(rod3d_piece), intent(inout) :: self
+      integer, intent(in) :: k
+      real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
+      real(dp) :: ja(3, 3), jb(3, 3)
+      integer :: i
+      a = self%e1(:, k - 1)
+      b = self%e1(:, k)
+      a0 = self%e0(:, k - 1)
+      b0 = self%e0(:, k)
+      phi0 = self%phi_old(:, k)
+      call rotation_vector_r(a, b, phi1)
+      call rotation_vector_r(a, b0, phi_a1b0)
+      call rotation_vector_r(a0, b, phi_a0b1)
+      q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
+      coef = bend_coefficient_r(self, k, phi0(1)**2 + phi0(2)**2 + phi0(3)**2, q1)
+      psum = (phi1 + phi0)*coef
+      ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
+      ja = discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
+      jb = discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
+      do i = 1, 3
+         self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
+                                /self%ds(k - 1)
+         self%force(i, k) = self%force(i, k) + (jb(1, i)*psum(1) + jb(2, i)*psum(2) + jb(3, i)*psum(3))/self%ds(k)
+      end do
+   end subroutine step_bending
+
+   !> Node k's bending force in a step and its blocks: step_bending with the derivatives with
+   !> respect to the new a (slots 1-3) and b (slots 4-6) in dual numbers. The rotation vectors
+   !> and their first derivatives are written out (rotation_vector_r); the discrete Jacobians,
+   !> which need second derivatives, are differentiated by the dual numbers.
+   subroutine step_bending_jacobian(self, k)
+      class(rod3d_piece), intent(inout) :: self
+      integer, intent(in) :: k
+      real(dp) :: a(3), b(3), a0(3), b0(3), v1(3), j1a(3, 3), j1b(3, 3), vab0(3), jab0(3, 3), va0b(3), ja0b(3, 3)
+      type(dual) :: ad(3), bd(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
+      type(dual) :: ja(3, 3), jb(3, 3), fa(3), fb(3)
+      integer :: i
+      a = self%e1(:, k - 1)
+      b = self%e1(:, k)
+      a0 = self%e0(:, k - 1)
+      b0 = self%e0(:, k)
+      call rotation_vector_r(a, b, v1, j1a, j1b)
+      call rotation_vector_r(a, b0, vab0, jab0)
+      call rotation_vector_r(a0, b, va0b, jy=ja0b)
+      do i = 1, 3
+         ad(i) = seeded(a(i), i)
+         bd(i) = seeded(b(i), i + 3)
+         phi0(i) = constant(self%phi_old(i, k))
+         phi1(i)%v = v1(i)
+         phi1(i)%d(1:3) = j1a(i, :)
+         phi1(i)%d(4:6) = j1b(i, :)
+         phi_a1b0(i)%v = vab0(i)
+         phi_a1b0(i)%d(1:3) = jab0(i, :)
+         phi_a1b0(i)%d(4:6) = 0
+         phi_a0b1(i)%v = va0b(i)
+         phi_a0b1(i)%d(1:3) = 0
+         phi_a0b1(i)%d(4:6) = ja0b(i, :)
+      end do
+      q1 = dot3(phi1, phi1)
+      coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
+      psum = (phi1 + phi0)*coef
+      ja = discrete_jacobian(a0, ad, (constant(b0) + bd)*0.5_dp, 1.0_dp, &
+                             ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
+      jb = discrete_jacobian(b0, bd, (constant(a0) + ad)*0.5_dp, -1.0_dp, &
+                             ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
+      do i = 1, 3
+         fa(i) = dot3(ja(:, i), psum)
+         fb(i) = dot3(jb(:, i), psum)
+      end do
+      call add_node_bending(self, k, fa, fb, .true.)
+   end subroutine step_bending_jacobian
+
+   !> The rotation vector phi(x, y) of rotation_vector in reals (the same operations, so the same
+   !> bits), with d phi / dx and d phi / dy when asked.
+   pure subroutine rotation_vector_r(x, y, phi, jx, jy)
+      real(dp), intent(in) :: x(3), y(3)
+      real(dp), intent(out) :: phi(3)
+      real(dp), intent(out), optional :: jx(3, 3), jy(3, 3)
+      real(dp) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, g(3), inv_xy, inv_xx, inv_yy, w(3), r(3)
+      integer :: i, j
+      nx = sqrt(x(1)*x(1) + x(2)*x(2) + x(3)*x(3))
+      ny = sqrt(y(1)*y(1) + y(2)*y(2) + y(3)*y(3))
+      u(1) = (x(2)*y(3) - x(3)*y(2))/(nx*ny)
+      u(2) = (x(3)*y(1) - x(1)*y(3))/(nx*ny)
+      u(3) = (x(1)*y(2) - x(2)*y(1))/(nx*ny)
+      s2 = u(1)*u(1) + u(2)*u(2) + u(3)*u(3)
+      c = (x(1)*y(1) + x(2)*y(2) + x(3)*y(3))/(nx*ny)
+      if (c > 0 .and. s2 < 1.0e-5_dp*c**2) then
+         z = s2/(c*c)
+         rho = (1.0_dp - z/3.0_dp + z*z/5.0_dp - z*z*z/7.0_dp)/c
+         rho_s2 = (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))/(c*c*c)
+         rho_c = -rho/c + (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))*(-2.0_dp)*z/(c*c)
+      else
+         s = sqrt(s2)
+         rho = atan2(s, c)/s
+         rho_s2 = (c/(s2 + c*c) - rho)/(2.0_dp*s2)
+         rho_c = -1.0_dp/(s2 + c*c)
+      end if
+      phi = u*rho
+      if (.not. (present(jx) .or. present(jy))) return
+      inv_xy = 1.0_dp/(nx*ny)
+      if (present(jx)) then
+         ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2; (dx x y) = -[y]x dx.
+         inv_xx = 1.0_dp/(nx*nx)
+         w = [y(2)*u(3) - y(3)*u(2), y(3)*u(1) - y(1)*u(3), y(1)*u(2) - y(2)*u(1)]
+         g = (w*inv_xy - x*(s2*inv_xx))*(2.0_dp*rho_s2) + (y*inv_xy - x*(c*inv_xx))*rho_c - x*(rho*inv_xx)
+         do j = 1, 3
+            do i = 1, 3
+               jx(i, j) = u(i)*g(j)
+            end do
+         end do
+         r = y*(rho*inv_xy)
+         jx(1, 2) = jx(1, 2) + r(3)
+         jx(1, 3) = jx(1, 3) - r(2)
+         jx(2, 1) = jx(2, 1) - r(3)
+         jx(2, 3) = jx(2, 3) + r(1)
+         jx(3, 1) = jx(3, 1) + r(2)
+         jx(3, 2) = jx(3, 2) - r(1)
+      end if
+      if (present(jy)) then
+         ! du/dy dy = (x x dy) / (|x| |y|) - u (y . dy) / |y|^2; (x x dy) = [x]x dy.
+         inv_yy = 1.0_dp/(ny*ny)
+         w = [u(2)*x(3) - u(3)*x(2), u(3)*x(1) - u(1)*x(3), u(1)*x(2) - u(2)*x(1)]
+         g = (w*inv_xy - y*(s2*inv_yy))*(2.0_dp*rho_s2) + (x*inv_xy - y*(c*inv_yy))*rho_c - y*(rho*inv_yy)
+         do j = 1, 3
+            do i = 1, 3
+               jy(i, j) = u(i)*g(j)
+            end do
+         end do
+         r = x*(rho*inv_xy)
+         jy(1, 2) = jy(1, 2) - r(3)
+         jy(1, 3) = jy(1, 3) + r(2)
+         jy(2, 1) = jy(2, 1) + r(3)
+         jy(2, 3) = jy(2, 3) - r(1)
+         jy(3, 1) = jy(3, 1) - r(2)
+         jy(3, 2) = jy(3, 2) + r(1)
+      end if
+   end subroutine rotation_vector_r
+
+   !> discrete_jacobian in reals (values only, the same bits).
+   pure function discrete_jacobian_r(x0, x1, y, sign, delta) result(jac)
+      real(dp), intent(in) :: x0(3), x1(3), y(3)
+      real(dp), intent(in) :: sign
+      real(dp), intent(in) :: delta(3)
+      real(dp) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
+      integer :: i, j
+      xm = (x0 + x1)*0.5_dp
+      call rotation_vector_r(xm, y, phi, jac)
+      if (sign < 0) jac = -jac
+      c = [x0(2)*x1(3) - x0(3)*x1(2), x0(3)*x1(1) - x0(1)*x1(3), x0(1)*x1(2) - x0(2)*x1(1)]
+      cc = c(1)*c(1) + c(2)*c(2) + c(3)*c(3)
+      if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
+      dx = x1 - x0
+      do i = 1, 3
+         bracket(i) = delta(i) - (jac(i, 1)*dx(1) + jac(i, 2)*dx(2) + jac(i, 3)*dx(3))
+      end do
+      w = [c(2)*xm(3) - c(3)*xm(2), c(3)*xm(1) - c(1)*xm(3), c(1)*xm(2) - c(2)*xm(1)]/cc
+      do j = 1, 3
+         do i = 1, 3
+            jac(i, j) = jac(i, j) + bracket(i)*w(j)
+         end do
+      end do
+   end function discrete_jacobian_r
+
+   !> bend_coefficient in reals (the value only, the same bits).
+   pure real(dp) function bend_coefficient_r(self, k, q0, q1) result(coef)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: q0, q1
+      real(dp) :: th0, th1, m, dm, big
+      big = 2*self%ei/self%dual_length(k)
+      th0 = sqrt(q0)
+      th1 = sqrt(q1)
+      if (th0 + th1 < 1.0e-3_dp) then
+         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
+                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
+      else
+         call bend_divided(self, k, th0, th1, m, dm)
+         coef = m/(th0 + th1)
+      end if
+   end function bend_coefficient_r
 
    !> Node rows from the cell forces and blocks, inertia, weight, end forces, twist and held rows
    !> (statics: t1 the time; a step: t1 = t0, t2 = dt).
@@ -795,8 +1008,8 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in) :: theta
-      integer :: n, c, k, j, side, cp, node, band0, a, b, row, col
-      real(dp) :: scale, rate, sgn, t_new, r(3, self%n), psi(self%n), twist_scale, tau
+      integer :: n, c, k, band0, a
+      real(dp) :: scale, rate, t_new, r(3, self%n), psi(self%n), twist_scale, tau
       logical :: held_a, held_b, anchor_a, anchor_b
       n = self%n
       scale = 1/self%tension_ref
@@ -850,66 +1063,8 @@ contains
       jacobian%ab = 0
       jacobian%factorised = .false.
       band0 = jacobian%kl + jacobian%ku + 1
-      do c = 1, n - 1
-         do cp = max(1, c - 1), min(n - 1, c + 1)
-            do side = 0, 1
-               node = cp + side
-               sgn = merge(1.0_dp, -1.0_dp, side == 1)/self%ds(cp)*scale
-               do j = 0, 1
-                  k = c + j
-                  if (k == 1 .and. held_a) cycle
-                  if (k == n .and. held_b) cycle
-                  do a = 1, 3
-                     row = 3*(k - 1) + a
-                     do b = 1, 3
-                        col = 3*(node - 1) + b
-                        jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                              + merge(1.0_dp, -1.0_dp, j == 1)*sgn*self%block(a, b, cp - c, c)
-                     end do
-                  end do
-               end do
-            end do
-         end do
-      end do
-      if (dynamic) then
-         do k = 1, n
-            if (k == 1 .and. held_a) cycle
-            if (k == n .and. held_b) cycle
-            do a = 1, 3
-               row = 3*(k - 1) + a
-               do j = -2, 2
-                  node = k + j
-                  if (node < 1 .or. node > n) cycle
-                  col = row + 3*j
-                  jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                        + self%mass(abs(j), min(k, node))*rate*scale
-               end do
-            end do
-         end do
-      end if
-      if (allocated(self%loads)) then
-         if (size(self%loads) > 0) then
-            ! Node c and node c+1 each get -F_c / 2.
-            do c = 1, n - 1
-               do side = 0, 1
-                  node = c + side
-                  do j = 0, 1
-                     k = c + j
-                     if (k == 1 .and. held_a) cycle
-                     if (k == n .and. held_b) cycle
-                     do a = 1, 3
-                        row = 3*(k - 1) + a
-                        do b = 1, 3
-                           col = 3*(node - 1) + b
-                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                                 - 0.5_dp*self%load_block(a, b, side, c)*scale
-                        end do
-                     end do
-                  end do
-               end do
-            end do
-         end if
-      end if
+      call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
+                               self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self))
       do c = 1, n - 1
          call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
          call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
@@ -950,6 +1105,99 @@ contains
          end do
       end subroutine set_row
    end subroutine assemble
+
+   !> The Jacobian's position blocks (cells, inertia, distributed loads) in band storage ab, as
+   !> explicit-shape arrays (a class argument's allocatable components cost several times the
+   !> instructions in these loops, docs/speed.md item 4); the same sums in the same order.
+   pure subroutine add_position_blocks(n, ld, ncol, ab, band0, block, ds, mass, load_block, scale, rate, held_a, held_b, &
+                                       dynamic, loads)
+      integer, intent(in) :: n, ld, ncol, band0
+      real(dp), intent(inout) :: ab(ld, ncol)
+      real(dp), intent(in) :: block(3, 3, -1:1, n - 1), ds(n - 1), mass(0:2, n), load_block(3, 3, 0:1, n - 1)
+      real(dp), intent(in) :: scale, rate
+      logical, intent(in) :: held_a, held_b, dynamic, loads
+      integer :: c, cp, side, node, j, k, a, b, row, col
+      real(dp) :: sgn, t(3, 3)
+      ! Cell c's force N_c enters node c with - and node c+1 with +; e_cp = (R_cp+1 - R_cp) / ds_cp.
+      ! Each block is scaled once: (+-1 / ds) scale block = +-((1 / ds) scale block), the same bits.
+      do c = 1, n - 1
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            sgn = 1.0_dp/ds(cp)*scale
+            do b = 1, 3
+               do a = 1, 3
+                  t(a, b) = sgn*block(a, b, cp - c, c)
+               end do
+            end do
+            do side = 0, 1
+               node = cp + side
+               do j = 0, 1
+                  k = c + j
+                  if (k == 1 .and. held_a) cycle
+                  if (k == n .and. held_b) cycle
+                  if (side == j) then
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        do a = 1, 3
+                           row = 3*(k - 1) + a
+                           ab(band0 + row - col, col) = ab(band0 + row - col, col) + t(a, b)
+                        end do
+                     end do
+                  else
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        do a = 1, 3
+                           row = 3*(k - 1) + a
+                           ab(band0 + row - col, col) = ab(band0 + row - col, col) - t(a, b)
+                        end do
+                     end do
+                  end if
+               end do
+            end do
+         end do
+      end do
+      if (dynamic) then
+         do k = 1, n
+            if (k == 1 .and. held_a) cycle
+            if (k == n .and. held_b) cycle
+            do a = 1, 3
+               row = 3*(k - 1) + a
+               do j = -2, 2
+                  node = k + j
+                  if (node < 1 .or. node > n) cycle
+                  col = row + 3*j
+                  ab(band0 + row - col, col) = ab(band0 + row - col, col) + mass(abs(j), min(k, node))*rate*scale
+               end do
+            end do
+         end do
+      end if
+      if (loads) then
+         ! Node c and node c+1 each get -F_c / 2.
+         do c = 1, n - 1
+            do side = 0, 1
+               node = c + side
+               do j = 0, 1
+                  k = c + j
+                  if (k == 1 .and. held_a) cycle
+                  if (k == n .and. held_b) cycle
+                  do a = 1, 3
+                     row = 3*(k - 1) + a
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        ab(band0 + row - col, col) = ab(band0 + row - col, col) - 0.5_dp*load_block(a, b, side, c)*scale
+                     end do
+                  end do
+               end do
+            end do
+         end do
+      end if
+   end subroutine add_position_blocks
+
+   !> Whether the piece has distributed loads.
+   pure logical function has_loads(self)
+      class(rod3d_piece), intent(in) :: self
+      has_loads = .false.
+      if (allocated(self%loads)) has_loads = size(self%loads) > 0
+   end function has_loads
 
    !> The applied couples of the ends (the planar input's couple, positive counter-clockwise in
    !> the x-z plane, that is about -y) on the end cells. A couple C does the work C dphi, dphi

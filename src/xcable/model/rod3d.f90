@@ -48,9 +48,10 @@
 !> the ends, and a planar run reproduces the planar rod as long as no turning
 !> angle passes through zero within a step (the planar rod's angle is signed,
 !> this one is not). Below a rotation of 1e-8 rad in a step the bracket
-!> (third order in the rotation) is dropped. The bending terms and their
-!> exact derivatives are written once in forward-mode dual numbers (defined
-!> at the end of this module); the rest of the Jacobian is written out.
+!> (third order in the rotation) is dropped. The Jacobian is written out,
+!> the bending blocks of a step included (step_bending_jacobian: first and
+!> second derivatives of the rotation vector); the statics' bending blocks
+!> use forward-mode dual numbers (defined at the end of this module).
 !>
 !> Newton's vector holds the positions node after node (x, y, z), then the
 !> twist angles psi_1 .. psi_n. The momentum rows of node k reach nodes k-2 ..
@@ -79,8 +80,8 @@ module xcable_model_rod3d
    public :: paper_euler_parameters
 
    ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
-   ! (the two new cell vectors of a node). They live in this module so that the compiler can
-   ! inline their arithmetic (a separate module cost a factor of several).
+   ! (the two cell vectors of a node; the statics' bending blocks). They live in this module so
+   ! that the compiler can inline their arithmetic (a separate module cost a factor of several).
    !> Number of derivative slots.
    integer, parameter :: dual_slots = 6
 
@@ -106,9 +107,6 @@ module xcable_model_rod3d
    end interface
    interface sqrt
       module procedure sqrt_d
-   end interface
-   interface atan2
-      module procedure atan2_dd
    end interface
 
 
@@ -342,107 +340,6 @@ contains
       th = atan2(norm2(w), dot_product(a, b))
    end function turning_angle
 
-   !> The rotation vector phi(x, y) = th u / |u|, u = x x y / (|x| |y|), of the smallest rotation
-   !> taking the direction of x to that of y (|phi| = th; smooth through th = 0), with its
-   !> Jacobian d phi / dx when asked.
-   pure subroutine rotation_vector(x, y, phi, jac)
-      type(dual), intent(in) :: x(3), y(3)
-      type(dual), intent(out) :: phi(3)
-      type(dual), intent(out), optional :: jac(3, 3)
-      type(dual) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, grad_rho(3), grad_s2(3), grad_c(3), yu(3)
-      type(dual) :: inv_xy, inv_xx, yr(3)
-      integer :: i, j
-      nx = sqrt(dot3(x, x))
-      ny = sqrt(dot3(y, y))
-      u = cross3(x, y)/(nx*ny)
-      s2 = dot3(u, u)
-      c = dot3(x, y)/(nx*ny)
-      ! rho = th / sin(th) = atan2(s, c) / s; a series in z = tan^2(th) near th = 0.
-      if (c%v > 0 .and. s2%v < 1.0e-5_dp*c%v**2) then
-         z = s2/(c*c)
-         rho = (1.0_dp - z/3.0_dp + z*z/5.0_dp - z*z*z/7.0_dp)/c
-         rho_s2 = (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))/(c*c*c)
-         rho_c = -rho/c + (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))*(-2.0_dp)*z/(c*c)
-      else
-         s = sqrt(s2)
-         rho = atan2(s, c)/s
-         rho_s2 = (c/(s2 + c*c) - rho)/(2.0_dp*s2)
-         rho_c = -1.0_dp/(s2 + c*c)
-      end if
-      phi = u*rho
-      if (.not. present(jac)) return
-      ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2
-      inv_xy = 1.0_dp/(nx*ny)
-      inv_xx = 1.0_dp/(nx*nx)
-      yu = cross3(y, u)
-      grad_s2 = (yu*inv_xy - x*(s2*inv_xx))*2.0_dp
-      grad_c = y*inv_xy - x*(c*inv_xx)
-      grad_rho = grad_s2*rho_s2 + grad_c*rho_c - x*(rho*inv_xx)
-      do j = 1, 3
-         do i = 1, 3
-            jac(i, j) = u(i)*grad_rho(j)
-         end do
-      end do
-      ! (dx x y)_i = eps_ijk dx_j y_k: the cross-product matrix of -y.
-      yr = y*(rho*inv_xy)
-      jac(1, 2) = jac(1, 2) + yr(3)
-      jac(1, 3) = jac(1, 3) - yr(2)
-      jac(2, 1) = jac(2, 1) - yr(3)
-      jac(2, 3) = jac(2, 3) + yr(1)
-      jac(3, 1) = jac(3, 1) + yr(2)
-      jac(3, 2) = jac(3, 2) - yr(1)
-   end subroutine rotation_vector
-
-   !> Discrete Jacobian between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
-   !> (see the module header), given its change delta = h(x1) - h(x0): J with
-   !> J (x1 - x0) = delta exactly.
-   pure function discrete_jacobian(x0, x1, y, sign, delta) result(jac)
-      real(dp), intent(in) :: x0(3)
-      type(dual), intent(in) :: x1(3), y(3)
-      real(dp), intent(in) :: sign
-      type(dual), intent(in) :: delta(3)
-      type(dual) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
-      integer :: i, j
-      xm = (constant(x0) + x1)*0.5_dp
-      call rotation_vector(xm, y, phi, jac)
-      if (sign < 0) jac = -jac
-      c = cross3(constant(x0), x1)
-      cc = dot3(c, c)
-      if (cc%v <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)%v**2 + x1(2)%v**2 + x1(3)%v**2)) return
-      dx = x1 - constant(x0)
-      do i = 1, 3
-         bracket(i) = delta(i) - (jac(i, 1)*dx(1) + jac(i, 2)*dx(2) + jac(i, 3)*dx(3))
-      end do
-      w = cross3(c, xm)/cc
-      do j = 1, 3
-         do i = 1, 3
-            jac(i, j) = jac(i, j) + bracket(i)*w(j)
-         end do
-      end do
-   end function discrete_jacobian
-
-   !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k as a dual number of q1 = th1^2 (q0 = th0^2):
-   !> a polynomial in q near the straight state, from the divided difference in th otherwise.
-   pure type(dual) function bend_coefficient(self, k, q0, q1) result(coef)
-      class(rod3d_piece), intent(in) :: self
-      integer, intent(in) :: k
-      real(dp), intent(in) :: q0
-      type(dual), intent(in) :: q1
-      real(dp) :: th0, th1, m, dm, big
-      big = 2*self%ei/self%dual_length(k)
-      th0 = sqrt(q0)
-      th1 = sqrt(q1%v)
-      if (th0 + th1 < 1.0e-3_dp) then
-         ! B = K tan^2(th / 2) = K (q/4 + q^2/24 + 17 q^3/2880 + 31 q^4/40320 + ...), K = 2 EI / h.
-         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
-                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
-      else
-         call bend_divided(self, k, th0, th1, m, dm)
-         coef%v = m/(th0 + th1)
-         coef%d = (dm - coef%v)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))*q1%d
-      end if
-   end function bend_coefficient
-
    !> Bending energy 2 EI tan^2(th / 2) / h_k of interior node k, J.
    pure real(dp) function bend_energy(self, k, th)
       class(rod3d_piece), intent(in) :: self
@@ -562,7 +459,7 @@ contains
 
    contains
 
-      !> The rotation vector phi(a, b) (rotation_vector) as reals.
+      !> The rotation vector phi(a, b) (rotation_vector_r).
       pure function rotation(a, b) result(phi)
          real(dp), intent(in) :: a(3), b(3)
          real(dp) :: phi(3)
@@ -833,8 +730,8 @@ contains
       coef = bend_coefficient_r(self, k, phi0(1)**2 + phi0(2)**2 + phi0(3)**2, q1)
       psum = (phi1 + phi0)*coef
       ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
-      ja = discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
-      jb = discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
+      call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp, ja)
+      call discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp, jb)
       do i = 1, 3
          self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
                                 /self%ds(k - 1)
@@ -842,54 +739,223 @@ contains
       end do
    end subroutine step_bending
 
-   !> Node k's bending force in a step and its blocks: step_bending with the derivatives with
-   !> respect to the new a (slots 1-3) and b (slots 4-6) in dual numbers. The rotation vectors
-   !> and their first derivatives are written out (rotation_vector_r); the discrete Jacobians,
-   !> which need second derivatives, are differentiated by the dual numbers.
+   !> Node k's bending force in a step and its blocks. The forces are step_bending's (the same
+   !> operations, so the same bits); their derivatives with respect to the new a and b are written
+   !> out: those of the rotation vectors (rotation_vector_r), of the bending coefficient, and of
+   !> each discrete Jacobian's force J^T p (discrete_force_derivatives).
    subroutine step_bending_jacobian(self, k)
       class(rod3d_piece), intent(inout) :: self
       integer, intent(in) :: k
-      real(dp) :: a(3), b(3), a0(3), b0(3), v1(3), j1a(3, 3), j1b(3, 3), vab0(3), jab0(3, 3), va0b(3), ja0b(3, 3)
-      type(dual) :: ad(3), bd(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
-      type(dual) :: ja(3, 3), jb(3, 3), fa(3), fb(3)
-      integer :: i
+      real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, q0, coef, dcoef, psum(3)
+      real(dp) :: ja(3, 3), jb(3, 3), j1a(3, 3), j1b(3, 3), jab0(3, 3), ja0b(3, 3), dpa(3, 3), dpb(3, 3), dq(6)
+      real(dp) :: ja_mid(3, 3), jb_mid(3, 3), delta_a(3), delta_b(3), dfa_da(3, 3), dfa_db(3, 3), dfb_db(3, 3), dfb_da(3, 3)
+      integer :: i, j
       a = self%e1(:, k - 1)
       b = self%e1(:, k)
       a0 = self%e0(:, k - 1)
       b0 = self%e0(:, k)
-      call rotation_vector_r(a, b, v1, j1a, j1b)
-      call rotation_vector_r(a, b0, vab0, jab0)
-      call rotation_vector_r(a0, b, va0b, jy=ja0b)
-      do i = 1, 3
-         ad(i) = seeded(a(i), i)
-         bd(i) = seeded(b(i), i + 3)
-         phi0(i) = constant(self%phi_old(i, k))
-         phi1(i)%v = v1(i)
-         phi1(i)%d(1:3) = j1a(i, :)
-         phi1(i)%d(4:6) = j1b(i, :)
-         phi_a1b0(i)%v = vab0(i)
-         phi_a1b0(i)%d(1:3) = jab0(i, :)
-         phi_a1b0(i)%d(4:6) = 0
-         phi_a0b1(i)%v = va0b(i)
-         phi_a0b1(i)%d(1:3) = 0
-         phi_a0b1(i)%d(4:6) = ja0b(i, :)
-      end do
-      q1 = dot3(phi1, phi1)
-      coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
+      phi0 = self%phi_old(:, k)
+      call rotation_vector_r(a, b, phi1, j1a, j1b)
+      call rotation_vector_r(a, b0, phi_a1b0, jab0)
+      call rotation_vector_r(a0, b, phi_a0b1, jy=ja0b)
+      q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
+      q0 = phi0(1)**2 + phi0(2)**2 + phi0(3)**2
+      call bend_coefficient_derivative(self, k, q0, q1, coef, dcoef)
       psum = (phi1 + phi0)*coef
-      ja = discrete_jacobian(a0, ad, (constant(b0) + bd)*0.5_dp, 1.0_dp, &
-                             ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
-      jb = discrete_jacobian(b0, bd, (constant(a0) + ad)*0.5_dp, -1.0_dp, &
-                             ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
+      delta_a = ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp
+      delta_b = ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp
+      call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, delta_a, ja, ja_mid)
+      call discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, delta_b, jb, jb_mid)
       do i = 1, 3
-         fa(i) = dot3(ja(:, i), psum)
-         fb(i) = dot3(jb(:, i), psum)
+         self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
+                                /self%ds(k - 1)
+         self%force(i, k) = self%force(i, k) + (jb(1, i)*psum(1) + jb(2, i)*psum(2) + jb(3, i)*psum(3))/self%ds(k)
       end do
-      call add_node_bending(self, k, fa, fb, .true.)
+      ! d psum = coef d phi1 + (phi1 + phi0) coef'(q1) 2 phi1^T d phi1.
+      do j = 1, 3
+         dq(j) = 2*dcoef*(phi1(1)*j1a(1, j) + phi1(2)*j1a(2, j) + phi1(3)*j1a(3, j))
+         dq(j + 3) = 2*dcoef*(phi1(1)*j1b(1, j) + phi1(2)*j1b(2, j) + phi1(3)*j1b(3, j))
+      end do
+      do j = 1, 3
+         dpa(:, j) = coef*j1a(:, j) + (phi1 + phi0)*dq(j)
+         dpb(:, j) = coef*j1b(:, j) + (phi1 + phi0)*dq(j + 3)
+      end do
+      call discrete_force_derivatives(a0, a, b0, b, 1.0_dp, ja_mid, delta_a, 0.5_dp*(jab0 + j1a), 0.5_dp*(j1b - ja0b), &
+                                      psum, dpa, dpb, dfa_da, dfa_db)
+      call discrete_force_derivatives(b0, b, a0, a, -1.0_dp, jb_mid, delta_b, 0.5_dp*(ja0b + j1b), 0.5_dp*(j1a - jab0), &
+                                      psum, dpb, dpa, dfb_db, dfb_da)
+      self%block(:, :, 0, k - 1) = self%block(:, :, 0, k - 1) + dfa_da/self%ds(k - 1)
+      self%block(:, :, 1, k - 1) = self%block(:, :, 1, k - 1) + dfa_db/self%ds(k - 1)
+      self%block(:, :, -1, k) = self%block(:, :, -1, k) + dfb_da/self%ds(k)
+      self%block(:, :, 0, k) = self%block(:, :, 0, k) + dfb_db/self%ds(k)
    end subroutine step_bending_jacobian
 
-   !> The rotation vector phi(x, y) of rotation_vector in reals (the same operations, so the same
-   !> bits), with d phi / dx and d phi / dy when asked.
+   !> bend_coefficient_r (the same operations) and its derivative in q1.
+   pure subroutine bend_coefficient_derivative(self, k, q0, q1, coef, dcoef)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: q0, q1
+      real(dp), intent(out) :: coef, dcoef
+      real(dp) :: th0, th1, m, dm, big
+      big = 2*self%ei/self%dual_length(k)
+      th0 = sqrt(q0)
+      th1 = sqrt(q1)
+      if (th0 + th1 < 1.0e-3_dp) then
+         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
+                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
+         dcoef = (1.0_dp/24.0_dp + (2*q1 + q0)*(17.0_dp/2880.0_dp) &
+                  + ((q1*q1 + q0*q0) + (q1 + q0)*2*q1)*(31.0_dp/40320.0_dp))*big
+      else
+         call bend_divided(self, k, th0, th1, m, dm)
+         coef = m/(th0 + th1)
+         dcoef = (dm - coef)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))
+      end if
+   end subroutine bend_coefficient_derivative
+
+   !> The derivatives of f = J^T p, J the discrete Jacobian of discrete_jacobian_r(x0, x1, y, sign,
+   !> delta) with y = (y0 + y1) / 2 (jx: its sign dphi/dx at the mid vectors, the J without the
+   !> bracket), with respect to x1 (dfx) and y1 (dfy), given the derivatives
+   !> of delta (ddx, ddy) and of p (dpx, dpy). With J = sign dphi/dx (x_mid, y) + br w^T,
+   !> br = delta - sign dphi/dx dx, f = g + w beta with g = sign dphi/dx^T p and beta = br . p =
+   !> delta . p - g . dx, so the only second derivatives needed are the Hessian of the scalar
+   !> p . phi(x, y) in x and in x and y. Writing phi = R(c) u, u = x^ x y^, c = x^ . y^ (unit
+   !> vectors; R = th / sin th), p . phi = R(c) T with T = p . u, and its gradient in x is
+   !> Px v, Px = (I - x^ x^^T) / |x|, v = R' T y^ + R (y^ x p). Then
+   !>
+   !>     Hxx = [Q (R'' T y^ y^^T + R' (y^ q^T + q y^^T)) Px - (x^ . v) Px - x^ (Px v)^T - (Px v) x^^T] / |x|,
+   !>     Hxy = Px [R'' T y^ x^^T + R' y^ m^T + R' T I + R' q x^^T - R [p]x] Py,
+   !>
+   !> with Q = I - x^ x^^T, q = y^ x p, m = p x x^, [p]x the cross-product matrix of p.
+   pure subroutine discrete_force_derivatives(x0, x1, y0, y1, sign, jx, delta, ddx, ddy, p, dpx, dpy, dfx, dfy)
+      real(dp), intent(in) :: x0(3), x1(3), y0(3), y1(3), sign, jx(3, 3), delta(3), ddx(3, 3), ddy(3, 3), p(3), &
+                              dpx(3, 3), dpy(3, 3)
+      real(dp), intent(out) :: dfx(3, 3), dfy(3, 3)
+      real(dp) :: xm(3), y(3), nx, ny, xh(3), yh(3), u(3), s2, c, r0, r1, r2, t, q(3), m(3), v(3)
+      real(dp) :: qx(3, 3), px(3, 3), py(3, 3), mm(3, 3), nn(3, 3), hxx(3, 3), hxy(3, 3), pv(3), g(3), xv
+      real(dp) :: cv(3), cc, w(3), dx(3), beta, dbx(3), dby(3), dcm(3, 3), dcc(3), x0x(3, 3), xmx(3, 3)
+      integer :: i, j
+      xm = (x0 + x1)*0.5_dp
+      y = (y0 + y1)*0.5_dp
+      nx = sqrt(xm(1)**2 + xm(2)**2 + xm(3)**2)
+      ny = sqrt(y(1)**2 + y(2)**2 + y(3)**2)
+      xh = xm/nx
+      yh = y/ny
+      u = cross(xh, yh)
+      s2 = u(1)**2 + u(2)**2 + u(3)**2
+      c = xh(1)*yh(1) + xh(2)*yh(2) + xh(3)*yh(3)
+      call turning_factors(s2, c, r0, r1, r2)
+      t = p(1)*u(1) + p(2)*u(2) + p(3)*u(3)
+      q = cross(yh, p)
+      m = cross(p, xh)
+      v = r1*t*yh + r0*q
+      xv = xh(1)*v(1) + xh(2)*v(2) + xh(3)*v(3)
+      do j = 1, 3
+         do i = 1, 3
+            qx(i, j) = merge(1.0_dp, 0.0_dp, i == j) - xh(i)*xh(j)
+            py(i, j) = (merge(1.0_dp, 0.0_dp, i == j) - yh(i)*yh(j))/ny
+            mm(i, j) = r2*t*yh(i)*yh(j) + r1*(yh(i)*q(j) + q(i)*yh(j))
+            nn(i, j) = r2*t*yh(i)*xh(j) + r1*yh(i)*m(j) + r1*q(i)*xh(j)
+         end do
+         nn(j, j) = nn(j, j) + r1*t
+      end do
+      px = qx/nx
+      nn = nn - r0*cross_matrix(p)
+      pv = matmul(px, v)
+      hxx = matmul(qx, matmul(mm, px)) - xv*px
+      do j = 1, 3
+         do i = 1, 3
+            hxx(i, j) = (hxx(i, j) - xh(i)*pv(j) - pv(i)*xh(j))/nx
+         end do
+      end do
+      hxy = matmul(px, matmul(nn, py))
+      ! g = J^T p and its derivatives (J with its sign; d x_mid / d x1 = d y / d y1 = I / 2).
+      g = matmul(p, jx)
+      dfx = 0.5_dp*sign*hxx + matmul(transpose(jx), dpx)
+      dfy = 0.5_dp*sign*hxy + matmul(transpose(jx), dpy)
+      cv = cross(x0, x1)
+      cc = cv(1)*cv(1) + cv(2)*cv(2) + cv(3)*cv(3)
+      if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
+      dx = x1 - x0
+      w = cross(cv, xm)/cc
+      beta = dot_product(delta, p) - dot_product(g, dx)
+      dbx = matmul(p, ddx) + matmul(delta, dpx) - matmul(dx, dfx) - g
+      dby = matmul(p, ddy) + matmul(delta, dpy) - matmul(dx, dfy)
+      ! w = (c x x_mid) / |c|^2, c = x0 x x1: d(c x x_mid) = (-[x_mid]x [x0]x + [c]x / 2) dx1, d|c|^2 = 2 c^T [x0]x dx1.
+      x0x = cross_matrix(x0)
+      xmx = cross_matrix(xm)
+      dcm = -matmul(xmx, x0x) + 0.5_dp*cross_matrix(cv)
+      dcc = 2*matmul(cv, x0x)
+      do j = 1, 3
+         do i = 1, 3
+            dfx(i, j) = dfx(i, j) + (dcm(i, j) - w(i)*dcc(j))/cc*beta + w(i)*dbx(j)
+            dfy(i, j) = dfy(i, j) + w(i)*dby(j)
+         end do
+      end do
+
+   contains
+
+      pure function cross(e, f) result(r)
+         real(dp), intent(in) :: e(3), f(3)
+         real(dp) :: r(3)
+         r = [e(2)*f(3) - e(3)*f(2), e(3)*f(1) - e(1)*f(3), e(1)*f(2) - e(2)*f(1)]
+      end function cross
+
+      !> [e]x, the matrix of f -> e x f.
+      pure function cross_matrix(e) result(r)
+         real(dp), intent(in) :: e(3)
+         real(dp) :: r(3, 3)
+         r(1, 1) = 0
+         r(2, 1) = e(3)
+         r(3, 1) = -e(2)
+         r(1, 2) = -e(3)
+         r(2, 2) = 0
+         r(3, 2) = e(1)
+         r(1, 3) = e(2)
+         r(2, 3) = -e(1)
+         r(3, 3) = 0
+      end function cross_matrix
+   end subroutine discrete_force_derivatives
+
+   !> R(c) = th / sin th of the turning with cos th = c, sin^2 th = s2, and its first two
+   !> derivatives in c: R' = (c R - 1) / s2, R'' = (R + 3 c R') / s2, by their series in
+   !> w = 1 - c = s2 / (1 + c) when w < 0.01 (truncation below 1e-15).
+   pure subroutine turning_factors(s2, c, r0, r1, r2)
+      real(dp), intent(in) :: s2, c
+      real(dp), intent(out) :: r0, r1, r2
+      real(dp), parameter :: a0(0:8) = [1.0_dp, 1.0_dp/3, 2.0_dp/15, 2.0_dp/35, 8.0_dp/315, 8.0_dp/693, 16.0_dp/3003, &
+                                        16.0_dp/6435, 128.0_dp/109395]
+      real(dp), parameter :: a1(0:7) = [-1.0_dp/3, -4.0_dp/15, -6.0_dp/35, -32.0_dp/315, -40.0_dp/693, -32.0_dp/1001, &
+                                        -112.0_dp/6435, -1024.0_dp/109395]
+      real(dp), parameter :: a2(0:6) = [4.0_dp/15, 12.0_dp/35, 32.0_dp/105, 160.0_dp/693, 160.0_dp/1001, 224.0_dp/2145, &
+                                        7168.0_dp/109395]
+      real(dp) :: w, s
+      integer :: i
+      w = 2
+      if (c > 0) w = s2/(1 + c)
+      if (w < 0.01_dp) then
+         r0 = a0(8)
+         do i = 7, 0, -1
+            r0 = r0*w + a0(i)
+         end do
+         r1 = a1(7)
+         do i = 6, 0, -1
+            r1 = r1*w + a1(i)
+         end do
+         r2 = a2(6)
+         do i = 5, 0, -1
+            r2 = r2*w + a2(i)
+         end do
+      else
+         s = sqrt(s2)
+         r0 = atan2(s, c)/s
+         r1 = (c*r0 - 1)/s2
+         r2 = (r0 + 3*c*r1)/s2
+      end if
+   end subroutine turning_factors
+
+   !> The rotation vector phi(x, y) = th u / |u|, u = x x y / (|x| |y|), of the smallest rotation
+   !> taking the direction of x to that of y (|phi| = th; smooth through th = 0), with its
+   !> Jacobians d phi / dx and d phi / dy when asked.
    pure subroutine rotation_vector_r(x, y, phi, jx, jy)
       real(dp), intent(in) :: x(3), y(3)
       real(dp), intent(out) :: phi(3)
@@ -955,16 +1021,21 @@ contains
       end if
    end subroutine rotation_vector_r
 
-   !> discrete_jacobian in reals (values only, the same bits).
-   pure function discrete_jacobian_r(x0, x1, y, sign, delta) result(jac)
+   !> Discrete Jacobian jac between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
+   !> (see the module header), given its change delta = h(x1) - h(x0): jac (x1 - x0) = delta
+   !> exactly. jmid: sign d phi / dx at the mid vector, the part without the bracket.
+   pure subroutine discrete_jacobian_r(x0, x1, y, sign, delta, jac, jmid)
       real(dp), intent(in) :: x0(3), x1(3), y(3)
       real(dp), intent(in) :: sign
       real(dp), intent(in) :: delta(3)
-      real(dp) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
+      real(dp), intent(out) :: jac(3, 3)
+      real(dp), intent(out), optional :: jmid(3, 3)
+      real(dp) :: xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
       integer :: i, j
       xm = (x0 + x1)*0.5_dp
       call rotation_vector_r(xm, y, phi, jac)
       if (sign < 0) jac = -jac
+      if (present(jmid)) jmid = jac
       c = [x0(2)*x1(3) - x0(3)*x1(2), x0(3)*x1(1) - x0(1)*x1(3), x0(1)*x1(2) - x0(2)*x1(1)]
       cc = c(1)*c(1) + c(2)*c(2) + c(3)*c(3)
       if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
@@ -978,9 +1049,10 @@ contains
             jac(i, j) = jac(i, j) + bracket(i)*w(j)
          end do
       end do
-   end function discrete_jacobian_r
+   end subroutine discrete_jacobian_r
 
-   !> bend_coefficient in reals (the value only, the same bits).
+   !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k from q0 = th0^2 and q1 = th1^2: a polynomial
+   !> in q near the straight state, from the divided difference in th otherwise.
    pure real(dp) function bend_coefficient_r(self, k, q0, q1) result(coef)
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
@@ -1538,25 +1610,9 @@ contains
       r%d = 0.5_dp*a%d/r%v
    end function sqrt_d
 
-   !> atan2(y, x) with d = (x dy - y dx) / (x^2 + y^2).
-   elemental type(dual) function atan2_dd(y, x) result(r)
-      type(dual), intent(in) :: y, x
-      r%v = atan2(y%v, x%v)
-      r%d = (x%v*y%d - y%v*x%d)/(x%v**2 + y%v**2)
-   end function atan2_dd
-
    !> Dot product of two 3-vectors.
    pure type(dual) function dot3(a, b) result(r)
       type(dual), intent(in) :: a(3), b(3)
       r = a(1)*b(1) + a(2)*b(2) + a(3)*b(3)
    end function dot3
-
-   !> Cross product of two 3-vectors.
-   pure function cross3(a, b) result(r)
-      type(dual), intent(in) :: a(3), b(3)
-      type(dual) :: r(3)
-      r(1) = a(2)*b(3) - a(3)*b(2)
-      r(2) = a(3)*b(1) - a(1)*b(3)
-      r(3) = a(1)*b(2) - a(2)*b(1)
-   end function cross3
 end module xcable_model_rod3d

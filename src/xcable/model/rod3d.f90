@@ -48,9 +48,10 @@
 !> the ends, and a planar run reproduces the planar rod as long as no turning
 !> angle passes through zero within a step (the planar rod's angle is signed,
 !> this one is not). Below a rotation of 1e-8 rad in a step the bracket
-!> (third order in the rotation) is dropped. The bending terms and their
-!> exact derivatives are written once in forward-mode dual numbers (defined
-!> at the end of this module); the rest of the Jacobian is written out.
+!> (third order in the rotation) is dropped. The Jacobian is written out,
+!> the bending blocks of a step included (step_bending_jacobian: first and
+!> second derivatives of the rotation vector); the statics' bending blocks
+!> use forward-mode dual numbers (defined at the end of this module).
 !>
 !> Newton's vector holds the positions node after node (x, y, z), then the
 !> twist angles psi_1 .. psi_n. The momentum rows of node k reach nodes k-2 ..
@@ -79,8 +80,8 @@ module xcable_model_rod3d
    public :: paper_euler_parameters
 
    ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
-   ! (the two new cell vectors of a node). They live in this module so that the compiler can
-   ! inline their arithmetic (a separate module cost a factor of several).
+   ! (the two cell vectors of a node; the statics' bending blocks). They live in this module so
+   ! that the compiler can inline their arithmetic (a separate module cost a factor of several).
    !> Number of derivative slots.
    integer, parameter :: dual_slots = 6
 
@@ -106,9 +107,6 @@ module xcable_model_rod3d
    end interface
    interface sqrt
       module procedure sqrt_d
-   end interface
-   interface atan2
-      module procedure atan2_dd
    end interface
 
 
@@ -144,7 +142,11 @@ module xcable_model_rod3d
       real(dp) :: tension_ref = 1, length_ref = 1
       !> Old level: positions, velocities, M V (3, n), cell vectors (3, n - 1), lengths, turning angles.
       real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
+      !> Old level: rotation vectors phi(e0_k-1, e0_k) of the interior nodes' turnings (3, n).
+      real(dp), allocatable :: phi_old(:, :)
       !> New level: cell vectors, lengths, turning angles, cell forces (3, n - 1), work (3, n), velocities.
+      !> A step evaluation sets th1 only when it does not form the Jacobian (Newton's last residual
+      !> and the ledger's evaluation are such); the bending in a step does not use it.
       real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :), v1(:, :)
       !> dN_c/de_c' for c' = c-1, c, c+1 (3, 3, -1:1, n - 1).
       real(dp), allocatable :: block(:, :, :, :)
@@ -280,6 +282,9 @@ contains
       self%tension_ref = tension_ref
       self%length_ref = sum(self%ds)/(n - 1)
       allocate (self%r0(3, n), self%v0(3, n), self%mv0(3, n), self%e0(3, n - 1), self%l0(n - 1), self%th0(n))
+      if (allocated(self%phi_old)) deallocate (self%phi_old)
+      allocate (self%phi_old(3, n))
+      self%phi_old = 0
       allocate (self%e1(3, n - 1), self%l1(n - 1), self%th1(n), self%force(3, n - 1), self%force_node(3, n))
       allocate (self%v1(3, n), self%block(3, 3, -1:1, n - 1), self%mass(0:2, n))
       if (allocated(self%load_node)) deallocate (self%load_node, self%load_block)
@@ -334,107 +339,6 @@ contains
       w = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
       th = atan2(norm2(w), dot_product(a, b))
    end function turning_angle
-
-   !> The rotation vector phi(x, y) = th u / |u|, u = x x y / (|x| |y|), of the smallest rotation
-   !> taking the direction of x to that of y (|phi| = th; smooth through th = 0), with its
-   !> Jacobian d phi / dx when asked.
-   pure subroutine rotation_vector(x, y, phi, jac)
-      type(dual), intent(in) :: x(3), y(3)
-      type(dual), intent(out) :: phi(3)
-      type(dual), intent(out), optional :: jac(3, 3)
-      type(dual) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, grad_rho(3), grad_s2(3), grad_c(3), yu(3)
-      type(dual) :: inv_xy, inv_xx, yr(3)
-      integer :: i, j
-      nx = sqrt(dot3(x, x))
-      ny = sqrt(dot3(y, y))
-      u = cross3(x, y)/(nx*ny)
-      s2 = dot3(u, u)
-      c = dot3(x, y)/(nx*ny)
-      ! rho = th / sin(th) = atan2(s, c) / s; a series in z = tan^2(th) near th = 0.
-      if (c%v > 0 .and. s2%v < 1.0e-5_dp*c%v**2) then
-         z = s2/(c*c)
-         rho = (1.0_dp - z/3.0_dp + z*z/5.0_dp - z*z*z/7.0_dp)/c
-         rho_s2 = (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))/(c*c*c)
-         rho_c = -rho/c + (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))*(-2.0_dp)*z/(c*c)
-      else
-         s = sqrt(s2)
-         rho = atan2(s, c)/s
-         rho_s2 = (c/(s2 + c*c) - rho)/(2.0_dp*s2)
-         rho_c = -1.0_dp/(s2 + c*c)
-      end if
-      phi = u*rho
-      if (.not. present(jac)) return
-      ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2
-      inv_xy = 1.0_dp/(nx*ny)
-      inv_xx = 1.0_dp/(nx*nx)
-      yu = cross3(y, u)
-      grad_s2 = (yu*inv_xy - x*(s2*inv_xx))*2.0_dp
-      grad_c = y*inv_xy - x*(c*inv_xx)
-      grad_rho = grad_s2*rho_s2 + grad_c*rho_c - x*(rho*inv_xx)
-      do j = 1, 3
-         do i = 1, 3
-            jac(i, j) = u(i)*grad_rho(j)
-         end do
-      end do
-      ! (dx x y)_i = eps_ijk dx_j y_k: the cross-product matrix of -y.
-      yr = y*(rho*inv_xy)
-      jac(1, 2) = jac(1, 2) + yr(3)
-      jac(1, 3) = jac(1, 3) - yr(2)
-      jac(2, 1) = jac(2, 1) - yr(3)
-      jac(2, 3) = jac(2, 3) + yr(1)
-      jac(3, 1) = jac(3, 1) + yr(2)
-      jac(3, 2) = jac(3, 2) - yr(1)
-   end subroutine rotation_vector
-
-   !> Discrete Jacobian between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
-   !> (see the module header), given its change delta = h(x1) - h(x0): J with
-   !> J (x1 - x0) = delta exactly.
-   pure function discrete_jacobian(x0, x1, y, sign, delta) result(jac)
-      real(dp), intent(in) :: x0(3)
-      type(dual), intent(in) :: x1(3), y(3)
-      real(dp), intent(in) :: sign
-      type(dual), intent(in) :: delta(3)
-      type(dual) :: jac(3, 3), xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
-      integer :: i, j
-      xm = (constant(x0) + x1)*0.5_dp
-      call rotation_vector(xm, y, phi, jac)
-      if (sign < 0) jac = -jac
-      c = cross3(constant(x0), x1)
-      cc = dot3(c, c)
-      if (cc%v <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)%v**2 + x1(2)%v**2 + x1(3)%v**2)) return
-      dx = x1 - constant(x0)
-      do i = 1, 3
-         bracket(i) = delta(i) - dot3(jac(i, :), dx)
-      end do
-      w = cross3(c, xm)/cc
-      do j = 1, 3
-         do i = 1, 3
-            jac(i, j) = jac(i, j) + bracket(i)*w(j)
-         end do
-      end do
-   end function discrete_jacobian
-
-   !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k as a dual number of q1 = th1^2 (q0 = th0^2):
-   !> a polynomial in q near the straight state, from the divided difference in th otherwise.
-   pure type(dual) function bend_coefficient(self, k, q0, q1) result(coef)
-      class(rod3d_piece), intent(in) :: self
-      integer, intent(in) :: k
-      real(dp), intent(in) :: q0
-      type(dual), intent(in) :: q1
-      real(dp) :: th0, th1, m, dm, big
-      big = 2*self%ei/self%dual_length(k)
-      th0 = sqrt(q0)
-      th1 = sqrt(q1%v)
-      if (th0 + th1 < 1.0e-3_dp) then
-         ! B = K tan^2(th / 2) = K (q/4 + q^2/24 + 17 q^3/2880 + 31 q^4/40320 + ...), K = 2 EI / h.
-         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
-                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
-      else
-         call bend_divided(self, k, th0, th1, m, dm)
-         coef%v = m/(th0 + th1)
-         coef%d = (dm - coef%v)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))*q1%d
-      end if
-   end function bend_coefficient
 
    !> Bending energy 2 EI tan^2(th / 2) / h_k of interior node k, J.
    pure real(dp) function bend_energy(self, k, th)
@@ -503,6 +407,26 @@ contains
       end do
    end subroutine rod3d_geometry
 
+   !> Cell vectors e_c = (R_c+1 - R_c) / ds_c and their lengths (the geometry without the
+   !> turning angles), on explicit-shape arrays.
+   pure subroutine cell_vectors(n, r, ds, e, l)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: r(3, n), ds(n - 1)
+      real(dp), intent(out) :: e(3, n - 1), l(n - 1)
+      integer :: c
+      do c = 1, n - 1
+         e(:, c) = (r(:, c + 1) - r(:, c))/ds(c)
+         l(c) = norm2(e(:, c))
+      end do
+   end subroutine cell_vectors
+
+   !> a = 0 for a contiguous array of m values.
+   pure subroutine clear(m, a)
+      integer, intent(in) :: m
+      real(dp), intent(out) :: a(m)
+      a = 0
+   end subroutine clear
+
    !> The fold check of the step control (driver/rod_run.f90, check_folds) in
    !> 3-D: for each interior node k, |phi(e1_k-1, e1_k) - phi(e0_k-1, e0_k) -
    !> (rho_k - rho_k-1)|, with phi the rotation vector of the node's turning
@@ -535,13 +459,11 @@ contains
 
    contains
 
-      !> The rotation vector phi(a, b) (rotation_vector) as reals.
+      !> The rotation vector phi(a, b) (rotation_vector_r).
       pure function rotation(a, b) result(phi)
          real(dp), intent(in) :: a(3), b(3)
          real(dp) :: phi(3)
-         type(dual) :: p(3)
-         call rotation_vector(constant(a), constant(b), p)
-         phi = p%v
+         call rotation_vector_r(a, b, phi)
       end function rotation
    end subroutine rod3d_turning_folds
 
@@ -689,10 +611,14 @@ contains
       class(rod3d_piece), intent(inout) :: self
       !> Positions and velocities at the old level (3, n).
       real(dp), intent(in) :: r0(:, :), v0(:, :)
+      integer :: k
       self%r0 = r0
       self%v0 = v0
       call self%mass_times(v0, self%mv0)
       call self%geometry(r0, self%e0, self%l0, self%th0)
+      do k = 2, self%n - 1
+         call rotation_vector_r(self%e0(:, k - 1), self%e0(:, k), self%phi_old(:, k))
+      end do
    end subroutine rod3d_prepare_step
 
    !> New velocities V^n+1 = [(R^n+1 - R^n)/dt - (1 - theta) V^n] / theta.
@@ -722,14 +648,21 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n, k, i
-      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n)
-      type(dual) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
-      type(dual) :: ja(3, 3), jb(3, 3), fa(3), fb(3)
+      integer :: c, n, k, i, j
+      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n), f, fp, fpp
       n = self%n
       call unpack(x, r, psi)
-      call self%geometry(r, self%e1, self%l1, self%th1)
-      self%block = 0
+      call cell_vectors(n, r, self%ds, self%e1, self%l1)
+      if (with_jacobian) then
+         call clear(size(self%block), self%block)
+      else
+         ! Turning angles of the state (for the drivers' records), in the evaluations without the Jacobian.
+         do k = 2, n - 1
+            self%th1(k) = turning_angle(self%e1(:, k - 1), self%e1(:, k))
+         end do
+         self%th1(1) = 0
+         self%th1(n) = 0
+      end if
       do c = 1, n - 1
          associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
             eps0 = l0 - 1
@@ -737,8 +670,10 @@ contains
             h = eps1 - eps0
             if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
-               q = self%law%tension(mid) + self%law%stiffness_slope(mid)*h*h/24
-               dq = 0.5_dp*self%law%stiffness(mid) + self%law%stiffness_slope(mid)*h/12
+               ! f, f', f'' at mid in one call (the tanh law: one tanh and one cosh, the same bits).
+               call self%law%tension_stiffness_slope(mid, f, fp, fpp)
+               q = f + fpp*h*h/24
+               dq = 0.5_dp*fp + fpp*h/12
             else
                q = (self%law%strain_energy(eps1) - self%law%strain_energy(eps0))/h
                dq = (self%law%tension(eps1) - q)/h
@@ -748,42 +683,392 @@ contains
             lsum = l0 + l1
             wsum = e0 + e1
             self%force(:, c) = q*wsum/lsum
-            if (with_jacobian) self%block(:, :, 0, c) = outer3(wsum/lsum, dq*e1/l1) &
-                                                        + q*(identity3()/lsum - outer3(wsum, e1/l1)/lsum**2)
+            if (with_jacobian) then
+               ! outer(wsum / lsum, dq e1 / l1) + q (I / lsum - outer(wsum, e1 / l1) / lsum^2), written out.
+               do j = 1, 3
+                  do i = 1, 3
+                     self%block(i, j, 0, c) = wsum(i)/lsum*(dq*e1(j)/l1) &
+                                              + q*(merge(1.0_dp, 0.0_dp, i == j)/lsum - wsum(i)*(e1(j)/l1)/lsum**2)
+                  end do
+               end do
+            end if
          end associate
       end do
-      do k = 2, n - 1
-         do i = 1, 3
-            a(i) = seeded(self%e1(i, k - 1), i)
-            b(i) = seeded(self%e1(i, k), i + 3)
+      if (with_jacobian) then
+         do k = 2, n - 1
+            call step_bending_jacobian(self, k)
          end do
-         ! B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) + Jb (b1 - b0):
-         ! Ja carries the mean of the changes of a at b0 and at b1, Jb that of the changes of b at
-         ! a0 and at a1, each about the Jacobian at the mid vectors.
-         a0 = constant(self%e0(:, k - 1))
-         b0 = constant(self%e0(:, k))
-         call rotation_vector(a0, b0, phi0)
-         call rotation_vector(a, b, phi1)
-         call rotation_vector(a, b0, phi_a1b0)
-         call rotation_vector(a0, b, phi_a0b1)
-         q1 = dot3(phi1, phi1)
-         coef = bend_coefficient(self, k, phi0(1)%v**2 + phi0(2)%v**2 + phi0(3)%v**2, q1)
-         psum = (phi1 + phi0)*coef
-         ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
-         ja = discrete_jacobian(self%e0(:, k - 1), a, (b0 + b)*0.5_dp, 1.0_dp, &
-                                ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp)
-         jb = discrete_jacobian(self%e0(:, k), b, (a0 + a)*0.5_dp, -1.0_dp, &
-                                ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp)
-         do i = 1, 3
-            fa(i) = dot3(ja(:, i), psum)
-            fb(i) = dot3(jb(:, i), psum)
+      else
+         do k = 2, n - 1
+            call step_bending(self, k)
          end do
-         call add_node_bending(self, k, fa, fb, with_jacobian)
-      end do
+      end if
       call add_couples(self, t0, t0 + dt, .true., with_jacobian)
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
    end subroutine rod3d_step_system
+
+   !> Node k's bending force in a step, values only (the step_bending_jacobian's forces to the
+   !> same bits): B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) +
+   !> Jb (b1 - b0), Ja carrying the mean of the changes of a at b0 and at b1, Jb that of the
+   !> changes of b at a0 and at a1, each about the Jacobian at the mid vectors.
+   subroutine step_bending(self, k)
+      class(rod3d_piece), intent(inout) :: self
+      integer, intent(in) :: k
+      real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
+      real(dp) :: ja(3, 3), jb(3, 3)
+      integer :: i
+      a = self%e1(:, k - 1)
+      b = self%e1(:, k)
+      a0 = self%e0(:, k - 1)
+      b0 = self%e0(:, k)
+      phi0 = self%phi_old(:, k)
+      call rotation_vector_r(a, b, phi1)
+      call rotation_vector_r(a, b0, phi_a1b0)
+      call rotation_vector_r(a0, b, phi_a0b1)
+      q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
+      coef = bend_coefficient_r(self, k, phi0(1)**2 + phi0(2)**2 + phi0(3)**2, q1)
+      psum = (phi1 + phi0)*coef
+      ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
+      call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp, ja)
+      call discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp, jb)
+      do i = 1, 3
+         self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
+                                /self%ds(k - 1)
+         self%force(i, k) = self%force(i, k) + (jb(1, i)*psum(1) + jb(2, i)*psum(2) + jb(3, i)*psum(3))/self%ds(k)
+      end do
+   end subroutine step_bending
+
+   !> Node k's bending force in a step and its blocks. The forces are step_bending's (the same
+   !> operations, so the same bits); their derivatives with respect to the new a and b are written
+   !> out: those of the rotation vectors (rotation_vector_r), of the bending coefficient, and of
+   !> each discrete Jacobian's force J^T p (discrete_force_derivatives).
+   subroutine step_bending_jacobian(self, k)
+      class(rod3d_piece), intent(inout) :: self
+      integer, intent(in) :: k
+      real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, q0, coef, dcoef, psum(3)
+      real(dp) :: ja(3, 3), jb(3, 3), j1a(3, 3), j1b(3, 3), jab0(3, 3), ja0b(3, 3), dpa(3, 3), dpb(3, 3), dq(6)
+      real(dp) :: ja_mid(3, 3), jb_mid(3, 3), delta_a(3), delta_b(3), dfa_da(3, 3), dfa_db(3, 3), dfb_db(3, 3), dfb_da(3, 3)
+      integer :: i, j
+      a = self%e1(:, k - 1)
+      b = self%e1(:, k)
+      a0 = self%e0(:, k - 1)
+      b0 = self%e0(:, k)
+      phi0 = self%phi_old(:, k)
+      call rotation_vector_r(a, b, phi1, j1a, j1b)
+      call rotation_vector_r(a, b0, phi_a1b0, jab0)
+      call rotation_vector_r(a0, b, phi_a0b1, jy=ja0b)
+      q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
+      q0 = phi0(1)**2 + phi0(2)**2 + phi0(3)**2
+      call bend_coefficient_derivative(self, k, q0, q1, coef, dcoef)
+      psum = (phi1 + phi0)*coef
+      delta_a = ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp
+      delta_b = ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp
+      call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, delta_a, ja, ja_mid)
+      call discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, delta_b, jb, jb_mid)
+      do i = 1, 3
+         self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
+                                /self%ds(k - 1)
+         self%force(i, k) = self%force(i, k) + (jb(1, i)*psum(1) + jb(2, i)*psum(2) + jb(3, i)*psum(3))/self%ds(k)
+      end do
+      ! d psum = coef d phi1 + (phi1 + phi0) coef'(q1) 2 phi1^T d phi1.
+      do j = 1, 3
+         dq(j) = 2*dcoef*(phi1(1)*j1a(1, j) + phi1(2)*j1a(2, j) + phi1(3)*j1a(3, j))
+         dq(j + 3) = 2*dcoef*(phi1(1)*j1b(1, j) + phi1(2)*j1b(2, j) + phi1(3)*j1b(3, j))
+      end do
+      do j = 1, 3
+         dpa(:, j) = coef*j1a(:, j) + (phi1 + phi0)*dq(j)
+         dpb(:, j) = coef*j1b(:, j) + (phi1 + phi0)*dq(j + 3)
+      end do
+      call discrete_force_derivatives(a0, a, b0, b, 1.0_dp, ja_mid, delta_a, 0.5_dp*(jab0 + j1a), 0.5_dp*(j1b - ja0b), &
+                                      psum, dpa, dpb, dfa_da, dfa_db)
+      call discrete_force_derivatives(b0, b, a0, a, -1.0_dp, jb_mid, delta_b, 0.5_dp*(ja0b + j1b), 0.5_dp*(j1a - jab0), &
+                                      psum, dpb, dpa, dfb_db, dfb_da)
+      self%block(:, :, 0, k - 1) = self%block(:, :, 0, k - 1) + dfa_da/self%ds(k - 1)
+      self%block(:, :, 1, k - 1) = self%block(:, :, 1, k - 1) + dfa_db/self%ds(k - 1)
+      self%block(:, :, -1, k) = self%block(:, :, -1, k) + dfb_da/self%ds(k)
+      self%block(:, :, 0, k) = self%block(:, :, 0, k) + dfb_db/self%ds(k)
+   end subroutine step_bending_jacobian
+
+   !> bend_coefficient_r (the same operations) and its derivative in q1.
+   pure subroutine bend_coefficient_derivative(self, k, q0, q1, coef, dcoef)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: q0, q1
+      real(dp), intent(out) :: coef, dcoef
+      real(dp) :: th0, th1, m, dm, big
+      big = 2*self%ei/self%dual_length(k)
+      th0 = sqrt(q0)
+      th1 = sqrt(q1)
+      if (th0 + th1 < 1.0e-3_dp) then
+         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
+                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
+         dcoef = (1.0_dp/24.0_dp + (2*q1 + q0)*(17.0_dp/2880.0_dp) &
+                  + ((q1*q1 + q0*q0) + (q1 + q0)*2*q1)*(31.0_dp/40320.0_dp))*big
+      else
+         call bend_divided(self, k, th0, th1, m, dm)
+         coef = m/(th0 + th1)
+         dcoef = (dm - coef)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))
+      end if
+   end subroutine bend_coefficient_derivative
+
+   !> The derivatives of f = J^T p, J the discrete Jacobian of discrete_jacobian_r(x0, x1, y, sign,
+   !> delta) with y = (y0 + y1) / 2 (jx: its sign dphi/dx at the mid vectors, the J without the
+   !> bracket), with respect to x1 (dfx) and y1 (dfy), given the derivatives
+   !> of delta (ddx, ddy) and of p (dpx, dpy). With J = sign dphi/dx (x_mid, y) + br w^T,
+   !> br = delta - sign dphi/dx dx, f = g + w beta with g = sign dphi/dx^T p and beta = br . p =
+   !> delta . p - g . dx, so the only second derivatives needed are the Hessian of the scalar
+   !> p . phi(x, y) in x and in x and y. Writing phi = R(c) u, u = x^ x y^, c = x^ . y^ (unit
+   !> vectors; R = th / sin th), p . phi = R(c) T with T = p . u, and its gradient in x is
+   !> Px v, Px = (I - x^ x^^T) / |x|, v = R' T y^ + R (y^ x p). Then
+   !>
+   !>     Hxx = [Q (R'' T y^ y^^T + R' (y^ q^T + q y^^T)) Px - (x^ . v) Px - x^ (Px v)^T - (Px v) x^^T] / |x|,
+   !>     Hxy = Px [R'' T y^ x^^T + R' y^ m^T + R' T I + R' q x^^T - R [p]x] Py,
+   !>
+   !> with Q = I - x^ x^^T, q = y^ x p, m = p x x^, [p]x the cross-product matrix of p.
+   pure subroutine discrete_force_derivatives(x0, x1, y0, y1, sign, jx, delta, ddx, ddy, p, dpx, dpy, dfx, dfy)
+      real(dp), intent(in) :: x0(3), x1(3), y0(3), y1(3), sign, jx(3, 3), delta(3), ddx(3, 3), ddy(3, 3), p(3), &
+                              dpx(3, 3), dpy(3, 3)
+      real(dp), intent(out) :: dfx(3, 3), dfy(3, 3)
+      real(dp) :: xm(3), y(3), nx, ny, xh(3), yh(3), u(3), s2, c, r0, r1, r2, t, q(3), m(3), v(3)
+      real(dp) :: qx(3, 3), px(3, 3), py(3, 3), mm(3, 3), nn(3, 3), hxx(3, 3), hxy(3, 3), pv(3), g(3), xv
+      real(dp) :: cv(3), cc, w(3), dx(3), beta, dbx(3), dby(3), dcm(3, 3), dcc(3), x0x(3, 3), xmx(3, 3)
+      integer :: i, j
+      xm = (x0 + x1)*0.5_dp
+      y = (y0 + y1)*0.5_dp
+      nx = sqrt(xm(1)**2 + xm(2)**2 + xm(3)**2)
+      ny = sqrt(y(1)**2 + y(2)**2 + y(3)**2)
+      xh = xm/nx
+      yh = y/ny
+      u = cross(xh, yh)
+      s2 = u(1)**2 + u(2)**2 + u(3)**2
+      c = xh(1)*yh(1) + xh(2)*yh(2) + xh(3)*yh(3)
+      call turning_factors(s2, c, r0, r1, r2)
+      t = p(1)*u(1) + p(2)*u(2) + p(3)*u(3)
+      q = cross(yh, p)
+      m = cross(p, xh)
+      v = r1*t*yh + r0*q
+      xv = xh(1)*v(1) + xh(2)*v(2) + xh(3)*v(3)
+      do j = 1, 3
+         do i = 1, 3
+            qx(i, j) = merge(1.0_dp, 0.0_dp, i == j) - xh(i)*xh(j)
+            py(i, j) = (merge(1.0_dp, 0.0_dp, i == j) - yh(i)*yh(j))/ny
+            mm(i, j) = r2*t*yh(i)*yh(j) + r1*(yh(i)*q(j) + q(i)*yh(j))
+            nn(i, j) = r2*t*yh(i)*xh(j) + r1*yh(i)*m(j) + r1*q(i)*xh(j)
+         end do
+         nn(j, j) = nn(j, j) + r1*t
+      end do
+      px = qx/nx
+      nn = nn - r0*cross_matrix(p)
+      pv = matmul(px, v)
+      hxx = matmul(qx, matmul(mm, px)) - xv*px
+      do j = 1, 3
+         do i = 1, 3
+            hxx(i, j) = (hxx(i, j) - xh(i)*pv(j) - pv(i)*xh(j))/nx
+         end do
+      end do
+      hxy = matmul(px, matmul(nn, py))
+      ! g = J^T p and its derivatives (J with its sign; d x_mid / d x1 = d y / d y1 = I / 2).
+      g = matmul(p, jx)
+      dfx = 0.5_dp*sign*hxx + matmul(transpose(jx), dpx)
+      dfy = 0.5_dp*sign*hxy + matmul(transpose(jx), dpy)
+      cv = cross(x0, x1)
+      cc = cv(1)*cv(1) + cv(2)*cv(2) + cv(3)*cv(3)
+      if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
+      dx = x1 - x0
+      w = cross(cv, xm)/cc
+      beta = dot_product(delta, p) - dot_product(g, dx)
+      dbx = matmul(p, ddx) + matmul(delta, dpx) - matmul(dx, dfx) - g
+      dby = matmul(p, ddy) + matmul(delta, dpy) - matmul(dx, dfy)
+      ! w = (c x x_mid) / |c|^2, c = x0 x x1: d(c x x_mid) = (-[x_mid]x [x0]x + [c]x / 2) dx1, d|c|^2 = 2 c^T [x0]x dx1.
+      x0x = cross_matrix(x0)
+      xmx = cross_matrix(xm)
+      dcm = -matmul(xmx, x0x) + 0.5_dp*cross_matrix(cv)
+      dcc = 2*matmul(cv, x0x)
+      do j = 1, 3
+         do i = 1, 3
+            dfx(i, j) = dfx(i, j) + (dcm(i, j) - w(i)*dcc(j))/cc*beta + w(i)*dbx(j)
+            dfy(i, j) = dfy(i, j) + w(i)*dby(j)
+         end do
+      end do
+
+   contains
+
+      pure function cross(e, f) result(r)
+         real(dp), intent(in) :: e(3), f(3)
+         real(dp) :: r(3)
+         r = [e(2)*f(3) - e(3)*f(2), e(3)*f(1) - e(1)*f(3), e(1)*f(2) - e(2)*f(1)]
+      end function cross
+
+      !> [e]x, the matrix of f -> e x f.
+      pure function cross_matrix(e) result(r)
+         real(dp), intent(in) :: e(3)
+         real(dp) :: r(3, 3)
+         r(1, 1) = 0
+         r(2, 1) = e(3)
+         r(3, 1) = -e(2)
+         r(1, 2) = -e(3)
+         r(2, 2) = 0
+         r(3, 2) = e(1)
+         r(1, 3) = e(2)
+         r(2, 3) = -e(1)
+         r(3, 3) = 0
+      end function cross_matrix
+   end subroutine discrete_force_derivatives
+
+   !> R(c) = th / sin th of the turning with cos th = c, sin^2 th = s2, and its first two
+   !> derivatives in c: R' = (c R - 1) / s2, R'' = (R + 3 c R') / s2, by their series in
+   !> w = 1 - c = s2 / (1 + c) when w < 0.01 (truncation below 1e-15).
+   pure subroutine turning_factors(s2, c, r0, r1, r2)
+      real(dp), intent(in) :: s2, c
+      real(dp), intent(out) :: r0, r1, r2
+      real(dp), parameter :: a0(0:8) = [1.0_dp, 1.0_dp/3, 2.0_dp/15, 2.0_dp/35, 8.0_dp/315, 8.0_dp/693, 16.0_dp/3003, &
+                                        16.0_dp/6435, 128.0_dp/109395]
+      real(dp), parameter :: a1(0:7) = [-1.0_dp/3, -4.0_dp/15, -6.0_dp/35, -32.0_dp/315, -40.0_dp/693, -32.0_dp/1001, &
+                                        -112.0_dp/6435, -1024.0_dp/109395]
+      real(dp), parameter :: a2(0:6) = [4.0_dp/15, 12.0_dp/35, 32.0_dp/105, 160.0_dp/693, 160.0_dp/1001, 224.0_dp/2145, &
+                                        7168.0_dp/109395]
+      real(dp) :: w, s
+      integer :: i
+      w = 2
+      if (c > 0) w = s2/(1 + c)
+      if (w < 0.01_dp) then
+         r0 = a0(8)
+         do i = 7, 0, -1
+            r0 = r0*w + a0(i)
+         end do
+         r1 = a1(7)
+         do i = 6, 0, -1
+            r1 = r1*w + a1(i)
+         end do
+         r2 = a2(6)
+         do i = 5, 0, -1
+            r2 = r2*w + a2(i)
+         end do
+      else
+         s = sqrt(s2)
+         r0 = atan2(s, c)/s
+         r1 = (c*r0 - 1)/s2
+         r2 = (r0 + 3*c*r1)/s2
+      end if
+   end subroutine turning_factors
+
+   !> The rotation vector phi(x, y) = th u / |u|, u = x x y / (|x| |y|), of the smallest rotation
+   !> taking the direction of x to that of y (|phi| = th; smooth through th = 0), with its
+   !> Jacobians d phi / dx and d phi / dy when asked.
+   pure subroutine rotation_vector_r(x, y, phi, jx, jy)
+      real(dp), intent(in) :: x(3), y(3)
+      real(dp), intent(out) :: phi(3)
+      real(dp), intent(out), optional :: jx(3, 3), jy(3, 3)
+      real(dp) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, g(3), inv_xy, inv_xx, inv_yy, w(3), r(3)
+      integer :: i, j
+      nx = sqrt(x(1)*x(1) + x(2)*x(2) + x(3)*x(3))
+      ny = sqrt(y(1)*y(1) + y(2)*y(2) + y(3)*y(3))
+      u(1) = (x(2)*y(3) - x(3)*y(2))/(nx*ny)
+      u(2) = (x(3)*y(1) - x(1)*y(3))/(nx*ny)
+      u(3) = (x(1)*y(2) - x(2)*y(1))/(nx*ny)
+      s2 = u(1)*u(1) + u(2)*u(2) + u(3)*u(3)
+      c = (x(1)*y(1) + x(2)*y(2) + x(3)*y(3))/(nx*ny)
+      if (c > 0 .and. s2 < 1.0e-5_dp*c**2) then
+         z = s2/(c*c)
+         rho = (1.0_dp - z/3.0_dp + z*z/5.0_dp - z*z*z/7.0_dp)/c
+         rho_s2 = (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))/(c*c*c)
+         rho_c = -rho/c + (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))*(-2.0_dp)*z/(c*c)
+      else
+         s = sqrt(s2)
+         rho = atan2(s, c)/s
+         rho_s2 = (c/(s2 + c*c) - rho)/(2.0_dp*s2)
+         rho_c = -1.0_dp/(s2 + c*c)
+      end if
+      phi = u*rho
+      if (.not. (present(jx) .or. present(jy))) return
+      inv_xy = 1.0_dp/(nx*ny)
+      if (present(jx)) then
+         ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2; (dx x y) = -[y]x dx.
+         inv_xx = 1.0_dp/(nx*nx)
+         w = [y(2)*u(3) - y(3)*u(2), y(3)*u(1) - y(1)*u(3), y(1)*u(2) - y(2)*u(1)]
+         g = (w*inv_xy - x*(s2*inv_xx))*(2.0_dp*rho_s2) + (y*inv_xy - x*(c*inv_xx))*rho_c - x*(rho*inv_xx)
+         do j = 1, 3
+            do i = 1, 3
+               jx(i, j) = u(i)*g(j)
+            end do
+         end do
+         r = y*(rho*inv_xy)
+         jx(1, 2) = jx(1, 2) + r(3)
+         jx(1, 3) = jx(1, 3) - r(2)
+         jx(2, 1) = jx(2, 1) - r(3)
+         jx(2, 3) = jx(2, 3) + r(1)
+         jx(3, 1) = jx(3, 1) + r(2)
+         jx(3, 2) = jx(3, 2) - r(1)
+      end if
+      if (present(jy)) then
+         ! du/dy dy = (x x dy) / (|x| |y|) - u (y . dy) / |y|^2; (x x dy) = [x]x dy.
+         inv_yy = 1.0_dp/(ny*ny)
+         w = [u(2)*x(3) - u(3)*x(2), u(3)*x(1) - u(1)*x(3), u(1)*x(2) - u(2)*x(1)]
+         g = (w*inv_xy - y*(s2*inv_yy))*(2.0_dp*rho_s2) + (x*inv_xy - y*(c*inv_yy))*rho_c - y*(rho*inv_yy)
+         do j = 1, 3
+            do i = 1, 3
+               jy(i, j) = u(i)*g(j)
+            end do
+         end do
+         r = x*(rho*inv_xy)
+         jy(1, 2) = jy(1, 2) - r(3)
+         jy(1, 3) = jy(1, 3) + r(2)
+         jy(2, 1) = jy(2, 1) + r(3)
+         jy(2, 3) = jy(2, 3) - r(1)
+         jy(3, 1) = jy(3, 1) - r(2)
+         jy(3, 2) = jy(3, 2) + r(1)
+      end if
+   end subroutine rotation_vector_r
+
+   !> Discrete Jacobian jac between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
+   !> (see the module header), given its change delta = h(x1) - h(x0): jac (x1 - x0) = delta
+   !> exactly. jmid: sign d phi / dx at the mid vector, the part without the bracket.
+   pure subroutine discrete_jacobian_r(x0, x1, y, sign, delta, jac, jmid)
+      real(dp), intent(in) :: x0(3), x1(3), y(3)
+      real(dp), intent(in) :: sign
+      real(dp), intent(in) :: delta(3)
+      real(dp), intent(out) :: jac(3, 3)
+      real(dp), intent(out), optional :: jmid(3, 3)
+      real(dp) :: xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
+      integer :: i, j
+      xm = (x0 + x1)*0.5_dp
+      call rotation_vector_r(xm, y, phi, jac)
+      if (sign < 0) jac = -jac
+      if (present(jmid)) jmid = jac
+      c = [x0(2)*x1(3) - x0(3)*x1(2), x0(3)*x1(1) - x0(1)*x1(3), x0(1)*x1(2) - x0(2)*x1(1)]
+      cc = c(1)*c(1) + c(2)*c(2) + c(3)*c(3)
+      if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
+      dx = x1 - x0
+      do i = 1, 3
+         bracket(i) = delta(i) - (jac(i, 1)*dx(1) + jac(i, 2)*dx(2) + jac(i, 3)*dx(3))
+      end do
+      w = [c(2)*xm(3) - c(3)*xm(2), c(3)*xm(1) - c(1)*xm(3), c(1)*xm(2) - c(2)*xm(1)]/cc
+      do j = 1, 3
+         do i = 1, 3
+            jac(i, j) = jac(i, j) + bracket(i)*w(j)
+         end do
+      end do
+   end subroutine discrete_jacobian_r
+
+   !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k from q0 = th0^2 and q1 = th1^2: a polynomial
+   !> in q near the straight state, from the divided difference in th otherwise.
+   pure real(dp) function bend_coefficient_r(self, k, q0, q1) result(coef)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      real(dp), intent(in) :: q0, q1
+      real(dp) :: th0, th1, m, dm, big
+      big = 2*self%ei/self%dual_length(k)
+      th0 = sqrt(q0)
+      th1 = sqrt(q1)
+      if (th0 + th1 < 1.0e-3_dp) then
+         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
+                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
+      else
+         call bend_divided(self, k, th0, th1, m, dm)
+         coef = m/(th0 + th1)
+      end if
+   end function bend_coefficient_r
 
    !> Node rows from the cell forces and blocks, inertia, weight, end forces, twist and held rows
    !> (statics: t1 the time; a step: t1 = t0, t2 = dt).
@@ -795,8 +1080,8 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in) :: theta
-      integer :: n, c, k, j, side, cp, node, band0, a, b, row, col
-      real(dp) :: scale, rate, sgn, t_new, r(3, self%n), psi(self%n), twist_scale, tau
+      integer :: n, c, k, band0, a
+      real(dp) :: scale, rate, t_new, r(3, self%n), psi(self%n), twist_scale, tau
       logical :: held_a, held_b, anchor_a, anchor_b
       n = self%n
       scale = 1/self%tension_ref
@@ -850,66 +1135,8 @@ contains
       jacobian%ab = 0
       jacobian%factorised = .false.
       band0 = jacobian%kl + jacobian%ku + 1
-      do c = 1, n - 1
-         do cp = max(1, c - 1), min(n - 1, c + 1)
-            do side = 0, 1
-               node = cp + side
-               sgn = merge(1.0_dp, -1.0_dp, side == 1)/self%ds(cp)*scale
-               do j = 0, 1
-                  k = c + j
-                  if (k == 1 .and. held_a) cycle
-                  if (k == n .and. held_b) cycle
-                  do a = 1, 3
-                     row = 3*(k - 1) + a
-                     do b = 1, 3
-                        col = 3*(node - 1) + b
-                        jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                              + merge(1.0_dp, -1.0_dp, j == 1)*sgn*self%block(a, b, cp - c, c)
-                     end do
-                  end do
-               end do
-            end do
-         end do
-      end do
-      if (dynamic) then
-         do k = 1, n
-            if (k == 1 .and. held_a) cycle
-            if (k == n .and. held_b) cycle
-            do a = 1, 3
-               row = 3*(k - 1) + a
-               do j = -2, 2
-                  node = k + j
-                  if (node < 1 .or. node > n) cycle
-                  col = row + 3*j
-                  jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                        + self%mass(abs(j), min(k, node))*rate*scale
-               end do
-            end do
-         end do
-      end if
-      if (allocated(self%loads)) then
-         if (size(self%loads) > 0) then
-            ! Node c and node c+1 each get -F_c / 2.
-            do c = 1, n - 1
-               do side = 0, 1
-                  node = c + side
-                  do j = 0, 1
-                     k = c + j
-                     if (k == 1 .and. held_a) cycle
-                     if (k == n .and. held_b) cycle
-                     do a = 1, 3
-                        row = 3*(k - 1) + a
-                        do b = 1, 3
-                           col = 3*(node - 1) + b
-                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                                 - 0.5_dp*self%load_block(a, b, side, c)*scale
-                        end do
-                     end do
-                  end do
-               end do
-            end do
-         end if
-      end if
+      call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
+                               self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self))
       do c = 1, n - 1
          call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
          call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
@@ -950,6 +1177,99 @@ contains
          end do
       end subroutine set_row
    end subroutine assemble
+
+   !> The Jacobian's position blocks (cells, inertia, distributed loads) in band storage ab, as
+   !> explicit-shape arrays (a class argument's allocatable components cost several times the
+   !> instructions in these loops, docs/speed.md item 4); the same sums in the same order.
+   pure subroutine add_position_blocks(n, ld, ncol, ab, band0, block, ds, mass, load_block, scale, rate, held_a, held_b, &
+                                       dynamic, loads)
+      integer, intent(in) :: n, ld, ncol, band0
+      real(dp), intent(inout) :: ab(ld, ncol)
+      real(dp), intent(in) :: block(3, 3, -1:1, n - 1), ds(n - 1), mass(0:2, n), load_block(3, 3, 0:1, n - 1)
+      real(dp), intent(in) :: scale, rate
+      logical, intent(in) :: held_a, held_b, dynamic, loads
+      integer :: c, cp, side, node, j, k, a, b, row, col
+      real(dp) :: sgn, t(3, 3)
+      ! Cell c's force N_c enters node c with - and node c+1 with +; e_cp = (R_cp+1 - R_cp) / ds_cp.
+      ! Each block is scaled once: (+-1 / ds) scale block = +-((1 / ds) scale block), the same bits.
+      do c = 1, n - 1
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            sgn = 1.0_dp/ds(cp)*scale
+            do b = 1, 3
+               do a = 1, 3
+                  t(a, b) = sgn*block(a, b, cp - c, c)
+               end do
+            end do
+            do side = 0, 1
+               node = cp + side
+               do j = 0, 1
+                  k = c + j
+                  if (k == 1 .and. held_a) cycle
+                  if (k == n .and. held_b) cycle
+                  if (side == j) then
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        do a = 1, 3
+                           row = 3*(k - 1) + a
+                           ab(band0 + row - col, col) = ab(band0 + row - col, col) + t(a, b)
+                        end do
+                     end do
+                  else
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        do a = 1, 3
+                           row = 3*(k - 1) + a
+                           ab(band0 + row - col, col) = ab(band0 + row - col, col) - t(a, b)
+                        end do
+                     end do
+                  end if
+               end do
+            end do
+         end do
+      end do
+      if (dynamic) then
+         do k = 1, n
+            if (k == 1 .and. held_a) cycle
+            if (k == n .and. held_b) cycle
+            do a = 1, 3
+               row = 3*(k - 1) + a
+               do j = -2, 2
+                  node = k + j
+                  if (node < 1 .or. node > n) cycle
+                  col = row + 3*j
+                  ab(band0 + row - col, col) = ab(band0 + row - col, col) + mass(abs(j), min(k, node))*rate*scale
+               end do
+            end do
+         end do
+      end if
+      if (loads) then
+         ! Node c and node c+1 each get -F_c / 2.
+         do c = 1, n - 1
+            do side = 0, 1
+               node = c + side
+               do j = 0, 1
+                  k = c + j
+                  if (k == 1 .and. held_a) cycle
+                  if (k == n .and. held_b) cycle
+                  do a = 1, 3
+                     row = 3*(k - 1) + a
+                     do b = 1, 3
+                        col = 3*(node - 1) + b
+                        ab(band0 + row - col, col) = ab(band0 + row - col, col) - 0.5_dp*load_block(a, b, side, c)*scale
+                     end do
+                  end do
+               end do
+            end do
+         end do
+      end if
+   end subroutine add_position_blocks
+
+   !> Whether the piece has distributed loads.
+   pure logical function has_loads(self)
+      class(rod3d_piece), intent(in) :: self
+      has_loads = .false.
+      if (allocated(self%loads)) has_loads = size(self%loads) > 0
+   end function has_loads
 
    !> The applied couples of the ends (the planar input's couple, positive counter-clockwise in
    !> the x-z plane, that is about -y) on the end cells. A couple C does the work C dphi, dphi
@@ -1290,25 +1610,9 @@ contains
       r%d = 0.5_dp*a%d/r%v
    end function sqrt_d
 
-   !> atan2(y, x) with d = (x dy - y dx) / (x^2 + y^2).
-   elemental type(dual) function atan2_dd(y, x) result(r)
-      type(dual), intent(in) :: y, x
-      r%v = atan2(y%v, x%v)
-      r%d = (x%v*y%d - y%v*x%d)/(x%v**2 + y%v**2)
-   end function atan2_dd
-
    !> Dot product of two 3-vectors.
    pure type(dual) function dot3(a, b) result(r)
       type(dual), intent(in) :: a(3), b(3)
       r = a(1)*b(1) + a(2)*b(2) + a(3)*b(3)
    end function dot3
-
-   !> Cross product of two 3-vectors.
-   pure function cross3(a, b) result(r)
-      type(dual), intent(in) :: a(3), b(3)
-      type(dual) :: r(3)
-      r(1) = a(2)*b(3) - a(3)*b(2)
-      r(2) = a(3)*b(1) - a(1)*b(3)
-      r(3) = a(1)*b(2) - a(2)*b(1)
-   end function cross3
 end module xcable_model_rod3d

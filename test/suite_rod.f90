@@ -33,7 +33,8 @@ contains
                new_unittest('jacobian_step_mass_ends_tension_only', test_step_mass_ends), &
                new_unittest('jacobian_step_table_law_damping', test_step_table_damping), &
                new_unittest('discrete_gradient_exact', test_discrete_gradient), &
-               new_unittest('old_level_from_last_evaluation', test_old_level_memo)]
+               new_unittest('old_level_from_last_evaluation', test_old_level_memo), &
+               new_unittest('residual_alone_same_bits', test_residual_alone)]
    end subroutine collect_rod
 
    !> A piece of 9 nodes: end a held (fixed or moving), end b loaded (force
@@ -239,4 +240,64 @@ contains
          same = all(transfer(a, [0_i8]) == transfer(b, [0_i8]))
       end function same
    end subroutine test_old_level_memo
+
+   !> A residual evaluated without its Jacobian (the one at each step's
+   !> converged state, whose cell forces give the reactions) skips what only
+   !> the blocks use; its residual and cell forces must be those of the
+   !> evaluation with the Jacobian, bit for bit: tanh law and a table law with
+   !> damping, at a state far from the old level (divided differences) and
+   !> one close to it (most cells and nodes in the Taylor branches).
+   subroutine test_residual_alone(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p, plain, damped
+      type(table_law) :: table
+      type(tanh_law) :: tanh
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :), strain(:)
+      integer :: k
+      call make_piece(p, x, r0, v0, 1.0_dp, 0.0_dp, .false., .false.)
+      call compare(p, 'tanh law')
+      if (allocated(error)) return
+      call make_piece(plain, x, r0, v0, 1.0_dp, 0.1_dp, .false., .false.)
+      strain = [(-0.8_dp + 1.2_dp*(k - 1)/40, k=1, 41)]
+      call new_table_law(strain, tanh%tension(strain), table, error)
+      if (allocated(error)) return
+      call damped%piece%init(plain%piece%s, 2.2_dp, 22.0_dp, 70.6_dp, 9.81_dp, 1.0_dp, table, plain%piece%end_a, &
+                             plain%piece%end_b, 1.0e4_dp, 0.1_dp, 500.0_dp)
+      call compare(damped, 'table law, damping 500 N s')
+   contains
+      subroutine compare(q, what)
+         type(rod_problem), intent(inout) :: q
+         character(*), intent(in) :: what
+         type(band_matrix) :: jac
+         real(dp), allocatable :: x_near(:), res_j(:), res_r(:), force_j(:, :)
+         integer :: state
+         call jac%init(2*n, rod_kl, rod_ku)
+         allocate (res_j(2*n), res_r(2*n))
+         x_near = reshape(r0, [2*n])
+         x_near(7:8) = x_near(7:8) + [0.05_dp, -0.03_dp]
+         do state = 1, 2
+            call q%piece%prepare_step(r0, v0)
+            q%dt = 1.0e-3_dp
+            q%t0 = 0.002_dp
+            q%theta = 0.5_dp
+            if (state == 1) then
+               call q%evaluate(x, res_j, jac, .true.)
+               force_j = q%piece%force
+               call q%evaluate(x, res_r, jac, .false.)
+            else
+               call q%evaluate(x_near, res_j, jac, .true.)
+               force_j = q%piece%force
+               call q%evaluate(x_near, res_r, jac, .false.)
+            end if
+            call check(error, all(transfer(res_j, [0_i8]) == transfer(res_r, [0_i8])) .and. &
+                       all(transfer(force_j, [0_i8]) == transfer(q%piece%force, [0_i8])), &
+                       what//merge(', far from', ', near    ', state == 1)//' the old level: the residual or the '// &
+                       'cell forces without the Jacobian differ from those with it')
+            if (allocated(error)) return
+         end do
+         ! The near state mixes the Taylor and divided-difference branches of the cells.
+         call check(error, count(q%piece%memo_w_ok) > 0 .and. count(.not. q%piece%memo_w_ok) > 0, &
+                    what//': the near state does not mix Taylor and divided-difference branches')
+      end subroutine compare
+   end subroutine test_residual_alone
 end module suite_rod

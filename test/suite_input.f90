@@ -660,8 +660,8 @@ contains
       call expect_error(error, text, [character(48) :: path, '&end_a', "table_file = '"//table_path//"'", 'line 3', &
                                       '"abc" is not a finite real number'])
       if (allocated(error)) return
-      call write_text(table_path, '0 1 2 3'//nl)
-      call expect_error(error, text, [character(48) :: path, '&end_a', 'line 1', 'expected 2 or 3 numbers'])
+      call write_text(table_path, '0 1 2 3 4'//nl)
+      call expect_error(error, text, [character(48) :: path, '&end_a', 'line 1', 'expected 2, 3 or 4 numbers'])
       if (allocated(error)) return
       call write_text(table_path, '0 1 2'//nl//'1 2'//nl)
       call expect_error(error, text, [character(48) :: path, '&end_a', 'line 2', 'the lines before have 3'])

@@ -77,7 +77,8 @@ contains
                new_unittest('fluid_reduction_symmetry_ledger', test_fluid), &
                new_unittest('ends_with_y_torque', test_ends_y), &
                new_unittest('statics_and_steps_every_end_kind', test_statics_kinds), &
-               new_unittest('fold_check_3d', test_fold_check)]
+               new_unittest('fold_check_3d', test_fold_check), &
+               new_unittest('ledger_reuses_final_residual', test_ledger_reuse)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -616,6 +617,38 @@ contains
       write (output_unit, '(4x,a,es9.2,a)') 'mirrored scene (y -> -y): ', diff, ' of the span from the mirrored solution'
       call check(error, diff < 1.0e-13_dp, 'mirrored scene differs from the mirrored solution by more than 1e-13')
    end subroutine test_mirror
+
+   !> accept books the ledger from the piece's state at the new level, which Newton's final
+   !> residual (options%final_residual, the default) has already set; it evaluates the step
+   !> system again only without it. The two ways give the same run bit for bit: a line in a
+   !> cross current (loads), end a held (its reaction), end b's force swinging out of the
+   !> plane with a torque, 40 steps; unknowns, velocities, the ledger's accumulators and the
+   !> Newton iterations.
+   subroutine test_ledger_reuse(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run) :: a, b
+      real(dp), parameter :: f0(3) = [5000.0_dp, 0.0_dp, 250.0_dp], f1(3) = [-1500.0_dp, 1500.0_dp, 300.0_dp]
+      integer, parameter :: n = 31
+      call scene3(a, n, f0, f1, 0.0_dp, .false., 2.0_dp, 50.0_dp, error, current=[0.3_dp, 0.5_dp, 0.0_dp])
+      if (allocated(error)) return
+      call scene3(b, n, f0, f1, 0.0_dp, .false., 2.0_dp, 50.0_dp, error, current=[0.3_dp, 0.5_dp, 0.0_dp])
+      if (allocated(error)) return
+      b%options%final_residual = .false.
+      call advance(a, 1.0e-3_dp, 40, error)
+      if (allocated(error)) return
+      call advance(b, 1.0e-3_dp, 40, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,3es10.2,a,i0,a,es9.2)') 'ledger with Newton''s final residual: end work, load work, '// &
+         'dissipated ', a%end_work, a%load_work, a%dissipated, ' J, ', a%iterations, ' iterations; largest difference '// &
+         'from evaluating again ', max(maxval(abs(a%x - b%x)), maxval(abs(a%v - b%v)), abs(a%end_work - b%end_work), &
+                                       abs(a%load_work - b%load_work), abs(a%dissipated - b%dissipated))
+      call check(error, abs(a%end_work) > 0 .and. abs(a%load_work) > 0, 'the scene does no work at the ends or loads')
+      if (allocated(error)) return
+      call check(error, all(a%x == b%x) .and. all(a%v == b%v) .and. a%end_work == b%end_work .and. &
+                 a%load_work == b%load_work .and. a%dissipated == b%dissipated .and. a%iterations == b%iterations, &
+                 'the ledger from Newton''s final residual differs from evaluating again: end work '// &
+                 str(a%end_work - b%end_work)//', load work '//str(a%load_work - b%load_work))
+   end subroutine test_ledger_reuse
 
    !> The ledger of a 3-D motion (force swinging out of the plane, torque rising) closes:
    !> largest |stored - initial - end work| over 100 steps, over the strain energy.

@@ -396,6 +396,20 @@ from slow_315kN
 add "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, 2, table_x = 0, 0, table_z = 3*0 /"; check
 begin 'table longer than 1000 rows' 'table_time = 1001*0' 'takes at most 1000'
 from slow_315kN; add "&end_a table_time = 1001*0 /"; check
+begin 'table_y of other count' 'table_y has 3 values' 'table_time 2' 'one value a row'
+from slow_315kN
+add "&end_a kind = 'motion', motion = 'table', table_time = 0, 1, table_x = 2*0, table_y = 3*0, table_z = 2*0 /"; check
+begin 'table_y without a table' 'table_y has 2 values' 'table_time 0'
+from slow_315kN; add "&end_a kind = 'motion', motion = 'table', table_y = 0, 1 /"; check
+begin 'table_y NaN' 'table_y = 0, NaN' '"NaN" is not a finite real number'
+from slow_315kN; add "&end_a table_time = 0, 1, table_x = 0, 0, table_y = 0, NaN, table_z = 0, 0 /"; check
+begin 'table_y infinite' 'table_y' 'Inf'
+from slow_315kN; add "&end_a table_time = 0, 1, table_x = 0, 0, table_y = Inf, 0, table_z = 0, 0 /"; check
+begin 'table_y too large' 'table_y(2) = 2e9' '[-1e9, 1e9]'
+from slow_315kN; add "&end_a table_time = 0, 1, table_x = 0, 0, table_y = 0, 2e9, table_z = 0, 0 /"; check
+begin "table_y with model = '2d'" "model = '2d'" '&end_b table_y(2) = 0.5' "allowed: model = '3d' or 'auto'"
+from slack_swing; edit "s|^&end_b .*|\&end_b kind = 'motion', motion = 'table', x = 50.0, z = 0.0, table_time = 0, 1, table_x = 0, 0, table_y = 0, 0.5, table_z = 0, 0 /|"
+set_in numerics "model = '2d'"; check
 begin 'table value NaN' 'table_x = 0, NaN' '"NaN" is not a finite real number'
 from slow_315kN; add "&end_a table_time = 0, 1, table_x = 0, NaN, table_z = 0, 0 /"; check
 begin 'table both inline and in a file' "table_file = 't.dat'" 'inline table' 'give one'
@@ -407,9 +421,15 @@ from slow_315kN; add "&end_a kind = 'motion', motion = 'table', table_file = 'no
 begin 'table file with a word' "table_file = 't.dat'" 'line 3' '"x" is not a finite real number'
 from slow_315kN; printf '# t x z\n0 0 0\n1 x 0\n' >"$dir/t.dat"
 add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
-begin 'table file with four columns' "table_file = 't.dat'" 'line 1' 'expected 2 or 3 numbers'
-from slow_315kN; printf '0 0 0 0\n1 1 1 1\n' >"$dir/t.dat"
+begin 'table file with five columns' "table_file = 't.dat'" 'line 1' 'expected 2, 3 or 4 numbers' 't, x, y, z'
+from slow_315kN; printf '0 0 0 0 0\n1 1 1 1 1\n' >"$dir/t.dat"
 add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+begin 'table file of four columns then three' "table_file = 't.dat'" 'line 2' '3 numbers' 'before have 4'
+from slow_315kN; printf '0 0 0 0\n1 1 1\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check
+begin 'table file y column with model 2d' "model = '2d'" "table_y(2) = 1" 'x-z plane'
+from slow_315kN; printf '0 0 0 0\n1 0 1 0\n' >"$dir/t.dat"
+add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; set_in numerics "model = '2d'"; check
 begin 'table file times not increasing' "table_file = 't.dat'" 'line 3' 'increase strictly'
 from slow_315kN; printf '0 0\n1 1\n1 2\n' >"$dir/t.dat"
 add "&end_a kind = 'motion', motion = 'table', table_file = 't.dat' /"; check

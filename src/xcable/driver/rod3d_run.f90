@@ -33,6 +33,9 @@ module xcable_rod3d_run
       integer :: iterations = 0, last_iterations = 0
       !> Unknowns at the old level of the attempt in x.
       real(dp), allocatable :: x_old(:)
+      !> Whether the problem was last evaluated at x (Newton's residual at the converged point),
+      !> so that accept need not evaluate it again.
+      logical :: evaluated_at_x = .false.
    contains
       !> Set up the work arrays after problem%piece has been initialised.
       procedure :: init => run_init
@@ -103,6 +106,7 @@ contains
       self%end_work = 0
       self%load_work = 0
       self%dissipated = 0
+      self%evaluated_at_x = .false.
    end subroutine run_start
 
    subroutine run_step(self, dt, theta, error)
@@ -141,6 +145,8 @@ contains
          call newton_solve(self%problem, self%x, self%work, self%options, report, error)
          self%last_iterations = report%iterations
          self%iterations = self%iterations + report%iterations
+         ! With final_residual, a converged Newton has evaluated the step system at the new level.
+         self%evaluated_at_x = .not. allocated(error) .and. report%converged .and. self%options%final_residual
          if (allocated(error)) call prefix_error(error, '3-D step at t = '//str(self%t)//' s: ')
       end associate
    end subroutine run_attempt
@@ -149,6 +155,7 @@ contains
       class(rod3d_run), intent(inout) :: self
       self%x = self%x_old
       self%work%usable = .false.
+      self%evaluated_at_x = .false.
    end subroutine run_reject
 
    subroutine run_accept(self, dt, theta)
@@ -165,8 +172,12 @@ contains
          allocate (v1(3, n))
          call piece%new_velocity(r1, dt, theta, v1)
          ! Work of the ends: applied forces (trapezoid in time, as the rows), torques (trapezoid,
-         ! exact for the quasi-static twist), reactions of held ends on their displacement.
-         call self%problem%evaluate(self%x, self%work%residual, self%work%jacobian, .false.)
+         ! exact for the quasi-static twist), reactions of held ends on their displacement. They
+         ! read the piece's state at the new level (cell forces, loads), which Newton's final
+         ! residual has set; evaluated here only when it has not.
+         if (.not. self%evaluated_at_x) call self%problem%evaluate(self%x, self%work%residual, self%work%jacobian, &
+                                                                   .false.)
+         self%evaluated_at_x = .false.
          self%work%usable = .false.
          call book_end(1)
          call book_end(n)

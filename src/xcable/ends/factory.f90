@@ -35,9 +35,10 @@ contains
       real(dp) :: direction(3)
       if (config%table_rows >= 2) then
          table%time = config%table_time(1:config%table_rows)
-         allocate (table%value(2, config%table_rows))
+         allocate (table%value(3, config%table_rows))
          table%value(1, :) = config%table_x(1:config%table_rows)
-         table%value(2, :) = config%table_z(1:config%table_rows)
+         table%value(2, :) = config%table_y(1:config%table_rows)
+         table%value(3, :) = config%table_z(1:config%table_rows)
       end if
       select case (trim(config%kind))
       case ('fixed')

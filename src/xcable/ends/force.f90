@@ -24,12 +24,12 @@ module xcable_ends_force
       real(dp) :: force0(2) = 0
       !> Starting couple of the 'ramp' (and constant couple otherwise), N m.
       real(dp) :: couple0 = 0
-      !> For the 3-D model: the y component of force0 (the 'table' history stays in the x-z
-      !> plane), N, and the torque about the outward tangent (ramped as the force), N m.
+      !> For the 3-D model: the y component of force0, N, and the torque about the outward
+      !> tangent (ramped as the force), N m.
       real(dp) :: force0_y = 0, torque0 = 0
       !> Start and duration of the ramp, s.
       real(dp) :: t0 = 0, duration = 0
-      !> Force table of the 'table' history.
+      !> Force table of the 'table' history: components x, y, z.
       type(time_table) :: table
    contains
       procedure :: kind => force_kind
@@ -51,12 +51,13 @@ contains
    pure function force_applied_force(self, t) result(f)
       class(force_end), intent(in) :: self
       real(dp), intent(in) :: t
-      real(dp) :: f(2)
+      real(dp) :: f(2), f3(3)
       select case (self%history)
       case ('ramp')
          f = self%force0*smooth_ramp(t, self%t0, self%duration)
       case ('table')
-         f = self%table%at(t)
+         f3 = self%table%at(t)
+         f = f3([1, 3])
       case default
          f = self%force0
       end select
@@ -82,12 +83,14 @@ contains
       class(force_end), intent(in) :: self
       real(dp), intent(in) :: t
       real(dp) :: f(3), f2(2), scale
+      if (self%history == 'table') then
+         f = self%table%at(t)
+         return
+      end if
       f2 = self%applied_force(t)
       select case (self%history)
       case ('ramp')
          scale = smooth_ramp(t, self%t0, self%duration)
-      case ('table')
-         scale = 0
       case default
          scale = 1
       end select

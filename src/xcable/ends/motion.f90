@@ -4,7 +4,7 @@
 !> the unit direction d, and w(t) = 1 - cos^2(pi t / (2 t_r)) rising smoothly
 !> from 0 to 1 over the start time t_r (w = 1 when t_r = 0), so that X(0) =
 !> X0, and with t_r > 0 the motion starts from rest. 'table': X(t) = X0 + the
-!> tabulated displacement (cubic Hermite, continuous velocity).
+!> tabulated displacement (x, y, z; cubic Hermite, continuous velocity).
 module xcable_ends_motion
    use xcable_kinds, only: dp
    use xcable_ends_end, only: end_condition, smooth_ramp, smooth_ramp_rate
@@ -23,11 +23,11 @@ module xcable_ends_motion
       real(dp) :: origin(2) = 0
       !> Amplitude (m), period (s), phase (rad), unit direction, start time (s).
       real(dp) :: amplitude = 0, period = 1, phase = 0, direction(2) = [0.0_dp, 1.0_dp], ramp_time = 0
-      !> Displacement table of the 'table' motion.
+      !> Displacement table of the 'table' motion: components x, y, z.
       type(time_table) :: table
       !> For the 3-D model: y of the origin (m) and the y component of the harmonic motion's
       !> direction (the direction (x, y, z) is then direction(1), direction_y, direction(2), given
-      !> normalised); the 'table' motion stays in the x-z plane.
+      !> normalised).
       real(dp) :: origin_y = 0, direction_y = 0
    contains
       procedure :: kind => motion_kind
@@ -68,9 +68,10 @@ contains
    pure function motion_position(self, t) result(x)
       class(motion_end), intent(in) :: self
       real(dp), intent(in) :: t
-      real(dp) :: x(2), w, dw
+      real(dp) :: x(2), w, dw, d(3)
       if (self%motion == 'table') then
-         x = self%origin + self%table%at(t)
+         d = self%table%at(t)
+         x = self%origin + d([1, 3])
       else
          call start_factor(self, t, w, dw)
          x = self%origin + self%amplitude*w*(sin(two_pi*t/self%period + self%phase) - sin(self%phase))*self%direction
@@ -80,9 +81,10 @@ contains
    pure function motion_velocity(self, t) result(v)
       class(motion_end), intent(in) :: self
       real(dp), intent(in) :: t
-      real(dp) :: v(2), w, dw, omega
+      real(dp) :: v(2), w, dw, omega, d(3)
       if (self%motion == 'table') then
-         v = self%table%rate(t)
+         d = self%table%rate(t)
+         v = d([1, 3])
       else
          call start_factor(self, t, w, dw)
          omega = two_pi/self%period
@@ -94,10 +96,13 @@ contains
    pure function motion_position3(self, t) result(x)
       class(motion_end), intent(in) :: self
       real(dp), intent(in) :: t
-      real(dp) :: x(3), p(2), w, dw, y
+      real(dp) :: x(3), p(2), w, dw, y, d(3)
       p = self%position(t)
       y = self%origin_y
-      if (self%motion /= 'table') then
+      if (self%motion == 'table') then
+         d = self%table%at(t)
+         y = y + d(2)
+      else
          call start_factor(self, t, w, dw)
          y = y + self%amplitude*w*(sin(two_pi*t/self%period + self%phase) - sin(self%phase))*self%direction_y
       end if
@@ -107,10 +112,13 @@ contains
    pure function motion_velocity3(self, t) result(v)
       class(motion_end), intent(in) :: self
       real(dp), intent(in) :: t
-      real(dp) :: v(3), p(2), w, dw, omega, vy
+      real(dp) :: v(3), p(2), w, dw, omega, vy, d(3)
       p = self%velocity(t)
       vy = 0
-      if (self%motion /= 'table') then
+      if (self%motion == 'table') then
+         d = self%table%rate(t)
+         vy = d(2)
+      else
          call start_factor(self, t, w, dw)
          omega = two_pi/self%period
          vy = self%amplitude*(dw*(sin(omega*t + self%phase) - sin(self%phase)) + w*omega*cos(omega*t + self%phase)) &

@@ -1,5 +1,5 @@
-!> A time table of a 2-vector (force components or displacements), for the
-!> 'table' histories of force and moving ends.
+!> A time table of a vector (force components or displacements x, y, z), for
+!> the 'table' histories of force and moving ends.
 !>
 !> Between rows the value is a cubic Hermite interpolant whose slopes are the
 !> centred differences of the rows (one-sided at the first and last row), so
@@ -16,7 +16,7 @@ module xcable_ends_table
    type :: time_table
       !> Times, strictly increasing, s.
       real(dp), allocatable :: time(:)
-      !> Values (2, rows).
+      !> Values (components, rows): x, y, z for the ends.
       real(dp), allocatable :: value(:, :)
       !> Straight segments instead of the cubic.
       logical :: linear = .false.
@@ -65,7 +65,7 @@ contains
    pure function slope(self, j) result(d)
       class(time_table), intent(in) :: self
       integer, intent(in) :: j
-      real(dp) :: d(2)
+      real(dp) :: d(size(self%value, 1))
       integer :: n
       n = size(self%time)
       if (j == 1) then
@@ -83,7 +83,7 @@ contains
       class(time_table), intent(in) :: self
       !> Time, s.
       real(dp), intent(in) :: t
-      real(dp) :: v(2)
+      real(dp) :: v(size(self%value, 1))
       integer :: i, outside
       real(dp) :: u, h, h00, h10, h01, h11
       call locate(self, t, i, u, outside)
@@ -109,7 +109,7 @@ contains
       class(time_table), intent(in) :: self
       !> Time, s.
       real(dp), intent(in) :: t
-      real(dp) :: v(2)
+      real(dp) :: v(size(self%value, 1))
       integer :: i, outside
       real(dp) :: u, h
       call locate(self, t, i, u, outside)

@@ -39,9 +39,11 @@ module xcable_io_config
       real(dp) :: mass = 0
       !> Inline table: times (s) and x, z columns (force in N, or displacement in m).
       real(dp) :: table_time(max_table_points) = 0, table_x(max_table_points) = 0, table_z(max_table_points) = 0
+      !> Its y column (3-D model; 0 when not given).
+      real(dp) :: table_y(max_table_points) = 0
       !> Number of table rows given inline (0: none).
       integer :: table_rows = 0
-      !> Table file with columns t, x, z ('' : none).
+      !> Table file with columns t, x (, z) or t, x, y, z ('' : none).
       character(len=512) :: table_file = ''
    end type end_config
 
@@ -173,7 +175,7 @@ contains
    end function is_given
 
    !> Whether the scene is planar: every end position, force, motion direction,
-   !> current and torque in the x-z plane (y = 0 and no torque).
+   !> current, force or motion table and torque in the x-z plane (y = 0 and no torque).
    pure logical function is_planar(self)
       !> The case.
       class(case_config), intent(in) :: self
@@ -182,7 +184,8 @@ contains
 
    pure logical function end_planar(e)
       type(end_config), intent(in) :: e
-      end_planar = e%y == 0 .and. e%force_y == 0 .and. e%direction_y == 0 .and. e%torque == 0
+      end_planar = e%y == 0 .and. e%force_y == 0 .and. e%direction_y == 0 .and. e%torque == 0 .and. &
+                   all(e%table_y(1:e%table_rows) == 0)
    end function end_planar
 
    !> '2d' or '3d': model = '2d' or '3d' as given; 'auto' takes 2-D for a planar scene.

@@ -135,7 +135,7 @@ contains
 
    !> The number of rows of each inline table: the number of values given to
    !> its first column (an end's table_time, the material's table_strain),
-   !> which the other columns must match.
+   !> which the other columns must match (an end's table_y may be left out).
    subroutine count_table_rows(c, t, counts, error)
       !> The case; table_rows of each end and material_table_rows set.
       type(case_config), intent(inout) :: c
@@ -149,9 +149,24 @@ contains
       character(len=*), parameter :: material_columns(2) = [character(len=13) :: 'table_strain', 'table_tension']
       call inline_rows(c, t, counts, 'end_a', end_columns, c%end_a%table_rows, error)
       if (allocated(error)) return
+      call optional_column('end_a', c%end_a%table_rows)
+      if (allocated(error)) return
       call inline_rows(c, t, counts, 'end_b', end_columns, c%end_b%table_rows, error)
       if (allocated(error)) return
+      call optional_column('end_b', c%end_b%table_rows)
+      if (allocated(error)) return
       call inline_rows(c, t, counts, 'material', material_columns, c%material_table_rows, error)
+   contains
+      !> An end's table_y (3-D model): left out, or one value a row.
+      subroutine optional_column(group, rows)
+         character(*), intent(in) :: group
+         integer, intent(in) :: rows
+         integer :: n
+         n = counts(find_entry(t, group, 'table_y'))
+         if (n == 0 .or. n == rows) return
+         call fatal_error(error, c%source//': &'//group//': table_y has '//str(n)//' values, table_time '// &
+                          str(rows)//': table_y is left out or has one value a row', stat_input)
+      end subroutine optional_column
    end subroutine count_table_rows
 
    !> The rows of one inline table: the count of its first column, refused
@@ -806,17 +821,19 @@ contains
       real(dp) :: x, z, force_x, force_z, ramp_time, amplitude, period, phase, direction_x, direction_z, mass
       real(dp) :: y, force_y, torque, direction_y
       real(dp) :: table_time(max_table_points), table_x(max_table_points), table_z(max_table_points)
+      real(dp) :: table_y(max_table_points)
       character(len=512) :: table_file
       namelist /end_a/ kind, x, y, z, force_x, force_y, force_z, torque, history, ramp_time, motion, amplitude, &
-         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_z, table_file
+         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_y, table_z, table_file
       namelist /end_b/ kind, x, y, z, force_x, force_y, force_z, torque, history, ramp_time, motion, amplitude, &
-         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_z, table_file
+         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_y, table_z, table_file
 
       kind = e%kind; x = e%x; z = e%z; force_x = e%force_x; force_z = e%force_z; history = e%history
       ramp_time = e%ramp_time; motion = e%motion; amplitude = e%amplitude; period = e%period; phase = e%phase
       direction_x = e%direction_x; direction_z = e%direction_z; mass = e%mass
       y = e%y; force_y = e%force_y; torque = e%torque; direction_y = e%direction_y
       table_time = e%table_time; table_x = e%table_x; table_z = e%table_z; table_file = e%table_file
+      table_y = e%table_y
       if (group == 'end_a') then
          read (unit, nml=end_a, iostat=ios, iomsg=msg)
       else
@@ -828,6 +845,7 @@ contains
       e%direction_x = direction_x; e%direction_z = direction_z; e%mass = mass
       e%y = y; e%force_y = force_y; e%torque = torque; e%direction_y = direction_y
       e%table_time = table_time; e%table_x = table_x; e%table_z = table_z; e%table_file = table_file
+      e%table_y = table_y
    end subroutine read_end
 
    !> Read &fluid (its density has the name of &cable's, so it has its own scope).
@@ -958,6 +976,7 @@ contains
       case ('mass'); call move(e%mass, v, store)
       case ('table_time'); call move_rows(e%table_time, e%table_rows, v, store)
       case ('table_x'); call move_rows(e%table_x, e%table_rows, v, store)
+      case ('table_y'); call move_rows(e%table_y, e%table_rows, v, store)
       case ('table_z'); call move_rows(e%table_z, e%table_rows, v, store)
       case ('table_file'); call move(e%table_file, v, store)
       case default
@@ -1422,6 +1441,7 @@ contains
       subroutine end_datum(e, group)
          type(end_config), intent(in) :: e
          character(*), intent(in) :: group
+         integer :: k
          if (len(text) > 0) return
          if (e%y /= 0) then
             text = '&'//group//' y = '//real_text(e%y)
@@ -1431,6 +1451,9 @@ contains
             text = '&'//group//' direction_y = '//real_text(e%direction_y)
          else if (e%torque /= 0) then
             text = '&'//group//' torque = '//real_text(e%torque)
+         else if (any(e%table_y(1:e%table_rows) /= 0)) then
+            k = findloc(e%table_y(1:e%table_rows) /= 0, .true., 1)
+            text = '&'//group//' table_y('//str(k)//') = '//real_text(e%table_y(k))
          end if
       end subroutine end_datum
    end function out_of_plane
@@ -1508,8 +1531,9 @@ contains
       call check_column(prefix, 'table_time', e%table_time(1:e%table_rows), time_order, error)
    end subroutine check_end
 
-   !> Read an end's table_file, if given, into its table: two or three numbers
-   !> a line (t, x and z; z = 0 when absent), the times strictly increasing.
+   !> Read an end's table_file, if given, into its table: two, three or four
+   !> numbers a line (t, x; t, x, z; or t, x, y, z; y and z are 0 when absent),
+   !> the times strictly increasing.
    subroutine load_table(c, group, e, error)
       !> The case (for its source).
       type(case_config), intent(in) :: c
@@ -1522,18 +1546,23 @@ contains
       real(dp), allocatable :: values(:, :)
       integer, allocatable :: lines(:)
       character(:), allocatable :: prefix
-      integer :: rows
+      integer :: rows, columns
 
       if (len_trim(e%table_file) == 0) return
       prefix = c%source//': &'//group//": table_file = '"//trim(e%table_file)//"': "
-      call read_table_file(prefix, trim(e%table_file), 'table_time', e%table_rows, 2, 3, 't, x and optionally z', &
-                           values, lines, rows, error)
+      call read_table_file(prefix, trim(e%table_file), 'table_time', e%table_rows, 2, 4, &
+                           't, x; t, x, z; or t, x, y, z', values, lines, rows, error, columns)
       if (allocated(error)) return
       call check_column(prefix, 'time', values(1:rows, 1), time_order, error, lines(1:rows))
       if (allocated(error)) return
       e%table_time(1:rows) = values(1:rows, 1)
       e%table_x(1:rows) = values(1:rows, 2)
-      e%table_z(1:rows) = values(1:rows, 3)
+      if (columns == 4) then
+         e%table_y(1:rows) = values(1:rows, 3)
+         e%table_z(1:rows) = values(1:rows, 4)
+      else
+         e%table_z(1:rows) = values(1:rows, 3)
+      end if
       e%table_rows = rows
    end subroutine load_table
 
@@ -1568,7 +1597,7 @@ contains
    !> starts a comment, blank lines are skipped; at least 2 and at most
    !> max_table_points rows. A file given together with inline rows is refused.
    subroutine read_table_file(prefix, file, first_column, inline_rows, min_columns, max_columns, layout, values, &
-                              lines, rows, error)
+                              lines, rows, error, ncolumns)
       !> Start of every message: the case file, the group and the table_file.
       character(*), intent(in) :: prefix
       !> The table file (relative to the working directory).
@@ -1589,6 +1618,8 @@ contains
       integer, intent(out) :: rows
       !> Error naming the table file and the line at fault.
       type(error_type), allocatable, intent(out) :: error
+      !> Numbers a line of the file.
+      integer, intent(out), optional :: ncolumns
       character(len=line_len), allocatable :: text_lines(:)
       character(:), allocatable :: text, item, expected
       real(dp) :: x
@@ -1615,8 +1646,12 @@ contains
          return
       end if
       expected = str(min_columns)
+      do n = min_columns + 1, max_columns - 1
+         expected = expected//', '//str(n)
+      end do
       if (max_columns > min_columns) expected = expected//' or '//str(max_columns)
       columns = 0
+      if (present(ncolumns)) ncolumns = 0
       do i = 1, nlines
          text = text_lines(i)
          if (index(text, '#') > 0) text = text(1:index(text, '#') - 1)
@@ -1662,6 +1697,7 @@ contains
          call fatal_error(error, prefix//'has '//rows_text(rows)//'; a table must have at least 2', stat_input)
          return
       end if
+      if (present(ncolumns)) ncolumns = columns
    end subroutine read_table_file
 
    !> Error unless a table column has at least 2 rows and increases strictly,
@@ -1913,6 +1949,8 @@ contains
          if (e%group == 'end_b') echoed = echoed .and. position_b
       case ('table_time', 'table_x', 'table_z')
          echoed = side%table_rows > 0
+      case ('table_y')
+         echoed = any(side%table_y(1:side%table_rows) /= 0)
       case ('table_file')
          echoed = len_trim(side%table_file) > 0
       end select

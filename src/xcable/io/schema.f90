@@ -180,16 +180,18 @@ contains
                   -1.0e6_dp, 1.0e6_dp)
          call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0)', 0.0_dp, 1.0e9_dp)
          call add(t, ends(k), 'table_time', 'real', 's', '', &
-                  "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; the three "// &
-                  'columns have equal counts', -1.0e7_dp, 1.0e7_dp, count=max_table_points)
+                  "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; table_x and "// &
+                  'table_z have as many values, table_y as many or none', -1.0e7_dp, 1.0e7_dp, count=max_table_points)
          call add(t, ends(k), 'table_x', 'real', 'N or m', '', &
                   'table: x column (force in N of a force end, displacement in m of a motion end)', &
                   -1.0e9_dp, 1.0e9_dp, count=max_table_points)
+         call add(t, ends(k), 'table_y', 'real', 'N or m', '', &
+                  'table: y column (3-D model; left out: 0)', -1.0e9_dp, 1.0e9_dp, count=max_table_points)
          call add(t, ends(k), 'table_z', 'real', 'N or m', '', 'table: z column', -1.0e9_dp, 1.0e9_dp, &
                   count=max_table_points)
          call add(t, ends(k), 'table_file', 'string', '-', "''", &
-                  'the table from a text file instead: columns t, x and optionally z (0 if absent), # starts a '// &
-                  'comment; the path is relative to the working directory', length=512)
+                  'the table from a text file instead: 2, 3 or 4 columns t, x; t, x, z; or t, x, y, z (absent '// &
+                  'columns 0), # starts a comment; the path is relative to the working directory', length=512)
       end do
       ! &rupture
       call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', 'whether the cable breaks')

@@ -117,8 +117,8 @@ program xcable_main
                          config%gnuplot, sim%piece_starts(), sim%snapshots_written(), run_id, error, &
                          three_d=sim%model == '3d')
       if (allocated(error)) then
-         if (error%stat == stat_input) call fail_input(error)
-         call fail_run(error, sim%rod%t)
+         ! Not fail_run: summary is not associated before sim%run, and the checkpoint stays.
+         call fail_input(error)
       end if
       if (.not. config%quiet) write (error_unit, '(a)') 'xcable: resuming from '//checkpoint//' at t = '// &
          str(sim%rod%t)//' s (step '//str(sim%rod%history%n)//')'

@@ -38,6 +38,7 @@ module xcable_io_output
    use xcable_version, only: code_version
    use xcable_io_number_text, only: put_es, put_int
    use hdf5
+   use, intrinsic :: iso_c_binding, only: c_int
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
    private
@@ -236,6 +237,13 @@ contains
       character(:), allocatable :: status, stored_id, reason, lines(:)
       character(len=*), parameter :: fresh = '; run without --resume to start again'
       integer :: keep_lines
+      interface
+         integer(c_int) function h5f_increment_filesize(file_id, increment) bind(C, name='H5Fincrement_filesize')
+            import :: c_int, hid_t, hsize_t
+            integer(hid_t), value :: file_id
+            integer(hsize_t), value :: increment
+         end function h5f_increment_filesize
+      end interface
       self%path = path
       self%s = s
       self%piece_starts = piece_starts
@@ -315,7 +323,14 @@ contains
             return
          end if
       end if
-      ! Checked: now change it.
+      ! Checked: now change it. A process killed inside an HDF5 flush can leave chunk-index
+      ! entries (or index blocks) past the end of allocated space that the superblock records:
+      ! the library would hand that space out again and a chunk written on resume would be
+      ! lost (read back as zeros). First the end of allocated space goes to the end of the file.
+      if (h5f_increment_filesize(self%file, 0_hsize_t) < 0) then
+         call refuse("the result file '"//path//"' cannot be prepared for writing"//fresh)
+         return
+      end if
       call truncate(self%file, 'time', 1, snapshots, ok)
       do i = 1, n_fields
          if (self%want(i)) call truncate(self%file, trim(field_names(i)), 2, snapshots, ok)
@@ -624,12 +639,15 @@ contains
       real(dp), intent(in) :: fields(:, :)
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
-      integer :: i
+      integer :: i, hdferr
       logical :: ok
       ok = .true.
       do i = 1, size(names)
          call append(self%file, trim(names(i)), fields(:, i), 2, ok)
       end do
+      ! On disk before a checkpoint can count this snapshot (as result_snapshot's fields).
+      call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
+      ok = ok .and. hdferr == 0
       if (.not. ok) then
          call fatal_error(error, 'writing the 3-D fields at t = '//str(t)//" s to '"//self%path//"' failed", stat_io)
          return

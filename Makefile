@@ -28,6 +28,7 @@ test: build
 	test/test_figures.sh
 	test/test_fuzz.sh bin/xcable
 	test/test_checkpoint.sh bin/xcable
+	test/test_xdmf.sh bin/xcable
 
 clean:
 	rm -rf build bin

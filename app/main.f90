@@ -28,6 +28,7 @@ program xcable_main
    use xcable_app_output, only: app_output
    use xcable_version, only: version_lines
    use xcable_io_checkpoint, only: checkpoint_path, remove_checkpoint
+   use xcable_io_xdmf, only: write_xdmf, remove_xdmf, probe_xdmf
    use xcable_system_posix, only: install_termination_handler, new_run_id
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    implicit none
@@ -125,6 +126,12 @@ program xcable_main
    else
       ! A checkpoint of an earlier run of this result file no longer fits it.
       call remove_checkpoint(checkpoint)
+      ! So is an XDMF sidecar of it (a new one is written when this run completes).
+      call remove_xdmf(trim(config%file))
+      if (config%xdmf) then
+         call probe_xdmf(trim(config%file), error)
+         if (allocated(error)) call fail_input(error)
+      end if
       run_id = new_run_id()
       call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
                          config%gnuplot, trim(config%scheme), sim%terms, sim%piece_starts(), error, run_id=run_id, &
@@ -159,6 +166,13 @@ program xcable_main
    end if
    ! Complete: the checkpoint has served (the status is written first).
    call remove_checkpoint(checkpoint)
+   if (config%xdmf) then
+      call write_xdmf(trim(config%file), sim%piece_starts(), error)
+      if (allocated(error)) then
+         write (error_unit, '(a)') 'xcable: error: '//error%message//' (the HDF5 file is complete)'
+         stop 1, quiet=.true.
+      end if
+   end if
    call print_warnings(summary%warnings)
    if (.not. config%quiet) write (error_unit, '(a)') 'xcable: complete in '//str(summary%wall_time)//' s: '// &
       str(summary%steps)//' steps, peak end speed '//str(summary%peak_end_speed)//' m/s, results in '//trim(config%file)

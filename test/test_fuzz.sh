@@ -676,6 +676,10 @@ begin 'output is a directory' 'results'
 from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'results/'|"; check
 begin 'gnuplot text cannot be created' 'snapshots.dat'
 from fast_180kN; mkdir -p "$dir/results/fast_180kN.snapshots.dat"; check
+begin 'XDMF sidecar cannot be created' 'xdmf'
+from fast_180kN; edit "s|gnuplot = .true.|gnuplot = .true., xdmf = .true.|"; mkdir -p "$dir/results/fast_180kN.xmf.part"; check
+begin 'xdmf given as a string' 'xdmf'
+from fast_180kN; edit "s|gnuplot = .true.|gnuplot = .true., xdmf = 'yes'|"; check
 begin 'output is the input file itself' 'input file itself'
 from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'case.nml'|"; check
 begin 'output path is the root directory' 'file'

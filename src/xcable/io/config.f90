@@ -147,6 +147,8 @@ module xcable_io_config
       logical :: energy = .false.
       !> Write gnuplot-ready text beside the HDF5 file.
       logical :: gnuplot = .false.
+      !> Write an XDMF sidecar (.xmf) that lets ParaView and other XDMF readers open the HDF5 file.
+      logical :: xdmf = .false.
       !> Wall-clock time between checkpoints of a rod run, s (0: none; SIGTERM still writes one).
       real(dp) :: checkpoint_interval = 0
       !> Variables assigned in the file, as 'group%variable' names separated by blanks

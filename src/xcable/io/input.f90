@@ -724,7 +724,7 @@ contains
       real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval
       real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
       integer :: nodes, newton_max_iter
-      logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot
+      logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot, xdmf
       character(len=512) :: file, table_file
       character(len=256) :: fields
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness, gip
@@ -733,7 +733,7 @@ contains
       namelist /rupture/ enabled, s_break, t_break, time
       namelist /numerics/ scheme, model, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
          reuse_jacobian, extrapolate, min_step_fraction, max_wall_time
-      namelist /output/ file, interval, fields, quiet, energy, gnuplot, checkpoint_interval
+      namelist /output/ file, interval, fields, quiet, energy, gnuplot, xdmf, checkpoint_interval
       integer :: unit, ios, ig
       character(len=512) :: msg
 
@@ -749,7 +749,7 @@ contains
       reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
       max_wall_time = c%max_wall_time
       file = c%file; interval = c%interval; fields = c%fields; quiet = c%quiet; energy = c%energy
-      gnuplot = c%gnuplot; checkpoint_interval = c%checkpoint_interval
+      gnuplot = c%gnuplot; xdmf = c%xdmf; checkpoint_interval = c%checkpoint_interval
 
       open (newunit=unit, file=path, status='old', action='read', iostat=ios, iomsg=msg)
       if (ios /= 0) then
@@ -802,7 +802,7 @@ contains
       c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction
       c%max_wall_time = max_wall_time
       c%file = file; c%interval = interval; c%fields = fields; c%quiet = quiet; c%energy = energy
-      c%gnuplot = gnuplot; c%checkpoint_interval = checkpoint_interval
+      c%gnuplot = gnuplot; c%xdmf = xdmf; c%checkpoint_interval = checkpoint_interval
    end subroutine read_groups
 
    !> Read &end_a or &end_b (the same variables) into one end.
@@ -939,6 +939,7 @@ contains
       case ('output%quiet'); call move(c%quiet, v, store)
       case ('output%energy'); call move(c%energy, v, store)
       case ('output%gnuplot'); call move(c%gnuplot, v, store)
+      case ('output%xdmf'); call move(c%xdmf, v, store)
       case ('output%checkpoint_interval'); call move(c%checkpoint_interval, v, store)
       case default
          v%found = .false.

@@ -259,6 +259,9 @@ contains
                resume_may_differ=.true.)
       call add(t, 'output', 'energy', 'logical', '-', '.false.', 'keep the energy ledger in the history')
       call add(t, 'output', 'gnuplot', 'logical', '-', '.false.', 'also write gnuplot-ready text beside the HDF5 file')
+      call add(t, 'output', 'xdmf', 'logical', '-', '.false.', &
+               'also write an XDMF sidecar (file with the extension .xmf) for ParaView and other XDMF readers; '// &
+               'written when the run completes', resume_may_differ=.true.)
       call add(t, 'output', 'checkpoint_interval', 'real', 's', '0', &
                'wall-clock time between checkpoints of a rod run (the file &output file + .ckpt, for xcable '// &
                '--resume); a rod run also writes one when it gets SIGTERM, whatever this says', 0.0_dp, 1.0e7_dp, &

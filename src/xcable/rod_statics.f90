@@ -11,7 +11,10 @@
 !>   magnitude T_s (the span of the exact catenary is the first guess).
 !>
 !> The static solve always iterates to a scaled update of 1e-10 (the time
-!> steps use &numerics newton_tol).
+!> steps use &numerics newton_tol). A solution that is folded (at some
+!> interior node the two cells turn back on themselves, by more than pi/2)
+!> counts as a failed solve: with distributed loads the continuation in
+!> them is tried, and a folded state is never returned (issue 15).
 module xcable_rod_statics
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
@@ -143,6 +146,7 @@ contains
          real(dp), allocatable :: guess(:, :), last(:, :)
          real(dp) :: factor, step
          integer :: tries
+         character(:), allocatable :: why
          if (.not. allocated(problem%piece%loads)) then
             call solve_now(err)
             return
@@ -151,6 +155,7 @@ contains
             call solve_now(err)
             return
          end if
+         why = ''
          guess = state%r
          call solve_now(err)
          if (.not. allocated(err)) return
@@ -169,6 +174,7 @@ contains
             problem%piece%load_factor = min(1.0_dp, factor + step)
             call solve_now(err)
             if (allocated(err)) then
+               why = err%message
                deallocate (err)
                state%r = last
                step = 0.5_dp*step
@@ -182,7 +188,8 @@ contains
          end do
          problem%piece%load_factor = 1
          if (factor < 1) call fatal_error(err, 'statics: no equilibrium found under the distributed loads (fluid): '// &
-                                         'reached '//str(100*factor)//' % of them', stat_numerics)
+                                         'reached '//str(100*factor)//' % of them (the last step: '//why//')', &
+                                         stat_numerics)
       end subroutine solve_with_loads
 
       !> Newton from state%r.
@@ -203,8 +210,36 @@ contains
             call prefix_error(err, 'statics: ')
             return
          end if
+         call check_fold(reshape(x, [2, n]), err)
+         if (allocated(err)) return
          state%r = reshape(x, [2, n])
       end subroutine solve_now
+
+      !> A solution is refused when it is folded: at some interior node the two
+      !> cells turn back on themselves (turning angle above pi/2). Such a state is
+      !> an equilibrium of compressed, zigzagging cells (compression = 'law') or a
+      !> bend sharper than the grid resolves, not the static state sought.
+      subroutine check_fold(r, err)
+         real(dp), intent(in) :: r(:, :)
+         type(error_type), allocatable, intent(out) :: err
+         real(dp), parameter :: fold_angle = 0.5_dp*acos(-1.0_dp)
+         real(dp) :: a(2), b(2), th, worst
+         integer :: k, at
+         worst = 0
+         at = 0
+         do k = 2, size(r, 2) - 1
+            a = r(:, k) - r(:, k - 1)
+            b = r(:, k + 1) - r(:, k)
+            th = abs(atan2(a(1)*b(2) - a(2)*b(1), dot_product(a, b)))
+            if (.not. (th <= worst)) then
+               worst = th
+               at = k
+            end if
+         end do
+         if (.not. (worst <= fold_angle)) call fatal_error(err, 'statics: a folded state (the cells at node '// &
+                                                           str(at)//' turn back on themselves, by '//str(worst)// &
+                                                           ' rad, more than pi/2)', stat_numerics)
+      end subroutine check_fold
 
       !> The catenary guess.
       subroutine first_guess(err)

@@ -4,7 +4,9 @@
 !> It builds on a prepared planar run (driver/rod_run.f90), whose grid, time
 !> step, output nodes, records and summary it shares: the planar static
 !> state, with y interpolated linearly between the ends, is the first guess
-!> of the 3-D statics. The dynamics take the planar run's steps (dt, the last
+!> of the 3-D statics. A folded static state is refused (check_static3); on
+!> a refusal or a failure the statics continues in the distributed loads
+!> (continue_statics), and fails when no unfolded state is found. The dynamics take the planar run's steps (dt, the last
 !> one shortened to land on t_end and on the start of a break), snapshots at
 !> the same times (cubic Hermite inside a step), and the same history and
 !> ledger columns; the twist energy is booked with the strain energy. The
@@ -80,8 +82,6 @@ contains
       integer :: n, k
       real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2)
       real(dp), allocatable :: guess(:)
-      !> Steps of the continuation in the distributed loads when Newton fails from the planar guess.
-      integer, parameter :: continuation_steps = 20
       if (rod%scene%interior_break()) then
          call fatal_error(error, rod%scene%source//': &rupture: the 3-D model does not yet break inside the cable', &
                           stat_input)
@@ -129,18 +129,12 @@ contains
          self%run%x(3*n + 1:) = 0
          guess = self%run%x
          call self%run%statics(0.0_dp, error)
+         if (.not. allocated(error)) call check_static3(piece, self%run%x, error)
          if (allocated(error)) then
-            ! Newton from the planar guess failed: continuation in the distributed loads (a strong cross current).
-            deallocate (error)
-            self%run%x = guess
-            do k = 1, continuation_steps
-               piece%load_factor = real(k, dp)/continuation_steps
-               call self%run%statics(0.0_dp, error)
-               if (allocated(error)) exit
-            end do
-            piece%load_factor = 1
+            ! Newton from the planar guess failed or landed in a folded state (a strong cross
+            ! current): continuation in the distributed loads.
+            call continue_statics(self%run, guess, error)
             if (allocated(error)) then
-               error%stat = stat_numerics
                call prefix_error(error, scene%source//': ')
                return
             end if
@@ -175,6 +169,108 @@ contains
       rod%summary%min_strain = minval(self%run%problem%piece%l1) - 1
       rod%summary%max_strain = maxval(self%run%problem%piece%l1) - 1
    end subroutine drive_prepare
+
+   !> The 3-D statics by continuation in the distributed loads, after the
+   !> direct solve from the planar guess failed or gave a state check_static3
+   !> refuses (error on entry: why). The loads' factor goes from 0 to 1 in
+   !> steps of 1/20, each solve starting from the last accepted state (the
+   !> first from the guess); a solve that fails or whose state check_static3
+   !> refuses is taken again at half the step, and after two accepted steps
+   !> the step doubles back (at most to 1/20). The factors are j / (20 2^m),
+   !> exact: a continuation that needs no halving solves at k / 20 for k = 1
+   !> .. 20. Error stat_numerics (naming the direct solve's failure, the share
+   !> of the loads reached and the last step's failure) when the step would
+   !> fall below 1/20480 of the loads, after 400 solves, or when the scene
+   !> has no distributed loads.
+   subroutine continue_statics(run, guess, error)
+      !> The 3-D stepper (x: the solution).
+      type(rod3d_run), intent(inout) :: run
+      !> First guess (the planar static state turned onto the chord's plane).
+      real(dp), intent(in) :: guess(:)
+      !> On entry, why the direct solve was not taken; on return, allocated when no state was found.
+      type(error_type), allocatable, intent(inout) :: error
+      integer, parameter :: steps = 20, max_halvings = 10, max_solves = 400
+      type(error_type), allocatable :: step_error
+      character(:), allocatable :: direct, last
+      real(dp), allocatable :: accepted(:)
+      integer :: j, m, good, solves
+      direct = error%message
+      deallocate (error)
+      associate (piece => run%problem%piece)
+         if (.not. allocated(piece%loads)) then
+            call fatal_error(error, direct//' (no distributed loads to continue in)', stat_numerics)
+            return
+         end if
+         if (size(piece%loads) == 0) then
+            call fatal_error(error, direct//' (no distributed loads to continue in)', stat_numerics)
+            return
+         end if
+         run%x = guess
+         accepted = guess
+         last = ''
+         j = 0
+         m = 0
+         good = 0
+         do solves = 1, max_solves
+            piece%load_factor = real(j + 1, dp)/real(steps*2**m, dp)
+            call run%statics(0.0_dp, step_error)
+            if (.not. allocated(step_error)) call check_static3(piece, run%x, step_error)
+            if (allocated(step_error)) then
+               last = step_error%message
+               deallocate (step_error)
+               run%x = accepted
+               if (m == max_halvings) exit
+               j = 2*j
+               m = m + 1
+               good = 0
+               cycle
+            end if
+            j = j + 1
+            accepted = run%x
+            if (j == steps*2**m) exit
+            good = good + 1
+            if (good >= 2 .and. m > 0 .and. mod(j, 2) == 0) then
+               j = j/2
+               m = m - 1
+               good = 0
+            end if
+         end do
+         piece%load_factor = 1
+         if (j < steps*2**m) call fatal_error(error, direct//'; the continuation in the distributed loads (fluid) '// &
+                                              'reached '//str(100*real(j, dp)/real(steps*2**m, dp))// &
+                                              ' % of them ('//last//'): no static state found', stat_numerics)
+      end associate
+   end subroutine continue_statics
+
+   !> A static state the run may start from: finite, no cell squeezed below 5
+   !> % of its length (check_range), and not folded: at no interior node do
+   !> its two cells turn back on themselves (a turning angle above pi/2, the
+   !> angle of the rotation vector phi(e_k-1, e_k) of the step's fold check,
+   !> model/rod3d.f90). A static state has no previous level, so the step's
+   !> check (a turning angle through half a turn within the step) has
+   !> nothing to compare with; a folded state found by Newton is an
+   !> equilibrium of the compressed, zigzagging cells (compression = 'law'),
+   !> not a passage through half a turn.
+   subroutine check_static3(piece, x, error)
+      type(rod3d_piece), intent(in) :: piece
+      !> Unknowns of the static state.
+      real(dp), intent(in) :: x(:)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: half_turn = acos(-1.0_dp), fold_angle = 0.5_dp*half_turn
+      real(dp) :: r(3, piece%n), e(3, piece%n - 1), l(piece%n - 1), th(piece%n)
+      integer :: k
+      r = reshape(x(1:3*piece%n), [3, piece%n])
+      call piece%geometry(r, e, l, th)
+      call check_range(x, l, piece%law, 1, error)
+      if (allocated(error)) then
+         call prefix_error(error, '3-D statics: ')
+         return
+      end if
+      k = maxloc(th, 1)
+      if (.not. (th(k) <= fold_angle)) call fatal_error(error, '3-D statics: a folded state (the cells at node '// &
+                                                         str(k)//' turn back on themselves, by '//str(th(k))// &
+                                                         ' rad, more than pi/2)', stat_numerics)
+   end subroutine check_static3
 
    !> Largest vertical distance of a node below the chord between the end nodes, the chord's
    !> height taken where the node's horizontal projection onto it falls, m.

@@ -20,6 +20,7 @@ program xcable_tests
    use suite_checkpoint, only: collect_checkpoint
    use suite_rod3d, only: collect_rod3d
    use suite_model3d, only: collect_model3d
+   use suite_quiescent, only: collect_quiescent
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -44,7 +45,8 @@ program xcable_tests
              new_testsuite('fluid', collect_fluid), &
              new_testsuite('checkpoint', collect_checkpoint), &
              new_testsuite('rod3d', collect_rod3d), &
-             new_testsuite('model3d', collect_model3d)]
+             new_testsuite('model3d', collect_model3d), &
+             new_testsuite('quiescent', collect_quiescent)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -86,7 +86,8 @@ contains
                new_unittest('refuses_bad_checkpoints', test_refusals), &
                new_unittest('sigterm_then_resume_is_bitwise_3d', test_sigterm_3d), &
                new_unittest('periodic_checkpoints_change_nothing_3d', test_periodic_3d), &
-               new_unittest('refuses_the_other_model', test_other_model)]
+               new_unittest('refuses_the_other_model', test_other_model), &
+               new_unittest('sigterm_then_resume_is_bitwise_skip', test_sigterm_skip)]
    end subroutine collect_checkpoint
 
    subroutine recorder_static(self, info, error)
@@ -306,6 +307,45 @@ contains
          ' rejected in the run), resumed: snapshots, history and summary bitwise equal'
       call remove_checkpoint(path)
    end subroutine stopped_and_resumed
+
+   !> The same with the skip of the quiescent cable (&numerics skip_quiescent): the
+   !> window of a step follows from the state a checkpoint holds (the velocities, the
+   !> time, the history), so a resumed run chooses the same windows.
+   subroutine test_sigterm_skip(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: problem
+      type(case_config) :: c
+      problem = install_termination_handler()
+      call check(error, len(problem) == 0, problem)
+      if (allocated(error)) return
+      c = paper_scene()
+      c%skip_quiescent = .true.
+      c%nodes = 121
+      call skips(c, 'paper rupture')
+      if (allocated(error)) return
+      call stopped_and_resumed('paper rupture on 121 nodes, skip_quiescent, SIGTERM during the release', c, 4, error)
+      if (allocated(error)) return
+      c = middle_scene()
+      c%skip_quiescent = .true.
+      call skips(c, 'middle break')
+      if (allocated(error)) return
+      call stopped_and_resumed('middle break, skip_quiescent, SIGTERM during the break', c, 8, error, broken=.true.)
+
+   contains
+
+      !> The scene does skip part of the cable (else the test would prove nothing).
+      subroutine skips(scene, what)
+         type(case_config), intent(in) :: scene
+         character(*), intent(in) :: what
+         type(simulation) :: sim
+         type(recorder) :: store
+         call plain_run(scene, sim, store, error)
+         if (allocated(error)) return
+         write (output_unit, '(4x,a,f6.3,a)') what//': skipped ', real(sim%rod%skipped_node_solves, dp)/ &
+            real(max(sim%rod%node_solves, 1_8), dp), ' of the node solves'
+         call check(error, sim%rod%skipped_node_solves > 0, what//': nothing skipped')
+      end subroutine skips
+   end subroutine test_sigterm_skip
 
    !> A checkpoint every 7 steps leaves the run as it is; the last one,
    !> resumed, gives the same end again.

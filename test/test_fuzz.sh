@@ -180,6 +180,8 @@ begin 'logical given as an integer' 'gnuplot'
 from fast_180kN; edit 's/gnuplot = .true./gnuplot = 1/'; check
 begin 'logical given as a string' 'energy'
 from fast_180kN; edit "s/energy = .true./energy = 'yes'/"; check
+begin 'logical given as a word' 'skip_quiescent'
+from fast_180kN; set_in numerics 'skip_quiescent = maybe'; check
 begin 'string without quotes' 'file'
 from slow_180kN; edit "s|file = 'results/slow_180kN.h5'|file = results/slow_180kN.h5|"; check
 begin 'law given as a number' 'law'

@@ -62,6 +62,12 @@ module xcable_rod_run
 
    !> Most time steps a run may ask for.
    integer, parameter, public :: max_steps = 1000000
+   !> Skip of the quiescent cable (attempt): a node is quiet when it moves by at most
+   !> quiet_fraction newton_tol cell lengths in a step, or by quiet_ulps units of round-off
+   !> of the largest coordinate; margin nodes around the moving ones; outer nodes of a
+   !> window that must stay quiet.
+   real(dp), parameter :: quiet_fraction = 1.0e-5_dp, quiet_ulps = 16
+   integer, parameter :: window_margin = 8, check_nodes = 2
    !> Warning thresholds (documented in the README, "Warnings").
    real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
                                   warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp
@@ -87,6 +93,9 @@ module xcable_rod_run
       logical :: extrapolate = .true.
       !> Keep the energy ledger.
       logical :: energy = .false.
+      !> Solve each step only on the part of the cable that moves (see attempt): the nodes
+      !> outside keep their state. Off (the default): every step solves the whole piece.
+      logical :: skip_quiescent = .false.
       !> Smallest step of the step control, as a fraction of dt; wall-clock limit (s, 0: none).
       real(dp) :: min_step_fraction = 1.0_dp/1024, max_wall_time = 0
       !> Pause for a checkpoint every this many seconds of wall time (0: never).
@@ -179,6 +188,12 @@ module xcable_rod_run
       type(run_clock) :: clock
       !> Fields of a snapshot (n_out, n_fields).
       real(dp), allocatable :: buffer(:, :)
+      !> Skip of the quiescent cable in this process (not kept in a checkpoint): nodes times
+      !> Newton solves (one per piece and attempt, a redone window counted again), and of
+      !> them the nodes held outside the window; windows enlarged because the motion reached
+      !> their margin; windows that fell back to the whole piece after a failed Newton solve.
+      integer(i8) :: node_solves = 0, skipped_node_solves = 0
+      integer :: window_growths = 0, window_fallbacks = 0
    contains
       !> Statics, the time step and the pieces (before any output).
       procedure :: prepare => run_prepare
@@ -1006,6 +1021,21 @@ contains
    end function step_newton
 
    !> One Newton solve of piece p for the step from self%t to self%t + h.
+   !>
+   !> Skip of the quiescent cable (options%skip_quiescent): ahead of a front the
+   !> cable keeps its state to round-off, and solving there changes nothing. The
+   !> step is solved on a window of nodes (choose_window: those that moved in the
+   !> last step by more than quiet_fraction newton_tol cell lengths, or quiet_ulps
+   !> units of round-off of the largest coordinate when that is more, the ends whose
+   !> conditions change, and margin nodes on either side); the nodes outside keep
+   !> their positions (they are boundary data of the window's rows). After the
+   !> solve, the window's outer nodes on a held side (check_nodes of them) must
+   !> have moved by at most the same threshold; otherwise the motion has reached the
+   !> margin, the window grows by 2 margin nodes on that side and the step is
+   !> solved again from the first guess. A failed solve on a window is redone on
+   !> the whole piece. The whole piece is solved at the first step of the dynamics,
+   !> with distributed loads, with a kept Jacobian (reuse_jacobian), and whenever no
+   !> node moved (nothing to centre a window on).
    subroutine attempt(self, p, h, kept, iterations, error)
       type(rod_run), intent(inout) :: self
       integer, intent(in) :: p
@@ -1015,31 +1045,167 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(newton_options) :: opts
       type(newton_report) :: report
-      integer :: n
+      integer :: n, lo, hi, lo_new, hi_new
+      real(dp) :: quiet
       associate (piece => self%pieces(p))
          n = piece%problem%piece%n
          piece%problem%t0 = self%t
          piece%problem%dt = h
          piece%problem%theta = self%options%theta
          call piece%problem%piece%prepare_step(piece%r, piece%v)
-         if (self%options%extrapolate) then
-            piece%x = reshape(piece%r + h*piece%v, [2*n])
-         else
-            piece%x = reshape(piece%r, [2*n])
-         end if
-         if (piece%problem%piece%end_a%held()) piece%x(1:2) = piece%problem%piece%end_a%position(self%t + h)
-         if (piece%problem%piece%end_b%held()) piece%x(2*n - 1:2*n) = piece%problem%piece%end_b%position(self%t + h)
          ! A factorisation made for another step size is stale (the mass term goes as 1/dt^2).
          if (abs(piece%factor_step - h) > 1.0e-12_dp*h) piece%work%usable = .false.
          opts = step_newton(self)
          kept = jacobian_kept(opts, piece%work)
-         call newton_solve(piece%problem, piece%x, piece%work, opts, report, error)
-         iterations = max(iterations, report%iterations)
-         if (report%factorisations > 0) piece%factor_step = h
-         self%summary%factorisations = self%summary%factorisations + report%factorisations
-         self%summary%newton_iterations = self%summary%newton_iterations + report%iterations
+         call choose_window(self, p, h, opts%tolerance, lo, hi, quiet)
+         do
+            call first_guess(lo, hi)
+            piece%problem%lo = lo
+            piece%problem%hi = hi
+            call newton_solve(piece%problem, piece%x(2*lo - 1:2*hi), piece%work, opts, report, error)
+            iterations = max(iterations, report%iterations)
+            if (report%factorisations > 0) piece%factor_step = h
+            self%summary%factorisations = self%summary%factorisations + report%factorisations
+            self%summary%newton_iterations = self%summary%newton_iterations + report%iterations
+            self%node_solves = self%node_solves + n
+            self%skipped_node_solves = self%skipped_node_solves + (n - (hi - lo + 1))
+            if (lo == 1 .and. hi == n) exit
+            if (allocated(error)) then
+               ! In doubt, the whole piece.
+               deallocate (error)
+               self%window_fallbacks = self%window_fallbacks + 1
+               lo = 1
+               hi = n
+               cycle
+            end if
+            lo_new = lo
+            hi_new = hi
+            if (lo > 1) then
+               if (moved(lo, lo + check_nodes - 1) > quiet) lo_new = max(1, lo - 2*window_margin)
+            end if
+            if (hi < n) then
+               if (moved(hi - check_nodes + 1, hi) > quiet) hi_new = min(n, hi + 2*window_margin)
+            end if
+            if (lo_new == lo .and. hi_new == hi) exit
+            self%window_growths = self%window_growths + 1
+            lo = lo_new
+            hi = hi_new
+         end do
+         piece%problem%lo = 1
+         piece%problem%hi = 0
       end associate
+
+   contains
+
+      !> The first guess R + h V (or R) of the window's nodes, the old positions elsewhere.
+      subroutine first_guess(k1, k2)
+         integer, intent(in) :: k1, k2
+         associate (piece => self%pieces(p))
+            if (self%options%extrapolate) then
+               piece%x = reshape(piece%r + h*piece%v, [2*n])
+            else
+               piece%x = reshape(piece%r, [2*n])
+            end if
+            if (piece%problem%piece%end_a%held()) piece%x(1:2) = piece%problem%piece%end_a%position(self%t + h)
+            if (piece%problem%piece%end_b%held()) piece%x(2*n - 1:2*n) = piece%problem%piece%end_b%position(self%t + h)
+            if (k1 > 1 .or. k2 < n) then
+               call piece%problem%piece%freeze_level()
+               piece%x(1:2*k1 - 2) = reshape(piece%r(:, 1:k1 - 1), [2*k1 - 2])
+               piece%x(2*k2 + 1:2*n) = reshape(piece%r(:, k2 + 1:n), [2*(n - k2)])
+            end if
+         end associate
+      end subroutine first_guess
+
+      !> Largest displacement of the nodes k1 .. k2 in the step solved, m.
+      real(dp) function moved(k1, k2)
+         integer, intent(in) :: k1, k2
+         integer :: k
+         moved = 0
+         associate (piece => self%pieces(p))
+            do k = max(1, k1), min(n, k2)
+               moved = max(moved, abs(piece%x(2*k - 1) - piece%r(1, k)), abs(piece%x(2*k) - piece%r(2, k)))
+            end do
+         end associate
+      end function moved
    end subroutine attempt
+
+   !> The window of nodes lo .. hi on which the step of h from self%t solves piece p
+   !> (attempt): the nodes whose last step moved them, h |V| > quiet (m), the end nodes
+   !> whose end conditions change over the step, window_margin nodes on either side;
+   !> the whole piece (1 .. n) when the skip is off or not applicable.
+   subroutine choose_window(self, p, h, tolerance, lo, hi, quiet)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: p
+      !> The step (s) and Newton's tolerance.
+      real(dp), intent(in) :: h, tolerance
+      integer, intent(out) :: lo, hi
+      !> The motion in a step below which a node is quiet, m.
+      real(dp), intent(out) :: quiet
+      integer :: n, k, first, last
+      associate (piece => self%pieces(p), rod => self%pieces(p)%problem%piece)
+         n = rod%n
+         lo = 1
+         hi = n
+         quiet = 0
+         if (.not. self%options%skip_quiescent .or. self%options%newton%reuse_jacobian) return
+         ! Quiet: a motion far below the tolerance, or at the round-off of the coordinates
+         ! (where the whole solve moves the quiescent nodes too, by a few units in the last place).
+         quiet = max(quiet_fraction*tolerance*rod%length_ref, quiet_ulps*epsilon(1.0_dp)*maxval(abs(piece%r)))
+         if (self%history%n <= 0) return
+         if (allocated(rod%loads)) then
+            if (size(rod%loads) > 0) return
+         end if
+         if (n < 2*window_margin + 4) return
+         first = n + 1
+         last = 0
+         if (.not. end_steady(rod%end_a, self%t, self%t + h)) then
+            first = 1
+            last = 1
+         end if
+         if (.not. end_steady(rod%end_b, self%t, self%t + h)) then
+            first = min(first, n)
+            last = n
+         end if
+         do k = 1, n
+            if (h*max(abs(piece%v(1, k)), abs(piece%v(2, k))) > quiet .or. .not. ieee_is_finite(sum(piece%v(:, k)))) then
+               first = min(first, k)
+               exit
+            end if
+         end do
+         do k = n, 1, -1
+            if (h*max(abs(piece%v(1, k)), abs(piece%v(2, k))) > quiet .or. .not. ieee_is_finite(sum(piece%v(:, k)))) then
+               last = max(last, k)
+               exit
+            end if
+         end do
+         ! Nothing moves: nothing to centre a window on.
+         if (last == 0) return
+         lo = max(1, first - window_margin)
+         hi = min(n, last + window_margin)
+      end associate
+   end subroutine choose_window
+
+   !> Whether an end's condition stays the same over [ta, tb]: a fixed end, or an end that
+   !> is not held and whose force and couple do not depend on time (free, a point mass, a
+   !> constant force).
+   logical function end_steady(end, ta, tb)
+      class(end_condition), intent(in) :: end
+      real(dp), intent(in) :: ta, tb
+      if (end%held()) then
+         end_steady = end%kind() == 'fixed'
+      else
+         end_steady = .not. end%time_dependent() .and. end%kind() /= 'motion'
+      end if
+      if (.not. end_steady) return
+      end_steady = all(same_value(end%applied_force(ta), end%applied_force(tb))) .and. &
+                   same_value(end%applied_couple(ta), end%applied_couple(tb))
+   end function end_steady
+
+   !> a == b as numbers (elemental).
+   elemental logical function same_value(a, b)
+      real(dp), intent(in) :: a, b
+      same_value = a == b
+   end function same_value
 
    !> Reject states outside the model's range (after an attempt on every piece).
    subroutine check_state(self, h, error)

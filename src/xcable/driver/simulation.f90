@@ -115,6 +115,7 @@ contains
       options%newton%max_iterations = config%newton_max_iter
       options%newton%reuse_jacobian = config%reuse_jacobian .and. config%is_given('numerics', 'reuse_jacobian')
       options%extrapolate = config%extrapolate
+      options%skip_quiescent = config%skip_quiescent
       options%energy = config%energy
       options%min_step_fraction = config%min_step_fraction
       options%max_wall_time = config%max_wall_time

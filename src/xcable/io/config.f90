@@ -130,6 +130,8 @@ module xcable_io_config
       logical :: reuse_jacobian = .true.
       !> First guess of a step by extrapolation.
       logical :: extrapolate = .true.
+      !> Rod: solve each step only where the cable moves.
+      logical :: skip_quiescent = .false.
       !> Smallest step of the step control, as a fraction of dt.
       real(dp) :: min_step_fraction = 1.0_dp/1024
       !> Wall-clock limit, s (0: none).

@@ -724,7 +724,7 @@ contains
       real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval
       real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
       integer :: nodes, newton_max_iter
-      logical :: enabled, reuse_jacobian, extrapolate, quiet, energy, gnuplot, xdmf
+      logical :: enabled, reuse_jacobian, extrapolate, skip_quiescent, quiet, energy, gnuplot, xdmf
       character(len=512) :: file, table_file
       character(len=256) :: fields
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness, gip
@@ -732,7 +732,7 @@ contains
       namelist /static/ tension
       namelist /rupture/ enabled, s_break, t_break, time
       namelist /numerics/ scheme, model, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
-         reuse_jacobian, extrapolate, min_step_fraction, max_wall_time
+         reuse_jacobian, extrapolate, min_step_fraction, max_wall_time, skip_quiescent
       namelist /output/ file, interval, fields, quiet, energy, gnuplot, xdmf, checkpoint_interval
       integer :: unit, ios, ig
       character(len=512) :: msg
@@ -747,7 +747,7 @@ contains
       scheme = c%scheme; model = c%model; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
       mass_matrix = c%mass_matrix; newton_tol = c%newton_tol; newton_max_iter = c%newton_max_iter
       reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
-      max_wall_time = c%max_wall_time
+      max_wall_time = c%max_wall_time; skip_quiescent = c%skip_quiescent
       file = c%file; interval = c%interval; fields = c%fields; quiet = c%quiet; energy = c%energy
       gnuplot = c%gnuplot; xdmf = c%xdmf; checkpoint_interval = c%checkpoint_interval
 
@@ -800,7 +800,7 @@ contains
       c%scheme = scheme; c%model = model; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
       c%mass_matrix = mass_matrix; c%newton_tol = newton_tol; c%newton_max_iter = newton_max_iter
       c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction
-      c%max_wall_time = max_wall_time
+      c%max_wall_time = max_wall_time; c%skip_quiescent = skip_quiescent
       c%file = file; c%interval = interval; c%fields = fields; c%quiet = quiet; c%energy = energy
       c%gnuplot = gnuplot; c%xdmf = xdmf; c%checkpoint_interval = checkpoint_interval
    end subroutine read_groups
@@ -931,6 +931,7 @@ contains
       case ('numerics%newton_max_iter'); call move(c%newton_max_iter, v, store)
       case ('numerics%reuse_jacobian'); call move(c%reuse_jacobian, v, store)
       case ('numerics%extrapolate'); call move(c%extrapolate, v, store)
+      case ('numerics%skip_quiescent'); call move(c%skip_quiescent, v, store)
       case ('numerics%min_step_fraction'); call move(c%min_step_fraction, v, store)
       case ('numerics%max_wall_time'); call move(c%max_wall_time, v, store)
       case ('output%file'); call move(c%file, v, store)

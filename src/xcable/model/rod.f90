@@ -147,6 +147,8 @@ module xcable_model_rod
       procedure :: static_system => rod_static_system
       !> Store the old level of a time step.
       procedure :: prepare_step => rod_prepare_step
+      !> Before a step on a window: the new level and the memo are the old level's (nodes held there).
+      procedure :: freeze_level => rod_freeze_level
       !> Residual and Jacobian of a time step.
       procedure :: step_system => rod_step_system
       !> New velocities from new positions.
@@ -164,6 +166,10 @@ module xcable_model_rod
       type(rod_piece) :: piece
       !> Time step (0: statics), old time, time weight.
       real(dp) :: dt = 0, t0 = 0, theta = 0.5_dp
+      !> Window of a step (skip of the quiescent cable, rod_run): the unknowns are those of
+      !> nodes lo .. hi, the other nodes are held at the old level (set by freeze_level);
+      !> hi = 0: the whole piece.
+      integer :: lo = 1, hi = 0
    contains
       procedure :: evaluate => rod_problem_evaluate
    end type rod_problem
@@ -182,7 +188,10 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form it.
       logical, intent(in) :: with_jacobian
-      if (self%dt > 0) then
+      if (self%dt > 0 .and. self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)) then
+         call step_window(self%piece, x, self%lo, self%hi, self%t0, self%dt, self%theta, residual, jacobian, &
+                          with_jacobian)
+      else if (self%dt > 0) then
          call self%piece%step_system(x, self%t0, self%dt, self%theta, residual, jacobian, with_jacobian)
       else
          call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
@@ -621,23 +630,251 @@ contains
       call copy_values(2*n, x, self%memo_x)
       call copy_geometry(n, self%e1, self%l1, self%th1, self%memo_e, self%memo_l, self%memo_th)
       self%memo_b_ok = .false.
-      do k = 2, n - 1
-         call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k), &
-                           self%memo_b(k), self%memo_b_ok(k))
-      end do
+      call bend_nodes(self, 2, n - 1)
       call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
                       self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
-                      with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok, self%memo_dphi)
+                      with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok, self%memo_dphi, 1, n - 1)
       self%memo_valid = .true.
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
    end subroutine rod_step_system
 
+   !> Before a step solved on a window of nodes (rod_problem lo, hi): the new level's
+   !> geometry and the memo of the last evaluation are set to the old level's, which is
+   !> what the nodes outside the window keep (their new positions are their old ones, so
+   !> these are the values an evaluation would compute for them, the same bits); the
+   !> window's evaluations then overwrite their own part.
+   subroutine rod_freeze_level(self)
+      class(rod_piece), intent(inout) :: self
+      integer :: n
+      n = self%n
+      call copy_geometry(n, self%e0, self%l0, self%th0, self%e1, self%l1, self%th1)
+      call copy_values(2*n, self%r0, self%memo_x)
+      call copy_geometry(n, self%e0, self%l0, self%th0, self%memo_e, self%memo_l, self%memo_th)
+      call copy_values(n - 1, self%w0, self%memo_w)
+      call copy_values(n, self%b0, self%memo_b)
+      self%memo_w_ok = .true.
+      self%memo_b_ok = .true.
+      ! atan2(e0 x e0, e0 . e0) = 0: a cell that keeps its positions does not rotate.
+      self%memo_dphi = 0
+      self%memo_valid = .true.
+   end subroutine rod_freeze_level
+
+   !> rod_step_system on the window of nodes lo .. hi (2 < hi - lo + 1 < n; no distributed
+   !> loads): x holds the new positions of the window's nodes; the others stay at the
+   !> old level (rod_freeze_level). The residual rows and the unknowns (Jacobian
+   !> columns) are the window's; the cells and nodes whose terms enter them are computed
+   !> (cells lo - 2 .. hi + 1 for the geometry, nodes lo - 1 .. hi + 1 for the moments,
+   !> cells lo - 1 .. hi for the forces), and so are the end cells and end velocities a
+   !> reaction needs. The operations on each value are those of rod_step_system.
+   subroutine step_window(self, x, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
+      type(rod_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      integer, intent(in) :: lo, hi
+      real(dp), intent(in) :: t0, dt, theta
+      real(dp), intent(out) :: residual(:)
+      type(band_matrix), intent(inout) :: jacobian
+      logical, intent(in) :: with_jacobian
+      integer :: n, ga, gb, ca, cb
+      n = self%n
+      self%memo_x(2*lo - 1:2*hi) = x
+      ga = max(1, lo - 2)
+      gb = min(n - 1, hi + 1)
+      call geometry_cells(n, self%ds, self%memo_x, self%e1, self%l1, self%th1, ga, gb)
+      self%memo_e(:, ga:gb) = self%e1(:, ga:gb)
+      self%memo_l(ga:gb) = self%l1(ga:gb)
+      self%memo_th(ga + 1:gb) = self%th1(ga + 1:gb)
+      call bend_nodes(self, max(2, lo - 1), min(n - 1, hi + 1))
+      ca = max(1, lo - 1)
+      cb = min(n - 1, hi)
+      ! The end cells for the reactions (rod_reaction), when outside.
+      if (ca > 1) then
+         call bend_nodes(self, 2, 2)
+         call window_cells(1, 1)
+      end if
+      if (cb < n - 1) then
+         call bend_nodes(self, n - 1, n - 1)
+         call window_cells(n - 1, n - 1)
+      end if
+      call window_cells(ca, cb)
+      self%memo_valid = .true.
+      self%load_node = 0
+      call assemble_window(self, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
+
+   contains
+
+      subroutine window_cells(c1, c2)
+         integer, intent(in) :: c1, c2
+         call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
+                         self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
+                         with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok, self%memo_dphi, c1, c2)
+      end subroutine window_cells
+   end subroutine step_window
+
+   !> The bending terms of a step (bend_divided) at the nodes k1 .. k2: the moment, its
+   !> derivative and, where computed, the new bending energy (memo). One call site, so that
+   !> the compiler keeps bend_divided inline as in the loop it came from.
+   subroutine bend_nodes(self, k1, k2)
+      type(rod_piece), intent(inout) :: self
+      integer, intent(in) :: k1, k2
+      integer :: k
+      do k = k1, k2
+         call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k), &
+                           self%memo_b(k), self%memo_b_ok(k))
+      end do
+   end subroutine bend_nodes
+
+   !> geometry_of on the cells ca .. cb: their vectors and lengths, and the turning angles of
+   !> the nodes between two of them (ca + 1 .. cb); positions r of all n nodes (2 n).
+   pure subroutine geometry_cells(n, ds, r, e, l, th, ca, cb)
+      integer, intent(in) :: n, ca, cb
+      real(dp), intent(in) :: ds(n - 1), r(2, n)
+      real(dp), intent(inout) :: e(2, n - 1), l(n - 1), th(n)
+      integer :: c, k
+      do c = ca, cb
+         e(:, c) = (r(:, c + 1) - r(:, c))/ds(c)
+         l(c) = norm2(e(:, c))
+      end do
+      do k = ca + 1, cb
+         th(k) = atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
+      end do
+   end subroutine geometry_cells
+
+   !> assemble (dynamic) on the rows and columns of the nodes lo .. hi, from the cell
+   !> forces and blocks step_window computed; the positions of all nodes in memo_x.
+   !> Each residual entry gets its terms in assemble's order.
+   subroutine assemble_window(self, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
+      type(rod_piece), intent(inout) :: self
+      integer, intent(in) :: lo, hi
+      real(dp), intent(in) :: t0, dt, theta
+      real(dp), intent(out) :: residual(:)
+      type(band_matrix), intent(inout) :: jacobian
+      logical, intent(in) :: with_jacobian
+      integer :: n, k, a, i, off, va, vb
+      real(dp) :: scale, rate, mv(2), fext(2), t_new
+      logical :: held_a, held_b
+      n = self%n
+      scale = 1/self%tension_ref
+      held_a = self%end_a%held()
+      held_b = self%end_b%held()
+      t_new = t0 + dt
+      off = 2*(lo - 1)
+      ! New velocities where the rows (and the reactions at the ends) need them.
+      va = max(1, lo - 2)
+      vb = min(n, hi + 2)
+      call window_velocities(va, vb)
+      if (va > 1) call window_velocities(1, min(3, n))
+      if (vb < n) call window_velocities(max(1, n - 2), n)
+      do k = lo, hi
+         i = 2*(k - 1) - off
+         residual(i + 1:i + 2) = 0
+         if (k > 1) residual(i + 1:i + 2) = residual(i + 1:i + 2) + self%force(:, k - 1)
+         if (k < n) residual(i + 1:i + 2) = residual(i + 1:i + 2) - self%force(:, k)
+         residual(i + 2) = residual(i + 2) + node_weight(self, k)
+         residual(i + 1) = residual(i + 1) - self%load_node(1, k)
+         residual(i + 2) = residual(i + 2) - self%load_node(2, k)
+         if (k == 1) then
+            fext = 0.5_dp*(self%end_a%applied_force(t0) + self%end_a%applied_force(t_new))
+            residual(i + 1:i + 2) = residual(i + 1:i + 2) - fext
+         end if
+         if (k == n) then
+            fext = 0.5_dp*(self%end_b%applied_force(t0) + self%end_b%applied_force(t_new))
+            residual(i + 1:i + 2) = residual(i + 1:i + 2) - fext
+         end if
+         ! (M V^n+1)_k in mass_product's order.
+         mv = self%mass(0, k)*self%v1(:, k)
+         if (k >= 2) mv = mv + self%mass(1, k - 1)*self%v1(:, k - 1)
+         if (k <= n - 1) mv = mv + self%mass(1, k)*self%v1(:, k + 1)
+         if (k >= 3) mv = mv + self%mass(2, k - 2)*self%v1(:, k - 2)
+         if (k <= n - 2) mv = mv + self%mass(2, k)*self%v1(:, k + 2)
+         do a = 1, 2
+            residual(i + a) = residual(i + a) + (mv(a) - self%mv0(a, k))/dt
+         end do
+      end do
+      residual = residual*scale
+      if (held_a .and. lo == 1) residual(1:2) = (self%memo_x(1:2) - self%end_a%position(t_new))/self%length_ref
+      if (held_b .and. hi == n) residual(2*(hi - lo) + 1:2*(hi - lo) + 2) = &
+         (self%memo_x(2*n - 1:2*n) - self%end_b%position(t_new))/self%length_ref
+      if (.not. with_jacobian) return
+      rate = 1/(theta*dt*dt)
+      call jacobian%clear()
+      call add_jacobian_window(n, lo, hi, jacobian%ldab, jacobian%kl + jacobian%ku + 1, jacobian%ab, self%block, &
+                               self%ds, self%mass, scale, rate, held_a, held_b)
+      if (held_a .and. lo == 1) then
+         jacobian%ab(jacobian%kl + jacobian%ku + 1, 1:2) = 1/self%length_ref
+      end if
+      if (held_b .and. hi == n) then
+         jacobian%ab(jacobian%kl + jacobian%ku + 1, 2*(hi - lo) + 1:2*(hi - lo) + 2) = 1/self%length_ref
+      end if
+
+   contains
+
+      subroutine window_velocities(k1, k2)
+         integer, intent(in) :: k1, k2
+         integer :: kk, aa
+         do kk = k1, k2
+            do aa = 1, 2
+               self%v1(aa, kk) = ((self%memo_x(2*kk - 2 + aa) - self%r0(aa, kk))/dt - (1 - theta)*self%v0(aa, kk))/theta
+            end do
+         end do
+      end subroutine window_velocities
+   end subroutine assemble_window
+
+   !> add_jacobian (dynamic) on the rows and columns of the nodes lo .. hi: the window's
+   !> matrix, its row and column 1 those of node lo's first unknown.
+   pure subroutine add_jacobian_window(n, lo, hi, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b)
+      integer, intent(in) :: n, lo, hi, ldab, band0
+      real(dp), intent(inout) :: ab(ldab, 2*(hi - lo + 1))
+      real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
+      logical, intent(in) :: held_a, held_b
+      integer :: c, cp, side, node, col, row, k, a, off
+      real(dp) :: sgn, blk(2, 2)
+      off = 2*(lo - 1)
+      do c = max(1, lo - 1), min(n - 1, hi)
+         do cp = max(1, c - 1), min(n - 1, c + 1)
+            do side = 0, 1
+               node = cp + side
+               if (node < lo .or. node > hi) cycle
+               sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
+               blk = block(:, :, cp - c, c)*sgn*scale
+               col = 2*(node - 1) - off
+               if (c >= lo .and. .not. (c == 1 .and. held_a)) then
+                  row = 2*(c - 1) - off - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
+               end if
+               if (c + 1 <= hi .and. .not. (c + 1 == n .and. held_b)) then
+                  row = 2*c - off - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) + blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) + blk(2, 2)
+               end if
+            end do
+         end do
+      end do
+      ! The mass term, as in add_jacobian, on the window's columns.
+      do k = lo, hi
+         if (k == 1 .and. held_a) cycle
+         if (k == n .and. held_b) cycle
+         do a = 1, 2
+            row = 2*(k - 1) + a - off
+            if (k - 2 >= lo) ab(band0 + 4, row - 4) = ab(band0 + 4, row - 4) + mass(2, k - 2)*rate*scale
+            if (k - 1 >= lo) ab(band0 + 2, row - 2) = ab(band0 + 2, row - 2) + mass(1, k - 1)*rate*scale
+            ab(band0, row) = ab(band0, row) + mass(0, k)*rate*scale
+            if (k + 1 <= hi) ab(band0 - 2, row + 2) = ab(band0 - 2, row + 2) + mass(1, k)*rate*scale
+            if (k + 2 <= hi) ab(band0 - 4, row + 4) = ab(band0 - 4, row + 4) + mass(2, k)*rate*scale
+         end do
+      end do
+   end subroutine add_jacobian_window
+
    !> The cell forces N_c and, with_jacobian, their blocks dN_c/de_c' of a step (rod_step_system's
    !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
-   !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1.
+   !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1; the cells ca .. cb only.
    subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, w0, ds, mom, dmom, damping, dt, couple_first, couple_last, &
-                         with_jacobian, force, block, w1, w1_ok, dphi1)
+                         with_jacobian, force, block, w1, w1_ok, dphi1, ca, cb)
       integer, intent(in) :: n
       class(material_law), intent(in) :: law
       real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), w0(n - 1), ds(n - 1), mom(n), &
@@ -645,15 +882,17 @@ contains
       logical, intent(in) :: with_jacobian
       real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
       !> W(eps1) of each cell where it was computed (w1_ok).
-      real(dp), intent(out) :: w1(n - 1)
-      logical, intent(out) :: w1_ok(n - 1)
+      real(dp), intent(inout) :: w1(n - 1)
+      logical, intent(inout) :: w1_ok(n - 1)
       !> Rotation of each cell from e0 to e1, rad.
-      real(dp), intent(out) :: dphi1(n - 1)
+      real(dp), intent(inout) :: dphi1(n - 1)
+      !> First and last cell to compute.
+      integer, intent(in) :: ca, cb
       integer :: c
       real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid, f, fp, fpp
       real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
       jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
-      do c = 1, n - 1
+      do c = ca, cb
          associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
             ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
             eps0 = l0 - 1

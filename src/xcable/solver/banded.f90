@@ -97,6 +97,8 @@ module xcable_solver_banded
       procedure :: init => band_init
       !> Set every entry to zero.
       procedure :: clear => band_clear
+      !> Use the first m columns only (m at most the allocated order): a smaller matrix in the same storage.
+      procedure :: set_order => band_set_order
       !> Row of ab that holds A(i, j).
       procedure :: row => band_row
       !> Factorise in place (band_lu, or dgbtrf).
@@ -130,6 +132,28 @@ contains
       self%ipiv = 0
       self%factorised = .false.
    end subroutine band_init
+
+   !> Make the matrix of order m in the same storage (its first m columns; m
+   !> at most the order it was allocated for). Forgets any factorisation.
+   subroutine band_set_order(self, m, error)
+      !> Matrix.
+      class(band_matrix), intent(inout) :: self
+      !> New order.
+      integer, intent(in) :: m
+      !> Error when m is not in 1 .. the allocated order.
+      type(error_type), allocatable, intent(out) :: error
+      if (.not. allocated(self%ab)) then
+         call fatal_error(error, 'band_set_order: matrix not allocated', stat_numerics)
+         return
+      end if
+      if (m < 1 .or. m > size(self%ab, 2)) then
+         call fatal_error(error, 'band_set_order: order '//str(m)//' outside 1 .. '//str(size(self%ab, 2)), &
+                          stat_numerics)
+         return
+      end if
+      self%n = m
+      self%factorised = .false.
+   end subroutine band_set_order
 
    !> Set every entry to zero.
    pure subroutine band_clear(self)

@@ -144,12 +144,20 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical :: fresh, converged
       real(dp) :: dnorm, dnorm_prev, rnorm, rate
-      integer :: it, growth
+      integer :: it, growth, m
 
+      ! The unknowns may be fewer than the workspace was made for (a window of a larger
+      ! problem, rod_run's skip of the quiescent cable): the work arrays' first m entries.
+      m = size(x)
+      if (m /= work%jacobian%n) then
+         call work%jacobian%set_order(m, error)
+         if (allocated(error)) return
+         work%usable = .false.
+      end if
       if (.not. options%reuse_jacobian) work%usable = .false.
       fresh = .not. work%usable .or. work%contraction > options%refresh_contraction
-      call problem%evaluate(x, work%residual, work%jacobian, fresh)
-      rnorm = maxval(abs(work%residual))
+      call problem%evaluate(x, work%residual(1:m), work%jacobian, fresh)
+      rnorm = maxval(abs(work%residual(1:m)))
       report%residual_norm(0) = rnorm
       if (.not. ieee_is_finite(rnorm)) then
          call fatal_error(error, 'Newton: residual is not finite (NaN or Inf) at the first guess', stat_numerics)
@@ -165,11 +173,11 @@ contains
             work%usable = .true.
             report%factorisations = report%factorisations + 1
          end if
-         work%update = work%residual
-         call work%jacobian%solve(work%update, error)
+         work%update(1:m) = work%residual(1:m)
+         call work%jacobian%solve(work%update(1:m), error)
          if (allocated(error)) return
-         x = x - work%update
-         dnorm = maxval(abs(work%update)/work%scale)
+         x = x - work%update(1:m)
+         dnorm = maxval(abs(work%update(1:m))/work%scale(1:m))
          report%iterations = it
          if (it <= size(report%update_norm)) report%update_norm(it) = dnorm
          if (.not. ieee_is_finite(dnorm)) then
@@ -188,8 +196,8 @@ contains
             work%contraction = 0
             if (it >= 2) work%contraction = rate
             if (options%final_residual) then
-               call problem%evaluate(x, work%residual, work%jacobian, .false.)
-               if (it <= ubound(report%residual_norm, 1)) report%residual_norm(it) = maxval(abs(work%residual))
+               call problem%evaluate(x, work%residual(1:m), work%jacobian, .false.)
+               if (it <= ubound(report%residual_norm, 1)) report%residual_norm(it) = maxval(abs(work%residual(1:m)))
             end if
             return
          end if
@@ -205,8 +213,8 @@ contains
             return
          end if
          dnorm_prev = dnorm
-         call problem%evaluate(x, work%residual, work%jacobian, fresh)
-         rnorm = maxval(abs(work%residual))
+         call problem%evaluate(x, work%residual(1:m), work%jacobian, fresh)
+         rnorm = maxval(abs(work%residual(1:m)))
          if (it <= ubound(report%residual_norm, 1)) report%residual_norm(it) = rnorm
          if (.not. ieee_is_finite(rnorm)) then
             call fatal_error(error, 'Newton: residual is not finite (NaN or Inf) at iteration '//str(it), stat_numerics)

@@ -131,7 +131,7 @@ module xcable_io_config
       !> First guess of a step by extrapolation.
       logical :: extrapolate = .true.
       !> Rod: solve each step only where the cable moves.
-      logical :: skip_quiescent = .false.
+      logical :: skip_quiescent = .true.
       !> Smallest step of the step control, as a fraction of dt.
       real(dp) :: min_step_fraction = 1.0_dp/1024
       !> Wall-clock limit, s (0: none).

@@ -240,7 +240,7 @@ contains
                '.false. for the rod (its factorisation is cheap and full Newton takes 2-5 iterations)')
       call add(t, 'numerics', 'extrapolate', 'logical', '-', '.true.', &
                'first guess of a step by extrapolation (rod: R + dt V; box: linearly from the two previous levels)')
-      call add(t, 'numerics', 'skip_quiescent', 'logical', '-', '.false.', &
+      call add(t, 'numerics', 'skip_quiescent', 'logical', '-', '.true.', &
                'planar rod: solve each step only on the part of the cable that moves (the nodes that moved in the '// &
                'last step by more than 1e-5 newton_tol cell lengths or 16 units of round-off of the coordinates, '// &
                'and 8 nodes on either side; grown and solved again when the motion reaches the margin); the rest '// &

@@ -18,7 +18,7 @@ module suite_rod_statics
    private
    public :: collect_rod_statics, statics_config
 
-   integer, parameter :: ladder(4) = [31, 61, 121, 241]
+   integer, parameter :: ladder(4) = [31, 61, 121, 241], suite_ladder(4) = ladder
 
 contains
 
@@ -29,6 +29,9 @@ contains
                new_unittest('inclined_taut', test_inclined_taut), &
                new_unittest('inclined_slack_linear_law', test_inclined_slack), &
                new_unittest('hanging_from_one_end', test_hanging), &
+               new_unittest('very_slack_rope_catenary', test_very_slack_rope), &
+               new_unittest('very_slack_paper_cable_refined', test_very_slack_paper), &
+               new_unittest('current_towards_end_a', test_current_towards_a), &
                new_unittest('newton_quadratic', test_newton), &
                new_unittest('tension_too_small_refused', test_too_small), &
                new_unittest('ends_too_far_apart_refused', test_too_far)]
@@ -110,17 +113,24 @@ contains
    !> A line held between two points at different heights against the exact
    !> catenary between them: the force at both supports, the angle of the end
    !> cells, the lowest point and the stretched length, on the ladder.
-   subroutine inclined(error, c, label, bounds)
+   subroutine inclined(error, c, label, bounds, nodes, no_order)
       type(error_type), allocatable, intent(out) :: error
       type(case_config), intent(inout) :: c
       character(*), intent(in) :: label
       real(dp), intent(in) :: bounds(6)
+      !> The ladder of node counts (default: ladder); the bounds hold at the last.
+      integer, intent(in), optional :: nodes(:)
+      !> Quantities whose order is not checked (their error has reached a floor that is not the grid's).
+      logical, intent(in), optional :: no_order(6)
       type(simulation) :: sim
-      real(dp) :: err(6, size(ladder)), n0(2), nl(2), pa(2), pb(2), rr(2, 3), ee(3), tt(3), s_low, z_low, stretched
+      integer, allocatable :: ladder(:)
+      real(dp) :: err(6, 8), n0(2), nl(2), pa(2), pb(2), rr(2, 3), ee(3), tt(3), s_low, z_low, stretched
       real(dp) :: order, ta(2), tb(2), na(2), nb(2)
       character(len=14), parameter :: what(6) = [character(len=14) :: 'force at a', 'force at b', 'angle at a', &
                                                  'angle at b', 'lowest point', 'stretched len']
       integer :: i, q, n
+      ladder = suite_ladder
+      if (present(nodes)) ladder = nodes
       do i = 1, size(ladder)
          c%nodes = ladder(i)
          n = ladder(i)
@@ -157,10 +167,13 @@ contains
       end do
       n = size(ladder)
       do q = 1, 6
-         call check(error, abs(err(q, n)) <= bounds(q), label//': '//trim(what(q))//' error at 241 nodes '// &
-                    str(err(q, n))//' exceeds '//str(bounds(q)))
+         call check(error, abs(err(q, n)) <= bounds(q), label//': '//trim(what(q))//' error at '// &
+                    str(ladder(n))//' nodes '//str(err(q, n))//' exceeds '//str(bounds(q)))
          if (allocated(error)) return
          if (abs(err(q, n - 1) - err(q, n)) < 1.0e-12_dp) cycle
+         if (present(no_order)) then
+            if (no_order(q)) cycle
+         end if
          order = log(abs((err(q, n - 2) - err(q, n - 1))/(err(q, n - 1) - err(q, n))))/log(2.0_dp)
          write (output_unit, '(4x,a,a,f6.2)') trim(what(q)), ': observed order ', order
          call check(error, order > 1.7_dp .and. order < 2.4_dp, label//': '//trim(what(q))//' converges at order '// &
@@ -217,6 +230,130 @@ contains
       call inclined(error, c, 'slack, linear law, end b 15 m lower', &
                     [1.0e-5_dp, 1.0e-5_dp, 1.0e-5_dp, 1.0e-5_dp, 1.0e-5_dp, 1.0e-6_dp])
    end subroutine test_inclined_slack
+
+   !> A very slack rope (compression = 'none', EI 1e-3 N m^2) held at two points
+   !> 5 m apart, 60 m long: two nearly vertical legs joined by a bottom of
+   !> radius 0.6 m. Newton from the catenary guess diverges at every grid (the
+   !> squeezed cells of a rope that cannot push have no stiffness); the
+   !> relaxation (rod_statics.f90) finds the state. The lowest point and the
+   !> stretched length converge to the exact catenary at second order; the
+   !> end forces and angles reach a floor of 6.1e-6 at 241 and 481 nodes
+   !> alike (not the grid's, nor EI's: the same with EI 1e-3), so their order
+   !> is not checked. Bounds: 3 times the values measured at 241 nodes.
+   subroutine test_very_slack_rope(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      c = statics_config(61)
+      c%compression = 'none'
+      c%end_b%x = 5
+      c%end_b%z = 0
+      c%bending_stiffness = 1.0e-5_dp
+      c%given = 'end_b%x end_b%z'
+      call inclined(error, c, 'very slack rope, ends 5 m apart', &
+                    [2.0e-5_dp, 2.0e-5_dp, 2.0e-5_dp, 2.0e-5_dp, 5.0e-4_dp, 5.0e-8_dp], nodes=[61, 121, 241], &
+                    no_order=[.true., .true., .true., .true., .false., .false.])
+   end subroutine test_very_slack_rope
+
+   !> The paper's cable (its EI) held at two points 5 m apart, with
+   !> compression = 'law' and 'none': the bending stiffness shapes the bottom
+   !> (bending length 2-4 m against the catenary's bottom radius of 0.6 m), so
+   !> the reference is the grid: the 241-node state (Newton from the catenary
+   !> fails there with either option) against the 961-node one at the common
+   !> nodes, second order from 241, 481, 961. With 'none' it needs the
+   !> relaxation with the law continued below zero.
+   subroutine test_very_slack_paper(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=4), parameter :: option(2) = ['law ', 'none']
+      type(case_config) :: c
+      type(simulation) :: sim
+      real(dp), allocatable :: r(:, :, :)
+      real(dp) :: d(2), order, w
+      integer, parameter :: grid(3) = [241, 481, 961]
+      integer :: i, j
+      c = statics_config(241)
+      c%end_b%x = 5
+      c%end_b%z = 0
+      c%given = 'end_b%x end_b%z'
+      allocate (r(2, grid(1), 3))
+      do j = 1, 2
+         c%compression = trim(option(j))
+         do i = 1, 3
+            c%nodes = grid(i)
+            call sim%prepare(c, error)
+            if (allocated(error)) return
+            r(:, :, i) = sim%rod%static%r(:, ::(grid(i) - 1)/(grid(1) - 1))
+            if (i == 1) then
+               w = sim%rod%scene%weight
+               call check_close(error, sim%rod%static%reaction_a(2) + sim%rod%static%reaction_b(2), w*c%length, &
+                                'vertical support forces against the weight', rel_tol=1.0e-12_dp)
+               if (allocated(error)) return
+            end if
+         end do
+         d = [maxval(norm2(r(:, :, 1) - r(:, :, 3), 1)), maxval(norm2(r(:, :, 2) - r(:, :, 3), 1))]/c%length
+         order = log(maxval(norm2(r(:, :, 1) - r(:, :, 2), 1))/maxval(norm2(r(:, :, 2) - r(:, :, 3), 1)))/log(2.0_dp)
+         write (output_unit, '(4x,a,2es11.3,a,f6.2)') 'paper cable, ends 5 m apart, '//option(j)// &
+            ': largest node distance / L to 961 nodes at 241, 481:', d, '; observed order', order
+         call check(error, d(1) <= 1.2e-4_dp, option(j)//': 241 nodes differ from 961 by '//str(d(1))//' L')
+         if (allocated(error)) return
+         call check(error, order > 1.7_dp .and. order < 2.4_dp, option(j)//': the static state converges at order '// &
+                    str(order))
+         if (allocated(error)) return
+      end do
+   end subroutine test_very_slack_paper
+
+   !> The line of bench/peer/sway3d.py (60 m, end b 48 m along and 24 m up, in
+   !> sea water) in a current of 2 m/s towards end a. Weight and drag bow the
+   !> line to opposite sides of its chord; the continuation in the loads from
+   !> the hanging line stalled at 13 % (61 nodes). The relaxation from the
+   !> catenary under the mean load finds the bow of the current: all cells in
+   !> tension, the line turning clockwise (the drag-only closed form turns by
+   !> -1.94 rad with T = 910 N), end tensions converging at second order.
+   subroutine test_current_towards_a(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      integer, parameter :: grid(3) = [31, 61, 121]
+      real(dp) :: ta(3), turning, a(2), b(2), order
+      integer :: i, k, n
+      c = statics_config(61)
+      c%law = 'linear'
+      c%ea = 451603.943953533_dp
+      c%diameter = 0.05_dp
+      c%fluid_density = 1025
+      c%cd_normal = 1.2_dp
+      c%cd_tangential = 0.008_dp
+      c%ca_normal = 1
+      c%current_x = -2
+      c%end_b%x = 48
+      c%end_b%z = 24
+      c%model = '2d'
+      c%given = 'end_b%x end_b%z'
+      do i = 1, 3
+         c%nodes = grid(i)
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         n = grid(i)
+         ta(i) = norm2(sim%rod%static%reaction_a)
+         turning = 0
+         associate (r => sim%rod%static%r)
+            do k = 2, n - 1
+               a = r(:, k) - r(:, k - 1)
+               b = r(:, k + 1) - r(:, k)
+               turning = turning + atan2(a(1)*b(2) - a(2)*b(1), dot_product(a, b))
+            end do
+            call check(error, minval(norm2(r(:, 2:n) - r(:, 1:n - 1), 1))/(c%length/(n - 1)) > 1, &
+                       'a cell in compression at '//str(n)//' nodes')
+            if (allocated(error)) return
+         end associate
+         write (output_unit, '(4x,a,i4,a,f9.3,a,f8.4,a)') 'current of 2 m/s towards end a,', n, ' nodes: T_a', &
+            ta(i), ' N, turning', turning, ' rad'
+         call check(error, turning > -2.1_dp .and. turning < -1.8_dp, 'total turning '//str(turning)//' rad')
+         if (allocated(error)) return
+      end do
+      order = log(abs((ta(1) - ta(2))/(ta(2) - ta(3))))/log(2.0_dp)
+      write (output_unit, '(4x,a,f6.2)') 'T_a: observed order', order
+      call check(error, order > 1.7_dp .and. order < 2.4_dp, 'T_a converges at order '//str(order))
+   end subroutine test_current_towards_a
 
    !> End a fixed, end b carrying a point mass: the line hangs straight down,
    !> the tension at the support is the weight of cable and mass, and the

@@ -15,6 +15,11 @@
 !> interior node the two cells turn back on themselves, by more than pi/2)
 !> counts as a failed solve: with distributed loads the continuation in
 !> them is tried, and a folded state is never returned (issue 15).
+!>
+!> When all that fails (both ends held or one), the statics relaxes: a
+!> sequence of anchored equilibria (anchored_problem), an overdamped path to
+!> the state, then Newton with the fold check from there (docs/numerics.md,
+!> Statics when Newton fails). A state the direct path finds is unchanged.
 module xcable_rod_statics
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
@@ -22,7 +27,10 @@ module xcable_rod_statics
    use xcable_scene, only: scene_type
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_ends_fixed, only: fixed_end
-   use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
+   use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
+   use xcable_solver_banded, only: band_matrix
+   use xcable_material_law, only: material_law
+   use xcable_material_tension_only, only: tension_only_law
    use xcable_theory, only: catenary_from_force, catenary_between, catenary_summary
    implicit none
    private
@@ -30,6 +38,24 @@ module xcable_rod_statics
 
    !> Scaled update at which the static solve stops.
    real(dp), parameter :: static_tolerance = 1.0e-10_dp
+
+   !> The static equilibrium with every loaded node tied by a spring to an
+   !> anchor point (the last accepted state of the relaxation): residual
+   !> R(x) + k (x - anchor) on the rows of nodes that are not held. It is the
+   !> equilibrium after one implicit step of the overdamped motion from the
+   !> anchor; for conservative loads it minimises the energy plus k |x - anchor|^2 / 2.
+   type, extends(newton_problem) :: anchored_problem
+      !> The rod's static problem.
+      type(rod_problem), pointer :: rod => null()
+      !> Anchor points, 2 per node.
+      real(dp), allocatable :: anchor(:)
+      !> Spring stiffness in residual units per metre.
+      real(dp) :: stiffness = 0
+      !> First and last row that carries a spring.
+      integer :: first = 1, last = 0
+   contains
+      procedure :: evaluate => anchored_evaluate
+   end type anchored_problem
 
    !> A static solution.
    type :: rod_static_state
@@ -53,7 +79,7 @@ contains
       !> Scene.
       type(scene_type), intent(in) :: scene
       !> The piece (whole cable) as a Newton problem.
-      type(rod_problem), intent(inout) :: problem
+      type(rod_problem), intent(inout), target :: problem
       !> Newton controls (the iteration limit is used; the tolerance is static_tolerance).
       type(newton_options), intent(in) :: options
       !> The solution.
@@ -99,7 +125,7 @@ contains
       else
          call first_guess(error)
          if (allocated(error)) return
-         call solve_with_loads(error)
+         call solve_or_relax(error)
          if (allocated(error)) return
       end if
       call finish()
@@ -192,6 +218,174 @@ contains
                                          stat_numerics)
       end subroutine solve_with_loads
 
+      !> The direct solve (with its continuation in the loads); only when that
+      !> fails, the relaxation under the full loads: with distributed loads
+      !> first from the catenary under their mean on the straight chord (a
+      !> strong current can bow the line to the other side of the chord than
+      !> its weight, and the bending energy, unbounded as cells fold, keeps the
+      !> line from turning through a fold to get there), then from the
+      !> catenary under the weight.
+      subroutine solve_or_relax(err)
+         type(error_type), allocatable, intent(out) :: err
+         type(error_type), allocatable :: err2
+         real(dp), allocatable :: guess(:, :)
+         logical :: loaded
+         guess = state%r
+         call solve_with_loads(err)
+         if (.not. allocated(err)) return
+         problem%piece%load_factor = 1
+         call loaded_guess(loaded)
+         if (loaded) then
+            call relax_rope(err2)
+            if (.not. allocated(err2)) then
+               deallocate (err)
+               return
+            end if
+            err%message = err%message//'; relaxation from the catenary under the mean load: '//err2%message
+            deallocate (err2)
+         end if
+         state%r = guess
+         call relax_rope(err2)
+         if (.not. allocated(err2)) then
+            deallocate (err)
+            return
+         end if
+         err%message = err%message//'; relaxation: '//err2%message
+      end subroutine solve_or_relax
+
+      !> Relax from state%r. A rope that cannot push (compression = 'none') is
+      !> first relaxed as one that can (its law continued below zero strain:
+      !> without it a squeezed cell has no stiffness at all and can collapse on
+      !> the way), and Newton for the rope itself starts from that state.
+      subroutine relax_rope(err)
+         type(error_type), allocatable, intent(out) :: err
+         class(material_law), allocatable :: own
+         logical :: rope
+         rope = .false.
+         select type (law => problem%piece%law)
+         type is (tension_only_law)
+            rope = .true.
+         end select
+         if (rope) then
+            call move_alloc(problem%piece%law, own)
+            select type (law => own)
+            type is (tension_only_law)
+               allocate (problem%piece%law, source=law%base)
+            end select
+         end if
+         call relax(err)
+         if (.not. allocated(own)) return
+         deallocate (problem%piece%law)
+         call move_alloc(own, problem%piece%law)
+         if (allocated(err)) return
+         call solve_now(err)
+         if (.not. allocated(err)) return
+         deallocate (err)
+         call relax(err)
+      end subroutine relax_rope
+
+      !> Both ends held, distributed loads: the catenary between the ends under
+      !> the weight plus the mean of the loads on the straight chord, taken as a
+      !> uniform load (found = .false. when there is none or no such catenary).
+      subroutine loaded_guess(found)
+         logical, intent(out) :: found
+         type(error_type), allocatable :: err
+         type(band_matrix) :: unused
+         real(dp) :: pa(2), pb(2), g(2), q(2, 2), n0(2), res(2*n), ss(n), rr(2, n), eps(n), ten(n), x(2*n)
+         integer :: k
+         found = .false.
+         if (.not. (problem%piece%end_a%held() .and. problem%piece%end_b%held())) return
+         if (.not. allocated(problem%piece%loads)) return
+         if (size(problem%piece%loads) == 0) return
+         pa = problem%piece%end_a%position(0.0_dp)
+         pb = problem%piece%end_b%position(0.0_dp)
+         ss = problem%piece%s - problem%piece%s(1)
+         do k = 1, n
+            x(2*k - 1:2*k) = pa + (pb - pa)*ss(k)/ss(n)
+         end do
+         call unused%init(2*n, rod_kl, rod_ku)
+         call problem%evaluate(x, res, unused, .false.)
+         g = sum(problem%piece%load_node, 2)/scene%length - [0.0_dp, scene%weight]
+         if (.not. (norm2(g) > 0)) return
+         ! The rotation q that turns g onto -e_z.
+         q(1, :) = [-g(2), g(1)]/norm2(g)
+         q(2, :) = -g/norm2(g)
+         call catenary_between(scene%law, norm2(g), scene%length, [0.0_dp, 0.0_dp], matmul(q, pb - pa), n0, err)
+         if (allocated(err)) return
+         call catenary_from_force(scene%law, norm2(g), n0, [0.0_dp, 0.0_dp], ss, rr, eps, ten)
+         do k = 1, n
+            state%r(:, k) = pa + matmul(transpose(q), rr(:, k))
+         end do
+         found = .true.
+      end subroutine loaded_guess
+
+      !> Pseudo-transient relaxation from state%r: a sequence of anchored
+      !> equilibria (anchored_problem), each anchored at the last, the spring
+      !> stiffened fourfold when its solve fails or moves a node by more than
+      !> one cell length and softened fourfold when it succeeds, until Newton
+      !> on the bare problem (solve_now, with its fold check) converges from
+      !> the relaxed state. The path is that of an overdamped motion, so it
+      !> does not jump, as an undamped Newton step can, past the equilibrium
+      !> into a folded or far-off state.
+      subroutine relax(err)
+         type(error_type), allocatable, intent(out) :: err
+         integer, parameter :: max_steps = 2000
+         type(anchored_problem) :: anchored
+         type(newton_workspace) :: work
+         type(newton_options) :: opts
+         type(newton_report) :: report
+         type(error_type), allocatable :: sub
+         real(dp), allocatable :: x(:), trial(:), res(:)
+         real(dp) :: moved, polish_below, k0
+         integer :: steps, accepted
+         anchored%rod => problem
+         anchored%first = 1
+         anchored%last = 2*n
+         if (problem%piece%end_a%held()) anchored%first = 3
+         if (problem%piece%end_b%held()) anchored%last = 2*n - 2
+         call work%init(2*n, rod_kl, rod_ku, spread(problem%piece%length_ref, 1, 2*n))
+         opts = options
+         opts%tolerance = 1.0e-8_dp
+         opts%max_iterations = 12
+         opts%reuse_jacobian = .false.
+         opts%final_residual = .false.
+         x = reshape(state%r, [2*n])
+         allocate (res(2*n))
+         call problem%evaluate(x, res, work%jacobian, .false.)
+         ! The first spring moves the worst node by about one cell length.
+         k0 = max(maxval(abs(res(anchored%first:anchored%last))), tiny(1.0_dp))/problem%piece%length_ref
+         anchored%stiffness = k0
+         polish_below = 1.0e-2_dp
+         accepted = 0
+         do steps = 1, max_steps
+            anchored%anchor = x
+            trial = x
+            call newton_solve(anchored, trial, work, opts, report, sub)
+            state%newton_iterations = state%newton_iterations + report%iterations
+            moved = huge(1.0_dp)
+            if (.not. allocated(sub)) moved = maxval(abs(trial - x))/problem%piece%length_ref
+            if (allocated(sub)) deallocate (sub)
+            if (.not. (moved <= 1)) then
+               anchored%stiffness = 4*anchored%stiffness
+               if (anchored%stiffness > 1.0e12_dp*k0) exit
+               cycle
+            end if
+            x = trial
+            accepted = accepted + 1
+            anchored%stiffness = 0.25_dp*anchored%stiffness
+            if (moved < polish_below) then
+               state%r = reshape(x, [2, n])
+               call solve_now(sub)
+               if (.not. allocated(sub)) return
+               deallocate (sub)
+               polish_below = 0.1_dp*polish_below
+            end if
+         end do
+         call fatal_error(err, 'no equilibrium reached ('//str(accepted)//' of '//str(steps - 1)// &
+                          ' relaxation steps accepted, spring '//str(anchored%stiffness/k0)//' of the first)', &
+                          stat_numerics)
+      end subroutine relax
+
       !> Newton from state%r.
       subroutine solve_now(err)
          type(error_type), allocatable, intent(out) :: err
@@ -282,7 +476,6 @@ contains
 
       !> Span, sag and the reactions of the solution.
       subroutine finish()
-         use xcable_solver_banded, only: band_matrix
          real(dp) :: x(2*n), res(2*n)
          type(band_matrix) :: unused
          x = reshape(state%r, [2*n])
@@ -294,6 +487,30 @@ contains
          state%sag = sag_below_chord(state%r)
       end subroutine finish
    end subroutine solve_rod_statics
+
+   !> Residual and Jacobian of the anchored equilibrium.
+   subroutine anchored_evaluate(self, x, residual, jacobian, with_jacobian)
+      !> The problem.
+      class(anchored_problem), intent(inout) :: self
+      !> Positions, 2 per node.
+      real(dp), intent(in) :: x(:)
+      !> Residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian (band storage).
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form the Jacobian.
+      logical, intent(in) :: with_jacobian
+      integer :: i, band0
+      call self%rod%evaluate(x, residual, jacobian, with_jacobian)
+      do i = self%first, self%last
+         residual(i) = residual(i) + self%stiffness*(x(i) - self%anchor(i))
+      end do
+      if (.not. with_jacobian) return
+      band0 = jacobian%kl + jacobian%ku + 1
+      do i = self%first, self%last
+         jacobian%ab(band0, i) = jacobian%ab(band0, i) + self%stiffness
+      end do
+   end subroutine anchored_evaluate
    !> Sag: the largest vertical distance of the line below the chord joining its
    !> ends (for ends one above the other, the largest horizontal distance from it).
    pure real(dp) function sag_below_chord(r)

@@ -58,25 +58,20 @@ module suite_checkpoint
    !> the plane (1 m along y, period 2 s), a current across the plane
    !> (0.3 m/s along y), the ledger kept; the fairlead end breaks at 0.6 s
    !> (its force ramped to zero over 0.5 s). 31 nodes, dt 10 ms, to 1.2 s.
-   character(len=*), parameter :: fairlead3d = &
+   character(len=*), parameter :: fairlead_line = &
       "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
       "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
       "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
-      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
-      new_line('a')//"&rupture s_break = 60, t_break = 0.5, time = 0.6 /"//new_line('a')// &
-      "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
-      "&output interval = 0.1, energy = .true., quiet = .true. /"
+      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"//new_line('a')
+   character(len=*), parameter :: fairlead_run = "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
+                                                 "&output interval = 0.1, energy = .true., quiet = .true. /"
+   character(len=*), parameter :: fairlead3d = fairlead_line//"&rupture s_break = 60, t_break = 0.5, time = 0.6 /"// &
+                                               new_line('a')//fairlead_run
 
    !> 3-D: the fairlead scene parted inside instead (s = 20 m of 60) at 0.6 s,
    !> the cut's force, couple and torque ramped to zero over 0.2 s.
-   character(len=*), parameter :: middle3d = &
-      "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
-      "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
-      "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
-      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
-      new_line('a')//"&rupture s_break = 20, t_break = 0.2, time = 0.6 /"//new_line('a')// &
-      "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
-      "&output interval = 0.1, energy = .true., quiet = .true. /"
+   character(len=*), parameter :: middle3d = fairlead_line//"&rupture s_break = 20, t_break = 0.2, time = 0.6 /"// &
+                                             new_line('a')//fairlead_run
 
    !> 3-D: a slack line (end b 40 m along x, 20 m along y) let go at end b,
    !> EI / 1000, 121 nodes, Courant 10 (dt 18 ms), to 0.5 s: 4 attempts are

@@ -55,6 +55,7 @@ contains
       tests = [new_unittest('planar_namelist_3d_equals_2d', test_reduction), &
                new_unittest('planar_break_inside_3d_equals_2d', test_reduction_inside), &
                new_unittest('break_inside_out_of_plane', test_break_inside_3d), &
+               new_unittest('break_inside_in_water_2d', test_break_inside_water_2d), &
                new_unittest('auto_picks_model', test_auto), &
                new_unittest('end_b_off_plane_released', test_off_plane), &
                new_unittest('cross_current', test_cross_current), &
@@ -293,12 +294,9 @@ contains
       type(run_history), pointer :: h, hm
       real(dp), allocatable :: res(:)
       real(dp) :: whole, worst(2), axis(3), cancel, mirror
-      integer :: p, unit
+      integer :: p
       ! At the break.
-      open (newunit=unit, file=path, status='replace', action='write')
-      write (unit, '(a)') current_break('0.3', '0.005')
-      close (unit)
-      call read_config(path, config, error)
+      call read_text(current_break('0.3', '0.005'), config, error)
       if (allocated(error)) return
       call sim%prepare(config, error)
       if (allocated(error)) return
@@ -356,6 +354,56 @@ contains
       if (allocated(error)) return
       call check(error, mirror < 1.0e-13_dp, 'the mirrored scene differs from the mirrored solution by '//str(mirror))
    end subroutine test_break_inside_3d
+
+   !> The planar run's cut forces with distributed loads: a line in water
+   !> between points 50 m apart with a current along x (0.5 m/s), parted at
+   !> s = 20 m at t = 0 with model = '2d': each piece's static residual at the
+   !> break with its cut end at full load is as small as the whole's, and the
+   !> two cut forces cancel (each new end keeps its own cell's share of the
+   !> drag at the break node).
+   subroutine test_break_inside_water_2d(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: config
+      type(band_matrix) :: unused
+      real(dp), allocatable :: res(:), x(:)
+      real(dp) :: whole, worst(2), cancel
+      integer :: p
+      call read_text("&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                     "&end_b kind = 'fixed', x = 50, z = 0 /"//new_line('a')// &
+                     "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_x = 0.5 /"// &
+                     new_line('a')//"&rupture s_break = 20, t_break = 0.01 /"//new_line('a')// &
+                     "&numerics model = '2d', nodes = 41, dt = 0.005, t_end = 0.005, newton_tol = 1e-10 /"// &
+                     new_line('a')//"&output interval = 0, quiet = .true. /", config, error)
+      if (allocated(error)) return
+      call sim%prepare(config, error)
+      if (allocated(error)) return
+      associate (piece => sim%rod%pieces(1)%problem%piece)
+         x = reshape(sim%rod%static%r, [2*piece%n])
+         allocate (res(size(x)))
+         call piece%static_system(x, 0.0_dp, res, unused, .false.)
+         whole = maxval(abs(res))
+      end associate
+      call sim%rod%start(error=error)
+      if (allocated(error)) return
+      call check(error, size(sim%rod%pieces) == 2, 'pieces after the break: '//str(size(sim%rod%pieces)))
+      if (allocated(error)) return
+      do p = 1, 2
+         associate (piece => sim%rod%pieces(p)%problem%piece)
+            x = reshape(sim%rod%pieces(p)%r, [2*piece%n])
+            deallocate (res)
+            allocate (res(size(x)))
+            call piece%static_system(x, 0.0_dp, res, unused, .false.)
+            worst(p) = maxval(abs(res))
+         end associate
+      end do
+      cancel = norm2(sim%rod%cut_force(:, 1) + sim%rod%cut_force(:, 2))/norm2(sim%rod%cut_force(:, 1))
+      write (output_unit, '(4x,a,3es9.2,a,es9.2)') 'break inside in water, 2-D: static residual of the whole, of the '// &
+         'pieces ', whole, worst, '; cut forces cancel to ', cancel
+      call check(error, maxval(worst) < 1.0e-9_dp .and. cancel < 1.0e-9_dp, 'the cut ends do not hold the pieces '// &
+                 'in the static state: residual '//str(maxval(worst))//' (the whole: '//str(whole)// &
+                 '), the cut forces add up to '//str(cancel)//' of one')
+   end subroutine test_break_inside_water_2d
 
    !> model = 'auto': 2-D for a planar scene, 3-D when end b has a y, a force end a y force or a torque,
    !> or the current a y component.

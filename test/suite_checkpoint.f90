@@ -73,6 +73,19 @@ module suite_checkpoint
    character(len=*), parameter :: middle3d = fairlead_line//"&rupture s_break = 20, t_break = 0.2, time = 0.6 /"// &
                                              new_line('a')//fairlead_run
 
+   !> 3-D: end a fixed, end b loaded by a force and a torque of 5 N m (a
+   !> uniform twist) ramped off over 1 s, parted at s = 30 m at 0.05 s over 50
+   !> ms (41 nodes, to 0.2 s): the piece with end b holds its twist at
+   !> neither end, and its anchored twist angle (that at the cut, not the
+   !> static one) must come back on loading.
+   character(len=*), parameter :: twisted3d = &
+      "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+      "&end_b kind = 'force', force_x = 3000, force_z = 1000, torque = 5, history = 'ramp', ramp_time = 1 /"// &
+      new_line('a')// &
+      "&rupture s_break = 30, t_break = 0.05, time = 0.05 /"//new_line('a')// &
+      "&numerics nodes = 41, t_end = 0.2 /"//new_line('a')// &
+      "&output interval = 0.01, energy = .true., quiet = .true. /"
+
    !> 3-D: a slack line (end b 40 m along x, 20 m along y) let go at end b,
    !> EI / 1000, 121 nodes, Courant 10 (dt 18 ms), to 0.5 s: 4 attempts are
    !> rejected (the first at 0.128 s), steps halved and doubled back.
@@ -564,6 +577,10 @@ contains
       call stopped_and_resumed('3-D break inside, SIGTERM during the ramp', c, 8, error, broken=.true.)
       if (allocated(error)) return
       call check(error, c%s_break > 0 .and. c%s_break < 60, 'the middle scene does not break inside')
+      if (allocated(error)) return
+      call case_of(twisted3d, c, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D twisted cable parted inside, SIGTERM during the ramp', c, 9, error, broken=.true.)
       if (allocated(error)) return
       call case_of(release3d, c, error)
       if (allocated(error)) return

@@ -36,6 +36,14 @@ module suite_model3d
 
    character(len=*), parameter :: path = 'build/test_model3d.nml'
 
+   !> End a fixed, end b loaded by a force and a torque of 5 N m, parted at s = 30 m at t = 0 over
+   !> 50 ms; 41 nodes, to 0.2 s (test_break_inside_twisted).
+   character(len=*), parameter :: twisted_break = "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+      "&end_b kind = 'force', force_x = 3000, force_z = 1000, torque = 5 /"//new_line('a')// &
+      "&rupture s_break = 30, t_break = 0.05 /"//new_line('a')// &
+      "&numerics nodes = 41, t_end = 0.2, newton_tol = 1e-10 /"//new_line('a')// &
+      "&output interval = 0.01, energy = .true., quiet = .true. /"
+
    !> Keeps every snapshot, and the extra (3-D) fields when sent.
    type, extends(run_observer) :: keeper
       integer :: n = 0, n_extra = 0
@@ -56,6 +64,7 @@ contains
                new_unittest('planar_break_inside_3d_equals_2d', test_reduction_inside), &
                new_unittest('break_inside_out_of_plane', test_break_inside_3d), &
                new_unittest('break_inside_in_water_2d', test_break_inside_water_2d), &
+               new_unittest('break_inside_twisted', test_break_inside_twisted), &
                new_unittest('auto_picks_model', test_auto), &
                new_unittest('end_b_off_plane_released', test_off_plane), &
                new_unittest('cross_current', test_cross_current), &
@@ -404,6 +413,36 @@ contains
                  'in the static state: residual '//str(maxval(worst))//' (the whole: '//str(whole)// &
                  '), the cut forces add up to '//str(cancel)//' of one')
    end subroutine test_break_inside_water_2d
+
+   !> A twisted cable parted inside: end a fixed, end b loaded by a force and
+   !> a torque of 5 N m (a uniform twist), parted at s = 30 m over 50 ms (41
+   !> nodes, to 0.2 s). The piece with end b holds no twist at either end:
+   !> it keeps the twist angle its first node had at the cut (psi_anchor)
+   !> instead of spinning to 0 in the first step, whose work the ledger would
+   !> book (drift 1.2e-4 so). Piece 1's twist rate falls with the cut's
+   !> torque, piece 2's stays that of end b's torque; the ledger closes.
+   subroutine test_break_inside_twisted(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(keeper) :: obs
+      type(run_summary), pointer :: s
+      real(dp) :: rate_a, rate_b, rate0
+      integer :: kb
+      call run_case(twisted_break, sim, obs, error)
+      if (allocated(error)) return
+      s => sim%summary()
+      kb = sim%rod%break_node
+      rate0 = obs%extra(kb, 4, 1)
+      rate_a = obs%extra(kb, 4, obs%n_extra)
+      rate_b = obs%extra(kb + 1, 4, obs%n_extra)
+      write (output_unit, '(4x,a,es9.2,a,3f9.5,a)') 'twisted cable parted inside: ledger drift ', s%energy_drift, &
+         '; twist rate at the cut before, then on either side at the end ', rate0, rate_a, rate_b, ' 1/m'
+      call check(error, size(sim%rod3%pieces) == 2 .and. abs(rate0) > 0.05_dp .and. abs(rate_a) < 1.0e-9_dp .and. &
+                 abs(rate_b - rate0) < 1.0e-9_dp*abs(rate0), 'twist rates at the cut: '//str(rate0)//' before, '// &
+                 str(rate_a)//' and '//str(rate_b)//' after the ramp')
+      if (allocated(error)) return
+      call check(error, s%energy_drift >= 0 .and. s%energy_drift < 1.0e-11_dp, 'ledger drift '//str(s%energy_drift))
+   end subroutine test_break_inside_twisted
 
    !> model = 'auto': 2-D for a planar scene, 3-D when end b has a y, a force end a y force or a torque,
    !> or the current a y component.

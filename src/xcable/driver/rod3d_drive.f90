@@ -509,6 +509,8 @@ contains
             iterations = run%iterations
             call sync_ints(a, prefix//'newton_iterations', iterations, saving)
             if (.not. saving) then
+               ! The cut piece's anchored twist angle: its first node's, pinned there since the cut.
+               if (n_pieces == 2) run%problem%piece%psi_anchor = run%x(3*n + 1)
                run%energy0 = ledger(1)
                run%end_work = ledger(2)
                run%load_work = ledger(3)
@@ -800,6 +802,8 @@ contains
                call run%init(old(1)%run%options%tolerance)
                run%options = old(1)%run%options
                run%x = [x(3*first(p) - 2:3*last(p)), x(3*n + first(p):3*n + last(p))]
+               ! A piece no end of which holds the twist keeps its first node's angle (no rigid spin).
+               piece%psi_anchor = x(3*n + first(p))
                run%v = old(1)%run%v(:, first(p):last(p))
                run%t = old(1)%run%t
             end associate

@@ -60,10 +60,10 @@
 !> tridiagonal (interleaving psi with the positions would make the band 11,
 !> and will be needed once the twist is coupled to the centreline). A held end's
 !> rows are R = X(t) and psi = 0 (the twist held); a loaded end adds its
-!> force, torque and point mass. When no end is held psi_1 = 0 fixes the
-!> rigid spin. Distributed loads (fluid) enter as in the planar rod, through
-!> their 3-D form (loads/load.f90 cell_force3). An end couple acts about its
-!> end's couple axis (-y, as in the planar input, unless the end says
+!> force, torque and point mass. When no end is held psi_1 = psi_anchor (0,
+!> or a cut piece's angle at the cut) fixes the rigid spin. Distributed
+!> loads (fluid) enter as in the planar rod, through their 3-D form
+!> (loads/load.f90 cell_force3). An end couple acts about its end's couple axis (-y, as in the planar input, unless the end says
 !> otherwise: the new ends of a break inside the cable), on the angle of the
 !> end cell's projection on the plane normal to the axis.
 module xcable_model_rod3d
@@ -160,6 +160,9 @@ module xcable_model_rod3d
       real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
       !> Factor on the distributed loads.
       real(dp) :: load_factor = 1
+      !> The twist angle psi_1 is held at when no end holds the twist (the rigid spin), rad: 0, or
+      !> for a piece cut from a twisted cable its first node's angle at the cut.
+      real(dp) :: psi_anchor = 0
    contains
       !> Set the distributed loads; error for a load without a 3-D form.
       procedure :: set_loads => rod3d_set_loads
@@ -1127,7 +1130,8 @@ contains
       end do
       residual(3*n + 1) = residual(3*n + 1) + self%end_a%applied_torque(t_new)*twist_scale
       residual(4*n) = residual(4*n) - self%end_b%applied_torque(t_new)*twist_scale
-      if (anchor_a) residual(3*n + 1) = psi(1)
+      if (anchor_a .and. held_a) residual(3*n + 1) = psi(1)
+      if (anchor_a .and. .not. held_a) residual(3*n + 1) = psi(1) - self%psi_anchor
       if (anchor_b) residual(4*n) = psi(n)
       if (held_a) residual(1:3) = (r(:, 1) - self%end_a%position3(t_new))/self%length_ref
       if (held_b) residual(3*n - 2:3*n) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref

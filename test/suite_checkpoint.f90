@@ -10,7 +10,8 @@
 !> theta 0.55, internal damping). The 3-D model the same way
 !> (driver/rod3d_drive.f90): a fairlead moving across the plane in water,
 !> its end let go during the run (checkpoints before and after the break),
-!> and a release off the plane whose steps are rejected and halved; the
+!> the same line parted inside (two 3-D pieces; before the break and during
+!> its ramp), and a release off the plane whose steps are rejected and halved; the
 !> snapshots' 3-D fields and the history's y components are compared too.
 !> Damaged, truncated, foreign (another version, another namelist, the
 !> other model) and missing checkpoints are refused.
@@ -57,14 +58,33 @@ module suite_checkpoint
    !> the plane (1 m along y, period 2 s), a current across the plane
    !> (0.3 m/s along y), the ledger kept; the fairlead end breaks at 0.6 s
    !> (its force ramped to zero over 0.5 s). 31 nodes, dt 10 ms, to 1.2 s.
-   character(len=*), parameter :: fairlead3d = &
+   character(len=*), parameter :: fairlead_line = &
       "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
       "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
       "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
-      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
-      new_line('a')//"&rupture s_break = 60, t_break = 0.5, time = 0.6 /"//new_line('a')// &
-      "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
-      "&output interval = 0.1, energy = .true., quiet = .true. /"
+      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"//new_line('a')
+   character(len=*), parameter :: fairlead_run = "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
+                                                 "&output interval = 0.1, energy = .true., quiet = .true. /"
+   character(len=*), parameter :: fairlead3d = fairlead_line//"&rupture s_break = 60, t_break = 0.5, time = 0.6 /"// &
+                                               new_line('a')//fairlead_run
+
+   !> 3-D: the fairlead scene parted inside instead (s = 20 m of 60) at 0.6 s,
+   !> the cut's force, couple and torque ramped to zero over 0.2 s.
+   character(len=*), parameter :: middle3d = fairlead_line//"&rupture s_break = 20, t_break = 0.2, time = 0.6 /"// &
+                                             new_line('a')//fairlead_run
+
+   !> 3-D: end a fixed, end b loaded by a force and a torque of 5 N m (a
+   !> uniform twist) ramped off over 1 s, parted at s = 30 m at 0.05 s over 50
+   !> ms (41 nodes, to 0.2 s): the piece with end b holds its twist at
+   !> neither end, and its anchored twist angle (that at the cut, not the
+   !> static one) must come back on loading.
+   character(len=*), parameter :: twisted3d = &
+      "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+      "&end_b kind = 'force', force_x = 3000, force_z = 1000, torque = 5, history = 'ramp', ramp_time = 1 /"// &
+      new_line('a')// &
+      "&rupture s_break = 30, t_break = 0.05, time = 0.05 /"//new_line('a')// &
+      "&numerics nodes = 41, t_end = 0.2 /"//new_line('a')// &
+      "&output interval = 0.01, energy = .true., quiet = .true. /"
 
    !> 3-D: a slack line (end b 40 m along x, 20 m along y) let go at end b,
    !> EI / 1000, 121 nodes, Courant 10 (dt 18 ms), to 0.5 s: 4 attempts are
@@ -288,7 +308,7 @@ contains
                                                                  what//': no factorisation kept at the checkpoint')
       if (allocated(error)) return
       ! With fluid loads their work so far is part of the state (the ledger's loads).
-      if (c%fluid_density > 0) call check(error, merge(stopped%rod3%run%load_work, stopped%rod%load_work, &
+      if (c%fluid_density > 0) call check(error, merge(stopped%rod3%pieces(1)%run%load_work, stopped%rod%load_work, &
                                                        stopped%model == '3d') /= 0, what//': no work of the loads at the stop')
       if (allocated(error)) return
       if (present(broken)) call check(error, stopped%rod%broken .eqv. broken, what//': broken at the stop: '// &
@@ -589,6 +609,18 @@ contains
       call stopped_and_resumed('3-D fairlead in a current, SIGTERM before the break', c, 4, error, broken=.false.)
       if (allocated(error)) return
       call stopped_and_resumed('3-D fairlead in a current, SIGTERM after the break', c, 9, error, broken=.true.)
+      if (allocated(error)) return
+      call case_of(middle3d, c, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D break inside, SIGTERM before the break', c, 4, error, broken=.false.)
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D break inside, SIGTERM during the ramp', c, 8, error, broken=.true.)
+      if (allocated(error)) return
+      call check(error, c%s_break > 0 .and. c%s_break < 60, 'the middle scene does not break inside')
+      if (allocated(error)) return
+      call case_of(twisted3d, c, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('3-D twisted cable parted inside, SIGTERM during the ramp', c, 9, error, broken=.true.)
       if (allocated(error)) return
       call case_of(release3d, c, error)
       if (allocated(error)) return

@@ -28,7 +28,9 @@
 # steps, about 1.3 s): killed after its first checkpoint and resumed (the
 # snapshots of the 3-D fields written after the checkpoint are cut too), and
 # stopped by SIGTERM and resumed; both equal their reference bit for bit, the
-# 3-D fields (/y, /w, ...) and the history's y components included. The 2-D
+# 3-D fields (/y, /w, ...) and the history's y components included. The same
+# line parted inside (s = 20 m, at 0.1 s: two 3-D pieces, 122 output nodes)
+# killed after its first checkpoint (after the break) and resumed. The 2-D
 # checkpoint offered to the 3-D case is refused (exit 2, naming both models).
 # Then 24 SIGKILLs placed inside the 3-D run's file writes (a preloaded
 # library counts write calls; needs a C compiler): each resume equals the
@@ -255,6 +257,20 @@ steps3=$(int_attr ref3.h5 /summary/steps)
 echo "test_checkpoint: 3-D, SIGKILL after the first checkpoint, then --resume"
 write_case3 killed3 ', checkpoint_interval = 0.2'
 killed_and_resumed killed3 ref3 "$steps3"
+
+echo "test_checkpoint: 3-D break inside the cable, SIGKILL after the first checkpoint, then --resume"
+# inside NAME: the 3-D case parted at s = 20 m at 0.1 s (ramp 0.2 s) instead of letting go of end b.
+inside() { sed -i 's/s_break = 60, t_break = 0.5, time = 1.5/s_break = 20, t_break = 0.2, time = 0.1/' "$1.nml"; }
+write_case3 refin ''
+inside refin
+"$exe" refin.nml 2>refin.err
+check "the reference run parted inside completes, with the break's ends in the history and 122 output nodes" \
+   test "$(status_of refin.h5)" = complete -a "$(h5dump -H -d /s refin.h5 | grep -c '( 122 )')" = 1
+h5dump -H -d /history/break_b/y refin.h5 >/dev/null 2>&1 ||
+   { failures=$((failures + 1)); echo "  FAIL the 3-D break inside has no /history/break_b/y"; }
+write_case3 killedin ', checkpoint_interval = 0.2'
+inside killedin
+killed_and_resumed killedin refin "$(int_attr refin.h5 /summary/steps)"
 
 echo "test_checkpoint: 3-D, SIGTERM, the 2-D checkpoint refused, then --resume"
 write_case3 stopped3 ''

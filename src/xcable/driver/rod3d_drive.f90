@@ -23,8 +23,18 @@
 !> list the state (exchange3) with the planar run's sync procedures
 !> (io/archive.f90) and its exchange_progress and exchange_records.
 !>
-!> Not yet: a break inside the cable (one piece only). The input refuses it
-!> for a 3-D case (io/input.f90, check_model).
+!> A break inside the cable as in the planar run: the output has the break
+!> node twice (the planar run's columns and end slots break_a, break_b), and
+!> at the break the piece is cut in two 3-D pieces whose new ends carry the
+!> force (x, y, z) and the bending couple that held them, ramped to zero over
+!> t_break. The couple is the node's bending moment about its own axis (the
+!> normal of the node's two cells; -y or +y in a planar scene, so that a
+!> planar scene gives the planar run's couple), and the twist moment of the
+!> cut goes on as the new ends' torques, ramped alike. The bending energy of
+!> the break node leaves with the cut, booked as work, as in the planar run.
+!> With distributed loads (fluid) each new end's force is that of its own
+!> piece's end node at rest, so that both pieces start in the balance the
+!> whole cable had (their forces add up to none).
 module xcable_rod3d_drive
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
@@ -34,26 +44,40 @@ module xcable_rod3d_drive
                              exchange_progress, exchange_records
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_rod3d_run, only: rod3d_run
-   use xcable_model_rod3d, only: rod3d_piece
+   use xcable_model_rod3d, only: rod3d_piece, bend_moment3 => bend_moment, bend_energy3 => bend_energy
+   use xcable_vector3, only: cross3
+   use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
+   use xcable_ends_end, only: end_condition
    use xcable_run_records, only: run_observer, n_fields
    use xcable_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
    public :: rod3d_drive, n_fields3, field3_names
 
-   !> A 3-D run.
-   type :: rod3d_drive
+   !> One 3-D piece of cable in a run.
+   type :: piece3
       !> The 3-D stepper (its piece, state and ledger).
       type(rod3d_run) :: run
       !> The previous time level (for snapshots inside a step).
       real(dp), allocatable :: x_prev(:), v_prev(:, :)
       !> Force of the supports on the end nodes at the current time (held ends), N.
       real(dp) :: reaction(3, 2) = 0
-      !> Whether the break (at an end) has happened, and the force (x, y, z) the released end starts from, N.
+      !> Output columns of the nodes, and history slots of the two ends (0: none).
+      integer, allocatable :: column(:)
+      integer :: end_slot(2) = 0
+   end type piece3
+
+   !> A 3-D run.
+   type :: rod3d_drive
+      !> The pieces (one, or two after a break inside the cable).
+      type(piece3), allocatable :: pieces(:)
+      !> Whether the break has happened.
       logical :: broken = .false.
-      real(dp) :: cut_force(3) = 0
-      !> Extra fields of the static state (n, n_fields3).
+      !> The force (x, y, z; N) each new end of the break starts from (the released end: the first), the
+      !> couples (N m) about their axes (unit vectors) and the torques about the outward tangents (N m).
+      real(dp) :: cut_force(3, 2) = 0, cut_couple(2) = 0, cut_axis(3, 2) = 0, cut_torque(2) = 0
+      !> Extra fields of the static state (n_out, n_fields3).
       real(dp), allocatable :: static_extra(:, :)
    contains
       !> The 3-D statics from the planar run's static state; static fields and records.
@@ -82,13 +106,12 @@ contains
       integer :: n, k
       real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2)
       real(dp), allocatable :: guess(:)
-      if (rod%scene%interior_break()) then
-         call fatal_error(error, rod%scene%source//': &rupture: the 3-D model does not yet break inside the cable', &
-                          stat_input)
-         return
-      end if
       n = rod%options%nodes
-      associate (scene => rod%scene, piece => self%run%problem%piece)
+      allocate (self%pieces(1))
+      self%pieces(1)%column = rod%pieces(1)%column
+      self%pieces(1)%end_slot = [1, 2]
+      associate (scene => rod%scene, run => self%pieces(1)%run, piece => self%pieces(1)%run%problem%piece, &
+                 reaction => self%pieces(1)%reaction)
          call piece%init(rod%s, scene%mass, scene%weight, scene%ei, scene%gip, scene%gravity, rod%options%mu, &
                          scene%law, scene%end_a, scene%end_b, rod%pieces(1)%problem%piece%tension_ref, error, &
                          rod%options%mu2, rod%options%damping)
@@ -104,7 +127,7 @@ contains
             end if
          end if
          ! The statics to 1e-10, as the planar statics.
-         call self%run%init(1.0e-10_dp)
+         call run%init(1.0e-10_dp)
          ! First guess: the planar static state, y from end a's to end b's (a held end's y).
          ya = 0
          yb = 0
@@ -119,55 +142,55 @@ contains
          do k = 1, n
             if (scene%end_a%held() .and. scene%end_b%held() .and. abs(d2) > 1.0e-6_dp*length) then
                ! Both ends held: the planar shape turned (and stretched horizontally) onto the chord's vertical plane.
-               self%run%x(3*k - 2:3*k) = [pa(1) + (rod%static%r(1, k) - pa(1))/d2*d3(1), &
+               run%x(3*k - 2:3*k) = [pa(1) + (rod%static%r(1, k) - pa(1))/d2*d3(1), &
                                           ya + (rod%static%r(1, k) - pa(1))/d2*d3(2), rod%static%r(2, k)]
             else
-               self%run%x(3*k - 2:3*k) = [rod%static%r(1, k), ya + (yb - ya)*(rod%s(k) - rod%s(1))/length, &
+               run%x(3*k - 2:3*k) = [rod%static%r(1, k), ya + (yb - ya)*(rod%s(k) - rod%s(1))/length, &
                                           rod%static%r(2, k)]
             end if
          end do
-         self%run%x(3*n + 1:) = 0
-         guess = self%run%x
-         call self%run%statics(0.0_dp, error)
-         if (.not. allocated(error)) call check_static3(piece, self%run%x, error)
+         run%x(3*n + 1:) = 0
+         guess = run%x
+         call run%statics(0.0_dp, error)
+         if (.not. allocated(error)) call check_static3(piece, run%x, error)
          if (allocated(error)) then
             ! Newton from the planar guess failed or landed in a folded state (a strong cross
             ! current): continuation in the distributed loads.
-            call continue_statics(self%run, guess, error)
+            call continue_statics(run, guess, error)
             if (allocated(error)) then
                call prefix_error(error, scene%source//': ')
                return
             end if
          end if
          ! The supports' forces of the static state.
-         call self%run%problem%evaluate(self%run%x, self%run%work%residual, self%run%work%jacobian, .false.)
-         self%run%work%usable = .false.
-         self%reaction(:, 1) = piece%reaction(1, 0.0_dp)
-         self%reaction(:, 2) = piece%reaction(n, 0.0_dp)
+         call run%problem%evaluate(run%x, run%work%residual, run%work%jacobian, .false.)
+         run%work%usable = .false.
+         reaction(:, 1) = piece%reaction(1, 0.0_dp)
+         reaction(:, 2) = piece%reaction(n, 0.0_dp)
          ! Held ends start with their own velocity (a motion end).
-         if (scene%end_a%held()) self%run%v(:, 1) = scene%end_a%velocity3(0.0_dp)
-         if (scene%end_b%held()) self%run%v(:, n) = scene%end_b%velocity3(0.0_dp)
-         call self%run%start(self%run%x, self%run%v, 0.0_dp)
+         if (scene%end_a%held()) run%v(:, 1) = scene%end_a%velocity3(0.0_dp)
+         if (scene%end_b%held()) run%v(:, n) = scene%end_b%velocity3(0.0_dp)
+         call run%start(run%x, run%v, 0.0_dp)
+         ! Newton in a step: the planar run's policy (driver/rod_run.f90).
+         run%options = rod%options%newton
+         run%options%estimate_error = .true.
+         run%options%max_contraction = 0.5_dp
+         run%options%refresh_contraction = 0.05_dp
+         ! The static state's records, now those of the 3-D statics.
+         call state_fields(self, rod, rod%info%fields, extra)
+         self%static_extra = extra
+         rod%info%extra = extra
+         associate (r => run%x, f => rod%info%fields)
+            rod%info%span = norm2(r(3*n - 2:3*n - 1) - r(1:2))
+            rod%info%sag = sag3(r, n)
+            rod%info%tension_a = f(1, 1)
+            rod%info%tension_b = f(rod%n_out, 1)
+            if (rod%scene%end_a%held()) rod%info%tension_a = norm2(reaction(:, 1))
+            if (rod%scene%end_b%held()) rod%info%tension_b = norm2(reaction(:, 2))
+         end associate
+         rod%summary%min_strain = minval(piece%l1) - 1
+         rod%summary%max_strain = maxval(piece%l1) - 1
       end associate
-      ! Newton in a step: the planar run's policy (driver/rod_run.f90).
-      self%run%options = rod%options%newton
-      self%run%options%estimate_error = .true.
-      self%run%options%max_contraction = 0.5_dp
-      self%run%options%refresh_contraction = 0.05_dp
-      ! The static state's records, now those of the 3-D statics.
-      call fields3(self%run%problem%piece, self%run%x, self%run%v, rod%info%fields, extra)
-      self%static_extra = extra
-      rod%info%extra = extra
-      associate (r => self%run%x, f => rod%info%fields)
-         rod%info%span = norm2(r(3*n - 2:3*n - 1) - r(1:2))
-         rod%info%sag = sag3(r, n)
-         rod%info%tension_a = f(1, 1)
-         rod%info%tension_b = f(n, 1)
-         if (rod%scene%end_a%held()) rod%info%tension_a = norm2(self%reaction(:, 1))
-         if (rod%scene%end_b%held()) rod%info%tension_b = norm2(self%reaction(:, 2))
-      end associate
-      rod%summary%min_strain = minval(self%run%problem%piece%l1) - 1
-      rod%summary%max_strain = maxval(self%run%problem%piece%l1) - 1
    end subroutine drive_prepare
 
    !> The 3-D statics by continuation in the distributed loads, after the
@@ -347,15 +370,19 @@ contains
          if (allocated(error)) return
       end if
       associate (scene => rod%scene)
-         if (scene%breaks .and. scene%break_time <= 0) call split(self, rod)
+         if (scene%breaks .and. scene%break_time <= 0) then
+            call split(self, rod, error)
+            if (allocated(error)) return
+         end if
          ! Nothing moves before the break if no end moves or changes its load: skip to it.
          if (scene%breaks .and. .not. self%broken .and. .not. ends_change(rod)) then
             call emit(self, rod, observer, scene%break_time, .true., error)
             if (allocated(error)) return
             rod%t = scene%break_time
-            self%run%t = rod%t
+            call set_time(self, rod%t)
             call record(self, rod, 0, rod%t - rod%history%time(rod%history%n))
-            call split(self, rod)
+            call split(self, rod, error)
+            if (allocated(error)) return
          end if
       end associate
       rod%clock%records_at_checkpoint = rod%history%n
@@ -378,6 +405,7 @@ contains
       integer, intent(out) :: pause
       real(dp) :: t_stop, h_try, wall
       integer(i8) :: now
+      integer :: p, tried, iterations
       logical :: landing, kept, newton_failed
       type(error_type), allocatable :: step_error
       pause = pause_none
@@ -391,32 +419,52 @@ contains
             if (pause /= pause_none) return
             call plan_step(rod, h_try, t_stop, landing, error)
             if (allocated(error)) exit
-            self%x_prev = self%run%x
-            self%v_prev = self%run%v
-            self%run%t = rod%t
-            kept = jacobian_kept(self%run%options, self%run%work)
-            call self%run%attempt(h_try, rod%options%theta, step_error)
-            newton_failed = allocated(step_error)
-            if (.not. newton_failed) call check_state3(self%run%problem%piece, self%run%x, h_try, step_error)
+            ! One attempt on every piece (the first that fails stops the others).
+            kept = .false.
+            newton_failed = .false.
+            tried = 0
+            do p = 1, size(self%pieces)
+               associate (piece => self%pieces(p))
+                  piece%x_prev = piece%run%x
+                  piece%v_prev = piece%run%v
+                  piece%run%t = rod%t
+                  kept = kept .or. jacobian_kept(piece%run%options, piece%run%work)
+                  tried = p
+                  call piece%run%attempt(h_try, rod%options%theta, step_error)
+                  newton_failed = allocated(step_error)
+                  if (.not. newton_failed) call check_state3(piece%run%problem%piece, piece%run%x, p, h_try, step_error)
+               end associate
+               if (allocated(step_error)) exit
+            end do
             if (allocated(step_error)) then
-               call self%run%reject()
+               do p = 1, tried
+                  call self%pieces(p)%run%reject()
+               end do
                call reject_attempt(rod, step_error%message, newton_failed .and. kept, error)
                deallocate (step_error)
                if (allocated(error)) exit
                cycle
             end if
-            call self%run%accept(h_try, rod%options%theta)
-            self%reaction(:, 1) = self%run%problem%piece%reaction(1, h_try)
-            self%reaction(:, 2) = self%run%problem%piece%reaction(self%run%problem%piece%n, h_try)
+            iterations = 0
+            do p = 1, size(self%pieces)
+               associate (run => self%pieces(p)%run)
+                  call run%accept(h_try, rod%options%theta)
+                  self%pieces(p)%reaction(:, 1) = run%problem%piece%reaction(1, h_try)
+                  self%pieces(p)%reaction(:, 2) = run%problem%piece%reaction(run%problem%piece%n, h_try)
+                  iterations = max(iterations, run%last_iterations)
+               end associate
+            end do
             call emit(self, rod, observer, rod%t + h_try, .false., error)
             if (allocated(error)) exit
             call advance_time(rod, h_try, t_stop, landing)
-            self%run%t = rod%t
-            call record(self, rod, self%run%last_iterations, h_try)
+            call set_time(self, rod%t)
+            call record(self, rod, iterations, h_try)
             rod%history%rejected(rod%history%n) = rod%progress%rejected_here
             rod%progress%rejected_here = 0
-            if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) &
-               call split(self, rod)
+            if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) then
+               call split(self, rod, error)
+               if (allocated(error)) exit
+            end if
             if (present(observer) .and. wall - rod%clock%last_report >= 1.0_dp) then
                rod%clock%last_report = wall
                call observer%progress(rod%t, rod%options%t_end, wall)
@@ -424,6 +472,16 @@ contains
          end do
       end associate
    end subroutine drive_advance
+
+   !> The time of every piece's stepper.
+   subroutine set_time(self, t)
+      type(rod3d_drive), intent(inout) :: self
+      real(dp), intent(in) :: t
+      integer :: p
+      do p = 1, size(self%pieces)
+         self%pieces(p)%run%t = t
+      end do
+   end subroutine set_time
 
    !> Save the state of the run between two steps (after start, or a pause
    !> of advance) to an archive (see exchange3). archive%ok tells whether it was stored.
@@ -450,6 +508,7 @@ contains
       class(state_archive), intent(inout) :: archive
       !> Error.
       type(error_type), allocatable, intent(out) :: error
+      integer :: p
       call exchange3(self, rod, archive, .false., error)
       if (allocated(error)) return
       if (.not. archive%ok) then
@@ -457,8 +516,10 @@ contains
          return
       end if
       rod%pieces(1)%end_slot = [1, 2]
-      self%run%t = rod%t
-      self%run%work%usable = .false.
+      call set_time(self, rod%t)
+      do p = 1, size(self%pieces)
+         self%pieces(p)%run%work%usable = .false.
+      end do
       call system_clock(rod%clock%start, rod%clock%rate)
       rod%clock%last_report = 0
       rod%clock%last_checkpoint = 0
@@ -471,15 +532,17 @@ contains
    !> control, the next snapshot, the wall time, every history record with
    !> its y components, the summary's counters), it is:
    !>  - time and step size asked for (run/t, run/dt);
-   !>  - the break at an end (whether it happened, and the force, x, y, z, of
-   !>    the support the released end starts from);
-   !>  - the piece (rod3d/): its nodes, the unknowns (positions and twist
-   !>    angles, 4 per node) and velocities at the current time, the
-   !>    ledger's accumulators (stored energy at the start, work of the ends
-   !>    and of the loads, dissipation) and the Newton iterations so far.
+   !>  - the break (whether it happened; the forces, x, y, z, its new ends
+   !>    start from, and inside the cable their couples, couple axes and
+   !>    torques) and so the pieces;
+   !>  - per piece (rod3d/ for the first, rod3d/2/ for the second): its
+   !>    nodes, the unknowns (positions and twist angles, 4 per node) and
+   !>    velocities at the current time, the ledger's accumulators (stored
+   !>    energy at the start, work of the ends and of the loads, dissipation)
+   !>    and the Newton iterations so far.
    !> Not saved: the previous time level (x_prev, v_prev: set before every
    !> attempt), the forces of the supports on the end nodes (accept sets
-   !> them before the history and the break read them), the piece's work
+   !> them before the history and the break read them), the pieces' work
    !> arrays (prepare_step and the residual set them), Newton's workspace (a
    !> 3-D step keeps no factorisation: accept and reject leave it unusable),
    !> and what prepare computes from the case (the grid, the 3-D static
@@ -490,100 +553,133 @@ contains
       class(state_archive), intent(inout) :: a
       logical, intent(in) :: saving
       type(error_type), allocatable, intent(out) :: error
-      integer :: n, iterations(1)
+      integer :: n, iterations(1), n_pieces, p, expected
       real(dp) :: ledger(4)
+      character(:), allocatable :: prefix
       call sync_real(a, 'run/t', rod%t, saving)
       call sync_real(a, 'run/dt', rod%dt, saving)
       call sync_logical(a, 'run/broken', self%broken, saving)
-      call sync_reals(a, 'rod3d/cut_force', self%cut_force, saving)
+      call sync_matrix(a, 'rod3d/cut_force', self%cut_force, saving)
+      if (rod%break_node > 0) then
+         call sync_reals(a, 'rod3d/cut_couple', self%cut_couple, saving)
+         call sync_matrix(a, 'rod3d/cut_axis', self%cut_axis, saving)
+         call sync_reals(a, 'rod3d/cut_torque', self%cut_torque, saving)
+      end if
       call exchange_progress(rod, a, saving)
-      n = self%run%problem%piece%n
-      call sync_int(a, 'rod3d/nodes', n, saving)
+      n_pieces = size(self%pieces)
+      call sync_int(a, 'rod3d/pieces', n_pieces, saving)
       if (.not. saving) then
          if (.not. a%ok) return
-         if (n /= self%run%problem%piece%n) then
-            call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes, this case '// &
-                             str(self%run%problem%piece%n), stat_input)
-            return
-         end if
          if (self%broken .and. .not. rod%scene%breaks) then
             call fatal_error(error, 'the checkpoint holds a broken cable, the case has no break', stat_input)
             return
          end if
+         expected = merge(2, 1, self%broken .and. rod%break_node > 0)
+         if (n_pieces /= expected) then
+            call fatal_error(error, 'the checkpoint holds '//str(n_pieces)//' pieces of cable, this case '// &
+                             str(expected)//' at that stage', stat_input)
+            return
+         end if
          rod%broken = self%broken
-         if (self%broken) call release_end(self, rod)
+         if (self%broken) call release(self, rod, error)
+         if (allocated(error)) return
       end if
-      call sync_reals(a, 'rod3d/x', self%run%x, saving)
-      call sync_matrix(a, 'rod3d/v', self%run%v, saving)
-      ledger = [self%run%energy0, self%run%end_work, self%run%load_work, self%run%dissipated]
-      call sync_reals(a, 'rod3d/ledger', ledger, saving)
-      iterations = self%run%iterations
-      call sync_ints(a, 'rod3d/newton_iterations', iterations, saving)
-      if (.not. saving) then
-         self%run%energy0 = ledger(1)
-         self%run%end_work = ledger(2)
-         self%run%load_work = ledger(3)
-         self%run%dissipated = ledger(4)
-         self%run%iterations = iterations(1)
-      end if
-      call exchange_records(rod, a, saving, 2, error, with_y=.true.)
+      do p = 1, n_pieces
+         prefix = 'rod3d/'
+         if (p > 1) prefix = 'rod3d/'//str(p)//'/'
+         associate (run => self%pieces(p)%run)
+            n = run%problem%piece%n
+            call sync_int(a, prefix//'nodes', n, saving)
+            if (.not. saving) then
+               if (.not. a%ok) return
+               if (n /= run%problem%piece%n) then
+                  call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in piece '//str(p)// &
+                                   ', this case '//str(run%problem%piece%n), stat_input)
+                  return
+               end if
+            end if
+            call sync_reals(a, prefix//'x', run%x, saving)
+            call sync_matrix(a, prefix//'v', run%v, saving)
+            ledger = [run%energy0, run%end_work, run%load_work, run%dissipated]
+            call sync_reals(a, prefix//'ledger', ledger, saving)
+            iterations = run%iterations
+            call sync_ints(a, prefix//'newton_iterations', iterations, saving)
+            if (.not. saving) then
+               ! The cut piece's anchored twist angle: its first node's, pinned there since the cut.
+               if (n_pieces == 2) run%problem%piece%psi_anchor = run%x(3*n + 1)
+               run%energy0 = ledger(1)
+               run%end_work = ledger(2)
+               run%load_work = ledger(3)
+               run%dissipated = ledger(4)
+               run%iterations = iterations(1)
+            end if
+         end associate
+      end do
+      call exchange_records(rod, a, saving, merge(4, 2, rod%break_node > 0), error, with_y=.true.)
    end subroutine exchange3
 
-   !> The step control's range check of an attempt (the planar run's
-   !> check_state in 3-D form): finite unknowns, no cell squeezed below 5 % of
-   !> its length, no turning angle through half a turn within the step of h.
-   subroutine check_state3(piece, x, h, error)
+   !> The step control's range check of an attempt on piece p (the planar
+   !> run's check_state in 3-D form): finite unknowns, no cell squeezed below
+   !> 5 % of its length, no turning angle through half a turn within the step of h.
+   subroutine check_state3(piece, x, p, h, error)
       type(rod3d_piece), intent(in) :: piece
       !> Unknowns of the attempt's new level.
       real(dp), intent(in) :: x(:)
+      integer, intent(in) :: p
       real(dp), intent(in) :: h
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: r(3, piece%n), e(3, piece%n - 1), l(piece%n - 1), th(piece%n), fold(piece%n)
       r = reshape(x(1:3*piece%n), [3, piece%n])
       call piece%geometry(r, e, l, th)
-      call check_range(x, l, piece%law, 1, error)
+      call check_range(x, l, piece%law, p, error)
       if (allocated(error)) return
       call piece%turning_folds(r, fold)
-      call check_folds(fold, 1, h, error)
+      call check_folds(fold, p, h, error)
    end subroutine check_state3
 
    !> The summary (the planar run's summarise, on the shared records).
    subroutine finish(self, rod)
       class(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
+      integer :: p
       call rod%finish()
       associate (s => rod%summary)
-         s%newton_iterations = self%run%iterations
+         s%newton_iterations = sum([(self%pieces(p)%run%iterations, p=1, size(self%pieces))])
          ! Full Newton: one factorisation per iteration.
-         s%factorisations = self%run%iterations
+         s%factorisations = s%newton_iterations
       end associate
    end subroutine finish
 
-   !> History labels, slots and the record of t = 0.
+   !> History labels, slots and the record of t = 0 (break_a and break_b too with a break inside the cable).
    subroutine start_records(self, rod)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
+      integer :: n_ends
+      n_ends = merge(4, 2, rod%break_node > 0)
       if (allocated(rod%history%end_labels)) deallocate (rod%history%end_labels)
-      allocate (rod%history%end_labels(2))
-      rod%history%end_labels = [character(len=8) :: 'end_a', 'end_b']
+      allocate (rod%history%end_labels(n_ends))
+      rod%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
+      if (n_ends == 4) rod%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
       rod%pieces(1)%end_slot = [1, 2]
-      call rod%history%reserve(16, 2, rod%options%energy, with_y=.true.)
+      self%pieces(1)%end_slot = [1, 2]
+      call rod%history%reserve(16, n_ends, rod%options%energy, with_y=.true.)
       rod%history%n = -1
       call record(self, rod, 0, 0.0_dp)
    end subroutine start_records
 
    !> Append a history record at the current time: the end quantities of the
-   !> planar run's (x and z components) and their y components (ends_y).
+   !> planar run's (x and z components) and their y components (ends_y);
+   !> before a break inside the cable, break_a and break_b are the break node
+   !> with the pull of the cable on either side, as in the planar run.
    subroutine record(self, rod, iterations, step)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
       integer, intent(in) :: iterations
       real(dp), intent(in) :: step
-      integer :: i, side, k, n
-      real(dp) :: f(3), en(5)
-      associate (h => rod%history, piece => self%run%problem%piece, x => self%run%x)
-         n = piece%n
-         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), 2, rod%options%energy)
+      integer :: i, side, k, n, p, slot
+      real(dp) :: f(3), en(5), ledger(3), e(3), ten
+      associate (h => rod%history)
+         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), size(h%end_labels), rod%options%energy)
          i = h%n + 1
          h%n = i
          h%time(i) = rod%t
@@ -591,30 +687,58 @@ contains
          h%newton_iterations(i) = iterations
          h%rejected(i) = 0
          if (i > 0) rod%summary%max_newton_iterations = max(rod%summary%max_newton_iterations, iterations)
-         call piece%geometry(reshape(x(1:3*n), [3, n]), piece%e1, piece%l1, piece%th1)
-         do side = 1, 2
-            k = merge(1, n, side == 1)
-            if (side == 1) then
-               f = self%reaction(:, 1)
-               if (.not. piece%end_a%held()) f = piece%end_a%applied_force3(rod%t)
-            else
-               f = self%reaction(:, 2)
-               if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(rod%t)
-            end if
-            h%ends(:, side, i) = [x(3*k - 2), x(3*k), self%run%v(1, k), self%run%v(3, k), end_tension(piece, side), &
-                                  f(1), f(3)]
-            h%ends_y(:, side, i) = [x(3*k - 1), self%run%v(2, k), f(2)]
+         en = 0
+         ledger = 0
+         do p = 1, size(self%pieces)
+            associate (piece => self%pieces(p)%run%problem%piece, x => self%pieces(p)%run%x, &
+                       run => self%pieces(p)%run, reaction => self%pieces(p)%reaction)
+               n = piece%n
+               call piece%geometry(reshape(x(1:3*n), [3, n]), piece%e1, piece%l1, piece%th1)
+               do side = 1, 2
+                  slot = self%pieces(p)%end_slot(side)
+                  if (slot == 0) cycle
+                  k = merge(1, n, side == 1)
+                  if (side == 1) then
+                     f = reaction(:, 1)
+                     if (.not. piece%end_a%held()) f = piece%end_a%applied_force3(rod%t)
+                  else
+                     f = reaction(:, 2)
+                     if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(rod%t)
+                  end if
+                  h%ends(:, slot, i) = [x(3*k - 2), x(3*k), run%v(1, k), run%v(3, k), end_tension(piece, side), &
+                                        f(1), f(3)]
+                  h%ends_y(:, slot, i) = [x(3*k - 1), run%v(2, k), f(2)]
+               end do
+               rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
+               rod%summary%min_strain = min(rod%summary%min_strain, minval(piece%l1) - 1)
+               rod%summary%max_strain = max(rod%summary%max_strain, maxval(piece%l1) - 1)
+               if (rod%options%energy) then
+                  en = en + run%energies()
+                  ledger = ledger + [run%end_work, run%load_work, run%dissipated]
+               end if
+            end associate
          end do
-         rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
-         rod%summary%min_strain = min(rod%summary%min_strain, minval(piece%l1) - 1)
-         rod%summary%max_strain = max(rod%summary%max_strain, maxval(piece%l1) - 1)
+         ! Before a break inside the cable, its two ends are the break node.
+         if (size(self%pieces) == 1 .and. rod%break_node > 0) then
+            associate (piece => self%pieces(1)%run%problem%piece, x => self%pieces(1)%run%x, &
+                       v => self%pieces(1)%run%v, k => rod%break_node)
+               e = x(3*k + 1:3*k + 3) - x(3*k - 2:3*k)
+               f = piece%law%tension(norm2(e)/piece%ds(k) - 1)*e/norm2(e)
+               ten = 0.5_dp*(norm2(f) + piece%law%tension(norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3))/piece%ds(k - 1) - 1))
+               h%ends(:, 3, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+               h%ends_y(:, 3, i) = [x(3*k - 1), v(2, k), f(2)]
+               e = x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)
+               f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
+               h%ends(:, 4, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+               h%ends_y(:, 4, i) = [x(3*k - 1), v(2, k), f(2)]
+            end associate
+         end if
          if (rod%options%energy) then
-            en = self%run%energies()
             h%energy(1:4, i) = [en(1) + en(5), en(2:4)]
-            h%energy(5, i) = self%run%end_work
-            h%energy(6, i) = self%run%dissipated
-            h%energy(7, i) = sum(en) - self%run%end_work - self%run%load_work + self%run%dissipated
-            h%energy(8, i) = self%run%load_work
+            h%energy(5, i) = ledger(1)
+            h%energy(6, i) = ledger(3)
+            h%energy(7, i) = sum(en) - ledger(1) - ledger(2) + ledger(3)
+            h%energy(8, i) = ledger(2)
          end if
       end associate
    end subroutine record
@@ -634,42 +758,168 @@ contains
       end_tension = max(end_value(cells(1:m), 1), piece%law%tension(-0.99_dp))
    end function end_tension
 
-   !> The break at a held end: the end lets go with the support's force, ramped to zero over t_break.
-   subroutine split(self, rod)
+   !> The break. At a held end: the end lets go with the support's force.
+   !> Inside the cable: the new ends start from the forces of the cells at
+   !> the break node on either side (with half the weight of each one's
+   !> cell, as the planar run), the node's bending couple about its axis and
+   !> the twist moment; the node's bending energy leaves with the cut, booked
+   !> as work of the ends. All are ramped to zero over t_break.
+   subroutine split(self, rod, error)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
+      !> Error when a piece cannot be set up.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), allocatable :: res(:)
+      real(dp) :: axis(3), tau(rod%options%nodes - 1)
+      type(band_matrix) :: unused
+      integer :: kb, p
       self%broken = .true.
       rod%broken = .true.
-      self%cut_force = self%reaction(:, merge(2, 1, rod%scene%break_at_b))
-      call release_end(self, rod)
+      if (rod%break_node == 0) then
+         self%cut_force(:, 1) = self%pieces(1)%reaction(:, merge(2, 1, rod%scene%break_at_b))
+         call release(self, rod, error)
+         return
+      end if
+      kb = rod%break_node
+      associate (run => self%pieces(1)%run, piece => self%pieces(1)%run%problem%piece)
+         allocate (res(size(run%x)))
+         call piece%static_system(run%x, rod%t, res, unused, .false.)
+         self%cut_force(:, 1) = piece%force(:, kb - 1) + [0.0_dp, 0.0_dp, 0.5_dp*piece%weight*piece%ds(kb - 1)]
+         self%cut_force(:, 2) = -piece%force(:, kb) + [0.0_dp, 0.0_dp, 0.5_dp*piece%weight*piece%ds(kb)]
+         ! The couple about the normal of the node's cells (none on a straight node: axis -y).
+         axis = cross3(piece%e1(:, kb - 1), piece%e1(:, kb))
+         if (norm2(axis) > 0) then
+            axis = axis/norm2(axis)
+            self%cut_couple(1) = bend_moment3(piece, kb, piece%th1(kb))
+         else
+            axis = [0.0_dp, -1.0_dp, 0.0_dp]
+            self%cut_couple(1) = 0
+         end if
+         self%cut_couple(2) = -self%cut_couple(1)
+         self%cut_axis(:, 1) = axis
+         self%cut_axis(:, 2) = axis
+         tau = piece%twist_rates(run%x)
+         self%cut_torque = piece%gip*[tau(kb - 1), tau(kb)]
+         run%end_work = run%end_work - bend_energy3(piece, kb, piece%th1(kb))
+      end associate
+      call release(self, rod, error)
+      if (allocated(error)) return
+      ! Distributed loads: each new end node keeps its own cell's share (the pieces' loads at rest).
+      if (.not. allocated(self%pieces(1)%run%problem%piece%loads)) return
+      do p = 1, 2
+         associate (run => self%pieces(p)%run, piece => self%pieces(p)%run%problem%piece)
+            res = run%x
+            call piece%static_system(run%x, rod%t, res, unused, .false.)
+            self%cut_force(:, p) = self%cut_force(:, p) - piece%load_node(:, merge(piece%n, 1, p == 1))
+         end associate
+      end do
+      call set_cut_force(self%pieces(1)%run%problem%piece%end_b, self%cut_force(:, 1))
+      call set_cut_force(self%pieces(2)%run%problem%piece%end_a, self%cut_force(:, 2))
    end subroutine split
 
-   !> The broken end of the 3-D piece and of the planar run's piece (its
-   !> summary asks whether an end is held): a force end starting from
-   !> cut_force, ramped to zero over t_break.
-   subroutine release_end(self, rod)
+   !> The starting force of a cut end (a force_end) set to f (x, y, z).
+   subroutine set_cut_force(end, f)
+      class(end_condition), intent(inout) :: end
+      real(dp), intent(in) :: f(3)
+      select type (end)
+      type is (force_end)
+         end%force0 = f([1, 3])
+         end%force0_y = f(2)
+      end select
+   end subroutine set_cut_force
+
+   !> The pieces after the break, with new ends that start from cut_force,
+   !> cut_couple, cut_axis and cut_torque, ramped to zero over t_break: the
+   !> released end replaced, in the 3-D piece and in the planar run's piece
+   !> (its summary asks whether an end is held); or the piece cut in two at
+   !> the break node, each new piece taking the positions, twist angles,
+   !> velocities, output columns, history slots and reactions of its nodes,
+   !> the first the ledger so far. Also rebuilds the pieces of a broken run
+   !> loaded from a checkpoint.
+   subroutine release(self, rod, error)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
-      type(force_end) :: cut
+      !> Error when a piece cannot be set up.
+      type(error_type), allocatable, intent(out) :: error
+      type(force_end) :: cut, cut_b
+      type(piece3), allocatable :: old(:)
       real(dp) :: f(3)
-      f = self%cut_force
+      integer :: n, kb, p, first(2), last(2)
+      f = self%cut_force(:, 1)
       cut = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
                       force0=[f(1), f(3)], force0_y=f(2))
-      associate (piece => self%run%problem%piece, planar => rod%pieces(1)%problem%piece)
-         if (rod%scene%break_at_b) then
-            cut%label = 'end_b'
-            deallocate (piece%end_b, planar%end_b)
-            allocate (piece%end_b, source=cut)
-            allocate (planar%end_b, source=cut)
-         else
-            cut%label = 'end_a'
-            deallocate (piece%end_a, planar%end_a)
-            allocate (piece%end_a, source=cut)
-            allocate (planar%end_a, source=cut)
-         end if
+      if (rod%break_node == 0) then
+         associate (piece => self%pieces(1)%run%problem%piece, planar => rod%pieces(1)%problem%piece)
+            if (rod%scene%break_at_b) then
+               cut%label = 'end_b'
+               deallocate (piece%end_b, planar%end_b)
+               allocate (piece%end_b, source=cut)
+               allocate (planar%end_b, source=cut)
+            else
+               cut%label = 'end_a'
+               deallocate (piece%end_a, planar%end_a)
+               allocate (piece%end_a, source=cut)
+               allocate (planar%end_a, source=cut)
+            end if
+         end associate
+         self%pieces(1)%run%work%usable = .false.
+         return
+      end if
+      cut%label = 'break_a'
+      cut%couple0 = self%cut_couple(1)
+      cut%axis = self%cut_axis(:, 1)
+      cut%torque0 = self%cut_torque(1)
+      f = self%cut_force(:, 2)
+      cut_b = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
+                        force0=[f(1), f(3)], force0_y=f(2), couple0=self%cut_couple(2), torque0=self%cut_torque(2))
+      cut_b%axis = self%cut_axis(:, 2)
+      cut_b%label = 'break_b'
+      kb = rod%break_node
+      n = rod%options%nodes
+      first = [1, kb]
+      last = [kb, n]
+      call move_alloc(self%pieces, old)
+      allocate (self%pieces(2))
+      associate (whole => old(1)%run%problem%piece, x => old(1)%run%x)
+         do p = 1, 2
+            associate (run => self%pieces(p)%run, piece => self%pieces(p)%run%problem%piece)
+               if (p == 1) then
+                  call piece%init(rod%s(1:kb), whole%mass_per_length, whole%weight, whole%ei, whole%gip, whole%gravity, &
+                                  whole%mu, whole%law, whole%end_a, cut, whole%tension_ref, error, whole%mu2, &
+                                  whole%damping)
+               else
+                  call piece%init(rod%s(kb:n), whole%mass_per_length, whole%weight, whole%ei, whole%gip, whole%gravity, &
+                                  whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref, error, whole%mu2, &
+                                  whole%damping)
+               end if
+               if (allocated(error)) return
+               if (allocated(whole%loads)) piece%loads = whole%loads
+               piece%load_factor = whole%load_factor
+               call run%init(old(1)%run%options%tolerance)
+               run%options = old(1)%run%options
+               run%x = [x(3*first(p) - 2:3*last(p)), x(3*n + first(p):3*n + last(p))]
+               ! A piece no end of which holds the twist keeps its first node's angle (no rigid spin).
+               piece%psi_anchor = x(3*n + first(p))
+               run%v = old(1)%run%v(:, first(p):last(p))
+               run%t = old(1)%run%t
+            end associate
+         end do
       end associate
-      self%run%work%usable = .false.
-   end subroutine release_end
+      ! The ledger so far goes on with the first piece.
+      associate (run => self%pieces(1)%run, before => old(1)%run)
+         run%energy0 = before%energy0
+         run%end_work = before%end_work
+         run%load_work = before%load_work
+         run%dissipated = before%dissipated
+         run%iterations = before%iterations
+      end associate
+      self%pieces(1)%column = old(1)%column(1:kb)
+      self%pieces(1)%end_slot = [1, 3]
+      self%pieces(1)%reaction(:, 1) = old(1)%reaction(:, 1)
+      self%pieces(2)%column = [kb + 1, old(1)%column(kb + 1:n)]
+      self%pieces(2)%end_slot = [4, 2]
+      self%pieces(2)%reaction(:, 2) = old(1)%reaction(:, 2)
+   end subroutine release
 
    !> Snapshots up to t_new: the static fields (static) or interpolated inside the step just taken.
    subroutine emit(self, rod, observer, t_new, static, error)
@@ -687,7 +937,7 @@ contains
             fields = rod%info%fields
             extra = self%static_extra
          else
-            call interpolated(self, rod%t, t_new - rod%t, ts, fields, extra)
+            call interpolated(self, rod, rod%t, t_new - rod%t, ts, fields, extra)
          end if
          rod%progress%snapshot_index = rod%progress%snapshot_index + 1
          if (present(observer)) then
@@ -703,14 +953,14 @@ contains
 
    !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
    !> and velocities of its two levels, the twist angles linear.
-   subroutine interpolated(self, t0, h, ts, fields, extra)
+   subroutine interpolated(self, rod, t0, h, ts, fields, extra)
       type(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(in) :: rod
       real(dp), intent(in) :: t0, h, ts
       real(dp), intent(out) :: fields(:, :), extra(:, :)
       real(dp), allocatable :: x(:), r0(:, :), r1(:, :), v(:, :)
       real(dp) :: u, h00, h10, h01, h11, d00, d10, d01, d11
-      integer :: n
-      n = self%run%problem%piece%n
+      integer :: n, p
       u = min(max((ts - t0)/h, 0.0_dp), 1.0_dp)
       h00 = (1 + 2*u)*(1 - u)**2
       h10 = u*(1 - u)**2
@@ -720,12 +970,52 @@ contains
       d10 = 3*u*u - 4*u + 1
       d01 = 6*u - 6*u*u
       d11 = 3*u*u - 2*u
-      r0 = reshape(self%x_prev(1:3*n), [3, n])
-      r1 = reshape(self%run%x(1:3*n), [3, n])
-      x = self%run%x
-      x(1:3*n) = reshape(h00*r0 + h10*h*self%v_prev + h01*r1 + h11*h*self%run%v, [3*n])
-      x(3*n + 1:) = (1 - u)*self%x_prev(3*n + 1:) + u*self%run%x(3*n + 1:)
-      v = (d00*r0 + d01*r1)/h + d10*self%v_prev + d11*self%run%v
-      call fields3(self%run%problem%piece, x, v, fields, extra)
+      do p = 1, size(self%pieces)
+         associate (piece => self%pieces(p))
+            n = piece%run%problem%piece%n
+            r0 = reshape(piece%x_prev(1:3*n), [3, n])
+            r1 = reshape(piece%run%x(1:3*n), [3, n])
+            x = piece%run%x
+            x(1:3*n) = reshape(h00*r0 + h10*h*piece%v_prev + h01*r1 + h11*h*piece%run%v, [3*n])
+            x(3*n + 1:) = (1 - u)*piece%x_prev(3*n + 1:) + u*piece%run%x(3*n + 1:)
+            v = (d00*r0 + d01*r1)/h + d10*piece%v_prev + d11*piece%run%v
+            call piece_fields(piece, x, v, fields, extra)
+         end associate
+      end do
+      call double_break_node(rod, size(self%pieces), fields, extra)
    end subroutine interpolated
+
+   !> Fields on the output nodes of the pieces' current state.
+   subroutine state_fields(self, rod, fields, extra)
+      type(rod3d_drive), intent(in) :: self
+      type(rod_run), intent(in) :: rod
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      integer :: p
+      do p = 1, size(self%pieces)
+         call piece_fields(self%pieces(p), self%pieces(p)%run%x, self%pieces(p)%run%v, fields, extra)
+      end do
+      call double_break_node(rod, size(self%pieces), fields, extra)
+   end subroutine state_fields
+
+   !> The fields of one piece at the state (x, v), into its output columns.
+   subroutine piece_fields(piece, x, v, fields, extra)
+      type(piece3), intent(in) :: piece
+      real(dp), intent(in) :: x(:), v(:, :)
+      real(dp), intent(inout) :: fields(:, :), extra(:, :)
+      real(dp) :: f(piece%run%problem%piece%n, size(fields, 2)), e(piece%run%problem%piece%n, size(extra, 2))
+      call fields3(piece%run%problem%piece, x, v, f, e)
+      fields(piece%column, :) = f
+      extra(piece%column, :) = e
+   end subroutine piece_fields
+
+   !> Before a break inside the cable the break node fills both of its columns.
+   pure subroutine double_break_node(rod, n_pieces, fields, extra)
+      type(rod_run), intent(in) :: rod
+      integer, intent(in) :: n_pieces
+      real(dp), intent(inout) :: fields(:, :), extra(:, :)
+      if (n_pieces == 1 .and. rod%break_node > 0) then
+         fields(rod%break_node + 1, :) = fields(rod%break_node, :)
+         extra(rod%break_node + 1, :) = extra(rod%break_node, :)
+      end if
+   end subroutine double_break_node
 end module xcable_rod3d_drive

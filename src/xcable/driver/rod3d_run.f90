@@ -9,7 +9,7 @@ module xcable_rod3d_run
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, prefix_error
    use xcable_strings, only: str
-   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku
+   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, couple_plane
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    implicit none
    private
@@ -203,7 +203,7 @@ contains
       !> The end at node k: the work over the step of its force, its torque and its couple.
       subroutine book_end(k)
          integer, intent(in) :: k
-         real(dp) :: force(3), torque0, torque1, dpsi, p0(2), p1(2), dphi, couple
+         real(dp) :: force(3), torque0, torque1, dpsi, p0(2), p1(2), dphi, couple, basis(3, 2)
          integer :: c
          associate (piece => self%problem%piece)
             if ((k == 1 .and. piece%end_a%held()) .or. (k == n .and. piece%end_b%held())) then
@@ -223,16 +223,19 @@ contains
                torque1 = piece%end_b%applied_torque(self%t + dt)
             end if
             self%end_work = self%end_work + 0.5_dp*(torque0 + torque1)*dpsi
-            ! The couple (about -y) on the end cell's projected angle.
+            ! The couple (about its axis, -y unless the end says otherwise) on the end cell's
+            ! projected angle (model/rod3d.f90, add_couples).
             c = merge(1, n - 1, k == 1)
-            p0 = piece%e0([1, 3], c)
-            p1 = piece%e1([1, 3], c)
-            dphi = atan2(p0(1)*p1(2) - p0(2)*p1(1), dot_product(p0, p1))
             if (k == 1) then
                couple = 0.5_dp*(piece%end_a%applied_couple(self%t) + piece%end_a%applied_couple(self%t + dt))
+               basis = couple_plane(piece%end_a%couple_axis())
             else
                couple = 0.5_dp*(piece%end_b%applied_couple(self%t) + piece%end_b%applied_couple(self%t + dt))
+               basis = couple_plane(piece%end_b%couple_axis())
             end if
+            p0 = matmul(piece%e0(:, c), basis)
+            p1 = matmul(piece%e1(:, c), basis)
+            dphi = atan2(p0(1)*p1(2) - p0(2)*p1(1), dot_product(p0, p1))
             self%end_work = self%end_work + couple*dphi
          end associate
       end subroutine book_end

@@ -1499,7 +1499,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: x(:), res(:)
       type(band_matrix) :: unused
-      integer :: n, kb
+      integer :: n, kb, p
       real(dp) :: w_a, w_b, m_b
       n = self%pieces(1)%problem%piece%n
       if (self%scene%break_at_a .or. self%scene%break_at_b) then
@@ -1528,6 +1528,25 @@ contains
          self%work = self%work - bend_energy(piece, kb, piece%th1(kb))
       end associate
       call apply_split(self)
+      ! Distributed loads: each new end node keeps its own cell's share (the pieces' loads at rest),
+      ! so that both pieces start in the balance the whole cable had.
+      if (.not. allocated(self%pieces(1)%problem%piece%loads)) return
+      do p = 1, 2
+         associate (piece => self%pieces(p)%problem%piece)
+            x = reshape(self%pieces(p)%r, [2*piece%n])
+            res = x
+            call piece%static_system(x, self%t, res, unused, .false.)
+            self%cut_force(:, p) = self%cut_force(:, p) - piece%load_node(:, merge(piece%n, 1, p == 1))
+         end associate
+      end do
+      select type (end => self%pieces(1)%problem%piece%end_b)
+      type is (force_end)
+         end%force0 = self%cut_force(:, 1)
+      end select
+      select type (end => self%pieces(2)%problem%piece%end_a)
+      type is (force_end)
+         end%force0 = self%cut_force(:, 2)
+      end select
    end subroutine split
 
    !> The pieces after the break, with new ends that start from self%cut_force

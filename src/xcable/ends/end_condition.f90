@@ -44,6 +44,9 @@ module xcable_ends_end
       procedure :: velocity3 => end_velocity3
       procedure :: applied_force3 => end_applied_force3
       procedure :: applied_torque => end_applied_torque
+      !> The 3-D model's axis of the applied couple (a unit vector; by default -y, the planar
+      !> couple's: counter-clockwise in the x-z plane).
+      procedure :: couple_axis => end_couple_axis
    end type end_condition
 
    abstract interface
@@ -130,6 +133,12 @@ contains
       real(dp), intent(in) :: t
       m = 0
    end function end_applied_torque
+
+   pure function end_couple_axis(self) result(axis)
+      class(end_condition), intent(in) :: self
+      real(dp) :: axis(3)
+      axis = [0.0_dp, -1.0_dp, 0.0_dp]
+   end function end_couple_axis
 
    !> The paper's release ramp (eqs. 31-32): 1 before t0, cos^2(pi (t - t0) / (2 duration))
    !> during the ramp, 0 after (a step at t0 when the duration is 0).

@@ -27,6 +27,8 @@ module xcable_ends_force
       !> For the 3-D model: the y component of force0, N, and the torque about the outward
       !> tangent (ramped as the force), N m.
       real(dp) :: force0_y = 0, torque0 = 0
+      !> For the 3-D model: the unit axis the couple turns about (-y: the planar couple's).
+      real(dp) :: axis(3) = [0.0_dp, -1.0_dp, 0.0_dp]
       !> Start and duration of the ramp, s.
       real(dp) :: t0 = 0, duration = 0
       !> Force table of the 'table' history: components x, y, z.
@@ -38,6 +40,7 @@ module xcable_ends_force
       procedure :: time_dependent => force_time_dependent
       procedure :: applied_force3 => force_applied_force3
       procedure :: applied_torque => force_applied_torque
+      procedure :: couple_axis => force_couple_axis
    end type force_end
 
 contains
@@ -106,4 +109,10 @@ contains
          m = self%torque0
       end if
    end function force_applied_torque
+
+   pure function force_couple_axis(self) result(axis)
+      class(force_end), intent(in) :: self
+      real(dp) :: axis(3)
+      axis = self%axis
+   end function force_couple_axis
 end module xcable_ends_force

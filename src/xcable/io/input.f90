@@ -1404,7 +1404,7 @@ contains
    end subroutine check_scene
 
    !> The model against the scene: 3-D data under model = '2d', and what the
-   !> 3-D model does not do yet (the box scheme, a break inside the cable).
+   !> 3-D model does not do (the box scheme).
    subroutine check_model(c, error)
       !> The case.
       type(case_config), intent(in) :: c
@@ -1421,14 +1421,9 @@ contains
       if (c%model_to_run() /= '3d') return
       what = "model = '"//trim(c%model)//"'"
       if (trim(c%model) == 'auto') what = what//' (3-D: '//out_of_plane(c)//')'
-      if (trim(c%scheme) == 'box') then
+      if (trim(c%scheme) == 'box') &
          call fatal_error(error, c%source//": &numerics: scheme = 'box' with "//what//': the box scheme is '// &
                           "planar; allowed: scheme = 'rod' for the 3-D model", stat_input)
-      else if (c%break_enabled .and. c%s_break > 0 .and. c%s_break < c%length) then
-         call fatal_error(error, c%source//': &rupture: s_break = '//real_text(c%s_break)//' with '//what// &
-                          ': the 3-D model does not yet break inside the cable; allowed: s_break = 0 or L (a break '// &
-                          'at an end), or enabled = .false.', stat_input)
-      end if
    end subroutine check_model
 
    !> The first datum of a case that leaves the x-z plane, as 'group: variable = value'.

@@ -207,8 +207,8 @@ contains
                "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &
                choices='rod box')
       call add(t, 'numerics', 'model', 'string', '-', "'auto'", &
-               "'2d' (the cable in the x-z plane), '3d' (positions x, y, z and twist; the rod scheme, no break "// &
-               "inside the cable) or 'auto': 2-D when every end, force, motion, current and torque "// &
+               "'2d' (the cable in the x-z plane), '3d' (positions x, y, z and twist; the rod scheme) "// &
+               "or 'auto': 2-D when every end, force, motion, current and torque "// &
                'lies in the x-z plane, 3-D otherwise', length=16, choices='auto 2d 3d')
       call add(t, 'numerics', 'nodes', 'integer', '-', '121', 'number of nodes, uniform in unstretched arc length '// &
                '(uniform on each side of a break inside the cable, the break point a node)', &

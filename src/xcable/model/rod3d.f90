@@ -60,11 +60,12 @@
 !> tridiagonal (interleaving psi with the positions would make the band 11,
 !> and will be needed once the twist is coupled to the centreline). A held end's
 !> rows are R = X(t) and psi = 0 (the twist held); a loaded end adds its
-!> force, torque and point mass. When no end is held psi_1 = 0 fixes the
-!> rigid spin. Distributed loads (fluid) enter as in the planar rod, through
-!> their 3-D form (loads/load.f90 cell_force3). An end couple acts, as in the
-!> planar input, about the y axis, on the angle of the end cell's projection
-!> on the x-z plane (a couple vector in 3-D is not yet there).
+!> force, torque and point mass. When no end is held psi_1 = psi_anchor (0,
+!> or a cut piece's angle at the cut) fixes the rigid spin. Distributed
+!> loads (fluid) enter as in the planar rod, through their 3-D form
+!> (loads/load.f90 cell_force3). An end couple acts about its end's couple axis (-y, as in the planar input, unless the end says
+!> otherwise: the new ends of a break inside the cable), on the angle of the
+!> end cell's projection on the plane normal to the axis.
 module xcable_model_rod3d
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
@@ -73,11 +74,11 @@ module xcable_model_rod3d
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
    use xcable_loads_load, only: load_slot, cell_kinematics
-   use xcable_vector3, only: outer3, identity3
+   use xcable_vector3, only: outer3, identity3, cross3
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
-   public :: paper_euler_parameters
+   public :: paper_euler_parameters, couple_plane, bend_energy, bend_moment
 
    ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
    ! (the two cell vectors of a node; the statics' bending blocks). They live in this module so
@@ -159,6 +160,9 @@ module xcable_model_rod3d
       real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
       !> Factor on the distributed loads.
       real(dp) :: load_factor = 1
+      !> The twist angle psi_1 is held at when no end holds the twist (the rigid spin), rad: 0, or
+      !> for a piece cut from a twisted cable its first node's angle at the cut.
+      real(dp) :: psi_anchor = 0
    contains
       !> Set the distributed loads; error for a load without a 3-D form.
       procedure :: set_loads => rod3d_set_loads
@@ -1126,7 +1130,8 @@ contains
       end do
       residual(3*n + 1) = residual(3*n + 1) + self%end_a%applied_torque(t_new)*twist_scale
       residual(4*n) = residual(4*n) - self%end_b%applied_torque(t_new)*twist_scale
-      if (anchor_a) residual(3*n + 1) = psi(1)
+      if (anchor_a .and. held_a) residual(3*n + 1) = psi(1)
+      if (anchor_a .and. .not. held_a) residual(3*n + 1) = psi(1) - self%psi_anchor
       if (anchor_b) residual(4*n) = psi(n)
       if (held_a) residual(1:3) = (r(:, 1) - self%end_a%position3(t_new))/self%length_ref
       if (held_b) residual(3*n - 2:3*n) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref
@@ -1271,33 +1276,36 @@ contains
       if (allocated(self%loads)) has_loads = size(self%loads) > 0
    end function has_loads
 
-   !> The applied couples of the ends (the planar input's couple, positive counter-clockwise in
-   !> the x-z plane, that is about -y) on the end cells. A couple C does the work C dphi, dphi
-   !> the change of the angle of the cell's projection on the x-z plane: in statics the force
-   !> -C grad(phi) / ds, in a step the time-averaged couple times the planar rod's exact discrete
-   !> gradient of that angle, perp(p_mid) dphi / (sin(dphi) |p0| |p1|) of the projections p.
+   !> The applied couples of the ends on the end cells. A couple C about the
+   !> unit axis a (end_condition%couple_axis: -y for the planar input's couple,
+   !> positive counter-clockwise in the x-z plane) does the work C dphi, dphi
+   !> the change of the angle of the cell's projection on the plane normal to
+   !> a (couple_plane): in statics the force -C grad(phi) / ds, in a step the
+   !> time-averaged couple times the planar rod's exact discrete gradient of
+   !> that angle, perp(p_mid) dphi / (sin(dphi) |p0| |p1|) of the projections p.
    subroutine add_couples(self, ta, tb, step, with_jacobian)
       class(rod3d_piece), intent(inout) :: self
       real(dp), intent(in) :: ta, tb
       logical, intent(in) :: step, with_jacobian
       real(dp) :: couple, p0(2), p1(2), pm(2), l0, l1, cross01, dphi, rho, drho, g, gvec(2), dg(2), dgvec(2, 2)
-      real(dp) :: jm(2, 2), jp(2, 2)
-      integer :: c, side, i, j
-      integer, parameter :: plane(2) = [1, 3]
+      real(dp) :: jm(2, 2), jp(2, 2), basis(3, 2)
+      integer :: c, side, j
       jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
       do side = 1, 2
          if (side == 1) then
             c = 1
             couple = 0.5_dp*(self%end_a%applied_couple(ta) + self%end_a%applied_couple(tb))
+            basis = couple_plane(self%end_a%couple_axis())
          else
             c = self%n - 1
             couple = 0.5_dp*(self%end_b%applied_couple(ta) + self%end_b%applied_couple(tb))
+            basis = couple_plane(self%end_b%couple_axis())
          end if
          if (couple == 0) cycle
-         p1 = self%e1(plane, c)
+         p1 = matmul(self%e1(:, c), basis)
          l1 = norm2(p1)
          if (step) then
-            p0 = self%e0(plane, c)
+            p0 = matmul(self%e0(:, c), basis)
             l0 = norm2(p0)
             pm = 0.5_dp*(p0 + p1)
             cross01 = p0(1)*p1(2) - p0(2)*p1(1)
@@ -1321,14 +1329,10 @@ contains
             jp = (jm - 2*outer2([-p1(2), p1(1)], p1)/l1**2)/l1**2
             dgvec = jp
          end if
-         do i = 1, 2
-            self%force(plane(i), c) = self%force(plane(i), c) - couple*gvec(i)/self%ds(c)
-            if (.not. with_jacobian) cycle
-            do j = 1, 2
-               self%block(plane(i), plane(j), 0, c) = self%block(plane(i), plane(j), 0, c) &
-                                                      - couple*dgvec(i, j)/self%ds(c)
-            end do
-         end do
+         ! Back to x, y, z: the force B g and the block B dg B^T of the plane's basis B.
+         self%force(:, c) = self%force(:, c) - couple*matmul(basis, gvec)/self%ds(c)
+         if (with_jacobian) self%block(:, :, 0, c) = self%block(:, :, 0, c) &
+                                                     - couple*matmul(basis, matmul(dgvec, transpose(basis)))/self%ds(c)
       end do
 
    contains
@@ -1340,6 +1344,21 @@ contains
          m(:, 2) = u*v(2)
       end function outer2
    end subroutine add_couples
+
+   !> An orthonormal basis (u, w) of the plane normal to the unit axis a, with
+   !> u x w = a: u the unit projection of x on the plane (of z when a is near
+   !> x). For a = -y it is (x, z) exactly, the planar couple's plane.
+   pure function couple_plane(axis) result(basis)
+      !> Unit axis.
+      real(dp), intent(in) :: axis(3)
+      real(dp) :: basis(3, 2), u(3)
+      u = [1.0_dp, 0.0_dp, 0.0_dp]
+      if (abs(axis(1)) > 0.9_dp) u = [0.0_dp, 0.0_dp, 1.0_dp]
+      u = u - dot_product(u, axis)*axis
+      u = u/norm2(u)
+      basis(:, 1) = u
+      basis(:, 2) = cross3(axis, u)
+   end function couple_plane
 
    !> Set the distributed loads (their lift must already be off the weight given to init).
    subroutine rod3d_set_loads(self, loads, error)

@@ -32,6 +32,7 @@ contains
                new_unittest('very_slack_rope_catenary', test_very_slack_rope), &
                new_unittest('very_slack_paper_cable_refined', test_very_slack_paper), &
                new_unittest('current_towards_end_a', test_current_towards_a), &
+               new_unittest('compressed_static_state_warned', test_compression_warning), &
                new_unittest('newton_quadratic', test_newton), &
                new_unittest('tension_too_small_refused', test_too_small), &
                new_unittest('ends_too_far_apart_refused', test_too_far)]
@@ -354,6 +355,59 @@ contains
       write (output_unit, '(4x,a,f6.2)') 'T_a: observed order', order
       call check(error, order > 1.7_dp .and. order < 2.4_dp, 'T_a converges at order '//str(order))
    end subroutine test_current_towards_a
+
+   !> A static state that pushes is reported. The line of current_towards_end_a
+   !> (compression = 'law') in a current of 1 m/s towards end a on 161 nodes:
+   !> Newton finds a loop at end a, its cells pushing by about 157 N (bench/
+   !> studies/statics_sweep.py); its run's warnings say so, also with the 3-D
+   !> model (whose statics start from that state). The same line in still
+   !> water hangs in tension and does not warn.
+   subroutine test_compression_warning(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      real(dp), allocatable :: tension(:)
+      integer :: i, n
+      logical :: warned
+      do i = 1, 3
+         c = statics_config(161)
+         c%law = 'linear'
+         c%ea = 451603.943953533_dp
+         c%diameter = 0.05_dp
+         c%fluid_density = 1025
+         c%cd_normal = 1.2_dp
+         c%cd_tangential = 0.008_dp
+         c%ca_normal = 1
+         c%current_x = merge(0.0_dp, -1.0_dp, i == 2)
+         c%end_b%x = 48
+         c%end_b%z = 24
+         c%model = merge('3d', '2d', i == 3)
+         c%given = 'end_b%x end_b%z'
+         c%t_end = 0.001_dp
+         c%dt = 0.001_dp
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         n = c%nodes
+         associate (r => sim%rod%static%r)
+            tension = sim%rod%pieces(1)%problem%piece%law%tension(norm2(r(:, 2:n) - r(:, 1:n - 1), 1) &
+                                                                  /sim%rod%pieces(1)%problem%piece%ds - 1)
+         end associate
+         call sim%run(error=error)
+         if (allocated(error)) return
+         warned = index(sim%rod%summary%warnings, 'the static state is in compression') > 0
+         write (output_unit, '(4x,a,a,f5.1,a,2f10.2,a,f10.2,a,l2)') c%model, ' current', c%current_x, &
+            ' m/s: static tension from', minval(tension), maxval(tension), ' N (3-D statics: ', &
+            sim%rod%static_min_tension, ' N); warned', warned
+         if (i /= 2) then
+            call check(error, minval(tension) < -100, 'the 1 m/s case no longer pushes (the test needs a loop): '// &
+                       str(minval(tension))//' N')
+            if (allocated(error)) return
+         end if
+         call check(error, warned .eqv. (i /= 2), c%model//', current '//str(c%current_x)//' m/s: the warnings are "'// &
+                    sim%rod%summary%warnings//'"')
+         if (allocated(error)) return
+      end do
+   end subroutine test_compression_warning
 
    !> End a fixed, end b carrying a point mass: the line hangs straight down,
    !> the tension at the support is the weight of cable and mass, and the

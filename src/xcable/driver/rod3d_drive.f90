@@ -190,6 +190,11 @@ contains
          end associate
          rod%summary%min_strain = minval(piece%l1) - 1
          rod%summary%max_strain = maxval(piece%l1) - 1
+         ! The static state's compression, for the warning (the planar run's fields held the first guess's).
+         rod%static_min_tension = minval(piece%law%tension(piece%l1(1:n - 1) - 1))
+         k = minloc(piece%law%tension(piece%l1(1:n - 1) - 1), 1)
+         rod%static_min_tension_s = 0.5_dp*(rod%s(k) + rod%s(k + 1))
+         rod%static_max_tension = maxval(abs(piece%law%tension(piece%l1(1:n - 1) - 1)))
       end associate
    end subroutine drive_prepare
 

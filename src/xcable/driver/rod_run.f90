@@ -70,7 +70,8 @@ module xcable_rod_run
    integer, parameter :: window_margin = 8, check_nodes = 2
    !> Warning thresholds (documented in the README, "Warnings").
    real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
-                                  warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp
+                                  warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp, &
+                                  warn_static_compression = 1.0e-6_dp
 
    !> Controls of a rod run.
    type :: rod_run_options
@@ -180,6 +181,9 @@ module xcable_rod_run
       logical :: broken = .false.
       !> Force (N; x, z of each) and couple (N m) the break's new ends start from (cut a, cut b).
       real(dp) :: cut_force(2, 2) = 0, cut_couple(2) = 0
+      !> Lowest tension of the static state's cells (N), the arc length of that cell's middle (m)
+      !> and the largest tension magnitude (N): a static state in compression is reported (summarise).
+      real(dp) :: static_min_tension = 0, static_min_tension_s = 0, static_max_tension = 0
       !> History and summary.
       type(run_history) :: history
       type(run_summary) :: summary
@@ -300,6 +304,15 @@ contains
       associate (piece => self%pieces(1)%problem%piece)
          self%summary%min_strain = minval(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
          self%summary%max_strain = maxval(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
+         block
+            real(dp) :: cell_tension(n - 1)
+            integer :: c_low
+            cell_tension = piece%law%tension(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
+            c_low = minloc(cell_tension, 1)
+            self%static_min_tension = cell_tension(c_low)
+            self%static_min_tension_s = 0.5_dp*(self%s(c_low) + self%s(c_low + 1))
+            self%static_max_tension = maxval(abs(cell_tension))
+         end block
       end associate
       if (.not. (options%t_end/self%dt <= max_steps)) then
          call fatal_error(error, scene%source//': &numerics: the time step '//str(self%dt)//' s (courant = '// &
@@ -1698,6 +1711,11 @@ contains
             str(law%strain_min)//'): it was continued there along its first tangent, as stiff in compression '// &
             'as at the first row (give rows for compression, or compression = ''none'')')
       end associate
+      if (self%static_min_tension < -warn_static_compression*self%static_max_tension) call warn( &
+         'the static state is in compression: tension down to '//str(self%static_min_tension)//' N at s = '// &
+         str(self%static_min_tension_s)//' m (largest tension '//str(self%static_max_tension)//' N); a rope '// &
+         'cannot push: this state is held by the bending stiffness and the law''s compression branch, and may '// &
+         'be a loop or a buckle (compare with compression = ''none'' and with more nodes)')
       if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
          str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &
          ' accepted): the step control struggled; a smaller dt or courant may be more economical')

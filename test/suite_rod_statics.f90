@@ -49,6 +49,27 @@ contains
       c%newton_tol = 1.0e-10_dp
    end function statics_config
 
+   !> The line of bench/studies/statics_sweep.py (60 m, linear law, end b at (48, 24) m) in
+   !> water with a current current_x along x, planar model.
+   function line_in_current(nodes, current_x) result(c)
+      integer, intent(in) :: nodes
+      real(dp), intent(in) :: current_x
+      type(case_config) :: c
+      c = statics_config(nodes)
+      c%law = 'linear'
+      c%ea = 451603.943953533_dp
+      c%diameter = 0.05_dp
+      c%fluid_density = 1025
+      c%cd_normal = 1.2_dp
+      c%cd_tangential = 0.008_dp
+      c%ca_normal = 1
+      c%current_x = current_x
+      c%end_b%x = 48
+      c%end_b%z = 24
+      c%model = '2d'
+      c%given = 'end_b%x end_b%z'
+   end function line_in_current
+
    !> Relative errors of span, sag, end tension and mid-span strain of the
    !> symmetric case against the exact catenary on the ladder; observed order
    !> from successive differences; the finest errors below the bounds.
@@ -316,19 +337,7 @@ contains
       integer, parameter :: grid(3) = [31, 61, 121]
       real(dp) :: ta(3), turning, a(2), b(2), order
       integer :: i, k, n
-      c = statics_config(61)
-      c%law = 'linear'
-      c%ea = 451603.943953533_dp
-      c%diameter = 0.05_dp
-      c%fluid_density = 1025
-      c%cd_normal = 1.2_dp
-      c%cd_tangential = 0.008_dp
-      c%ca_normal = 1
-      c%current_x = -2
-      c%end_b%x = 48
-      c%end_b%z = 24
-      c%model = '2d'
-      c%given = 'end_b%x end_b%z'
+      c = line_in_current(61, -2.0_dp)
       do i = 1, 3
          c%nodes = grid(i)
          call sim%prepare(c, error)
@@ -370,19 +379,8 @@ contains
       integer :: i, n
       logical :: warned
       do i = 1, 3
-         c = statics_config(161)
-         c%law = 'linear'
-         c%ea = 451603.943953533_dp
-         c%diameter = 0.05_dp
-         c%fluid_density = 1025
-         c%cd_normal = 1.2_dp
-         c%cd_tangential = 0.008_dp
-         c%ca_normal = 1
-         c%current_x = merge(0.0_dp, -1.0_dp, i == 2)
-         c%end_b%x = 48
-         c%end_b%z = 24
+         c = line_in_current(161, merge(0.0_dp, -1.0_dp, i == 2))
          c%model = merge('3d', '2d', i == 3)
-         c%given = 'end_b%x end_b%z'
          c%t_end = 0.001_dp
          c%dt = 0.001_dp
          call sim%prepare(c, error)

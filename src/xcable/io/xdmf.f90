@@ -201,16 +201,17 @@ contains
       exists = exists .and. hdferr == 0
    end function exists
 
-   !> Extent of dimension dim (1: the fastest-varying, HDF5's last) of a dataset; 0 if absent.
-   integer function dataset_extent(file, name, rank, ok) result(extent)
+   !> Extents of a dataset of the given rank (Fortran order: the fastest-varying, HDF5's last,
+   !> first); ok cleared when it is absent or of another rank.
+   subroutine dataset_dims(file, name, dims, ok)
       integer(hid_t), intent(in) :: file
       character(*), intent(in) :: name
-      integer, intent(in) :: rank
+      integer(hsize_t), intent(out) :: dims(:)
       logical, intent(inout) :: ok
       integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(rank), maxdims(rank)
+      integer(hsize_t) :: maxdims(size(dims))
       integer :: hdferr
-      extent = 0
+      dims = 0
       if (.not. exists(file, name)) then
          ok = .false.
          return
@@ -218,9 +219,20 @@ contains
       call h5dopen_f(file, name, dset, hdferr)
       call h5dget_space_f(dset, space, hdferr)
       call h5sget_simple_extent_dims_f(space, dims, maxdims, hdferr)
-      if (hdferr == rank) extent = int(dims(1))
+      if (hdferr /= size(dims)) ok = .false.
       call h5sclose_f(space, hdferr)
       call h5dclose_f(dset, hdferr)
+   end subroutine dataset_dims
+
+   !> Number of nodes of a snapshot dataset (its rows' length); 0 if absent.
+   integer function dataset_extent(file, name, rank, ok) result(extent)
+      integer(hid_t), intent(in) :: file
+      character(*), intent(in) :: name
+      integer, intent(in) :: rank
+      logical, intent(inout) :: ok
+      integer(hsize_t) :: dims(rank)
+      call dataset_dims(file, name, dims, ok)
+      extent = int(dims(1))
    end function dataset_extent
 
    !> A 1-D real dataset.
@@ -229,26 +241,15 @@ contains
       character(*), intent(in) :: name
       real(dp), allocatable, intent(out) :: values(:)
       logical, intent(inout) :: ok
-      integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(1), maxdims(1)
+      integer(hid_t) :: dset
+      integer(hsize_t) :: dims(1)
       integer :: hdferr
-      allocate (values(0))
-      if (.not. exists(file, name)) then
-         ok = .false.
-         return
-      end if
+      call dataset_dims(file, name, dims, ok)
+      allocate (values(dims(1)))
+      if (.not. ok) return
       call h5dopen_f(file, name, dset, hdferr)
-      call h5dget_space_f(dset, space, hdferr)
-      call h5sget_simple_extent_dims_f(space, dims, maxdims, hdferr)
-      if (hdferr /= 1) then
-         ok = .false.
-      else
-         deallocate (values)
-         allocate (values(dims(1)))
-         call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, dims, hdferr)
-         if (hdferr /= 0) ok = .false.
-      end if
-      call h5sclose_f(space, hdferr)
+      call h5dread_f(dset, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+      if (hdferr /= 0) ok = .false.
       call h5dclose_f(dset, hdferr)
    end subroutine read_vector
 

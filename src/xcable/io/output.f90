@@ -33,12 +33,11 @@ module xcable_io_output
                                  field_names, n_fields, n_end_quantities, end_quantity_names, n_end_quantities_y, &
                                  end_quantity_names_y, n_fields3, field3_names, field3_units
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr, &
-                             get_text_attr, get_int_attr, delete_attr
+                             get_text_attr, get_int_attr
    use xcable_system_posix, only: replace_file
    use xcable_version, only: code_version
    use xcable_io_number_text, only: put_es, put_int
    use hdf5
-   use, intrinsic :: iso_c_binding, only: c_int
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
    private
@@ -202,10 +201,11 @@ contains
    !> 'interrupted'), with at least the snapshots the checkpoint counts and
    !> the same output nodes; with gnuplot text, its snapshot file must hold
    !> them too. All of this is checked before anything is changed. Then the
-   !> snapshots after the checkpoint are cut (from the datasets and the
-   !> text), /summary and /history and the failure and warning attributes of
-   !> an earlier stop removed, the provenance updated (namelist, input_file;
-   !> resumes counted) and the status set to 'running'.
+   !> part of the file the checkpoint counts is copied into a new file that
+   !> replaces it (the snapshots after the checkpoint, /summary, /history and
+   !> the failure and warning attributes of an earlier stop left behind), the
+   !> text cut alike, the provenance updated (namelist, input_file; resumes
+   !> counted) and the status set to 'running'.
    subroutine result_reopen(self, path, s, fields, namelist_text, input_file, gnuplot, piece_starts, snapshots, run_id, &
                             error, three_d)
       !> Result file.
@@ -237,13 +237,6 @@ contains
       character(:), allocatable :: status, stored_id, reason, lines(:)
       character(len=*), parameter :: fresh = '; run without --resume to start again'
       integer :: keep_lines
-      interface
-         integer(c_int) function h5f_increment_filesize(file_id, increment) bind(C, name='H5Fincrement_filesize')
-            import :: c_int, hid_t, hsize_t
-            integer(hid_t), value :: file_id
-            integer(hsize_t), value :: increment
-         end function h5f_increment_filesize
-      end interface
       self%path = path
       self%s = s
       self%piece_starts = piece_starts
@@ -323,26 +316,17 @@ contains
             return
          end if
       end if
-      ! Checked: now change it. A process killed inside an HDF5 flush can leave chunk-index
-      ! entries (or index blocks) past the end of allocated space that the superblock records:
-      ! the library would hand that space out again and a chunk written on resume would be
-      ! lost (read back as zeros). First the end of allocated space goes to the end of the file.
-      if (h5f_increment_filesize(self%file, 0_hsize_t) < 0) then
-         call refuse("the result file '"//path//"' cannot be prepared for writing"//fresh)
-         return
-      end if
-      call truncate(self%file, 'time', 1, snapshots, ok)
-      do i = 1, n_fields
-         if (self%want(i)) call truncate(self%file, trim(field_names(i)), 2, snapshots, ok)
-      end do
-      do i = 1, merge(n_fields3, 0, self%three_d)
-         call truncate(self%file, trim(field3_names(i)), 2, snapshots, ok)
-      end do
-      call delete_link(self%file, 'history', ok)
-      call delete_link(self%file, 'summary', ok)
-      call delete_attr(self%file, 'failure_reason', ok)
-      call delete_attr(self%file, 'failure_time', ok)
-      call delete_attr(self%file, 'warnings', ok)
+      ! Checked: now change it. A process killed inside an HDF5 flush can leave the chunk
+      ! indexes of the snapshot datasets out of step with their extents and with the space the
+      ! superblock records (entries past the extent or past the end of allocated space); a
+      ! file cut in place and written on could then read a row back as zeros (seen after a
+      ! SIGKILL of a 3-D run: one chunk too many in /shear, its row zero after the resume).
+      ! So the kept part is copied into a new file, which replaces this one: the provenance
+      ! attributes, /s and /static as they are, and the first `snapshots` rows of /time and
+      ! of every snapshot dataset (rows the checkpoint counts, flushed before it was written),
+      ! each dataset built afresh. Until the rename the old file stays as it was.
+      call copy_kept(error)
+      if (allocated(error)) return
       resumes = 0
       call get_int_attr(self%file, 'resumes', resumes, exists)
       call put_int_attr(self%file, 'resumes', resumes + 1, ok)
@@ -368,6 +352,81 @@ contains
       end if
 
    contains
+
+      !> The kept part of the file into path.resume, which then replaces path and is
+      !> opened as self%file (see above). Errors: stat_io; the old file is then unchanged
+      !> (closed), and the partial copy removed.
+      subroutine copy_kept(error)
+         type(error_type), allocatable, intent(out) :: error
+         character(len=*), parameter :: text_attrs(10) = [character(len=16) :: 'status', 'namelist', &
+            'input_file', 'code_version', 'compiler_version', 'compiler_options', 'scheme', 'terms', 'run_id', &
+            'model']
+         integer(hid_t) :: new, access
+         character(:), allocatable :: temporary, text, message
+         logical :: found, copied
+         integer :: q, unit, status_code
+         temporary = path//'.resume'
+         open (newunit=unit, file=temporary, status='old', iostat=ios)
+         if (ios == 0) close (unit, status='delete')
+         call h5pcreate_f(H5P_FILE_ACCESS_F, access, hdferr)
+         call h5pset_libver_bounds_f(access, H5F_LIBVER_V18_F, H5F_LIBVER_LATEST_F, hdferr)
+         call h5fcreate_f(temporary, H5F_ACC_TRUNC_F, new, hdferr, access_prp=access)
+         call h5pclose_f(access, status_code)
+         if (hdferr /= 0) then
+            call fatal_error(error, "cannot create '"//temporary//"' to resume (is the directory writable?)", stat_io)
+            call h5fclose_f(self%file, hdferr)
+            self%file = -1
+            return
+         end if
+         copied = .true.
+         do q = 1, size(text_attrs)
+            call h5aexists_f(self%file, trim(text_attrs(q)), found, hdferr)
+            if (.not. found) cycle
+            call get_text_attr(self%file, trim(text_attrs(q)), text, copied)
+            call put_text_attr(new, trim(text_attrs(q)), text, copied)
+         end do
+         call h5aexists_f(self%file, 'resumes', found, hdferr)
+         if (found) then
+            call get_int_attr(self%file, 'resumes', resumes, copied)
+            call put_int_attr(new, 'resumes', resumes, copied)
+         end if
+         call h5ocopy_f(self%file, 's', new, 's', hdferr)
+         copied = copied .and. hdferr == 0
+         call h5lexists_f(self%file, 'static', found, hdferr)
+         if (found) then
+            call h5ocopy_f(self%file, 'static', new, 'static', hdferr)
+            copied = copied .and. hdferr == 0
+         end if
+         call copy_rows(self%file, new, 'time', 1, snapshots, copied)
+         do q = 1, n_fields
+            if (self%want(q)) call copy_rows(self%file, new, trim(field_names(q)), 2, snapshots, copied)
+         end do
+         do q = 1, merge(n_fields3, 0, self%three_d)
+            call copy_rows(self%file, new, trim(field3_names(q)), 2, snapshots, copied)
+         end do
+         call h5fflush_f(new, H5F_SCOPE_GLOBAL_F, hdferr)
+         copied = copied .and. hdferr == 0
+         call h5fclose_f(new, hdferr)
+         copied = copied .and. hdferr == 0
+         call h5fclose_f(self%file, hdferr)
+         self%file = -1
+         message = ''
+         if (copied) message = replace_file(temporary, path)
+         if (.not. copied .or. len(message) > 0) then
+            open (newunit=unit, file=temporary, status='old', iostat=ios)
+            if (ios == 0) close (unit, status='delete')
+            if (.not. copied) message = 'an HDF5 read or write failed'
+            call fatal_error(error, "reopening '"//path//"' to resume: copying its kept part failed ("// &
+                             message//"); the file is unchanged", stat_io)
+            return
+         end if
+         call h5fopen_f(path, H5F_ACC_RDWR_F, self%file, hdferr)
+         if (hdferr /= 0) then
+            self%file = -1
+            call fatal_error(error, "the result file '"//path//"' cannot be opened again after its kept part "// &
+                             "was copied", stat_io)
+         end if
+      end subroutine copy_kept
 
       !> Refuse: close the file unchanged.
       subroutine refuse(message)
@@ -400,44 +459,50 @@ contains
       call h5dclose_f(dset, hdferr)
    end function dataset_length
 
-   !> Cut an extendible snapshot dataset to its first `keep` snapshots.
-   subroutine truncate(loc, name, rank, keep, ok)
-      integer(hid_t), intent(in) :: loc
+   !> The first `keep` snapshots of a snapshot dataset of one file into a new
+   !> dataset of that name in another (written as the run writes them, a row at
+   !> a time). Only rows inside the dataset's extent are read.
+   subroutine copy_rows(from, to, name, rank, keep, ok)
+      integer(hid_t), intent(in) :: from, to
       character(*), intent(in) :: name
       integer, intent(in) :: rank, keep
       logical, intent(inout) :: ok
-      integer(hid_t) :: dset, space
-      integer(hsize_t) :: dims(2), maxdims(2)
-      integer :: hdferr
-      call h5dopen_f(loc, name, dset, hdferr)
+      integer(hid_t) :: dset, space, memspace
+      integer(hsize_t) :: dims(2), maxdims(2), count(2), start(2)
+      real(dp), allocatable :: rows(:, :)
+      integer :: hdferr, j
+      call h5dopen_f(from, name, dset, hdferr)
       if (hdferr /= 0) then
          ok = .false.
          return
       end if
       call h5dget_space_f(dset, space, hdferr)
       call h5sget_simple_extent_dims_f(space, dims(1:rank), maxdims(1:rank), hdferr)
-      call h5sclose_f(space, hdferr)
-      dims(rank) = int(keep, hsize_t)
-      call h5dset_extent_f(dset, dims(1:rank), hdferr)
-      if (hdferr /= 0) ok = .false.
-      call h5dclose_f(dset, hdferr)
-   end subroutine truncate
-
-   !> Remove a group or dataset if it exists.
-   subroutine delete_link(loc, name, ok)
-      integer(hid_t), intent(in) :: loc
-      character(*), intent(in) :: name
-      logical, intent(inout) :: ok
-      logical :: exists
-      integer :: hdferr
-      call h5lexists_f(loc, name, exists, hdferr)
-      if (hdferr /= 0) then
+      if (rank == 1) dims(2) = dims(1)
+      if (rank == 1) dims(1) = 1
+      if (dims(2) < keep) then
          ok = .false.
-      else if (exists) then
-         call h5ldelete_f(loc, name, hdferr)
-         if (hdferr /= 0) ok = .false.
+      else
+         allocate (rows(dims(1), keep))
+         start = 0
+         if (rank == 1) then
+            count(1) = int(keep, hsize_t)
+         else
+            count = [dims(1), int(keep, hsize_t)]
+         end if
+         call h5sselect_hyperslab_f(space, H5S_SELECT_SET_F, start(1:rank), count(1:rank), hdferr)
+         call h5screate_simple_f(rank, count(1:rank), memspace, hdferr)
+         call h5dread_f(dset, H5T_NATIVE_DOUBLE, rows, count(1:rank), hdferr, memspace, space)
+         ok = ok .and. hdferr == 0
+         call h5sclose_f(memspace, hdferr)
       end if
-   end subroutine delete_link
+      call h5sclose_f(space, hdferr)
+      call h5dclose_f(dset, hdferr)
+      if (.not. ok) return
+      do j = 1, keep
+         call append(to, name, rows(:, j), rank, ok)
+      end do
+   end subroutine copy_rows
 
    !> The lines of a gnuplot snapshot file that hold its first `keep` blocks
    !> (the blank lines between blocks after the last kept one left out):

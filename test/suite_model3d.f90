@@ -71,6 +71,7 @@ contains
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('planar_namelist_3d_equals_2d', test_reduction), &
                new_unittest('planar_break_inside_3d_equals_2d', test_reduction_inside), &
+               new_unittest('planar_in_water_3d_equals_2d', test_reduction_water), &
                new_unittest('break_inside_out_of_plane', test_break_inside_3d), &
                new_unittest('break_inside_in_water_2d', test_break_inside_water_2d), &
                new_unittest('break_inside_twisted', test_break_inside_twisted), &
@@ -191,18 +192,49 @@ contains
                      "nodes = 41, t_end = 0.05, newton_tol = 1e-12 /", 'break inside', 6, error, 4)
    end subroutine test_reduction_inside
 
+   !> Water in motion (issue 15): two planar scenes in water with model = '2d' and '3d',
+   !> compared as test_reduction (1e-10 of each quantity's largest value, 5e-10 for the
+   !> strain and the velocities, the fluid's work in the ledger included): a taut line
+   !> (2 kN) released at end b over 5 ms in still water, to 0.5 s (41 nodes, Courant 1,
+   !> past two reflections), and a slack line (60 m between points 50 m apart, tension
+   !> 80-140 N) let go at end b at t = 0 in a current of 0.5 m/s along x, to 0.5 s (dt
+   !> 10 ms). Measured: 1.6e-11 and 1.1e-10 (velocities 5.9e-11 and 1.1e-10). The fluid's
+   !> cell forces are the same formula in both models; what set them apart, by 1.9e-8 and
+   !> 7.4e-7, was the tanh law's strain energy, whose divided difference (W1 - W0) / (eps1
+   !> - eps0) lost digits at small tensions (material/law.f90, tanh_strain_energy_change).
+   subroutine test_reduction_water(error)
+      type(error_type), allocatable, intent(out) :: error
+      call reduction("&static tension = 2000 /"//new_line('a')// &
+                     "&rupture t_break = 0.005 /"//new_line('a')// &
+                     "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1 /"//new_line('a')// &
+                     "&output interval = 0.05, energy = .true., quiet = .true. /", &
+                     "nodes = 41, t_end = 0.5, newton_tol = 1e-12 /", 'taut line in still water', 11, error)
+      if (allocated(error)) return
+      call reduction("&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                     "&end_b kind = 'fixed', x = 50, z = 0 /"//new_line('a')// &
+                     "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
+                     "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_x = 0.5 /"// &
+                     new_line('a')//"&output interval = 0.05, energy = .true., quiet = .true. /", &
+                     "nodes = 41, dt = 0.01, t_end = 0.5, newton_tol = 1e-12 /", 'slack line in a current', 11, error, &
+                     v_derived=.true.)
+   end subroutine test_reduction_water
+
    !> A planar scene run with model = '2d' and '3d' compared as test_reduction
-   !> says; snapshots: how many are expected; ends: of the history (default 2).
-   subroutine reduction(scene, numerics, label, snapshots, error, ends)
+   !> says; snapshots: how many are expected; ends: of the history (default 2);
+   !> v_derived: the field v counted with the velocities (a line falling, where v
+   !> is the velocity that matters: default no).
+   subroutine reduction(scene, numerics, label, snapshots, error, ends, v_derived)
       character(*), intent(in) :: scene, numerics, label
       integer, intent(in) :: snapshots
       type(error_type), allocatable, intent(out) :: error
       integer, intent(in), optional :: ends
+      logical, intent(in), optional :: v_derived
       type(simulation) :: sim2, sim3
       type(keeper) :: obs2, obs3
       type(run_history), pointer :: h2, h3
       real(dp) :: worst, d, scale, worst_derived, sb, ends_y
       integer :: i, j, q, n_ends
+      logical :: v_counted
       character(len=16) :: where
       call run_pair(scene, numerics, sim2, obs2, sim3, obs3, error)
       if (allocated(error)) return
@@ -210,6 +242,8 @@ contains
       if (allocated(error)) return
       n_ends = 2
       if (present(ends)) n_ends = ends
+      v_counted = .false.
+      if (present(v_derived)) v_counted = v_derived
       call check(error, size(sim2%rod%pieces) == n_ends/2 .and. size(sim3%rod3%pieces) == n_ends/2, 'pieces at the end: '// &
                  str(size(sim2%rod%pieces))//' in 2-D, '//str(size(sim3%rod3%pieces))//' in 3-D, expected '//str(n_ends/2))
       if (allocated(error)) return
@@ -222,7 +256,8 @@ contains
       do j = 1, n_fields
          scale = max(maxval(abs(obs2%fields(:, j, :))), tiny(1.0_dp))
          d = maxval(abs(obs2%fields(:, j, :) - obs3%fields(:, j, :)))/scale
-         if (field_names(j) == 'strain' .or. field_names(j) == 'u') then
+         if (field_names(j) == 'strain' .or. field_names(j) == 'u' .or. &
+             (field_names(j) == 'v' .and. v_counted)) then
             worst_derived = max(worst_derived, d)
             cycle
          end if

@@ -41,6 +41,8 @@ module xcable_material_law
       procedure :: tension_stiffness
       !> Tension, stiffness and its slope together (one evaluation where the law allows).
       procedure :: tension_stiffness_slope
+      !> Change of the strain energy between two strains, W(eps1) - W(eps0), J/m.
+      procedure :: strain_energy_change
    end type material_law
 
    abstract interface
@@ -77,6 +79,7 @@ module xcable_material_law
       procedure :: name => tanh_name
       procedure :: tension_stiffness => tanh_tension_stiffness
       procedure :: tension_stiffness_slope => tanh_tension_stiffness_slope
+      procedure :: strain_energy_change => tanh_strain_energy_change
    end type tanh_law
 
    !> T = EA eps.
@@ -92,6 +95,14 @@ module xcable_material_law
    end type linear_law
 
 contains
+
+   !> W(eps1) - W(eps0), J/m (a law whose energy cancels at small strain steps overrides it).
+   elemental function strain_energy_change(self, eps0, eps1) result(val)
+      class(material_law), intent(in) :: self
+      real(dp), intent(in) :: eps0, eps1
+      real(dp) :: val
+      val = self%strain_energy(eps1) - self%strain_energy(eps0)
+   end function strain_energy_change
 
    !> Build a law from its name and parameters.
    subroutine new_law(law, name, p, ea, strain_max, error)
@@ -237,10 +248,46 @@ contains
       val = -2*self%p(1)*self%p(2)**2*tanh(x)/cosh(x)**2
    end function tanh_stiffness_slope
 
+   !> W(eps1) - W(eps0) of the tanh law without the cancellation of the two energies: W holds
+   !> (p1 / p2) log cosh(p2 eps + p3), about 4e4 J/m for the paper's law, beside p4 eps of
+   !> nearly the same size, so W computed so carries an absolute round-off of up to 1e-11 J/m
+   !> and the rods' divided difference (W1 - W0) / (eps1 - eps0) an error of that over the
+   !> strain step, up to 1e-5 N at the smallest steps it is taken at (1e-6; below, the rods
+   !> take a Taylor form), docs/model3d.md (Water in motion). With x = p2 eps + p3, log cosh x1 - log cosh x0 =
+   !> 2 atanh(tanh(x_mid) tanh(dx / 2)), which keeps the relative accuracy of the change, so
+   !> the error is that of the tension itself (a few 1e-11 N). For p2 |eps1 - eps0| >= 1,
+   !> where nothing cancels, the difference of the two energies.
+   elemental function tanh_strain_energy_change(self, eps0, eps1) result(val)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps0, eps1
+      real(dp) :: val
+      if (abs(self%p(2)*(eps1 - eps0)) < 1) then
+         val = tanh_change(self%p, eps0, eps1)
+      else
+         val = tanh_strain_energy(self, eps1) - tanh_strain_energy(self, eps0)
+      end if
+   end function tanh_strain_energy_change
+
+   !> The tanh law's W(eps1) - W(eps0) from 2 atanh(tanh(x_mid) tanh(dx / 2)) (p2 |eps1 - eps0| < 1).
+   pure function tanh_change(p, eps0, eps1) result(val)
+      real(dp), intent(in) :: p(5), eps0, eps1
+      real(dp) :: val, h, mid
+      h = eps1 - eps0
+      mid = 0.5_dp*(eps0 + eps1)
+      val = 2*p(1)/p(2)*atanh(tanh(p(2)*mid + p(3))*tanh(0.5_dp*p(2)*h)) + (p(4) + p(5)*mid)*h
+   end function tanh_change
+
+   !> W(eps); for p2 |eps| < 1 the change from W(0) = 0 (tanh_change), free of the
+   !> cancellation between the log cosh and p4 eps terms (the energies of a slack line
+   !> to the relative round-off instead of 1e-12 J/m).
    elemental function tanh_strain_energy(self, eps) result(val)
       class(tanh_law), intent(in) :: self
       real(dp), intent(in) :: eps
       real(dp) :: val, c3
+      if (abs(self%p(2)*eps) < 1) then
+         val = tanh_change(self%p, 0.0_dp, eps)
+         return
+      end if
       if (self%lc3(1) == self%p(3)) then
          c3 = self%lc3(2)
       else

@@ -30,6 +30,7 @@ module xcable_material_tension_only
       procedure :: stiffness => to_stiffness
       procedure :: stiffness_slope => to_stiffness_slope
       procedure :: strain_energy => to_strain_energy
+      procedure :: strain_energy_change => to_strain_energy_change
       procedure :: name => to_name
    end type tension_only_law
 
@@ -128,6 +129,20 @@ contains
       real(dp) :: val
       val = antiderivative(self, eps) - self%g0
    end function to_strain_energy
+
+   !> W(eps1) - W(eps0): the base law's change where both strains are on the base law (it
+   !> keeps the digits the difference of two energies loses, material/law.f90), else the
+   !> difference of the energies.
+   elemental function to_strain_energy_change(self, eps0, eps1) result(val)
+      class(tension_only_law), intent(in) :: self
+      real(dp), intent(in) :: eps0, eps1
+      real(dp) :: val
+      if (min(eps0, eps1) >= self%b) then
+         val = self%base%strain_energy_change(eps0, eps1)
+      else
+         val = to_strain_energy(self, eps1) - to_strain_energy(self, eps0)
+      end if
+   end function to_strain_energy_change
 
    pure function to_name(self) result(name)
       class(tension_only_law), intent(in) :: self

@@ -910,7 +910,8 @@ contains
             else
                w1(c) = law%strain_energy(eps1)
                w1_ok(c) = .true.
-               q = (w1(c) - w0(c))/h
+               ! W1 - W0 from the law, not w1 - w0: that loses digits (tanh_strain_energy_change).
+               q = law%strain_energy_change(eps0, eps1)/h
                ! dq only enters the blocks: a residual alone does not call the law's tension.
                dq = 0
                if (with_jacobian) dq = (law%tension(eps1) - q)/h

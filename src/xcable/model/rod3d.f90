@@ -679,7 +679,7 @@ contains
                q = f + fpp*h*h/24
                dq = 0.5_dp*fp + fpp*h/12
             else
-               q = (self%law%strain_energy(eps1) - self%law%strain_energy(eps0))/h
+               q = self%law%strain_energy_change(eps0, eps1)/h
                dq = (self%law%tension(eps1) - q)/h
             end if
             q = q + self%damping*h/dt

@@ -10,7 +10,7 @@ module xcable_version
    public :: code_version, version_lines
 
    !> Version of the code, as in fpm.toml.
-   character(len=*), parameter :: code_version = '0.4.0'
+   character(len=*), parameter :: code_version = '0.5.0'
 
 contains
 

@@ -821,7 +821,10 @@ contains
    end subroutine assemble_window
 
    !> add_jacobian (dynamic) on the rows and columns of the nodes lo .. hi: the window's
-   !> matrix, its row and column 1 those of node lo's first unknown.
+   !> matrix, its row and column 1 those of node lo's first unknown. add_jacobian keeps
+   !> its own copy of these loops: calling this one with lo = 1, hi = n instead gives the
+   !> same bits but costs 3.9 % more instructions on fast_180kN (1.258e9 -> 1.307e9,
+   !> callgrind), the range tests being in the innermost loop.
    pure subroutine add_jacobian_window(n, lo, hi, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b)
       integer, intent(in) :: n, lo, hi, ldab, band0
       real(dp), intent(inout) :: ab(ldab, 2*(hi - lo + 1))

@@ -5,6 +5,7 @@ module suite_law
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
    use xcable_strings, only: str
    use xcable_material_law, only: material_law, tanh_law, linear_law
+   use xcable_material_elementary, only: law_tanh, law_atanh, law_tanh_sech2
    implicit none
    private
    public :: collect_law
@@ -17,7 +18,9 @@ contains
                new_unittest('linear_derivatives', test_linear_derivatives), &
                new_unittest('inverse', test_inverse), &
                new_unittest('paper_values', test_paper_values), &
-               new_unittest('tanh_energy_change_quad', test_tanh_energy_change)]
+               new_unittest('tanh_energy_change_quad', test_tanh_energy_change), &
+               new_unittest('elementary_against_quad', test_elementary), &
+               new_unittest('change_and_tension_together', test_change_tension)]
    end subroutine collect_law
 
    !> Compare f', f'' and dW/deps with central differences over the strain range.
@@ -86,6 +89,117 @@ contains
          w = p(1)/p(2)*(log(cosh(p(2)*e + p(3))) - log(cosh(p(3)))) + p(4)*e + p(5)*e*e/2
       end function w_quad
    end subroutine test_tanh_energy_change
+
+   !> law_tanh, law_tanh_sech2 and law_atanh against quadruple precision, in units of the
+   !> last place of the double nearest to the exact value, on each of their branches: the
+   !> series below 1/64 (200 000 arguments uniform and 200 000 log-uniform down to 1e-300),
+   !> tanh from one exp from 0.55 (200 000 up to 20, 20 000 to 40), the library in between
+   !> (atanh: from 1/64 to 1 - 1e-16), both signs, and the branch limits' neighbours.
+   !> Measured: series tanh 0.50, atanh 0.50; exp form tanh 1.50, 1/cosh^2 3.90; the library's
+   !> branches tanh 2.18, 1/cosh(x)**2 3.57, atanh 1.68. Bounds: 0.6 for the series, 2 (tanh)
+   !> and 5 (1/cosh^2, which only the Jacobian and an h^2 term use) for the exp form; the
+   !> library's branches are not bounded here. Caught: the series' x^9 term dropped (tanh
+   !> 1.19), atanh's z^9 term dropped. Not caught: the exp form from 0.3 instead of 0.55
+   !> (tanh still 1.50).
+   subroutine test_elementary(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: qp = selected_real_kind(30)
+      integer, parameter :: draws = 200000
+      ! Worst units in the last place: series tanh, series atanh, exp tanh, exp 1/cosh^2,
+      ! library tanh, library 1/cosh^2, library atanh.
+      real(dp) :: worst(7), u, t, s2
+      integer :: i, sgn
+      worst = 0
+      do sgn = -1, 1, 2
+         call measure(sgn*nearest(1.0_dp/64, -1.0_dp))
+         call measure(sgn*1.0_dp/64)
+         call measure(sgn*nearest(0.55_dp, -1.0_dp))
+         call measure(sgn*0.55_dp)
+         do i = 1, draws
+            call random_number(u)
+            call measure(sgn*u/64)
+            call random_number(u)
+            call measure(sgn*10**(-300 + u*(300 + log10(1.0_dp/64))))
+            call random_number(u)
+            call measure(sgn*(0.55_dp + u*(20 - 0.55_dp)))
+            call random_number(u)
+            call measure(sgn*(1.0_dp/64 + u*(0.55_dp - 1.0_dp/64)))
+            call random_number(u)
+            call measure(sgn*(1 - 10**(-16*u)))
+            if (mod(i, 10) == 0) then
+               call random_number(u)
+               call measure(sgn*(20 + 20*u))
+            end if
+         end do
+      end do
+      write (*, '(4x,a,2(f5.2,a),2(f5.2,a))') 'against quadruple precision, units in the last place: series tanh ', &
+         worst(1), ', atanh ', worst(2), '; exp form tanh ', worst(3), ', 1/cosh^2 ', worst(4), ''
+      write (*, '(4x,a,3(f5.2,a))') 'the library''s branches: tanh ', worst(5), ', 1/cosh(x)**2 ', worst(6), &
+         ', atanh ', worst(7), ''
+      call check(error, all(worst(1:2) <= 0.6_dp), 'the series are off by '//str(maxval(worst(1:2)))//' units')
+      if (allocated(error)) return
+      call check(error, worst(3) <= 2.0_dp .and. worst(4) <= 5.0_dp, 'the exp form is off by '//str(worst(3))// &
+                 ' (tanh) and '//str(worst(4))//' (1/cosh^2) units')
+   contains
+      subroutine measure(x)
+         real(dp), intent(in) :: x
+         real(qp) :: xq
+         integer :: branch
+         xq = real(x, qp)
+         if (abs(x) < 1) then
+            branch = merge(2, 7, abs(x) < 1.0_dp/64)
+            worst(branch) = max(worst(branch), ulps(law_atanh(x), atanh(xq)))
+         end if
+         branch = 5
+         if (abs(x) < 1.0_dp/64) branch = 1
+         if (abs(x) >= 0.55_dp) branch = 3
+         worst(branch) = max(worst(branch), ulps(law_tanh(x), tanh(xq)))
+         call law_tanh_sech2(x, t, s2)
+         if (t /= law_tanh(x)) worst(branch) = huge(1.0_dp)
+         if (branch >= 3) worst(branch + 1) = max(worst(branch + 1), ulps(s2, 1/cosh(xq)**2))
+      end subroutine measure
+      pure real(dp) function ulps(val, exact)
+         real(dp), intent(in) :: val
+         real(qp), intent(in) :: exact
+         ulps = 0
+         if (exact /= 0) ulps = real(abs(real(val, qp) - exact)/real(spacing(real(exact, dp)), qp), dp)
+         if (exact == 0 .and. val /= 0) ulps = huge(1.0_dp)
+      end function ulps
+   end subroutine test_elementary
+
+   !> strain_energy_change_tension gives strain_energy_change's W(eps1) - W(eps0) bit for bit
+   !> and the tension at eps1 to a few units in the last place (its tanh from the change's
+   !> two), on both branches of the tanh law and for the linear law (the generic two calls).
+   !> The tension's error is taken over p1, the size of its terms (f(0) = 0 cancels them).
+   !> Measured: 2.0e-16 (bound 1e-15).
+   subroutine test_change_tension(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(tanh_law) :: tanh_
+      type(linear_law) :: linear
+      real(dp), parameter :: eps0s(6) = [-0.05_dp, -1.0e-4_dp, 0.0_dp, 1.0e-3_dp, 0.15_dp, 0.3_dp]
+      real(dp), parameter :: hs(6) = [1.0e-7_dp, 1.0e-5_dp, 1.0e-3_dp, 1.0e-2_dp, 0.05_dp, 0.2_dp]
+      real(dp) :: dw, f1, worst
+      integer :: i, j, sgn
+      worst = 0
+      linear%ea = 3.0e6_dp
+      do i = 1, size(eps0s)
+         do j = 1, size(hs)
+            do sgn = -1, 1, 2
+               call tanh_%strain_energy_change_tension(eps0s(i), eps0s(i) + sgn*hs(j), dw, f1)
+               call check(error, dw == tanh_%strain_energy_change(eps0s(i), eps0s(i) + sgn*hs(j)), &
+                          'tanh law: the change differs from strain_energy_change')
+               if (allocated(error)) return
+               worst = max(worst, abs(f1 - tanh_%tension(eps0s(i) + sgn*hs(j)))/tanh_%p(1))
+               call linear%strain_energy_change_tension(eps0s(i), eps0s(i) + sgn*hs(j), dw, f1)
+               call check(error, dw == linear%strain_energy_change(eps0s(i), eps0s(i) + sgn*hs(j)) .and. &
+                          f1 == linear%tension(eps0s(i) + sgn*hs(j)), 'linear law: the generic pair differs')
+               if (allocated(error)) return
+            end do
+         end do
+      end do
+      write (*, '(4x,a,es9.2)') 'tension at eps1 from the change''s tanh, error over p1: ', worst
+      call check(error, worst < 1.0e-15_dp, 'the tension at eps1 is off by '//str(worst)//' of p1')
+   end subroutine test_change_tension
 
    subroutine test_tanh_derivatives(error)
       type(error_type), allocatable, intent(out) :: error

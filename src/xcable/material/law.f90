@@ -8,6 +8,7 @@
 module xcable_material_law
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_material_elementary, only: law_tanh, law_atanh, law_tanh_sech2
    implicit none
    private
    public :: material_law, tanh_law, linear_law, new_law
@@ -43,6 +44,8 @@ module xcable_material_law
       procedure :: tension_stiffness_slope
       !> Change of the strain energy between two strains, W(eps1) - W(eps0), J/m.
       procedure :: strain_energy_change
+      !> W(eps1) - W(eps0) and the tension f(eps1) together (one evaluation where the law allows).
+      procedure :: strain_energy_change_tension
    end type material_law
 
    abstract interface
@@ -80,6 +83,7 @@ module xcable_material_law
       procedure :: tension_stiffness => tanh_tension_stiffness
       procedure :: tension_stiffness_slope => tanh_tension_stiffness_slope
       procedure :: strain_energy_change => tanh_strain_energy_change
+      procedure :: strain_energy_change_tension => tanh_strain_energy_change_tension
    end type tanh_law
 
    !> T = EA eps.
@@ -103,6 +107,18 @@ contains
       real(dp) :: val
       val = self%strain_energy(eps1) - self%strain_energy(eps0)
    end function strain_energy_change
+
+   !> W(eps1) - W(eps0), J/m, and f(eps1), N, of any law (two calls).
+   pure subroutine strain_energy_change_tension(self, eps0, eps1, dw, f1)
+      !> The law.
+      class(material_law), intent(in) :: self
+      !> Old and new strain.
+      real(dp), intent(in) :: eps0, eps1
+      !> W(eps1) - W(eps0), J/m, and f(eps1), N.
+      real(dp), intent(out) :: dw, f1
+      dw = self%strain_energy_change(eps0, eps1)
+      f1 = self%tension(eps1)
+   end subroutine strain_energy_change_tension
 
    !> Build a law from its name and parameters.
    subroutine new_law(law, name, p, ea, strain_max, error)
@@ -195,19 +211,17 @@ contains
       fpp = self%stiffness_slope(eps)
    end subroutine tension_stiffness_slope
 
-   !> tanh_tension, tanh_stiffness and tanh_stiffness_slope with one tanh and one cosh:
-   !> the same expressions, so the same bits as the three calls.
+   !> tanh_tension, tanh_stiffness and tanh_stiffness_slope from one tanh and 1 / cosh^2 of
+   !> x = p2 eps + p3 (law_tanh_sech2: one exp where |x| >= 0.55).
    pure subroutine tanh_tension_stiffness_slope(self, eps, f, fp, fpp)
       class(tanh_law), intent(in) :: self
       real(dp), intent(in) :: eps
       real(dp), intent(out) :: f, fp, fpp
-      real(dp) :: x, t, c
-      x = self%p(2)*eps + self%p(3)
-      t = tanh(x)
-      c = cosh(x)
+      real(dp) :: t, s2
+      call law_tanh_sech2(self%p(2)*eps + self%p(3), t, s2)
       f = self%p(1)*t + self%p(4) + self%p(5)*eps
-      fp = self%p(1)*self%p(2)/c**2 + self%p(5)
-      fpp = -2*self%p(1)*self%p(2)**2*t/c**2
+      fp = self%p(1)*self%p(2)*s2 + self%p(5)
+      fpp = -2*self%p(1)*self%p(2)**2*t*s2
    end subroutine tanh_tension_stiffness_slope
 
    !> Tension and stiffness of the tanh law from one exponential q = exp(2 x):
@@ -260,22 +274,44 @@ contains
    elemental function tanh_strain_energy_change(self, eps0, eps1) result(val)
       class(tanh_law), intent(in) :: self
       real(dp), intent(in) :: eps0, eps1
-      real(dp) :: val
+      real(dp) :: val, tm, td
       if (abs(self%p(2)*(eps1 - eps0)) < 1) then
-         val = tanh_change(self%p, eps0, eps1)
+         call tanh_change(self%p, eps0, eps1, val, tm, td)
       else
          val = tanh_strain_energy(self, eps1) - tanh_strain_energy(self, eps0)
       end if
    end function tanh_strain_energy_change
 
-   !> The tanh law's W(eps1) - W(eps0) from 2 atanh(tanh(x_mid) tanh(dx / 2)) (p2 |eps1 - eps0| < 1).
-   pure function tanh_change(p, eps0, eps1) result(val)
+   !> The tanh law's W(eps1) - W(eps0) and f(eps1) together: f(eps1) takes tanh x1 from the
+   !> change's two tanh, tanh(x_mid + d) = (tanh x_mid + tanh d) / (1 + tanh x_mid tanh d)
+   !> with d = p2 (eps1 - eps0) / 2, instead of a third tanh (a few units in the last place
+   !> of tanh x1; the rods use f(eps1) only in their Jacobian).
+   pure subroutine tanh_strain_energy_change_tension(self, eps0, eps1, dw, f1)
+      class(tanh_law), intent(in) :: self
+      real(dp), intent(in) :: eps0, eps1
+      real(dp), intent(out) :: dw, f1
+      real(dp) :: tm, td
+      if (abs(self%p(2)*(eps1 - eps0)) < 1) then
+         call tanh_change(self%p, eps0, eps1, dw, tm, td)
+         f1 = self%p(1)*((tm + td)/(1 + tm*td)) + self%p(4) + self%p(5)*eps1
+      else
+         dw = tanh_strain_energy(self, eps1) - tanh_strain_energy(self, eps0)
+         f1 = tanh_tension(self, eps1)
+      end if
+   end subroutine tanh_strain_energy_change_tension
+
+   !> The tanh law's W(eps1) - W(eps0) from 2 atanh(tanh(x_mid) tanh(dx / 2)) (p2 |eps1 - eps0| < 1),
+   !> and the two tanh, of x_mid and of dx / 2 (law_tanh, law_atanh: xcable_material_elementary).
+   pure subroutine tanh_change(p, eps0, eps1, val, tm, td)
       real(dp), intent(in) :: p(5), eps0, eps1
-      real(dp) :: val, h, mid
+      real(dp), intent(out) :: val, tm, td
+      real(dp) :: h, mid
       h = eps1 - eps0
       mid = 0.5_dp*(eps0 + eps1)
-      val = 2*p(1)/p(2)*atanh(tanh(p(2)*mid + p(3))*tanh(0.5_dp*p(2)*h)) + (p(4) + p(5)*mid)*h
-   end function tanh_change
+      tm = law_tanh(p(2)*mid + p(3))
+      td = law_tanh(0.5_dp*p(2)*h)
+      val = 2*p(1)/p(2)*law_atanh(tm*td) + (p(4) + p(5)*mid)*h
+   end subroutine tanh_change
 
    !> W(eps); for p2 |eps| < 1 the change from W(0) = 0 (tanh_change), free of the
    !> cancellation between the log cosh and p4 eps terms (the energies of a slack line
@@ -283,9 +319,9 @@ contains
    elemental function tanh_strain_energy(self, eps) result(val)
       class(tanh_law), intent(in) :: self
       real(dp), intent(in) :: eps
-      real(dp) :: val, c3
+      real(dp) :: val, c3, tm, td
       if (abs(self%p(2)*eps) < 1) then
-         val = tanh_change(self%p, 0.0_dp, eps)
+         call tanh_change(self%p, 0.0_dp, eps, val, tm, td)
          return
       end if
       if (self%lc3(1) == self%p(3)) then

@@ -914,10 +914,15 @@ contains
                w1(c) = law%strain_energy(eps1)
                w1_ok(c) = .true.
                ! W1 - W0 from the law, not w1 - w0: that loses digits (tanh_strain_energy_change).
-               q = law%strain_energy_change(eps0, eps1)/h
-               ! dq only enters the blocks: a residual alone does not call the law's tension.
-               dq = 0
-               if (with_jacobian) dq = (law%tension(eps1) - q)/h
+               ! dq only enters the blocks: a residual alone does not ask for the law's tension.
+               if (with_jacobian) then
+                  call law%strain_energy_change_tension(eps0, eps1, q, f)
+                  q = q/h
+                  dq = (f - q)/h
+               else
+                  q = law%strain_energy_change(eps0, eps1)/h
+                  dq = 0
+               end if
             end if
             lsum = l0 + l1
             wsum = e0 + e1

@@ -679,8 +679,9 @@ contains
                q = f + fpp*h*h/24
                dq = 0.5_dp*fp + fpp*h/12
             else
-               q = self%law%strain_energy_change(eps0, eps1)/h
-               dq = (self%law%tension(eps1) - q)/h
+               call self%law%strain_energy_change_tension(eps0, eps1, q, f)
+               q = q/h
+               dq = (f - q)/h
             end if
             q = q + self%damping*h/dt
             dq = dq + self%damping/dt

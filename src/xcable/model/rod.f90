@@ -46,6 +46,7 @@ module xcable_model_rod
    use xcable_error, only: error_type, fatal_error, stat_numerics
    use xcable_strings, only: str
    use xcable_material_law, only: material_law
+   use xcable_numerics_atan2, only: fast_atan2
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
@@ -335,7 +336,7 @@ contains
       end do
       th = 0
       do k = 2, n - 1
-         th(k) = atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
+         th(k) = fast_atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
       end do
    end subroutine geometry_of
 
@@ -540,7 +541,7 @@ contains
          dphi = self%memo_dphi
       else
          do c = 1, self%n - 1
-            dphi(c) = atan2(cross2(self%e0(:, c), self%e1(:, c)), dot_product(self%e0(:, c), self%e1(:, c)))
+            dphi(c) = fast_atan2(cross2(self%e0(:, c), self%e1(:, c)), dot_product(self%e0(:, c), self%e1(:, c)))
          end do
       end if
    end subroutine cell_rotations
@@ -736,7 +737,7 @@ contains
          l(c) = norm2(e(:, c))
       end do
       do k = ca + 1, cb
-         th(k) = atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
+         th(k) = fast_atan2(cross2(e(:, k - 1), e(:, k)), dot_product(e(:, k - 1), e(:, k)))
       end do
    end subroutine geometry_cells
 
@@ -934,7 +935,7 @@ contains
             ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
             em = 0.5_dp*wsum
             cross01 = cross2(e0, e1)
-            dphi = atan2(cross01, dot_product(e0, e1))
+            dphi = fast_atan2(cross01, dot_product(e0, e1))
             dphi1(c) = dphi
             if (abs(dphi) < small_rotation) then
                rho = 1 + dphi**2/6

@@ -3,13 +3,15 @@
 !> system; a rupture solved on windows gives the whole-cable solve's results to
 !> round-off; the window follows the front and grows when the motion outruns it.
 module suite_quiescent
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_simulation, only: simulation
    use xcable_model_rod, only: rod_problem
    use xcable_solver_banded, only: band_matrix
+   use xcable_loads_fluid, only: fluid_load
+   use xcable_model_rod, only: cell_rotations
    use suite_rod_dynamics, only: rupture_config, run_config
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -22,7 +24,8 @@ contains
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('window_rows_are_the_full_rows', test_window_rows), &
                new_unittest('rupture_skip_equals_full', test_rupture_equal), &
-               new_unittest('window_grows_at_courant_4', test_growth)]
+               new_unittest('window_grows_at_courant_4', test_growth), &
+               new_unittest('accepted_state_is_the_full_residuals', test_accepted_state)]
    end subroutine collect_quiescent
 
    !> A step's residual and Jacobian on a window of nodes, the others held at the old
@@ -95,6 +98,150 @@ contains
       call check(error, dres == 0 .and. djac == 0, 'window rows differ from the whole piece''s: residual '// &
                  str(dres)//', Jacobian '//str(djac))
    end subroutine test_window_rows
+
+   !> rod_problem%accepted_state (what rod_run evaluates at a step's converged positions
+   !> instead of Newton's final residual) leaves, bit for bit, what the full residual leaves
+   !> there for its consumers: the new level's geometry, the memo (positions, geometry,
+   !> bending energies and where they were computed, cell rotations), the end cells'
+   !> forces, the reactions of both ends and the loads' node forces; then the next
+   !> step's old level (the state accepted) or the same step's again (rejected), the
+   !> cell rotations check_state takes and the ledger's energies. Taken at a fast 180 kN
+   !> break at 10 ms (the front inside the cable, so that cells and nodes take both the
+   !> Taylor and the divided-difference branches), each state after an evaluation with
+   !> the Jacobian at other positions (Newton's last iteration): the whole piece, three
+   !> windows, and the whole piece in a current of water (distributed loads).
+   subroutine test_accepted_state(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: c
+      type(rod_problem) :: full, lean
+      type(band_matrix) :: jac
+      real(dp), allocatable :: x(:), x_prev(:), res(:), r(:, :), v(:, :), dphi_full(:), dphi_lean(:)
+      real(dp), allocatable :: e_f(:, :), l_f(:), th_f(:), e_l(:, :), l_l(:), th_l(:)
+      integer, parameter :: windows(2, 5) = reshape([1, 241, 1, 150, 60, 241, 50, 150, 1, 241], [2, 5])
+      integer :: n, lo, hi, m, w, k, outcome, taylor_cells, taylor_nodes
+      real(dp) :: h
+      character(:), allocatable :: what
+      c = rupture_config(180.0e3_dp, 0.005_dp, 0.01_dp, 241)
+      c%skip_quiescent = .false.
+      call run_config(c, sim, error)
+      if (allocated(error)) return
+      r = sim%rod%pieces(1)%r
+      v = sim%rod%pieces(1)%v
+      n = size(r, 2)
+      h = sim%rod%dt
+      taylor_cells = 0
+      taylor_nodes = 0
+      do w = 1, size(windows, 2)
+         lo = windows(1, w)
+         hi = windows(2, w)
+         m = 2*(hi - lo + 1)
+         what = 'nodes '//str(lo)//' .. '//str(hi)//merge(' in water', '         ', w == 5)
+         x = reshape(r, [2*n])
+         do k = lo, hi
+            x(2*k - 1:2*k) = r(:, k) + h*v(:, k)
+         end do
+         if (lo == 1) x(1:2) = r(:, 1)
+         ! Bent inside every window: turning angles that change by more than the Taylor bound.
+         do k = 61, 149
+            x(2*k) = x(2*k) + 2.0e-3_dp*sin(0.7_dp*k)
+         end do
+         ! Newton's last iterate before x: 1e-7 m away.
+         x_prev = x
+         do k = lo + 1, hi
+            x_prev(2*k - 1:2*k) = x(2*k - 1:2*k) + 1.0e-7_dp*[cos(real(k, dp)), sin(real(k, dp))]
+         end do
+         full = sim%rod%pieces(1)%problem
+         full%t0 = sim%rod%t
+         full%dt = h
+         full%theta = 0.5_dp
+         if (w == 5) then
+            if (allocated(full%piece%loads)) deallocate (full%piece%loads)
+            allocate (full%piece%loads(1))
+            allocate (full%piece%loads(1)%load, source=fluid_load(density=1025.0_dp, cd_normal=1.2_dp, &
+                      cd_tangential=0.008_dp, ca_normal=1.0_dp, current=[0.5_dp, 0.1_dp], diameter=0.05_dp, &
+                      area=0.25_dp*acos(-1.0_dp)*0.05_dp**2, gravity=9.81_dp))
+         end if
+         call full%piece%prepare_step(r, v)
+         full%lo = 1
+         full%hi = 0
+         if (lo > 1 .or. hi < n) then
+            call full%piece%freeze_level()
+            full%lo = lo
+            full%hi = hi
+         end if
+         call jac%init(m, 5, 5)
+         allocate (res(m))
+         call full%evaluate(x_prev(2*lo - 1:2*hi), res, jac, .true.)
+         lean = full
+         call full%evaluate(x(2*lo - 1:2*hi), res, jac, .false.)
+         call lean%accepted_state(x(2*lo - 1:2*hi))
+         deallocate (res)
+         associate (f => full%piece, g => lean%piece)
+            if (w == 1) then
+               taylor_cells = count(abs(f%l1 - f%l0) < 1.0e-6_dp)
+               taylor_nodes = count(.not. f%memo_b_ok(2:n - 1))
+            end if
+            call same(reshape(f%e1, [2*(n - 1)]), reshape(g%e1, [2*(n - 1)]), 'e1')
+            call same(f%l1, g%l1, 'l1')
+            call same(f%th1, g%th1, 'th1')
+            call same(f%memo_x, g%memo_x, 'memo_x')
+            call same(reshape(f%memo_e, [2*(n - 1)]), reshape(g%memo_e, [2*(n - 1)]), 'memo_e')
+            call same(f%memo_l, g%memo_l, 'memo_l')
+            call same(f%memo_th, g%memo_th, 'memo_th')
+            call same(merge(f%memo_b, 0.0_dp, f%memo_b_ok), merge(g%memo_b, 0.0_dp, g%memo_b_ok), 'memo_b')
+            if (allocated(error)) return
+            call check(error, all(f%memo_b_ok .eqv. g%memo_b_ok), what//': memo_b_ok differs')
+            if (allocated(error)) return
+            call same(f%memo_dphi, g%memo_dphi, 'memo_dphi')
+            call same([f%force(:, 1), f%force(:, n - 1)], [g%force(:, 1), g%force(:, n - 1)], 'end cell forces')
+            call same([f%reaction(1, x, h, 0.5_dp), f%reaction(n, x, h, 0.5_dp)], &
+                      [g%reaction(1, x, h, 0.5_dp), g%reaction(n, x, h, 0.5_dp)], 'reactions')
+            call same(reshape(f%load_node, [2*n]), reshape(g%load_node, [2*n]), 'load_node')
+            if (allocated(error)) return
+            ! check_state's cell rotations and the ledger's geometry and energies at x.
+            allocate (dphi_full(n - 1), dphi_lean(n - 1), e_f(2, n - 1), l_f(n - 1), th_f(n), e_l(2, n - 1), &
+                      l_l(n - 1), th_l(n))
+            call cell_rotations(f, reshape(x, [2, n]), dphi_full)
+            call cell_rotations(g, reshape(x, [2, n]), dphi_lean)
+            call same(dphi_full, dphi_lean, 'cell_rotations')
+            call f%complete_memo()
+            call g%complete_memo()
+            call f%geometry(reshape(x, [2, n]), e_f, l_f, th_f)
+            call g%geometry(reshape(x, [2, n]), e_l, l_l, th_l)
+            call same(f%energies(reshape(x, [2, n]), v, l_f, th_f), g%energies(reshape(x, [2, n]), v, l_l, th_l), &
+                      'ledger energies')
+            deallocate (dphi_full, dphi_lean, e_f, l_f, th_f, e_l, l_l, th_l)
+            if (allocated(error)) return
+            ! The next step's old level: from x (accepted) or again from r (rejected).
+            do outcome = 1, 2
+               if (outcome == 1) then
+                  call f%prepare_step(reshape(x, [2, n]), v)
+                  call g%prepare_step(reshape(x, [2, n]), v)
+               else
+                  call f%prepare_step(r, v)
+                  call g%prepare_step(r, v)
+               end if
+               call same([f%e0, f%l0, f%th0, f%b0, f%mv0], [g%e0, g%l0, g%th0, g%b0, g%mv0], &
+                         'old level '//merge('(accepted)', '(rejected)', outcome == 1))
+               if (allocated(error)) return
+            end do
+         end associate
+      end do
+      write (output_unit, '(4x,a,i0,a,i0,a)') 'accepted state: whole piece, 3 windows, in water: the same bits (', &
+         taylor_cells, ' cells and ', taylor_nodes, ' nodes in the Taylor branches)'
+      call check(error, taylor_cells > 0 .and. taylor_cells < n - 1 .and. taylor_nodes > 0 .and. taylor_nodes < n - 2, &
+                 'the state does not mix the Taylor and divided-difference branches')
+   contains
+      !> (check's error is intent(out): after a failure, no further check.)
+      subroutine same(a, b, name)
+         real(dp), intent(in) :: a(:), b(:)
+         character(*), intent(in) :: name
+         if (allocated(error)) return
+         call check(error, size(a) == size(b) .and. all(transfer(a, [0_i8]) == transfer(b, [0_i8])), &
+                    what//': '//name//' differs from the full residual''s')
+      end subroutine same
+   end subroutine test_accepted_state
 
    !> Largest difference of the positions (in cell lengths) and of the velocities
    !> (relative to the largest speed) of two runs of the same case.

@@ -97,17 +97,17 @@ module xcable_model_rod
       ! Work arrays, allocated once by init.
       !> Old level: positions, velocities, M V, cell vectors, lengths, turning angles.
       real(dp), allocatable :: r0(:, :), v0(:, :), mv0(:, :), e0(:, :), l0(:), th0(:)
-      !> Old level's strain energy per unstretched length of each cell, J/m, and bending energy of
-      !> each node, J: the fixed ends of the divided differences, evaluated once per step by
-      !> prepare_step instead of at every Newton iteration (2 % of fast_180kN's instructions).
-      real(dp), allocatable :: w0(:), b0(:)
-      !> The last step evaluation's positions x, its geometry, and the strain and bending
-      !> energies it computed (memo_w_ok, memo_b_ok: where it computed them): prepare_step
-      !> takes the old level from here when r0 is x bit for bit (the accepted state, whose
-      !> geometry and energies would otherwise be computed again; rod_geometry and rod_energies,
-      !> the ledger's, take them too: 6 % of fast_180kN).
-      real(dp), allocatable :: memo_x(:), memo_e(:, :), memo_l(:), memo_th(:), memo_w(:), memo_b(:)
-      logical, allocatable :: memo_w_ok(:), memo_b_ok(:)
+      !> Old level's bending energy of each node, J: the fixed end of the divided differences,
+      !> evaluated once per step by prepare_step instead of at every Newton iteration. (The
+      !> strain part needs no W(eps0): the law gives W(eps1) - W(eps0) itself; W is computed
+      !> only for the energy ledger, by rod_energies.)
+      real(dp), allocatable :: b0(:)
+      !> The last step evaluation's positions x, its geometry, and the bending energies it
+      !> computed (memo_b_ok: where it computed them): prepare_step takes the old level from
+      !> here when r0 is x bit for bit (the accepted state, whose geometry and energies would
+      !> otherwise be computed again; rod_geometry and rod_energies, the ledger's, take them too).
+      real(dp), allocatable :: memo_x(:), memo_e(:, :), memo_l(:), memo_th(:), memo_b(:)
+      logical, allocatable :: memo_b_ok(:)
       !> The cells' rotations from the old level that the last step evaluation computed.
       real(dp), allocatable :: memo_dphi(:)
       logical :: memo_valid = .false.
@@ -173,6 +173,9 @@ module xcable_model_rod
       integer :: lo = 1, hi = 0
    contains
       procedure :: evaluate => rod_problem_evaluate
+      !> After a converged step solve at x: what the accepted state needs, instead of a full
+      !> residual (step_state).
+      procedure :: accepted_state => rod_problem_accepted_state
    end type rod_problem
 
 contains
@@ -198,6 +201,21 @@ contains
          call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
       end if
    end subroutine rod_problem_evaluate
+
+   !> The evaluation of a step at its converged positions x (the window's unknowns when the
+   !> problem has a window, as for evaluate), in place of the full residual Newton would
+   !> evaluate there (newton_options%final_residual): step_state.
+   subroutine rod_problem_accepted_state(self, x)
+      !> Problem (a step: dt > 0).
+      class(rod_problem), intent(inout) :: self
+      !> Positions, 2 per node of the window (all nodes when there is none).
+      real(dp), intent(in) :: x(:)
+      if (self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)) then
+         call step_state(self%piece, x, self%lo, self%hi, self%t0, self%dt, self%theta)
+      else
+         call step_state(self%piece, x, 1, self%piece%n, self%t0, self%dt, self%theta)
+      end if
+   end subroutine rod_problem_accepted_state
 
    !> perp(a) = a rotated by +90 degrees, so that perp(a) . b = a x b.
    pure function perp(a) result(p)
@@ -272,10 +290,10 @@ contains
       self%mom = 0
       self%dmom = 0
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
-      allocate (self%w0(n - 1), self%b0(n))
+      allocate (self%b0(n))
       call old_energies(self)
-      allocate (self%memo_x(2*n), self%memo_e(2, n - 1), self%memo_l(n - 1), self%memo_th(n), self%memo_w(n - 1), &
-                self%memo_b(n), self%memo_w_ok(n - 1), self%memo_b_ok(n), self%memo_dphi(n - 1))
+      allocate (self%memo_x(2*n), self%memo_e(2, n - 1), self%memo_l(n - 1), self%memo_th(n), self%memo_b(n), &
+                self%memo_b_ok(n), self%memo_dphi(n - 1))
       self%memo_valid = .false.
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
       self%v1 = 0
@@ -340,7 +358,9 @@ contains
       end do
    end subroutine geometry_of
 
-   !> Weight of node k (cable share and point mass), N.
+   !> Weight of node k (cable share and point mass), N. (An interior node's is
+   !> weight lumped(k): the loops over the nodes write that out and call this for
+   !> the end nodes only; gfortran did not inline it, 2.9e5 calls on fast_180kN.)
    pure real(dp) function node_weight(self, k)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
@@ -380,19 +400,14 @@ contains
       end do
    end subroutine mass_product
 
-   !> Fill in the energies that the last step evaluation did not compute (memo_w of the
-   !> cells it took by the Taylor form, memo_b likewise): the same values that
-   !> rod_energies and the next prepare_step's old_energies would each compute (it saves
-   !> computing them twice per step when the ledger is kept, 2 % of fast_180kN).
+   !> Fill in the bending energies that the last step evaluation did not compute (memo_b of
+   !> the nodes it took by the Taylor form): the same values that rod_energies and the next
+   !> prepare_step's old_energies would each compute (it saves computing them twice per step
+   !> when the ledger is kept).
    subroutine rod_complete_memo(self)
       class(rod_piece), intent(inout) :: self
-      integer :: c, k
+      integer :: k
       if (.not. self%memo_valid) return
-      do c = 1, self%n - 1
-         if (self%memo_w_ok(c)) cycle
-         self%memo_w(c) = self%law%strain_energy(self%memo_l(c) - 1)
-         self%memo_w_ok(c) = .true.
-      end do
       do k = 2, self%n - 1
          if (self%memo_b_ok(k)) cycle
          self%memo_b(k) = bend_energy(self, k, self%memo_th(k))
@@ -412,21 +427,21 @@ contains
       real(dp) :: en(4)
       integer :: k, c
       logical :: memo
-      ! At the last step evaluation's positions, the energies it computed (the same bits).
+      ! At the last step evaluation's positions, the bending energies it computed (the same
+      ! bits). The strain energies are computed here only: a step needs none (its strain
+      ! force is the law's W(eps1) - W(eps0), strain_energy_change).
       memo = is_memo(self, r)
       en = 0
       do c = 1, self%n - 1
-         if (memo) then
-            if (self%memo_w_ok(c) .and. same_bits(l(c), self%memo_l(c))) then
-               en(1) = en(1) + self%ds(c)*self%memo_w(c)
-               cycle
-            end if
-         end if
          en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
       end do
       do k = 1, self%n
          en(2) = en(2) + 0.5_dp*self%mass(0, k)*dot_product(v(:, k), v(:, k))
-         en(4) = en(4) + node_weight(self, k)*r(2, k)
+         if (k == 1 .or. k == self%n) then
+            en(4) = en(4) + node_weight(self, k)*r(2, k)
+         else
+            en(4) = en(4) + self%weight*self%lumped(k)*r(2, k)
+         end if
       end do
       do k = 1, self%n - 1
          en(2) = en(2) + self%mass(1, k)*dot_product(v(:, k), v(:, k + 1))
@@ -503,7 +518,7 @@ contains
       call self%mass_times(v0, self%mv0)
       if (is_memo(self, r0)) then
          call copy_geometry(self%n, self%memo_e, self%memo_l, self%memo_th, self%e0, self%l0, self%th0)
-         call old_energies(self, self%memo_w, self%memo_w_ok, self%memo_b, self%memo_b_ok)
+         call old_energies(self, self%memo_b, self%memo_b_ok)
       else
          call self%geometry(r0, self%e0, self%l0, self%th0)
          call old_energies(self)
@@ -568,22 +583,13 @@ contains
       same_bits = transfer(a, 0_i8) == transfer(b, 0_i8)
    end function same_bits
 
-   !> w0 and b0 from the old level's lengths and turning angles, or where given
-   !> (w_ok, b_ok) from w and b, the same values computed by the last evaluation.
-   subroutine old_energies(self, w, w_ok, b, b_ok)
+   !> b0 from the old level's turning angles, or where given (b_ok) from b, the same
+   !> values computed by the last evaluation.
+   subroutine old_energies(self, b, b_ok)
       class(rod_piece), intent(inout) :: self
-      real(dp), intent(in), optional :: w(:), b(:)
-      logical, intent(in), optional :: w_ok(:), b_ok(:)
-      integer :: c, k
-      do c = 1, self%n - 1
-         if (present(w)) then
-            if (w_ok(c)) then
-               self%w0(c) = w(c)
-               cycle
-            end if
-         end if
-         self%w0(c) = self%law%strain_energy(self%l0(c) - 1)
-      end do
+      real(dp), intent(in), optional :: b(:)
+      logical, intent(in), optional :: b_ok(:)
+      integer :: k
       do k = 1, self%n
          if (present(b)) then
             if (b_ok(k)) then
@@ -632,9 +638,9 @@ contains
       call copy_geometry(n, self%e1, self%l1, self%th1, self%memo_e, self%memo_l, self%memo_th)
       self%memo_b_ok = .false.
       call bend_nodes(self, 2, n - 1)
-      call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
+      call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%ds, self%mom, self%dmom, &
                       self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
-                      with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok, self%memo_dphi, 1, n - 1)
+                      with_jacobian, self%force, self%block, self%memo_dphi, 1, n - 1)
       self%memo_valid = .true.
       call apply_loads(self, x, dt, theta, with_jacobian)
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
@@ -652,9 +658,7 @@ contains
       call copy_geometry(n, self%e0, self%l0, self%th0, self%e1, self%l1, self%th1)
       call copy_values(2*n, self%r0, self%memo_x)
       call copy_geometry(n, self%e0, self%l0, self%th0, self%memo_e, self%memo_l, self%memo_th)
-      call copy_values(n - 1, self%w0, self%memo_w)
       call copy_values(n, self%b0, self%memo_b)
-      self%memo_w_ok = .true.
       self%memo_b_ok = .true.
       ! atan2(e0 x e0, e0 . e0) = 0: a cell that keeps its positions does not rotate.
       self%memo_dphi = 0
@@ -706,11 +710,98 @@ contains
 
       subroutine window_cells(c1, c2)
          integer, intent(in) :: c1, c2
-         call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%w0, self%ds, self%mom, self%dmom, &
+         call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%ds, self%mom, self%dmom, &
                          self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
-                         with_jacobian, self%force, self%block, self%memo_w, self%memo_w_ok, self%memo_dphi, c1, c2)
+                         with_jacobian, self%force, self%block, self%memo_dphi, c1, c2)
       end subroutine window_cells
    end subroutine step_window
+
+   !> What a step's evaluation at its converged positions leaves that the accepted state
+   !> needs, computed by the same expressions as rod_step_system and step_window (so the
+   !> same bits), without the residual: the new level's geometry e1, l1, th1; the memo
+   !> (positions, geometry, the bending energy of every node whose turning angle is
+   !> evaluated, each cell's rotation dphi) for check_state, the next prepare_step and the
+   !> ledger; the forces of the two end cells, the end nodes' new velocities and the
+   !> distributed loads for rod_reaction and the ledger's work. The other cells' forces and
+   !> blocks, the other nodes' moments and velocities and the residual are not computed
+   !> (they stay those of the last evaluation). Window lo .. hi (1 .. n: the whole piece);
+   !> x holds the new positions of its nodes. On fast_180kN (241 nodes) it takes about
+   !> 101 000 instructions, the residual alone it replaces about 235 000 (docs/speed.md).
+   subroutine step_state(self, x, lo, hi, t0, dt, theta)
+      type(rod_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      integer, intent(in) :: lo, hi
+      real(dp), intent(in) :: t0, dt, theta
+      integer :: n, ga, gb, ca, cb, k, k1, k2, kk, a
+      n = self%n
+      if (lo == 1 .and. hi == n) then
+         call geometry_of(n, self%ds, x, self%e1, self%l1, self%th1)
+         call copy_values(2*n, x, self%memo_x)
+         call copy_geometry(n, self%e1, self%l1, self%th1, self%memo_e, self%memo_l, self%memo_th)
+         self%memo_b_ok = .false.
+         k1 = 2
+         k2 = n - 1
+         ca = 1
+         cb = n - 1
+      else
+         self%memo_x(2*lo - 1:2*hi) = x
+         ga = max(1, lo - 2)
+         gb = min(n - 1, hi + 1)
+         call geometry_cells(n, self%ds, self%memo_x, self%e1, self%l1, self%th1, ga, gb)
+         self%memo_e(:, ga:gb) = self%e1(:, ga:gb)
+         self%memo_l(ga:gb) = self%l1(ga:gb)
+         self%memo_th(ga + 1:gb) = self%th1(ga + 1:gb)
+         k1 = max(2, lo - 1)
+         k2 = min(n - 1, hi + 1)
+         ca = max(1, lo - 1)
+         cb = min(n - 1, hi)
+      end if
+      ! The bending terms of the evaluated nodes, as a step evaluation computes them: the
+      ! end cells' forces need the moments of nodes 2 and n - 1, the next step's old level
+      ! the bending energies. (bend_divided's B(th1), not B computed by a separate loop:
+      ! gfortran vectorises a plain loop over tan with glibc's libmvec, whose tan differs
+      ! from libm's in the last bits.)
+      call bend_nodes(self, k1, k2)
+      if (k1 > 2) call bend_nodes(self, 2, 2)
+      if (k2 < n - 1) call bend_nodes(self, n - 1, n - 1)
+      call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%ds, self%mom, self%dmom, &
+                      self%damping, dt, cell_couple(self, 1, t0, t0 + dt), cell_couple(self, n - 1, t0, t0 + dt), &
+                      .false., self%force, self%block, self%memo_dphi, 1, 1)
+      if (n > 2) call cell_terms(n, self%law, self%e0, self%e1, self%l0, self%l1, self%ds, self%mom, self%dmom, &
+                                 self%damping, dt, cell_couple(self, 1, t0, t0 + dt), &
+                                 cell_couple(self, n - 1, t0, t0 + dt), .false., self%force, self%block, &
+                                 self%memo_dphi, n - 1, n - 1)
+      ! Each cell's rotation, as cell_terms computes it.
+      call cell_rotations_of(n, self%e0, self%e1, self%memo_dphi, ca, cb)
+      self%memo_valid = .true.
+      if (lo == 1 .and. hi == n) then
+         call apply_loads(self, x, dt, theta, .false.)
+      else
+         self%load_node = 0
+      end if
+      ! The new velocities a reaction needs (nodes 1 .. 3 and n - 2 .. n).
+      do k = 1, n
+         if (k > 3 .and. k < n - 2) cycle
+         do a = 1, 2
+            kk = 2*k - 2 + a
+            self%v1(a, k) = ((self%memo_x(kk) - self%r0(a, k))/dt - (1 - theta)*self%v0(a, k))/theta
+         end do
+      end do
+   end subroutine step_state
+
+   !> The rotation of the cells ca .. cb from e0 to e1, atan2(e0 x e1, e0 . e1), as cell_terms computes it
+   !> (fast_atan2, the same bits; test/suite_quiescent.f90 checks).
+   pure subroutine cell_rotations_of(n, e0, e1, dphi, ca, cb)
+      integer, intent(in) :: n, ca, cb
+      real(dp), intent(in) :: e0(2, n - 1), e1(2, n - 1)
+      real(dp), intent(inout) :: dphi(n - 1)
+      integer :: c
+      real(dp) :: cross01
+      do c = ca, cb
+         cross01 = cross2(e0(:, c), e1(:, c))
+         dphi(c) = fast_atan2(cross01, dot_product(e0(:, c), e1(:, c)))
+      end do
+   end subroutine cell_rotations_of
 
    !> The bending terms of a step (bend_divided) at the nodes k1 .. k2: the moment, its
    !> derivative and, where computed, the new bending energy (memo). One call site, so that
@@ -771,7 +862,11 @@ contains
          residual(i + 1:i + 2) = 0
          if (k > 1) residual(i + 1:i + 2) = residual(i + 1:i + 2) + self%force(:, k - 1)
          if (k < n) residual(i + 1:i + 2) = residual(i + 1:i + 2) - self%force(:, k)
-         residual(i + 2) = residual(i + 2) + node_weight(self, k)
+         if (k == 1 .or. k == n) then
+            residual(i + 2) = residual(i + 2) + node_weight(self, k)
+         else
+            residual(i + 2) = residual(i + 2) + self%weight*self%lumped(k)
+         end if
          residual(i + 1) = residual(i + 1) - self%load_node(1, k)
          residual(i + 2) = residual(i + 2) - self%load_node(2, k)
          if (k == 1) then
@@ -877,24 +972,21 @@ contains
    !> The cell forces N_c and, with_jacobian, their blocks dN_c/de_c' of a step (rod_step_system's
    !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
    !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1; the cells ca .. cb only.
-   subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, w0, ds, mom, dmom, damping, dt, couple_first, couple_last, &
-                         with_jacobian, force, block, w1, w1_ok, dphi1, ca, cb)
+   subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &
+                         with_jacobian, force, block, dphi1, ca, cb)
       integer, intent(in) :: n
       class(material_law), intent(in) :: law
-      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), w0(n - 1), ds(n - 1), mom(n), &
+      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), ds(n - 1), mom(n), &
                               dmom(n), damping, dt, couple_first, couple_last
       logical, intent(in) :: with_jacobian
       real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
-      !> W(eps1) of each cell where it was computed (w1_ok).
-      real(dp), intent(inout) :: w1(n - 1)
-      logical, intent(inout) :: w1_ok(n - 1)
       !> Rotation of each cell from e0 to e1, rad.
       real(dp), intent(inout) :: dphi1(n - 1)
       !> First and last cell to compute.
       integer, intent(in) :: ca, cb
       integer :: c
       real(dp) :: q, dq, lsum, em(2), cross01, dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid, f, fp, fpp
-      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2)
+      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), jm(2, 2), wsum(2), pem(2)
       jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
       do c = ca, cb
          associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
@@ -904,17 +996,13 @@ contains
             h = eps1 - eps0
             if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
-               ! f, f', f'' in one call: the tanh law's share one tanh and one cosh
-               ! (separate calls computed three of each).
+               ! f, f', f'' in one call (the tanh law: one tanh and 1 / cosh^2 together).
                call law%tension_stiffness_slope(mid, f, fp, fpp)
                q = f + fpp*h*h/24
                dq = 0.5_dp*fp + fpp*h/12
-               w1(c) = 0
-               w1_ok(c) = .false.
             else
-               w1(c) = law%strain_energy(eps1)
-               w1_ok(c) = .true.
-               ! W1 - W0 from the law, not w1 - w0: that loses digits (tanh_strain_energy_change).
+               ! W1 - W0 from the law, not a difference of two W: that loses digits
+               ! (tanh_strain_energy_change). No W itself: only the ledger uses it (rod_energies).
                ! dq only enters the blocks: a residual alone does not ask for the law's tension.
                if (with_jacobian) then
                   call law%strain_energy_change_tension(eps0, eps1, q, f)
@@ -945,7 +1033,10 @@ contains
                drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
             end if
             g = rho/(l0*l1)
-            gvec = perp(em)*g
+            ! perp(em), written out: gfortran called perp (1.6e6 calls on fast_180kN).
+            pem(1) = -em(2)
+            pem(2) = em(1)
+            gvec = pem*g
             couple = 0
             if (c == 1) then
                couple = couple_first
@@ -957,9 +1048,9 @@ contains
             if (.not. with_jacobian) cycle
             ds_dq = dq*e1/l1
             dstrain = outer(wsum/lsum, ds_dq) + q*(identity2()/lsum - outer(wsum, e1/l1)/lsum**2)
-            dphi_de = perp(e1)/l1**2
+            dphi_de = [-e1(2), e1(1)]/l1**2
             dg_de = drho*dphi_de/(l0*l1) - rho/(l0*l1**2)*e1/l1
-            dgvec = 0.5_dp*g*jm + outer(perp(em), dg_de)
+            dgvec = 0.5_dp*g*jm + outer(pem, dg_de)
             ds_de = moment_gradient_of(n, c, e1_, l1_, dmom)
             block(:, :, 0, c) = dstrain + s_c/ds(c)*dgvec + outer(gvec, ds_de(:, 0))/ds(c)
             block(:, :, -1, c) = outer(gvec, ds_de(:, -1))/ds(c)
@@ -984,14 +1075,15 @@ contains
       real(dp), intent(in) :: e1(2, n - 1), l1(n - 1), dmom(n)
       real(dp) :: d(2, -1:1), dth(2)
       d = 0
-      dth = perp(e1(:, c))/l1(c)**2
+      ! perp written out (not inlined by gfortran).
+      dth = [-e1(2, c), e1(1, c)]/l1(c)**2
       if (c >= 2) then
          d(:, 0) = d(:, 0) + dmom(c)*dth
-         d(:, -1) = -dmom(c)*perp(e1(:, c - 1))/l1(c - 1)**2
+         d(:, -1) = -dmom(c)*[-e1(2, c - 1), e1(1, c - 1)]/l1(c - 1)**2
       end if
       if (c + 1 <= n - 1) then
          d(:, 0) = d(:, 0) + dmom(c + 1)*dth
-         d(:, 1) = -dmom(c + 1)*perp(e1(:, c + 1))/l1(c + 1)**2
+         d(:, 1) = -dmom(c + 1)*[-e1(2, c + 1), e1(1, c + 1)]/l1(c + 1)**2
       end if
    end function moment_gradient_of
 
@@ -1164,9 +1256,11 @@ contains
          residual(2*c + 1:2*c + 2) = residual(2*c + 1:2*c + 2) + self%force(:, c)
       end do
       ! Weight, distributed loads and applied forces.
-      do k = 1, n
-         residual(2*k) = residual(2*k) + node_weight(self, k)
+      residual(2) = residual(2) + node_weight(self, 1)
+      do k = 2, n - 1
+         residual(2*k) = residual(2*k) + self%weight*self%lumped(k)
       end do
+      residual(2*n) = residual(2*n) + node_weight(self, n)
       do k = 1, n
          residual(2*k - 1) = residual(2*k - 1) - self%load_node(1, k)
          residual(2*k) = residual(2*k) - self%load_node(2, k)
@@ -1301,7 +1395,9 @@ contains
    !> The force the support exerts on end node k (1 or n) to keep the balance of
    !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step
    !> also plus the node's inertia [M (V^n+1 - V^n)]_k / dt. Uses the cell forces
-   !> of the last evaluation (at the converged state), so call it right after.
+   !> of the last evaluation (at the converged state: a residual, or for a step
+   !> rod_problem%accepted_state, which computes the end cells' forces and the end
+   !> nodes' velocities this needs), so call it right after.
    function rod_reaction(self, k, x, dt, theta) result(f)
       !> Piece.
       class(rod_piece), intent(in) :: self

@@ -47,6 +47,7 @@ contains
                new_unittest('schema_defaults', test_schema_defaults), &
                new_unittest('schema_round_trip', test_schema_round_trip), &
                new_unittest('echo_round_trip', test_echo_round_trip), &
+               new_unittest('echo_text', test_echo_text), &
                new_unittest('given_variables', test_given), &
                new_unittest('s_break_default', test_s_break_default), &
                new_unittest('direction_normalised', test_direction_normalised), &
@@ -425,6 +426,84 @@ contains
       call echo_case(error, 'material table file', "&material law = 'table', table_file = '"//material_path// &
                      "', damping = 1.5 /"//nl)
    end subroutine test_echo_round_trip
+
+   !> The echo (config_text) of two cases is the text the code wrote before config_text
+   !> was made cheaper (taken from the files of xcable 867173b for these cases): end b's
+   !> position given and the tension left out, a table read from a file written inline
+   !> with its comment, a material table, a quote in a string; and the paper's case
+   !> with its tension and without end b's position.
+   subroutine test_echo_text(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      character(:), allocatable :: expected
+      call write_text(table_path, '# t x z'//nl//'0 0 0'//nl//'0.5 0.1 0.2'//nl//'1.25 0.3 -0.1'//nl)
+      call write_text(path, "&cable length = 20, diameter = 0.03 /"//nl// &
+                      "&material law = 'table', table_strain = -0.01, 0, 0.05, 0.3, "// &
+                      "table_tension = -2e3, 0, 1.2e5, 4.5e5, damping = 250 /"//nl// &
+                      "&end_a kind = 'motion', motion = 'table', table_file = '"//table_path//"' /"//nl// &
+                      "&end_b kind = 'fixed', x = 18.5, z = -3.25 /"//nl// &
+                      "&numerics nodes = 21, t_end = 0.002 /"//nl// &
+                      "&output file = 'results/it''s.h5', interval = 0.001, checkpoint_interval = 3600, "// &
+                      "quiet = .true. /"//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      expected = "&cable length = 20, diameter = 0.03, density = 1140, young = 2.3e8, gravity = 9.81,"//nl // &
+         "   area = 0.0007068583470577034, bending_stiffness = 9.144979865059037, gip = 6.532128475042169 /"//nl // &
+         "&material law = 'table', p = 270300, 10.2, -2.128, 262700, 135.5, ea = 0, table_strain = -0.01, 0,"//nl // &
+         "   0.05, 0.3, table_tension = -2000, 0, 120000, 450000, strain_max = 0.35, compression = 'law',"//nl // &
+         "   damping = 250 /"//nl // &
+         "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
+         "   current_z = 0 /"//nl // &
+         "! &end_a: the table was read from table_file = '"//table_path//"'"//nl // &
+         "&end_a kind = 'motion', x = 0, y = 0, z = 0, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
+         "   history = 'constant', ramp_time = 0, motion = 'table', amplitude = 0, period = 1, phase = 0,"//nl // &
+         "   direction_x = 0, direction_y = 0, direction_z = 1, mass = 0, table_time = 0, 0.5, 1.25,"//nl // &
+         "   table_x = 0, 0.1, 0.3, table_z = 0, 0.2, -0.1 /"//nl // &
+         "&end_b kind = 'fixed', x = 18.5, y = 0, z = -3.25, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
+         "   history = 'constant', ramp_time = 0, motion = 'harmonic', amplitude = 0, period = 1, phase = 0,"//nl // &
+         "   direction_x = 0, direction_y = 0, direction_z = 1, mass = 0 /"//nl // &
+         "&rupture enabled = .true., s_break = 20, t_break = 0.05, time = 0 /"//nl // &
+         "&numerics scheme = 'rod', model = 'auto', nodes = 21, dt = 0, courant = 1, t_end = 0.002,"//nl // &
+         "   theta = 0.5, mass_matrix = 'averaged', newton_tol = 1e-7, newton_max_iter = 25,"//nl // &
+         "   reuse_jacobian = .true., extrapolate = .true., skip_quiescent = .true.,"//nl // &
+         "   min_step_fraction = 0.0009765625, max_wall_time = 0 /"//nl // &
+         "&output file = 'results/it''s.h5', interval = 0.001,"//nl // &
+         "   fields = 'tension shear strain u v x z curvature', quiet = .true., energy = .false.,"//nl // &
+         "   gnuplot = .false., xdmf = .false., checkpoint_interval = 3600 /"//nl
+      call check(error, config_text(config) == expected, 'end b placed: the echo reads'//nl//config_text(config)// &
+                 'instead of'//nl//expected)
+      if (allocated(error)) return
+      call check(error, index(config_text(config, fingerprint=.true.), 'checkpoint_interval') == 0 .and. &
+                 index(config_text(config, fingerprint=.true.), "table_x = 0, 0.1, 0.3") > 0, &
+                 'end b placed: the fingerprint reads'//nl//config_text(config, fingerprint=.true.))
+      if (allocated(error)) return
+      call write_text(path, '&static tension = 150000 /'//nl//'&numerics nodes = 11, t_end = 0.001 /'//nl// &
+                      "&output file = 'results/p2.h5', interval = 0.001, quiet = .true. /"//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      expected = "&cable length = 60, diameter = 0.05, density = 1140, young = 2.3e8, gravity = 9.81,"//nl // &
+         "   area = 0.001963495408493621, bending_stiffness = 70.56311624273953, gip = 50.402225887671094 /"//nl // &
+         "&material law = 'tanh', p = 270300, 10.2, -2.128, 262700, 135.5, ea = 0, strain_max = 0.35,"//nl // &
+         "   compression = 'law', damping = 0 /"//nl // &
+         "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
+         "   current_z = 0 /"//nl // &
+         "&static tension = 150000 /"//nl // &
+         "&end_a kind = 'fixed', x = 0, y = 0, z = 0, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
+         "   history = 'constant', ramp_time = 0, motion = 'harmonic', amplitude = 0, period = 1, phase = 0,"//nl // &
+         "   direction_x = 0, direction_y = 0, direction_z = 1, mass = 0 /"//nl // &
+         "&end_b kind = 'fixed', force_x = 0, force_y = 0, force_z = 0, torque = 0, history = 'constant',"//nl // &
+         "   ramp_time = 0, motion = 'harmonic', amplitude = 0, period = 1, phase = 0, direction_x = 0,"//nl // &
+         "   direction_y = 0, direction_z = 1, mass = 0 /"//nl // &
+         "&rupture enabled = .true., s_break = 60, t_break = 0.05, time = 0 /"//nl // &
+         "&numerics scheme = 'rod', model = 'auto', nodes = 11, dt = 0, courant = 1, t_end = 0.001,"//nl // &
+         "   theta = 0.5, mass_matrix = 'averaged', newton_tol = 1e-7, newton_max_iter = 25,"//nl // &
+         "   reuse_jacobian = .true., extrapolate = .true., skip_quiescent = .true.,"//nl // &
+         "   min_step_fraction = 0.0009765625, max_wall_time = 0 /"//nl // &
+         "&output file = 'results/p2.h5', interval = 0.001, fields = 'tension shear strain u v x z curvature',"//nl // &
+         "   quiet = .true., energy = .false., gnuplot = .false., xdmf = .false., checkpoint_interval = 0 /"//nl
+      call check(error, config_text(config) == expected, 'paper case: the echo reads'//nl//config_text(config)// &
+                 'instead of'//nl//expected)
+   end subroutine test_echo_text
 
    !> Read a case, write its echo, read that: every variable the same
    !> (table_file aside: the echo writes the table inline).

@@ -34,7 +34,8 @@ contains
                new_unittest('jacobian_step_table_law_damping', test_step_table_damping), &
                new_unittest('discrete_gradient_exact', test_discrete_gradient), &
                new_unittest('old_level_from_last_evaluation', test_old_level_memo), &
-               new_unittest('residual_alone_same_bits', test_residual_alone)]
+               new_unittest('residual_alone_same_bits', test_residual_alone), &
+               new_unittest('energies_kinetic_and_gravity', test_energies_kinetic_gravity)]
    end subroutine collect_rod
 
    !> A piece of 9 nodes: end a held (fixed or moving), end b loaded (force
@@ -302,4 +303,33 @@ contains
                     what//': the near state does not mix Taylor and divided-difference branches')
       end subroutine compare
    end subroutine test_residual_alone
+
+   !> The kinetic and gravity energies of rod_energies against other sums of the same
+   !> quantities: 1/2 V . (M V) with M V from mass_times, and the weight of each node
+   !> (its share of the cable and the point mass at end b) times its height; on the
+   !> averaged mass matrix with its second off-diagonal (mu2 = 0.3).
+   subroutine test_energies_kinetic_gravity(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_problem) :: p
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :)
+      real(dp) :: en(4), mv(2, n), e(2, n - 1), l(n - 1), th(n), kinetic, gravity
+      integer :: k
+      call make_piece(p, x, r0, v0, 1.0_dp, 0.3_dp, .false., .true.)
+      call p%piece%geometry(r0, e, l, th)
+      en = p%piece%energies(r0, v0, l, th)
+      call p%piece%mass_times(v0, mv)
+      kinetic = 0.5_dp*sum(v0*mv)
+      gravity = 5.0_dp*9.81_dp*r0(2, n)
+      do k = 1, n
+         gravity = gravity + p%piece%weight*p%piece%lumped(k)*r0(2, k)
+      end do
+      write (output_unit, '(4x,a,2es10.2)') 'energies: relative differences of kinetic and gravity energy', &
+         abs(en(2) - kinetic)/abs(kinetic), abs(en(4) - gravity)/abs(gravity)
+      call check(error, abs(en(2) - kinetic) <= 3.0e-15_dp*abs(kinetic), 'kinetic energy '//str(en(2))// &
+                 ' J, 1/2 V.MV '//str(kinetic)//' J')
+      if (allocated(error)) return
+      call check(error, abs(en(4) - gravity) <= 3.0e-15_dp*abs(gravity), 'gravity energy '//str(en(4))// &
+                 ' J, sum of weights times heights '//str(gravity)//' J')
+   end subroutine test_energies_kinetic_gravity
+
 end module suite_rod

@@ -14,6 +14,11 @@ module suite_statics
    use xcable_dynamics, only: dynamics_options
    use xcable_statics, only: static_state, solve_statics
    use xcable_theory, only: catenary_summary, catenary_shape, horizontal_force, wave_speed
+   use xcable_theory, only: strain_kept, kept_strain_at
+   use xcable_material_law, only: material_law, tanh_law, linear_law
+   use xcable_material_table, only: table_law, new_table_law
+   use xcable_material_tension_only, only: new_tension_only
+   use xcable_kinds, only: i8
    use xcable_statics, only: catenary_guess
    use xcable_discrete_box, only: box_system
    use xcable_solver_newton, only: newton_workspace, newton_report, newton_solve
@@ -34,7 +39,8 @@ contains
                new_unittest('irvine_linear_law', test_irvine), &
                new_unittest('newton_quadratic', test_newton_quadratic), &
                new_unittest('newton_quadratic_far_guess', test_newton_far), &
-               new_unittest('tension_too_small', test_too_small)]
+               new_unittest('tension_too_small', test_too_small), &
+               new_unittest('kept_inverse_same_bits', test_kept_inverse)]
    end subroutine collect_statics
 
    !> Relative errors of span, sag, end angle and mid-span strain against the
@@ -238,4 +244,47 @@ contains
       call check(error, refused%stat == stat_input .and. index(refused%message, 'tension = 600') > 0 .and. &
                  index(refused%message, 'w0 L / 2') > 0, 'unexpected refusal: '//refused%message)
    end subroutine test_too_small
+
+   !> kept_strain_at (the statics' first guess inverts the law with the values at the
+   !> starting points kept) gives law%strain_at's bits, for the tanh, linear and table
+   !> laws and the tanh law without compression, one kept per law over tensions from
+   !> -1e6 N to 3e6 N (far beyond the tables and the saturation of the tanh law, so that
+   !> the brackets widen many times), zero among them.
+   subroutine test_kept_inverse(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(table_law) :: table
+      call new_table_law([-0.02_dp, 0.0_dp, 0.05_dp, 0.2_dp, 0.4_dp], [-5.0e3_dp, 0.0_dp, 6.0e4_dp, 3.0e5_dp, 9.0e5_dp], &
+                         table, error)
+      if (allocated(error)) return
+      call compare(tanh_law(), 'tanh')
+      if (allocated(error)) return
+      call compare(linear_law(ea=4.5e5_dp), 'linear')
+      if (allocated(error)) return
+      call compare(table, 'table')
+      if (allocated(error)) return
+      call compare(new_tension_only(tanh_law()), 'tanh without compression')
+   contains
+      subroutine compare(law, name)
+         class(material_law), intent(in) :: law
+         character(*), intent(in) :: name
+         type(strain_kept) :: kept
+         real(dp) :: t, a, b
+         integer :: i, n_same
+         n_same = 0
+         do i = -400, 1200
+            t = 2500.0_dp*i + 0.37_dp*modulo(i*7919, 1000)
+            a = law%strain_at(t)
+            b = kept_strain_at(law, t, kept)
+            if (transfer(a, 0_i8) == transfer(b, 0_i8)) n_same = n_same + 1
+            if (transfer(a, 0_i8) /= transfer(b, 0_i8)) then
+               call check(error, .false., name//': at T = '//str(t)//' N strain_at gives '//str(a)// &
+                          ', kept_strain_at '//str(b))
+               return
+            end if
+         end do
+         call check(error, n_same == 1601 .and. kept%n > 4, name//': '//str(n_same)//' of 1601 compared, '// &
+                    str(kept%n)//' values kept')
+      end subroutine compare
+   end subroutine test_kept_inverse
+
 end module suite_statics

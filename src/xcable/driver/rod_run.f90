@@ -1332,7 +1332,7 @@ contains
                call end_work(piece%end_a, 1, 1)
                call end_work(piece%end_b, n, 2)
                ! Distributed loads: their force on each node (centred on the step) times its displacement.
-               self%load_work = self%load_work + sum(piece%load_node*(r1 - run_piece%r))
+               self%load_work = self%load_work + displacement_work(n, piece%load_node, r1, run_piece%r)
                ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt.
                if (piece%damping > 0) self%dissipation = self%dissipation + &
                   piece%damping*sum(piece%ds*(piece%l1 - piece%l0)**2)/h
@@ -1347,11 +1347,12 @@ contains
             self%summary%max_turning_angle = max(self%summary%max_turning_angle, maxval(abs(piece%th1)))
             self%summary%min_strain = min(self%summary%min_strain, minval(piece%l1) - 1)
             self%summary%max_strain = max(self%summary%max_strain, maxval(piece%l1) - 1)
-            run_piece%r_prev = run_piece%r
-            run_piece%v_prev = run_piece%v
-            run_piece%r = r1
-            run_piece%v = v1
-            deallocate (v1)
+            ! The levels change hands without copies (four copies of (2, n) through the
+            ! components' descriptors cost 21 million instructions on fast_180kN).
+            call move_alloc(run_piece%r, run_piece%r_prev)
+            call move_alloc(run_piece%v, run_piece%v_prev)
+            call move_alloc(r1, run_piece%r)
+            call move_alloc(v1, run_piece%v)
          end associate
       end do
 
@@ -1375,6 +1376,24 @@ contains
          end associate
       end subroutine end_work
    end subroutine accept
+
+   !> sum(f*(r1 - r0)) over (2, n) arrays, in the order of that expression (element
+   !> by element, column by column), on explicit-shape arrays: the expression on the
+   !> pieces' components took 10 700 instructions a step on fast_180kN.
+   pure real(dp) function displacement_work(n, f, r1, r0) result(w)
+      !> Nodes.
+      integer, intent(in) :: n
+      !> Forces (2, n), N.
+      real(dp), intent(in) :: f(2, n)
+      !> Positions at the end and start of the step (2, n), m.
+      real(dp), intent(in) :: r1(2, n), r0(2, n)
+      integer :: k
+      w = 0
+      do k = 1, n
+         w = w + f(1, k)*(r1(1, k) - r0(1, k))
+         w = w + f(2, k)*(r1(2, k) - r0(2, k))
+      end do
+   end function displacement_work
 
    !> End labels and the record of the static state (index 0).
    subroutine start_history(self)

@@ -1802,11 +1802,17 @@ contains
       character(len=16), allocatable :: groups(:)
       integer, allocatable :: mine(:)
       type(config_value) :: v
+      type(case_config) :: copy
       character(:), allocatable :: block, comment, line, sep, token
       integer :: ig, i, k, n
-      logical :: skip_steering
+      logical :: skip_steering, position_b
       skip_steering = .false.
       if (present(fingerprint)) skip_steering = fingerprint
+      ! One copy of the case for `access` (which takes it intent(inout) and only
+      ! reads it here), not one per variable as get_value makes: those copies (the
+      ! end tables) were 45 % of the instructions of config_text.
+      copy = c
+      position_b = given_position_b(c)
       t = schema_table()
       groups = schema_groups(t)
       text = ''
@@ -1818,14 +1824,14 @@ contains
          sep = ' '
          do i = 1, size(mine)
             associate (e => t(mine(i)))
-               if (.not. echoed(c, e)) cycle
+               if (.not. echoed(c, e, position_b)) cycle
                if (skip_steering .and. e%resume_may_differ) cycle
+               call access(copy, e, v, .false.)
                if (e%name == 'table_file') then
                   comment = comment//"! &"//trim(e%group)//": the table was read from table_file = '"// &
-                            get_text(c, e)//"'"//nl
+                            v%text//"'"//nl
                   cycle
                end if
-               v = get_value(c, e)
                n = 1
                if (e%type == 'real') n = size(v%reals)
                do k = 1, n
@@ -1898,30 +1904,24 @@ contains
       end select
    end function item_text
 
-   !> The text of a string variable.
-   function get_text(c, e) result(text)
+   !> Whether a position of end b was given (then the tension is not echoed).
+   logical function given_position_b(c)
       !> The case.
       type(case_config), intent(in) :: c
-      !> The variable.
-      type(schema_entry), intent(in) :: e
-      character(:), allocatable :: text
-      type(config_value) :: v
-      v = get_value(c, e)
-      text = v%text
-   end function get_text
+      given_position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'y') .or. c%is_given('end_b', 'z')
+   end function given_position_b
 
    !> Whether the echo writes a variable: the tension only for the paper's
    !> symmetric case (both ends fixed, no position given for end b), end b's
    !> position only when given; not the position of a free, force or mass end;
    !> no table without rows, and no table_file unless given.
-   logical function echoed(c, e)
+   logical function echoed(c, e, position_b)
       !> The case.
       type(case_config), intent(in) :: c
       !> The variable.
       type(schema_entry), intent(in) :: e
-      logical :: position_b
-      type(end_config) :: side
-      position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'y') .or. c%is_given('end_b', 'z')
+      !> Whether a position of end b was given (given_position_b).
+      logical, intent(in) :: position_b
       echoed = .true.
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
@@ -1934,24 +1934,33 @@ contains
          end select
          return
       end if
-      if (e%group /= 'end_a' .and. e%group /= 'end_b') return
+      ! The end itself, not a copy (a copy of its tables cost more than the rest of the echo).
       if (e%group == 'end_a') then
-         side = c%end_a
-      else
-         side = c%end_b
+         echoed = end_echoed(c%end_a, e%name)
+      else if (e%group == 'end_b') then
+         echoed = end_echoed(c%end_b, e%name)
+         if (is_word(e%name, 'x y z')) echoed = echoed .and. position_b
       end if
-      select case (e%name)
-      case ('x', 'y', 'z')
-         echoed = .not. is_word(side%kind, 'free force mass')
-         if (e%group == 'end_b') echoed = echoed .and. position_b
-      case ('table_time', 'table_x', 'table_z')
-         echoed = side%table_rows > 0
-      case ('table_y')
-         echoed = any(side%table_y(1:side%table_rows) /= 0)
-      case ('table_file')
-         echoed = len_trim(side%table_file) > 0
-      end select
    end function echoed
+
+   !> `echoed` for a variable of &end_a or &end_b, but for the condition on end b's position.
+   logical function end_echoed(side, name)
+      !> The end.
+      type(end_config), intent(in) :: side
+      !> Variable name.
+      character(*), intent(in) :: name
+      end_echoed = .true.
+      select case (name)
+      case ('x', 'y', 'z')
+         end_echoed = .not. is_word(side%kind, 'free force mass')
+      case ('table_time', 'table_x', 'table_z')
+         end_echoed = side%table_rows > 0
+      case ('table_y')
+         end_echoed = any(side%table_y(1:side%table_rows) /= 0)
+      case ('table_file')
+         end_echoed = len_trim(side%table_file) > 0
+      end select
+   end function end_echoed
 
    !> Identifier starting at position i of a line, lower case.
    function word_at(line, i) result(word)

@@ -69,8 +69,19 @@ module xcable_io_schema
 contains
 
    !> The table: every group and variable, in the order of the file and the echo.
+   !> Built once per process (its appends copy the entries before: 2 million
+   !> instructions a build, and a run asks for it six times).
    function schema_table() result(t)
       type(schema_entry), allocatable :: t(:)
+      type(schema_entry), allocatable, save :: built(:)
+      if (.not. allocated(built)) call build_table(built)
+      t = built
+   end function schema_table
+
+   !> Build the table.
+   subroutine build_table(t)
+      !> The table.
+      type(schema_entry), allocatable, intent(out) :: t(:)
       character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
       integer :: k
       allocate (t(0))
@@ -271,7 +282,7 @@ contains
                'wall-clock time between checkpoints of a rod run (the file &output file + .ckpt, for xcable '// &
                '--resume); a rod run also writes one when it gets SIGTERM, whatever this says', 0.0_dp, 1.0e7_dp, &
                lower_open=.true., zero_means='none', resume_may_differ=.true.)
-   end function schema_table
+   end subroutine build_table
 
    !> Append an entry. A number is bounded when lower and upper are given.
    subroutine add(t, group, name, type, unit, default, doc, lower, upper, count, length, choices, word_list, &

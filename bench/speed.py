@@ -46,7 +46,7 @@ PARTS = [
     ("residual and Jacobian", ["__xcable_model_rod_MOD_rod_problem_evaluate"]),
     ("factorisation", ["__xcable_solver_banded_MOD_band_factor"]),
     ("substitution", ["__xcable_solver_banded_MOD_band_solve"]),
-    ("output (HDF5, gnuplot text, interpolation)", ["emit_snapshots", "__xcable_io_output_MOD_result_write_history",
+    ("output (HDF5, gnuplot text, interpolation)", ["__xcable_rod_run_MOD_emit_snapshots", "__xcable_io_output_MOD_result_write_history",
                                                     "__xcable_io_output_MOD_result_write_summary",
                                                     "__xcable_io_output_MOD_result_create",
                                                     "__xcable_io_output_MOD_result_finish"]),

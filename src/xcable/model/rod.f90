@@ -949,6 +949,28 @@ contains
       real(dp) :: sgn, blk(2, 2)
       off = 2*(lo - 1)
       do c = max(1, lo - 1), min(n - 1, hi)
+         if (c >= max(2, lo + 1) .and. c <= min(n - 2, hi - 2)) then
+            ! A cell whose neighbours' nodes are all in the window: as in add_jacobian.
+            do cp = c - 1, c + 1
+               do side = 0, 1
+                  node = cp + side
+                  sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
+                  blk = block(:, :, cp - c, c)*sgn*scale
+                  col = 2*(node - 1) - off
+                  row = 2*(c - 1) - off - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
+                  row = 2*c - off - col + band0
+                  ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
+                  ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
+                  ab(row - 1, col + 2) = ab(row - 1, col + 2) + blk(1, 2)
+                  ab(row, col + 2) = ab(row, col + 2) + blk(2, 2)
+               end do
+            end do
+            cycle
+         end if
          do cp = max(1, c - 1), min(n - 1, c + 1)
             do side = 0, 1
                node = cp + side

@@ -2,8 +2,8 @@
 !> against: the exact extensible catenary for a general law (no bending), the
 !> axial wave speed (eq. 33) and the simple-wave velocity of a released string.
 module xcable_theory
-   use xcable_kinds, only: dp, i8
-   use xcable_material_law, only: material_law
+   use xcable_kinds, only: dp
+   use xcable_material_law, only: material_law, strain_kept
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: str
    implicit none
@@ -11,22 +11,10 @@ module xcable_theory
    public :: catenary_shape, catenary_summary, horizontal_force
    public :: wave_speed, riemann_speed, gauss_legendre, wall_drop_time, wall_incoming_strain
    public :: catenary_from_force, catenary_between
-   public :: strain_kept, kept_strain_at
 
    !> Gauss-Legendre points per panel.
    integer, parameter :: n_gauss = 8
 
-   !> Values of a law that every inversion by kept_strain_at asks for: its tension
-   !> at the points where material_law%strain_at starts (the bracket -0.1, 0.1 and
-   !> the steps that widen it, the first Newton point) and its stiffness at the first
-   !> Newton point, kept from one inversion to the next (for one law only).
-   type :: strain_kept
-      !> Values kept.
-      integer :: n = 0
-      !> Whether value(i) is a stiffness (else a tension), its strain, and the value.
-      logical :: is_stiffness(24) = .false.
-      real(dp) :: at(24) = 0, value(24) = 0
-   end type strain_kept
 
 contains
 
@@ -161,7 +149,7 @@ contains
       do k = 1, size(s)
          nv = n0 + [0.0_dp, weight*s(k)]
          tension(k) = norm2(nv)
-         eps(k) = kept_strain_at(law, tension(k), kept)
+         eps(k) = law%strain_at(tension(k), kept)
          if (k == 1) then
             r(:, 1) = r0
             cycle
@@ -175,93 +163,12 @@ contains
                nv = n0 + [0.0_dp, weight*sq]
                t = norm2(nv)
                if (t <= 0) cycle
-               e = kept_strain_at(law, t, kept)
+               e = law%strain_at(t, kept)
                r(:, k) = r(:, k) + 0.5_dp*(b - a)*wg(q)*(1 + e)*nv/t
             end do
          end do
       end do
    end subroutine catenary_from_force
-
-   !> law%strain_at(t), the same bits by the same operations (material_law%strain_at:
-   !> a bracket from [-0.1, 0.1] widened by doubling steps, then Newton from its middle
-   !> kept inside it), with the law's values at the starting points taken from kept:
-   !> of the 14 evaluations of tension and stiffness an inversion of fast_180kN's
-   !> static tensions takes, 5 are the same for every tension of the bracket.
-   function kept_strain_at(law, t, kept) result(eps)
-      !> The law (the same for every call with this kept).
-      class(material_law), intent(in) :: law
-      !> Tension, N.
-      real(dp), intent(in) :: t
-      !> Values kept from earlier calls.
-      type(strain_kept), intent(inout) :: kept
-      real(dp) :: eps
-      real(dp) :: lo, hi, step, f, df
-      integer :: it
-      lo = -0.1_dp
-      hi = 0.1_dp
-      step = 0.2_dp
-      do it = 1, 200
-         if (kept_value(law, lo, .false., kept) <= t) exit
-         lo = lo - step
-         step = 2*step
-      end do
-      step = 0.2_dp
-      do it = 1, 200
-         if (kept_value(law, hi, .false., kept) >= t) exit
-         hi = hi + step
-         step = 2*step
-      end do
-      eps = 0.5_dp*(lo + hi)
-      do it = 1, 200
-         if (it == 1) then
-            f = kept_value(law, eps, .false., kept) - t
-         else
-            f = law%tension(eps) - t
-         end if
-         if (abs(f) <= 1.0e-13_dp*max(1.0_dp, abs(t))) exit
-         if (f > 0) then
-            hi = eps
-         else
-            lo = eps
-         end if
-         if (hi - lo <= 4*epsilon(1.0_dp)*max(1.0_dp, abs(eps))) exit
-         if (it == 1) then
-            df = kept_value(law, eps, .true., kept)
-         else
-            df = law%stiffness(eps)
-         end if
-         eps = eps - f/df
-         if (.not. (eps > lo .and. eps < hi)) eps = 0.5_dp*(lo + hi)
-      end do
-   end function kept_strain_at
-
-   !> The law's tension (or stiffness) at strain x, kept (strains compared bit for bit).
-   function kept_value(law, x, stiffness, kept) result(value)
-      class(material_law), intent(in) :: law
-      real(dp), intent(in) :: x
-      logical, intent(in) :: stiffness
-      type(strain_kept), intent(inout) :: kept
-      real(dp) :: value
-      integer :: i
-      do i = 1, kept%n
-         if (kept%is_stiffness(i) .eqv. stiffness) then
-            if (transfer(kept%at(i), 0_i8) == transfer(x, 0_i8)) then
-               value = kept%value(i)
-               return
-            end if
-         end if
-      end do
-      if (stiffness) then
-         value = law%stiffness(x)
-      else
-         value = law%tension(x)
-      end if
-      if (kept%n == size(kept%at)) return
-      kept%n = kept%n + 1
-      kept%is_stiffness(kept%n) = stiffness
-      kept%at(kept%n) = x
-      kept%value(kept%n) = value
-   end function kept_value
 
    !> The extensible catenary hanging between two points: the internal force
    !> n0 at s = 0 such that R(L) = rb when R(0) = ra (a damped Newton

@@ -6,17 +6,30 @@
 !> `tanh_law` (the nylon double-braid fit of Tjavaras et al. 1998) and
 !> `linear_law` (T = EA eps, for closed-form checks).
 module xcable_material_law
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_material_elementary, only: law_tanh, law_atanh, law_tanh_sech2
    implicit none
    private
-   public :: material_law, tanh_law, linear_law, new_law
+   public :: material_law, tanh_law, linear_law, new_law, strain_kept
    public :: paper_tanh_coefficients
 
    !> Coefficients p1..p5 of eq. 17 for the paper's nylon line (N, -, -, N, N).
    real(dp), parameter :: paper_tanh_coefficients(5) = &
       [2.703e5_dp, 10.2_dp, -2.128_dp, 2.627e5_dp, 135.5_dp]
+
+   !> Values of a law that every inversion by strain_at asks for, kept from one
+   !> inversion to the next (for one law only): its tension at the points where
+   !> strain_at starts (the bracket -0.1, 0.1 and the steps that widen it, the first
+   !> Newton point) and its stiffness at the first Newton point. Inverting many
+   !> tensions (the statics' first guess) then takes 9 of 14 evaluations.
+   type :: strain_kept
+      !> Values kept.
+      integer :: n = 0
+      !> Whether value(i) is a stiffness (else a tension), its strain, and the value.
+      logical :: is_stiffness(24) = .false.
+      real(dp) :: at(24) = 0, value(24) = 0
+   end type strain_kept
 
    !> A tension-strain law.
    type, abstract :: material_law
@@ -145,12 +158,16 @@ contains
    end subroutine new_law
 
    !> Strain at which the law gives the tension t (f is strictly increasing).
-   !> Safeguarded Newton inside an expanding bracket.
-   function strain_at(self, t) result(eps)
+   !> Safeguarded Newton inside an expanding bracket. With kept, the values at the
+   !> starting points come from earlier calls (the same bits: the same law, the same
+   !> strains).
+   function strain_at(self, t, kept) result(eps)
       !> The law.
       class(material_law), intent(in) :: self
       !> Tension, N.
       real(dp), intent(in) :: t
+      !> Values kept across calls for this law.
+      type(strain_kept), intent(inout), optional :: kept
       real(dp) :: eps
       real(dp) :: lo, hi, step, f, df
       integer :: it
@@ -158,19 +175,23 @@ contains
       hi = 0.1_dp
       step = 0.2_dp
       do it = 1, 200
-         if (self%tension(lo) <= t) exit
+         if (value_at(lo, .false.) <= t) exit
          lo = lo - step
          step = 2*step
       end do
       step = 0.2_dp
       do it = 1, 200
-         if (self%tension(hi) >= t) exit
+         if (value_at(hi, .false.) >= t) exit
          hi = hi + step
          step = 2*step
       end do
       eps = 0.5_dp*(lo + hi)
       do it = 1, 200
-         f = self%tension(eps) - t
+         if (it == 1) then
+            f = value_at(eps, .false.) - t
+         else
+            f = self%tension(eps) - t
+         end if
          if (abs(f) <= 1.0e-13_dp*max(1.0_dp, abs(t))) exit
          if (f > 0) then
             hi = eps
@@ -178,10 +199,45 @@ contains
             lo = eps
          end if
          if (hi - lo <= 4*epsilon(1.0_dp)*max(1.0_dp, abs(eps))) exit
-         df = self%stiffness(eps)
+         if (it == 1) then
+            df = value_at(eps, .true.)
+         else
+            df = self%stiffness(eps)
+         end if
          eps = eps - f/df
          if (.not. (eps > lo .and. eps < hi)) eps = 0.5_dp*(lo + hi)
       end do
+
+   contains
+
+      !> The law's tension (or stiffness) at strain x, from kept when it holds it
+      !> (strains compared bit for bit), else computed (and kept).
+      real(dp) function value_at(x, stiffness) result(value)
+         real(dp), intent(in) :: x
+         logical, intent(in) :: stiffness
+         integer :: i
+         if (present(kept)) then
+            do i = 1, kept%n
+               if (kept%is_stiffness(i) .eqv. stiffness) then
+                  if (transfer(kept%at(i), 0_i8) == transfer(x, 0_i8)) then
+                     value = kept%value(i)
+                     return
+                  end if
+               end if
+            end do
+         end if
+         if (stiffness) then
+            value = self%stiffness(x)
+         else
+            value = self%tension(x)
+         end if
+         if (.not. present(kept)) return
+         if (kept%n == size(kept%at)) return
+         kept%n = kept%n + 1
+         kept%is_stiffness(kept%n) = stiffness
+         kept%at(kept%n) = x
+         kept%value(kept%n) = value
+      end function value_at
    end function strain_at
 
    !> Tension f(eps) and stiffness f'(eps) of any law (two calls).

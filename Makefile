@@ -14,8 +14,16 @@ all: build
 deps:
 	@tools/install-deps.sh
 
+# fpm builds and installs bin/xcable; tools/link-static.sh then links fpm's objects
+# again with HDF5, LAPACK, BLAS and libgfortran static (a faster start, the same
+# bits; it keeps fpm's program when it cannot). The program's old link is removed
+# first so that fpm links it again and its log holds the link command.
 build: deps
-	$(FPM) install --profile $(PROFILE) --prefix . >/dev/null
+	@rm -f build/gfortran_*/app/xcable
+	@log=$$(mktemp); \
+	if ! $(FPM) install --profile $(PROFILE) --prefix . --verbose >$$log 2>&1; then \
+		grep -v '<INFO>' $$log | tail -40; rm -f $$log; exit 1; fi; \
+	tools/link-static.sh $$log bin/xcable; rm -f $$log
 	@echo "built bin/xcable"
 
 run: build

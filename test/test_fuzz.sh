@@ -553,7 +553,8 @@ from slow_315kN; printf '\x89HDF\r\n\x1a\n\x00\x00\xff\xfe\x01' >>"$f"; check
 begin 'UTF-8 in a comment' 'line 16, column 59' 'byte 195 is not printable'
 from slow_315kN; add '! Zugfestigkeit in kN, Dehnung in % (Kabel aus Polyamid, Länge 60 m)'; check
 begin 'the executable as input' 'line 1, column 1' 'byte 127 is not printable'
-cp "$exe" "$f"; check
+# Its first 1 MB: the statically linked program is larger than the 5 MB a namelist may have.
+head -c 1048576 "$exe" >"$f"; check
 begin 'an HDF5 file as input' 'line 1, column 1' 'byte 137 is not printable'
 printf '\x89HDF\r\n\x1a\n' >"$f"; head -c 2000 /dev/zero >>"$f"; check
 begin 'input is a directory' 'case.nml' 'not a regular text file'

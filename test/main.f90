@@ -22,6 +22,7 @@ program xcable_tests
    use suite_model3d, only: collect_model3d
    use suite_quiescent, only: collect_quiescent
    use suite_atan2, only: collect_atan2
+   use suite_tan, only: collect_tan
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -48,7 +49,8 @@ program xcable_tests
              new_testsuite('rod3d', collect_rod3d), &
              new_testsuite('model3d', collect_model3d), &
              new_testsuite('quiescent', collect_quiescent), &
-             new_testsuite('atan2', collect_atan2)]
+             new_testsuite('atan2', collect_atan2), &
+             new_testsuite('tan', collect_tan)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -7,7 +7,7 @@ last place (docs/speed.md, "An own atan2").
 
 For each case: runs BASE on the case, NEW on the case, BASE on the case with one
 number changed by one unit in the last place (PERTURB below), each in its own
-directory under /tmp; then, per HDF5 dataset, the largest difference relative to
+directory under $MOVES_DIR (default /tmp/h43_moves); then, per HDF5 dataset, the largest difference relative to
 the dataset's largest value (datasets whose values are all below 1e-9 left out),
 the worst dataset of each comparison, and the energy ledger's drift (/summary
 attribute energy_drift) of the three runs.
@@ -37,7 +37,7 @@ PERTURB = {
 
 
 def run(binary, case, tag, perturb=False, extra=None):
-    work = f'/tmp/h43_moves/{tag}/{case}'
+    work = os.path.join(os.environ.get('MOVES_DIR', '/tmp/h43_moves'), tag, case)
     shutil.rmtree(work, ignore_errors=True)
     os.makedirs(work + '/results')
     shutil.copytree(os.path.join(ROOT, 'input'), work + '/input')

@@ -9,6 +9,7 @@ module xcable_material_law
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_material_elementary, only: law_tanh, law_atanh, law_tanh_sech2
+   use, intrinsic :: iso_c_binding, only: c_double
    implicit none
    private
    public :: material_law, tanh_law, linear_law, new_law, strain_kept
@@ -61,6 +62,18 @@ module xcable_material_law
       procedure :: strain_energy_change_tension
    end type material_law
 
+   interface
+      !> expm1 and log1p of the C library (C99), not in Fortran.
+      pure real(c_double) function c_expm1(x) bind(c, name='expm1')
+         import :: c_double
+         real(c_double), value :: x
+      end function c_expm1
+      pure real(c_double) function c_log1p(x) bind(c, name='log1p')
+         import :: c_double
+         real(c_double), value :: x
+      end function c_log1p
+   end interface
+
    abstract interface
       !> A scalar function of the strain.
       elemental function law_function(self, eps) result(val)
@@ -84,9 +97,10 @@ module xcable_material_law
    type, extends(material_law) :: tanh_law
       !> Coefficients p1..p5.
       real(dp) :: p(5) = paper_tanh_coefficients
-      !> p3 and log cosh p3, the strain energy's constant term, as new_law sets them; used
-      !> while p(3) is lc3(1). It saves an exp and a log per strain energy (3 % of fast_180kN).
-      real(dp) :: lc3(2) = [huge(1.0_dp), 0.0_dp]
+      !> p3, log cosh p3 (the strain energy's constant term), 1 / (1 + exp(-2 p3)) and
+      !> 1 / (1 + exp(2 p3)) (tanh_energy_small's), as new_law sets them; used while p(3) is
+      !> lc3(1). It saves an exp and a log per strain energy (3 % of fast_180kN).
+      real(dp) :: lc3(4) = [huge(1.0_dp), 0.0_dp, 0.0_dp, 0.0_dp]
    contains
       procedure :: tension => tanh_tension
       procedure :: stiffness => tanh_stiffness
@@ -149,7 +163,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       select case (name)
       case ('tanh')
-         allocate (law, source=tanh_law(p=p, strain_max=strain_max, lc3=[p(3), log_cosh(p(3))]))
+         allocate (law, source=tanh_law(p=p, strain_max=strain_max, lc3=[p(3), log_cosh(p(3)), &
+                                                                   1/(1 + exp(-2*p(3))), 1/(1 + exp(2*p(3)))]))
       case ('linear')
          allocate (law, source=linear_law(ea=ea, strain_max=strain_max))
       case default
@@ -369,15 +384,20 @@ contains
       val = 2*p(1)/p(2)*law_atanh(tm*td) + (p(4) + p(5)*mid)*h
    end subroutine tanh_change
 
-   !> W(eps); for p2 |eps| < 1 the change from W(0) = 0 (tanh_change), free of the
-   !> cancellation between the log cosh and p4 eps terms (the energies of a slack line
-   !> to the relative round-off instead of 1e-12 J/m).
+   !> W(eps); for p2 |eps| < 1 tanh_energy_small, free of the cancellation between the
+   !> log cosh and p4 eps terms (the energies of a slack line to the relative round-off
+   !> instead of 1e-12 J/m).
    elemental function tanh_strain_energy(self, eps) result(val)
       class(tanh_law), intent(in) :: self
       real(dp), intent(in) :: eps
-      real(dp) :: val, c3, tm, td
+      real(dp) :: val, c3, c(2)
       if (abs(self%p(2)*eps) < 1) then
-         call tanh_change(self%p, 0.0_dp, eps, val, tm, td)
+         if (self%lc3(1) == self%p(3)) then
+            c = self%lc3(3:4)
+         else
+            c = [1/(1 + exp(-2*self%p(3))), 1/(1 + exp(2*self%p(3)))]
+         end if
+         val = tanh_energy_small(self%p, eps, c)
          return
       end if
       if (self%lc3(1) == self%p(3)) then
@@ -388,6 +408,29 @@ contains
       val = self%p(1)/self%p(2)*(log_cosh(self%p(2)*eps + self%p(3)) - c3) &
             + self%p(4)*eps + 0.5_dp*self%p(5)*eps**2
    end function tanh_strain_energy
+
+   !> W(eps) of the tanh law for p2 |eps| < 1, with d = p2 eps and x = p3 + d:
+   !>     log cosh x - log cosh p3 = -d + log1p(c1 expm1(2 d)),  c1 = 1 / (1 + exp(-2 p3))  (x <= 0)
+   !>                              = +d + log1p(c2 expm1(-2 d)), c2 = 1 / (1 + exp(2 p3))   (x > 0)
+   !> (exp(2 x) or exp(-2 x) at most 1 inside), so W = (p4 -+ p1) eps + p5 eps^2 / 2 +
+   !> (p1 / p2) log1p(...): one expm1 and one log1p from the library instead of tanh_change's
+   !> two tanh and an atanh, and a milder cancellation at small strains (p4 - p1 against
+   !> W's slope f(0), about 180 for the paper's law, against p4 and p1 tanh p3 there, 6 000).
+   pure function tanh_energy_small(p, eps, c) result(val)
+      !> Coefficients p1..p5.
+      real(dp), intent(in) :: p(5)
+      !> Strain (p2 |eps| < 1).
+      real(dp), intent(in) :: eps
+      !> c1 and c2.
+      real(dp), intent(in) :: c(2)
+      real(dp) :: val, d
+      d = p(2)*eps
+      if (d + p(3) <= 0) then
+         val = (p(4) - p(1))*eps + p(1)/p(2)*c_log1p(c(1)*c_expm1(2*d)) + 0.5_dp*p(5)*eps**2
+      else
+         val = (p(4) + p(1))*eps + p(1)/p(2)*c_log1p(c(2)*c_expm1(-2*d)) + 0.5_dp*p(5)*eps**2
+      end if
+   end function tanh_energy_small
 
    !> log(cosh(x)) without overflow.
    elemental function log_cosh(x) result(val)

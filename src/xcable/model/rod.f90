@@ -47,6 +47,7 @@ module xcable_model_rod
    use xcable_strings, only: str
    use xcable_material_law, only: material_law
    use xcable_numerics_atan2, only: fast_atan2
+   use xcable_numerics_tan, only: fast_tan
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
@@ -1178,7 +1179,7 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: th
       bend_energy = 0
-      if (k >= 2 .and. k <= self%n - 1) bend_energy = bend_energy_of(self, k, tan(0.5_dp*th))
+      if (k >= 2 .and. k <= self%n - 1) bend_energy = bend_energy_of(self, k, fast_tan(0.5_dp*th))
    end function bend_energy
 
    !> bend_energy from t = tan(th / 2).
@@ -1194,7 +1195,7 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_curvature = 2*tan(0.5_dp*th)/self%dual(k)
+      bend_curvature = 2*fast_tan(0.5_dp*th)/self%dual(k)
    end function bend_curvature
 
    !> Moment dB/dth of node k, N m.
@@ -1202,7 +1203,7 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_moment = bend_moment_of(self, k, tan(0.5_dp*th))
+      bend_moment = bend_moment_of(self, k, fast_tan(0.5_dp*th))
    end function bend_moment
 
    !> bend_moment from t = tan(th / 2).
@@ -1218,7 +1219,7 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_stiffness = bend_stiffness_of(self, k, tan(0.5_dp*th))
+      bend_stiffness = bend_stiffness_of(self, k, fast_tan(0.5_dp*th))
    end function bend_stiffness
 
    !> bend_stiffness from t = tan(th / 2).
@@ -1245,7 +1246,7 @@ contains
       h = th1 - th0
       if (abs(h) < small_rotation) then
          mid = 0.5_dp*(th0 + th1)
-         t = tan(0.5_dp*mid)
+         t = fast_tan(0.5_dp*mid)
          ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
          third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
          m = bend_moment_of(self, k, t) + third*h*h/24
@@ -1254,7 +1255,7 @@ contains
          b1_ok = .false.
       else
          ! One tan for B(th1) and its moment (the compiler called tan twice here).
-         t = tan(0.5_dp*th1)
+         t = fast_tan(0.5_dp*th1)
          b1 = bend_energy_of(self, k, t)
          b1_ok = .true.
          m = (b1 - b0)/h

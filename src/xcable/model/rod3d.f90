@@ -70,6 +70,7 @@ module xcable_model_rod3d
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_material_law, only: material_law
+   use xcable_numerics_tan, only: fast_tan
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
@@ -349,7 +350,7 @@ contains
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_energy = 2*self%ei*tan(0.5_dp*th)**2/self%dual_length(k)
+      bend_energy = 2*self%ei*fast_tan(0.5_dp*th)**2/self%dual_length(k)
    end function bend_energy
 
    !> dB/dth, N m.
@@ -358,7 +359,7 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: th
       real(dp) :: t
-      t = tan(0.5_dp*th)
+      t = fast_tan(0.5_dp*th)
       bend_moment = 2*self%ei*t*(1 + t*t)/self%dual_length(k)
    end function bend_moment
 
@@ -368,7 +369,7 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: th
       real(dp) :: t
-      t = tan(0.5_dp*th)
+      t = fast_tan(0.5_dp*th)
       bend_stiffness = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual_length(k)
    end function bend_stiffness
 
@@ -382,7 +383,7 @@ contains
       h = th1 - th0
       if (abs(h) < small_rotation) then
          mid = 0.5_dp*(th0 + th1)
-         t = tan(0.5_dp*mid)
+         t = fast_tan(0.5_dp*mid)
          third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual_length(k)
          m = bend_moment(self, k, mid) + third*h*h/24
          dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12

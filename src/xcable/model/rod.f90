@@ -632,8 +632,17 @@ contains
       real(dp), intent(in) :: dt, theta
       !> New velocities (2, n), m/s.
       real(dp), intent(out) :: v1(:, :)
-      v1 = ((r1 - self%r0)/dt - (1 - theta)*self%v0)/theta
+      call new_velocity_of(2*self%n, r1, self%r0, self%v0, dt, theta, v1)
    end subroutine rod_new_velocity
+
+   !> rod_new_velocity on explicit-shape arrays (the same expression; the array expression on
+   !> the class components took 2.7 times the instructions, callgrind on fast_180kN).
+   pure subroutine new_velocity_of(m, r1, r0, v0, dt, theta, v1)
+      integer, intent(in) :: m
+      real(dp), intent(in) :: r1(m), r0(m), v0(m), dt, theta
+      real(dp), intent(out) :: v1(m)
+      v1 = ((r1 - r0)/dt - (1 - theta)*v0)/theta
+   end subroutine new_velocity_of
 
    !> Residual and Jacobian of the step from t0 to t0 + dt with the old level
    !> stored by prepare_step: for a loaded node k,

@@ -37,7 +37,8 @@ contains
                new_unittest('singular', test_singular), &
                new_unittest('own_kernels_vs_lapack_random', test_kernels_random), &
                new_unittest('own_kernels_vs_lapack_rod_runs', test_kernels_rod), &
-               new_unittest('own_kernels_vs_lapack_box', test_kernels_box)]
+               new_unittest('own_kernels_vs_lapack_box', test_kernels_box), &
+               new_unittest('clear_after_factor', test_clear_after_factor)]
    end subroutine collect_banded
 
    !> A reproducible banded matrix (dense copy) with kl, ku diagonals.
@@ -55,6 +56,45 @@ contains
          end do
       end do
    end subroutine make_matrix
+
+   !> clear after a factorisation: every entry of the matrix (rows kl + 1.. of ab) is zero
+   !> again, and the matrix filled in again factorises to the bits of a fresh one, although
+   !> clear leaves the fill-in rows 1 .. kl as the factorisation left them (band_clear);
+   !> for the rod's widths (kl = ku = 5, a path of its own) and two others.
+   subroutine test_clear_after_factor(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: n = 40
+      integer, parameter :: widths(2, 3) = reshape([5, 5, 3, 2, 10, 9], [2, 3])
+      real(dp) :: dense(n, n)
+      type(band_matrix) :: used, fresh
+      integer :: w, kl, ku, i, j
+      do w = 1, size(widths, 2)
+         kl = widths(1, w)
+         ku = widths(2, w)
+         call make_matrix(n, kl, ku, dense, used)
+         call used%factor(error)
+         if (allocated(error)) return
+         call check(error, any(used%ab(1:kl, :) /= 0), 'the test needs fill-in, kl = '//str(kl))
+         if (allocated(error)) return
+         call used%clear()
+         call check(error, all(used%ab(kl + 1:, :) == 0) .and. .not. used%factorised, &
+                    'clear left entries of the matrix, kl = '//str(kl)//', ku = '//str(ku))
+         if (allocated(error)) return
+         do j = 1, n
+            do i = max(1, j - ku), min(n, j + kl)
+               used%ab(used%row(i, j), j) = dense(i, j)
+            end do
+         end do
+         call used%factor(error)
+         if (allocated(error)) return
+         call make_matrix(n, kl, ku, dense, fresh)
+         call fresh%factor(error)
+         if (allocated(error)) return
+         call check(error, all(used%ab == fresh%ab) .and. all(used%ipiv == fresh%ipiv), &
+                    'factors after clear differ from a fresh matrix''s, kl = '//str(kl)//', ku = '//str(ku))
+         if (allocated(error)) return
+      end do
+   end subroutine test_clear_after_factor
 
    !> Dense Gaussian elimination with partial pivoting (reference).
    subroutine dense_solve(a, b)

@@ -38,6 +38,11 @@ module xcable_rod_statics
 
    !> Scaled update at which the static solve stops.
    real(dp), parameter :: static_tolerance = 1.0e-10_dp
+   !> Gauss-Legendre panels per cell of the catenary first guess (catenary_from_force; its
+   !> exact reference takes 8): one panel of 8 points is exact to round-off on a cell, and
+   !> the statics' Newton iteration takes the guess to the same state to round-off
+   !> (docs/speed.md, "The statics' first guess").
+   integer, parameter :: guess_panels = 1
 
    !> The static equilibrium with every loaded node tied by a spring to an
    !> anchor point (the last accepted state of the relaxation): residual
@@ -453,19 +458,20 @@ contains
                call prefix_error(err, scene%source//': statics: ')
                return
             end if
-            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten)
+            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten, guess_panels)
          else if (held_a) then
             ! The internal force at s = L is the load of end b (its force and the point mass's weight).
             load = problem%piece%end_b%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_b%point_mass()]
             n0 = load - [0.0_dp, scene%weight*scene%length]
             pa = problem%piece%end_a%position(0.0_dp)
-            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten)
+            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten, guess_panels)
          else if (held_b) then
             ! The internal force at s = 0 balances the load of end a.
             load = problem%piece%end_a%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_a%point_mass()]
             n0 = -load
             pb = problem%piece%end_b%position(0.0_dp)
-            call catenary_from_force(scene%law, scene%weight, n0, [0.0_dp, 0.0_dp], ss, rr, eps, ten)
+            call catenary_from_force(scene%law, scene%weight, n0, [0.0_dp, 0.0_dp], ss, rr, eps, ten, &
+                                     guess_panels)
             state%r(1, :) = rr(1, :) - rr(1, n) + pb(1)
             state%r(2, :) = rr(2, :) - rr(2, n) + pb(2)
          else

@@ -126,7 +126,7 @@ contains
    !> the part before it), T = |N|, eps = f^-1(T) and dR/ds = (1 + eps) N / T,
    !> the positions at the points s (increasing, s(1) = 0) from R(0) = r0, by
    !> composite Gauss-Legendre quadrature. Strain and tension at the points too.
-   subroutine catenary_from_force(law, weight, n0, r0, s, r, eps, tension)
+   subroutine catenary_from_force(law, weight, n0, r0, s, r, eps, tension, panels)
       !> Tension-strain law.
       class(material_law), intent(in) :: law
       !> Weight per unstretched length, N/m.
@@ -141,10 +141,14 @@ contains
       real(dp), intent(out) :: r(:, :)
       !> Strain and tension (N) at the points.
       real(dp), intent(out) :: eps(:), tension(:)
+      !> Gauss-Legendre panels between two points: 8 when absent (the exact reference of the
+      !> tests and of catenary_between); the rod statics' first guess takes 1 (rod_statics.f90).
+      integer, intent(in), optional :: panels
       real(dp) :: xg(n_gauss), wg(n_gauss), a, b, sq, nv(2), t, e
-      integer :: k, p, q
-      integer, parameter :: panels = 8
+      integer :: k, p, q, np
       type(strain_kept) :: kept
+      np = 8
+      if (present(panels)) np = panels
       call gauss_legendre(n_gauss, xg, wg)
       do k = 1, size(s)
          nv = n0 + [0.0_dp, weight*s(k)]
@@ -155,9 +159,9 @@ contains
             cycle
          end if
          r(:, k) = r(:, k - 1)
-         do p = 1, panels
-            a = s(k - 1) + (s(k) - s(k - 1))*(p - 1)/panels
-            b = s(k - 1) + (s(k) - s(k - 1))*p/panels
+         do p = 1, np
+            a = s(k - 1) + (s(k) - s(k - 1))*(p - 1)/np
+            b = s(k - 1) + (s(k) - s(k - 1))*p/np
             do q = 1, n_gauss
                sq = 0.5_dp*(a + b) + 0.5_dp*(b - a)*xg(q)
                nv = n0 + [0.0_dp, weight*sq]

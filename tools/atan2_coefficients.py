@@ -10,7 +10,8 @@ parameter declarations that the module holds, and the fit errors as comments).
    degree n minimises max |(t + t s P(s) - atan t) / atan t| over t in [0, T],
    that is max |w(s) (P(s) - g(s))| with g(s) = (atan(sqrt s)/sqrt s - 1)/s and
    w(s) = s / (atan(sqrt s)/sqrt s).  The coefficients are then rounded to
-   double and the error of the rounded polynomial is measured again (printed).
+   double and the error of the rounded polynomial is measured again (printed). The
+   exchange itself is tools/remez.py's, shared with tools/tan_coefficients.py.
    - the direct range, t = |y|/|x| in [0, 1/16]   (T = 1/16),
    - the reduced argument u = (t - c)/(1 + t c), |u| <= 2^-6 (T = 2^-6).
 2. The table: for each interval of t = 2^e (1 + m/16 .. 1 + (m+1)/16),
@@ -20,6 +21,8 @@ parameter declarations that the module holds, and the fit errors as comments).
    (hi the double nearest the angle, lo the double nearest the rest).
 """
 import mpmath as mp
+
+from remez import fortran, remez, rounded_error
 
 mp.mp.dps = 60
 
@@ -38,68 +41,10 @@ def weight(s):
     return s / h(s)
 
 
-def remez(n, smax, grid=6000, iterations=30):
-    """Coefficients p_0..p_n of P minimising max |w (P - g)| on (0, smax]."""
-    m = n + 2
-    ref = [smax * (1 - mp.cos(mp.pi * (k + mp.mpf(1) / 2) / m)) / 2 for k in range(m)]
-    # a grid dense near both ends (Chebyshev-like), without s = 0 where w = 0
-    xs = [smax * (1 - mp.cos(mp.pi * (k + mp.mpf(1) / 2) / grid)) / 2 for k in range(grid)]
-    gx = [g(x) for x in xs]
-    wx = [weight(x) for x in xs]
-    best = None
-    for _ in range(iterations):
-        a = mp.matrix(m, m)
-        b = mp.matrix(m, 1)
-        for k, x in enumerate(ref):
-            for i in range(n + 1):
-                a[k, i] = x**i
-            a[k, n + 1] = (-1) ** k / weight(x)
-            b[k] = g(x)
-        sol = mp.lu_solve(a, b)
-        p = [sol[i] for i in range(n + 1)]
-        lev = abs(sol[n + 1])
-        err = [wx[k] * (mp.polyval(p[::-1], xs[k]) - gx[k]) for k in range(grid)]
-        # alternating extrema: split the grid into runs of one sign, keep each run's largest
-        runs = []
-        start = 0
-        for k in range(1, grid + 1):
-            if k == grid or mp.sign(err[k]) != mp.sign(err[start]):
-                kk = max(range(start, k), key=lambda j: abs(err[j]))
-                runs.append(kk)
-                start = k
-        while len(runs) > m:  # drop the smallest end extremum
-            if abs(err[runs[0]]) < abs(err[runs[-1]]):
-                runs.pop(0)
-            else:
-                runs.pop()
-        emax = max(abs(e) for e in err)
-        best = (p, emax, lev)
-        if len(runs) < m:
-            break
-        ref = [xs[k] for k in runs]
-        if emax - lev < mp.mpf('1e-6') * emax:
-            break
-    return best
-
-
-def rounded_error(p, smax, grid=20000):
-    """Largest relative error of t + t s P(s) against atan t, P with double coefficients."""
-    pd = [mp.mpf(float(c)) for c in p]
-    worst = mp.mpf(0)
-    for k in range(1, grid + 1):
-        s = smax * mp.mpf(k) / grid
-        worst = max(worst, abs(weight(s) * (mp.polyval(pd[::-1], s) - g(s))))
-    return worst, pd
-
-
-def fortran(x):
-    return repr(float(x)) + '_dp'
-
-
 def fit(name, tmax, degree):
     smax = mp.mpf(tmax) ** 2
-    p, emax, lev = remez(degree, smax)
-    worst, pd = rounded_error(p, smax)
+    p, emax, lev = remez(degree, 0, smax, g, weight, iterations=30)
+    worst, pd = rounded_error(p, 0, smax, g, weight)
     print(f'   ! {name}: t in [0, {tmax}], P of degree {degree}: relative error of the fit '
           f'{mp.nstr(emax, 3)},')
     print(f'   ! with the coefficients rounded to double {mp.nstr(worst, 3)} '

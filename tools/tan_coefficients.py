@@ -5,9 +5,10 @@ Run:  python3 tools/tan_coefficients.py 4 9 > /tmp/tan_constants.f90
 (the degrees of the three polynomials; mpmath at 60 digits; prints the Fortran
 parameter declarations that the module holds, with the fit errors as comments).
 
-With s = x^2 (or r^2) and weighted linear Remez exchanges on a fine grid, as in
-tools/atan2_coefficients.py (each fit minimises the largest error relative to
-the function itself, not to the polynomial):
+With s = x^2 (or r^2) and the weighted linear Remez exchange of
+tools/remez.py on a fine grid, as for tools/atan2_coefficients.py (each fit
+minimises the largest error relative to the function itself, not to the
+polynomial):
 
 1. small: tan x = x + x s P(s) for |x| <= 1/16; P fits
    g(s) = (tan(sqrt s)/sqrt s - 1)/s.
@@ -27,66 +28,9 @@ import sys
 
 import mpmath as mp
 
+from remez import fortran, remez, rounded_error
+
 mp.mp.dps = 60
-
-
-def remez(n, smin, smax, target, weight, grid=6000, iterations=40):
-    """Coefficients p_0..p_n of P minimising max |weight (P - target)| on [smin, smax]."""
-    m = n + 2
-
-    def node(k, count):
-        return smin + (smax - smin) * (1 - mp.cos(mp.pi * (k + mp.mpf(1) / 2) / count)) / 2
-
-    ref = [node(k, m) for k in range(m)]
-    xs = [node(k, grid) for k in range(grid)]
-    tx = [target(x) for x in xs]
-    wx = [weight(x) for x in xs]
-    best = None
-    for _ in range(iterations):
-        a = mp.matrix(m, m)
-        b = mp.matrix(m, 1)
-        for k, x in enumerate(ref):
-            for i in range(n + 1):
-                a[k, i] = x**i
-            a[k, n + 1] = (-1) ** k / weight(x)
-            b[k] = target(x)
-        sol = mp.lu_solve(a, b)
-        p = [sol[i] for i in range(n + 1)]
-        lev = abs(sol[n + 1])
-        err = [wx[k] * (mp.polyval(p[::-1], xs[k]) - tx[k]) for k in range(grid)]
-        runs = []
-        start = 0
-        for k in range(1, grid + 1):
-            if k == grid or mp.sign(err[k]) != mp.sign(err[start]):
-                runs.append(max(range(start, k), key=lambda j: abs(err[j])))
-                start = k
-        while len(runs) > m:
-            if abs(err[runs[0]]) < abs(err[runs[-1]]):
-                runs.pop(0)
-            else:
-                runs.pop()
-        emax = max(abs(e) for e in err)
-        best = (p, emax)
-        if len(runs) < m:
-            break
-        ref = [xs[k] for k in runs]
-        if emax - lev < mp.mpf('1e-6') * emax:
-            break
-    return best
-
-
-def rounded_error(p, smin, smax, target, weight, grid=20000):
-    """Largest weighted error with the coefficients rounded to double."""
-    pd = [mp.mpf(float(c)) for c in p]
-    worst = mp.mpf(0)
-    for k in range(1, grid + 1):
-        s = smin + (smax - smin) * mp.mpf(k) / grid
-        worst = max(worst, abs(weight(s) * (mp.polyval(pd[::-1], s) - target(s))))
-    return worst, pd
-
-
-def fortran(x):
-    return repr(float(x)) + '_dp'
 
 
 def h(s):
@@ -106,7 +50,7 @@ def cot_rest(s):
 
 
 def fit(name, what, smin, smax, degree, target, weight):
-    p, emax = remez(degree, smin, smax, target, weight)
+    p, emax, _ = remez(degree, smin, smax, target, weight)
     worst, pd = rounded_error(p, smin, smax, target, weight)
     print(f'   ! {name}: {what}, P of degree {degree}: relative error of the fit {mp.nstr(emax, 3)},')
     print(f'   ! with the coefficients rounded to double {mp.nstr(worst, 3)} '

@@ -1,7 +1,7 @@
 !> The result file: write errors are reported, not swallowed, and the status
 !> attribute reads 'complete' only after finish('complete').
 module suite_output
-   use xcable_kinds, only: dp
+   use xcable_kinds, only: dp, i8
    use xcable_strings, only: str
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_run_records, only: run_history, run_summary
@@ -25,7 +25,8 @@ contains
                new_unittest('echo_above_64_kb', test_large_echo), &
                new_unittest('version_matches_fpm_toml', test_version), &
                new_unittest('reopen_to_resume', test_reopen), &
-               new_unittest('number_text_as_formatted_write', test_number_text)]
+               new_unittest('number_text_as_formatted_write', test_number_text), &
+               new_unittest('number_text_fast_path_boundaries', test_number_text_boundaries)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -413,4 +414,74 @@ contains
          if (allocated(error)) return
       end do
    end subroutine test_number_text
+
+   !> The double fast path of put_es (number_text.f90, fast_digits) against
+   !> the formatted write where its error bound decides: for each
+   !> descriptor, 1 000 000 doubles of random bits in 1e-60 .. 1e60 (every
+   !> branch of the scaling, one and two powers of ten, and beyond it),
+   !> and 60 000 each of values within 6 ulps of a half-integer of the last
+   !> digit (n + 1/2) 10^(E-d), of 10^E and of the round-up point
+   !> (10^(d+1) - 1/2) 10^(E-d). The descriptors are the gnuplot text's
+   !> (es16.8, es17.9), the fast path's widest (es20.12) and the first one
+   !> beyond it (es21.13). Setting the bound to zero (or to half of it) in
+   !> fast_digits makes this fail.
+   subroutine test_number_text_boundaries(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: w(5) = [16, 17, 20, 21, 14], d(5) = [8, 9, 12, 13, 6]
+      integer, parameter :: n_random = 1000000, n_near = 60000
+      real(dp) :: r(3), x, centre
+      character(len=40) :: fmt
+      integer :: f, i, j, e
+      integer(i8) :: bits
+      integer, allocatable :: seed(:)
+      integer :: seed_size
+      call random_seed(size=seed_size)
+      seed = [(7919*i + 13, i=1, seed_size)]
+      call random_seed(put=seed)
+      do f = 1, size(w)
+         write (fmt, '(a,i0,a,i0,a)') '(es', w(f), '.', d(f), ')'
+         do i = 1, n_random
+            call random_number(r)
+            ! Random exponent field for 2^-200 .. 2^200, random 52-bit fraction, random sign.
+            bits = shiftl(int(823 + r(1)*400, i8), 52) + int(r(2)*4503599627370496.0_dp, i8)
+            x = transfer(bits, 1.0_dp)
+            if (r(3) < 0.5_dp) x = -x
+            if (.not. same_text(x)) return
+         end do
+         do i = 1, n_near
+            call random_number(r)
+            e = int(r(1)*120) - 60
+            select case (mod(i, 3))
+            case (0)
+               centre = (aint(10.0_dp**d(f)*(1 + 9*r(2))) + 0.5_dp)*10.0_dp**(e - d(f))
+            case (1)
+               centre = 10.0_dp**e
+            case default
+               centre = (10.0_dp**(d(f) + 1) - 0.5_dp)*10.0_dp**(e - d(f))
+            end select
+            x = centre
+            do j = 1, 6
+               x = nearest(x, -1.0_dp)
+            end do
+            do j = -6, 6
+               if (.not. same_text(x)) return
+               x = nearest(x, 1.0_dp)
+            end do
+         end do
+      end do
+   contains
+      logical function same_text(x)
+         real(dp), intent(in) :: x
+         character(len=40) :: expected, got
+         integer :: pos
+         expected = ''
+         got = ''
+         write (expected(1:w(f)), fmt) x
+         pos = 1
+         call put_es(got, pos, x, w(f), d(f))
+         same_text = got == expected .and. pos == w(f) + 1
+         if (.not. same_text) call check(error, .false., 'put_es('//trim(fmt)//') of '//str(x)//': "'// &
+                                         got(1:w(f))//'", formatted write "'//expected(1:w(f))//'"')
+      end function same_text
+   end subroutine test_number_text_boundaries
 end module suite_output

@@ -534,8 +534,10 @@ contains
       class(rod_piece), intent(inout) :: self
       !> Positions and velocities at the old level (2, n).
       real(dp), intent(in) :: r0(:, :), v0(:, :)
-      self%r0 = r0
-      self%v0 = v0
+      ! Copied as 2 n values: the array assignment from an assumed shape called memcpy for
+      ! each node (286 526 calls on fast_180kN, 0.8 % of its instructions with this routine's).
+      call copy_values(2*self%n, r0, self%r0)
+      call copy_values(2*self%n, v0, self%v0)
       call self%mass_times(v0, self%mv0)
       if (is_memo(self, r0)) then
          call copy_geometry(self%n, self%memo_e, self%memo_l, self%memo_th, self%e0, self%l0, self%th0)

@@ -155,7 +155,7 @@ contains
       self%factorised = .false.
    end subroutine band_set_order
 
-   !> Set every entry to zero.
+   !> Set every entry of the matrix to zero (rows kl + 1 .. ldab of ab).
    !> The fill-in rows 1 .. kl of ab are left as they are: the factorisations (band_lu as
    !> dgbtf2, and dgbtrf) set them before they use them. With kl = ku = 5 (the rod) the rows
    !> kl + 1 .. ldab of a column are cleared by stores of a known length: ab = 0 on the

@@ -25,7 +25,7 @@ module suite_banded
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
-   public :: collect_banded
+   public :: collect_banded, compare_kernels
 
 contains
 
@@ -254,12 +254,13 @@ contains
       end do
    end subroutine compare_kernels
 
-   !> Random band matrices, widths 0-12, orders 1-300, with and without
+   !> Random band matrices, widths 0-12 (5, 5 and 8, 8 among them, the widths with
+   !> their own compiled kernels), orders 1-300, with and without
    !> dominant diagonals (no or frequent interchanges), exact zeros and a
    !> zero pivot.
    subroutine test_kernels_random(error)
       type(error_type), allocatable, intent(out) :: error
-      integer, parameter :: widths(2, 7) = reshape([5, 5, 7, 10, 0, 0, 1, 3, 4, 0, 12, 9, 2, 2], [2, 7])
+      integer, parameter :: widths(2, 8) = reshape([5, 5, 8, 8, 7, 10, 0, 0, 1, 3, 4, 0, 12, 9, 2, 2], [2, 8])
       integer, parameter :: orders(6) = [1, 3, 11, 17, 120, 300]
       type(band_matrix) :: a
       real(dp) :: r, worst

@@ -27,6 +27,7 @@ module suite_rod3d
    use xcable_io_config, only: end_config
    use xcable_ends_factory, only: new_end, end_kinds
    use xcable_solver_banded, only: band_matrix
+   use suite_banded, only: compare_kernels
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
@@ -78,7 +79,8 @@ contains
                new_unittest('ends_with_y_torque', test_ends_y), &
                new_unittest('statics_and_steps_every_end_kind', test_statics_kinds), &
                new_unittest('fold_check_3d', test_fold_check), &
-               new_unittest('ledger_reuses_final_residual', test_ledger_reuse)]
+               new_unittest('ledger_reuses_final_residual', test_ledger_reuse), &
+               new_unittest('own_band_kernels_vs_lapack', test_kernels)]
    end subroutine collect_rod3d
 
    ! ---- the test end ----
@@ -248,6 +250,37 @@ contains
       call check_jacobian(p, x, rod3d_kl, rod3d_ku, spread(1.0e-6_dp, 1, 4*n), 1.0e-8_dp, worst, error)
       write (output_unit, '(4x,a,es9.2)') '3-D step ('//label//'): largest deviation / row scale', worst
    end subroutine step_jacobian
+
+   !> The band kernels compiled for the 3-D rod's widths (kl = ku = 8) against LAPACK's
+   !> dgbtrf and dgbtrs on a step Jacobian of a curved, squeezed 30-node piece: the
+   !> same pivots and factors bit for bit, and the same solutions (suite_banded).
+   subroutine test_kernels(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_problem) :: p
+      type(band_matrix) :: jac
+      real(dp), allocatable :: x(:), r0(:, :), v0(:, :), res(:)
+      real(dp) :: worst
+      integer :: i, interchanges
+      integer, parameter :: n = 30
+      call make_piece3(p, n, 20.0_dp, end3(force0=[1000.0_dp, 300.0_dp, 200.0_dp], torque0=5.0_dp, couple0=3.0_dp), error)
+      if (allocated(error)) return
+      call curved_state(n, 20.0_dp, x, r0, v0)
+      call p%piece%prepare_step(r0, v0)
+      p%dt = 0.002_dp
+      p%t0 = 0.01_dp
+      p%theta = 0.5_dp
+      call jac%init(size(x), rod3d_kl, rod3d_ku)
+      allocate (res(size(x)))
+      call p%evaluate(x, res, jac, .true.)
+      worst = 0
+      call compare_kernels(jac, '3-D rod, 30 nodes', 1.0e-15_dp, worst, error)
+      if (allocated(error)) return
+      call jac%factor(error)
+      if (allocated(error)) return
+      interchanges = count(jac%ipiv /= [(i, i=1, size(x))])
+      write (output_unit, '(4x,a,es9.2,a,i0,a)') '3-D rod: largest |x_own - x_dgbtrs| / max |x|', worst, ' (', &
+         interchanges, ' row interchanges)'
+   end subroutine test_kernels
 
    subroutine test_jacobian_step(error)
       type(error_type), allocatable, intent(out) :: error

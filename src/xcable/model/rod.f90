@@ -56,6 +56,8 @@ module xcable_model_rod
    private
    public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
    public :: bend_energy, bend_moment, bend_curvature, cell_rotations
+   !> Public for its test (suite_quiescent, jacobian_gathered_as_cell_by_cell).
+   public :: add_jacobian
 
    !> The unknowns of a node, in their order in Newton's vector (node after node).
    character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']
@@ -116,6 +118,10 @@ module xcable_model_rod
       real(dp), allocatable :: e1(:, :), l1(:), th1(:), force(:, :), force_node(:, :)
       !> Cell quantities of the Jacobian: 2x2 blocks dN_c/de_c' for c' = c-1, c, c+1.
       real(dp), allocatable :: block(:, :, :, :)
+      !> Work of add_jacobian: the blocks over ds_c' and times the row scale (gather_rows).
+      real(dp), allocatable :: block_scaled(:, :, :, :)
+      !> Work of add_jacobian: the mass terms times the rate and the row scale (gather_rows).
+      real(dp), allocatable :: mass_scaled(:, :, :, :)
       !> Per node in the last evaluation: the moment (statics: dB/dtheta; a step: the divided
       !> difference of B between the two levels), N m, and its derivative with respect to the
       !> new turning angle, N m.
@@ -288,7 +294,8 @@ contains
       self%length_ref = sum(self%ds)/(n - 1)
       allocate (self%r0(2, n), self%v0(2, n), self%mv0(2, n), self%e0(2, n - 1), self%l0(n - 1), self%th0(n))
       allocate (self%e1(2, n - 1), self%l1(n - 1), self%th1(n), self%force(2, n - 1), self%force_node(2, n))
-      allocate (self%block(2, 2, -1:1, n - 1), self%mass(0:2, n), self%v1(2, n), self%mom(n), self%dmom(n))
+      allocate (self%block(2, 2, -1:1, n - 1), self%block_scaled(2, 2, -1:1, n - 1), self%mass(0:2, n), self%v1(2, n), &
+                self%mass_scaled(2, 2, 0:2, n), self%mom(n), self%dmom(n))
       self%mom = 0
       self%dmom = 0
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
@@ -951,8 +958,8 @@ contains
       if (.not. with_jacobian) return
       rate = 1/(theta*dt*dt)
       call jacobian%clear()
-      call add_jacobian_window(n, lo, hi, jacobian%ldab, jacobian%kl + jacobian%ku + 1, jacobian%ab, self%block, &
-                               self%ds, self%mass, scale, rate, held_a, held_b)
+      call add_jacobian(n, lo, hi, jacobian%ldab, jacobian%kl + jacobian%ku + 1, jacobian%ab, self%block, self%ds, &
+                        self%mass, scale, rate, held_a, held_b, .true., self%block_scaled, self%mass_scaled)
       if (held_a .and. lo == 1) then
          jacobian%ab(jacobian%kl + jacobian%ku + 1, 1:2) = 1/self%length_ref
       end if
@@ -973,100 +980,62 @@ contains
       end subroutine window_velocities
    end subroutine assemble_window
 
-   !> The mass term of the Jacobian, M_(k, k + j) / (theta dt^2) (rate) times the row
-   !> scale, on the rows of the nodes k1 .. k2, all of whose neighbours k - 2 .. k + 2
-   !> have their columns in ab, so without the tests add_jacobian and add_jacobian_window
-   !> need at the other nodes (2.1 % and 0.8 % of fast_180kN's instructions). The rows
-   !> of node k are 2 (k - 1) + 1 - off and 2 (k - 1) + 2 - off. One routine for the
-   !> two callers costs 0.4 % more instructions than a copy in each (0.6639e9 ->
-   !> 0.6664e9 on fast_180kN, the same bits): one place to change is worth it here.
-   pure subroutine add_mass_inner(n, ldab, ncol, band0, ab, mass, scale, rate, k1, k2, off)
-      integer, intent(in) :: n, ldab, ncol, band0, k1, k2, off
-      real(dp), intent(inout) :: ab(ldab, ncol)
-      real(dp), intent(in) :: mass(0:2, n), scale, rate
-      integer :: k, a, row
-      do k = k1, k2
-         do a = 1, 2
-            row = 2*(k - 1) + a - off
-            ab(band0 + 4, row - 4) = ab(band0 + 4, row - 4) + mass(2, k - 2)*rate*scale
-            ab(band0 + 2, row - 2) = ab(band0 + 2, row - 2) + mass(1, k - 1)*rate*scale
-            ab(band0, row) = ab(band0, row) + mass(0, k)*rate*scale
-            ab(band0 - 2, row + 2) = ab(band0 - 2, row + 2) + mass(1, k)*rate*scale
-            ab(band0 - 4, row + 4) = ab(band0 - 4, row + 4) + mass(2, k)*rate*scale
-         end do
-      end do
-   end subroutine add_mass_inner
-
-   !> add_jacobian (dynamic) on the rows and columns of the nodes lo .. hi: the window's
-   !> matrix, its row and column 1 those of node lo's first unknown. add_jacobian keeps
-   !> its own copy of these loops: calling this one with lo = 1, hi = n instead gives the
-   !> same bits but costs 3.9 % more instructions on fast_180kN (1.258e9 -> 1.307e9,
-   !> callgrind), the range tests being in the innermost loop.
-   pure subroutine add_jacobian_window(n, lo, hi, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b)
+   !> The Jacobian's terms of the cell forces and of the mass (dynamic) into band storage, on
+   !> the rows and columns of the nodes lo .. hi (1 .. n for assemble, the window's for
+   !> assemble_window; row and column 1 are those of node lo's first unknown). dN_c/dR_node is
+   !> block(c, cp) (+-1 / ds_cp) for the two nodes of cell cp; node c gets -N_c, node c + 1
+   !> gets +N_c; A(row, col) is ab(band0 + row - col, col), cleared before. Every entry gets
+   !> its terms in the order of a loop over the cells c, their neighbours cp and the sides,
+   !> then the mass term M_(k, k + j) / (theta dt^2) (rate), all times the row scale.
+   !> The rows of the nodes whose stencil k - 2 .. k + 2 lies in the window and the piece's
+   !> inner nodes (3 .. n - 2) are gathered a node at a time (gather_rows); the few others
+   !> (the window's edges and the piece's ends, held ones left out) get the cells' terms
+   !> added cell by cell (edge_cell) and their mass terms (mass_outer).
+   pure subroutine add_jacobian(n, lo, hi, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b, dynamic, q, &
+                                mq)
       integer, intent(in) :: n, lo, hi, ldab, band0
       real(dp), intent(inout) :: ab(ldab, 2*(hi - lo + 1))
       real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
-      logical, intent(in) :: held_a, held_b
-      integer :: c, cp, side, node, col, row, k, a, off, c1, c2
-      real(dp) :: sgn, blk(2, 2)
+      logical, intent(in) :: held_a, held_b, dynamic
+      !> Work (gather_rows).
+      real(dp), intent(inout) :: q(2, 2, -1:1, n - 1), mq(2, 2, 0:2, n)
+      integer :: c, k, off, g1, g2
       off = 2*(lo - 1)
-      ! The cells in their order: those before c1, c1 .. c2 (the cells whose neighbours' nodes
-      ! are all in the window), those after c2. (Three loops rather than a test in one, and the
-      ! mass term's inner nodes without tests, as in add_jacobian: 0.8 % of fast_180kN's
-      ! instructions.)
-      c1 = max(2, lo + 1)
-      c2 = min(n - 2, hi - 2)
-      do c = max(1, lo - 1), min(n - 1, hi, c1 - 1)
-         call edge_cell(c, ab)
-      end do
-      do c = c1, c2
-         ! A cell whose neighbours' nodes are all in the window: as in add_jacobian.
-         do cp = c - 1, c + 1
-            do side = 0, 1
-               node = cp + side
-               sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
-               blk = block(:, :, cp - c, c)*sgn*scale
-               col = 2*(node - 1) - off
-               row = 2*(c - 1) - off - col + band0
-               ! Each column's two rows in one packed operation, as in add_jacobian.
-               !GCC$ unroll 1
-               do a = 1, 2
-                  ab(row + a - 1, col + 1) = ab(row + a - 1, col + 1) - blk(a, 1)
-               end do
-               !GCC$ unroll 1
-               do a = 1, 2
-                  ab(row + a - 2, col + 2) = ab(row + a - 2, col + 2) - blk(a, 2)
-               end do
-               row = 2*c - off - col + band0
-               !GCC$ unroll 1
-               do a = 1, 2
-                  ab(row + a - 1, col + 1) = ab(row + a - 1, col + 1) + blk(a, 1)
-               end do
-               !GCC$ unroll 1
-               do a = 1, 2
-                  ab(row + a - 2, col + 2) = ab(row + a - 2, col + 2) + blk(a, 2)
-               end do
-            end do
+      ! The gathered nodes: both cells of each (k - 1 and k) are inner cells whose neighbours'
+      ! nodes are in the window.
+      g1 = max(3, lo + 2)
+      g2 = min(n - 2, hi - 2)
+      if (g1 <= g2) then
+         ! The cells with a row outside g1 .. g2, in their order; then the gathered rows.
+         do c = max(1, lo - 1), min(n - 1, hi, g1 - 1)
+            call edge_cell(c, ab)
          end do
-      end do
-      do c = max(max(1, lo - 1), c2 + 1, c1), min(n - 1, hi)
-         call edge_cell(c, ab)
-      end do
-      ! The mass term, as in add_jacobian, on the window's columns: the nodes lo + 2 .. hi - 2
-      ! without the tests (neither is a held end: 3 <= k <= n - 2), the others with them.
-      call add_mass_inner(n, ldab, 2*(hi - lo + 1), band0, ab, mass, scale, rate, lo + 2, hi - 2, off)
-      ! The window's other nodes, lo, lo + 1 and hi - 1, hi, in increasing order (as in add_jacobian).
-      do k = lo, min(lo + 1, hi)
-         call mass_outer(k, ab)
-      end do
-      do k = max(lo + 2, hi - 1), hi
-         call mass_outer(k, ab)
-      end do
+         do c = max(1, lo - 1, g2), min(n - 1, hi)
+            call edge_cell(c, ab)
+         end do
+         call gather_rows(n, g1, g2, ldab, 2*(hi - lo + 1), band0, ab, block, ds, mass, scale, rate, dynamic, off, q, &
+                          mq)
+         if (.not. dynamic) return
+         do k = lo, g1 - 1
+            call mass_outer(k, ab)
+         end do
+         do k = g2 + 1, hi
+            call mass_outer(k, ab)
+         end do
+      else
+         do c = max(1, lo - 1), min(n - 1, hi)
+            call edge_cell(c, ab)
+         end do
+         if (.not. dynamic) return
+         do k = lo, hi
+            call mass_outer(k, ab)
+         end do
+      end if
 
    contains
 
-      !> The mass term on the window's columns and the rows of node k (lo, lo + 1, hi - 1 or hi),
-      !> but those of a held end node.
+      !> The mass term on the window's columns and the rows of node k (not gathered), but
+      !> those of a held end node.
       pure subroutine mass_outer(k, ab)
          integer, intent(in) :: k
          real(dp), intent(inout) :: ab(ldab, 2*(hi - lo + 1))
@@ -1083,13 +1052,16 @@ contains
          end do
       end subroutine mass_outer
 
-      !> A cell with a neighbour's node outside the window or the piece: its blocks on the
-      !> window's columns, its rows those of the window's nodes but a held end node.
+      !> Cell c's blocks on the window's columns, added to the rows of its nodes that are in
+      !> the window and not gathered, but those of a held end node.
       pure subroutine edge_cell(c, ab)
          integer, intent(in) :: c
          real(dp), intent(inout) :: ab(ldab, 2*(hi - lo + 1))
          integer :: cp, side, node, col, row
          real(dp) :: sgn, blk(2, 2)
+         logical :: first, second
+         first = c >= lo .and. .not. (c == 1 .and. held_a) .and. .not. (c >= g1 .and. c <= g2)
+         second = c + 1 <= hi .and. .not. (c + 1 == n .and. held_b) .and. .not. (c + 1 >= g1 .and. c + 1 <= g2)
          do cp = max(1, c - 1), min(n - 1, c + 1)
             do side = 0, 1
                node = cp + side
@@ -1097,14 +1069,14 @@ contains
                sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
                blk = block(:, :, cp - c, c)*sgn*scale
                col = 2*(node - 1) - off
-               if (c >= lo .and. .not. (c == 1 .and. held_a)) then
+               if (first) then
                   row = 2*(c - 1) - off - col + band0
                   ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
                   ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
                   ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
                   ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
                end if
-               if (c + 1 <= hi .and. .not. (c + 1 == n .and. held_b)) then
+               if (second) then
                   row = 2*c - off - col + band0
                   ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
                   ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
@@ -1114,7 +1086,143 @@ contains
             end do
          end do
       end subroutine edge_cell
-   end subroutine add_jacobian_window
+   end subroutine add_jacobian
+
+   !> add_jacobian's rows of the nodes k1 .. k2 (each with its cells k - 1 and k inner, and
+   !> the columns of the nodes k - 2 .. k + 2 in ab), gathered: each entry summed in
+   !> registers, in the order add_jacobian's loop over the cells gives its terms, and stored
+   !> once. With q_c(j) = block(c, c + j) / ds_(c+j) * scale, the blocks cell c adds with its
+   !> sign are -q_c(j) for the first node of cell c + j and +q_c(j) for its second, so the
+   !> rows of node k (cells k - 1, +, and k, -; a = q_(k-1), b = q_k) in the columns of
+   !> node k + d are, from the cleared 0:
+   !>   d = -2: -a(-1);  d = -1: +a(-1) - a(0) + b(-1);  d = 0: +a(0) - a(1) - b(-1) + b(0);
+   !>   d = 1: +a(1) - b(0) + b(1);  d = 2: -b(1);
+   !> then the mass term. x - (-y) is x + y and (-y) s = -(y s) exactly, so these are the
+   !> bits of adding cell by cell. The mass term is added as a diagonal 2 x 2 block (mq), so
+   !> that each column's two rows stay one packed SSE2 operation: its off-diagonal zero
+   !> changes nothing, because a sum that starts as 0 + y or 0 - y is never -0 (under
+   !> rounding to nearest a sum or difference is -0 only from a -0 operand), and x + 0 = x
+   !> for every other x; in statics mq is all zero for the same reason. q and mq are formed
+   !> first, in passes of their own (1 / ds once per cell). Measured on fast_180kN lean (241
+   !> nodes, no gnuplot text, no ledger; callgrind), against the former scatter cell by cell
+   !> (24 read-modify-writes of two rows per cell) and the mass term added node by node:
+   !> the whole run 485.5e6 -> 473.8e6 instructions, the same bits on the ten input/ cases.
+   !> (The mass term added to one lane of a register, or from a block built per node on the
+   !> stack, cost more: 477.9e6 and 473.2e6 but no faster, the latter's packed loads waiting
+   !> on two scalar stores each.)
+   pure subroutine gather_rows(n, k1, k2, ldab, ncol, band0, ab, block, ds, mass, scale, rate, dynamic, off, q, mq)
+      integer, intent(in) :: n, k1, k2, ldab, ncol, band0, off
+      real(dp), intent(inout) :: ab(ldab, ncol)
+      real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
+      logical, intent(in) :: dynamic
+      real(dp), intent(inout) :: q(2, 2, -1:1, n - 1), mq(2, 2, 0:2, n)
+      real(dp) :: r_m, r_0, r_p, w, t(2)
+      integer :: c, k, j, a, b, row, col
+      if (k1 > k2) return
+      ! q_c for the cells k1 - 1 .. k2.
+      r_m = 1/ds(k1 - 2)
+      r_0 = 1/ds(k1 - 1)
+      do c = k1 - 1, k2
+         r_p = 1/ds(c + 1)
+         do b = 1, 2
+            !GCC$ unroll 1
+            do a = 1, 2
+               q(a, b, -1, c) = block(a, b, -1, c)*r_m*scale
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               q(a, b, 0, c) = block(a, b, 0, c)*r_0*scale
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               q(a, b, 1, c) = block(a, b, 1, c)*r_p*scale
+            end do
+         end do
+         r_m = r_0
+         r_0 = r_p
+      end do
+      ! The mass terms of the nodes k1 - 2 .. k2 as diagonal 2 x 2 blocks (zero in statics).
+      w = 0
+      do k = k1 - 2, k2
+         do j = 0, 2
+            if (dynamic) w = mass(j, k)*rate*scale
+            mq(1, 1, j, k) = w
+            mq(2, 1, j, k) = 0
+            mq(1, 2, j, k) = 0
+            mq(2, 2, j, k) = w
+         end do
+      end do
+      do k = k1, k2
+         row = 2*(k - 1) + 1 - off
+         do b = 1, 2
+            col = 2*(k - 3) + b - off
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = 0.0_dp - q(a, b, -1, k - 1)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = t(a) + mq(a, b, 2, k - 2)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               ab(band0 + row + a - 1 - col, col) = t(a)
+            end do
+            col = col + 2
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = 0.0_dp + q(a, b, -1, k - 1) - q(a, b, 0, k - 1) + q(a, b, -1, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = t(a) + mq(a, b, 1, k - 1)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               ab(band0 + row + a - 1 - col, col) = t(a)
+            end do
+            col = col + 2
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = 0.0_dp + q(a, b, 0, k - 1) - q(a, b, 1, k - 1) - q(a, b, -1, k) + q(a, b, 0, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = t(a) + mq(a, b, 0, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               ab(band0 + row + a - 1 - col, col) = t(a)
+            end do
+            col = col + 2
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = 0.0_dp + q(a, b, 1, k - 1) - q(a, b, 0, k) + q(a, b, 1, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = t(a) + mq(a, b, 1, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               ab(band0 + row + a - 1 - col, col) = t(a)
+            end do
+            col = col + 2
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = 0.0_dp - q(a, b, 1, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               t(a) = t(a) + mq(a, b, 2, k)
+            end do
+            !GCC$ unroll 1
+            do a = 1, 2
+               ab(band0 + row + a - 1 - col, col) = t(a)
+            end do
+         end do
+      end do
+   end subroutine gather_rows
 
    !> The cell forces N_c and, with_jacobian, their blocks dN_c/de_c' of a step (rod_step_system's
    !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
@@ -1498,8 +1606,8 @@ contains
 
       call jacobian%clear()
       band0 = jacobian%kl + jacobian%ku + 1
-      call add_jacobian(n, jacobian%ldab, band0, jacobian%ab, self%block, self%ds, self%mass, scale, rate, held_a, &
-                        held_b, dynamic)
+      call add_jacobian(n, 1, n, jacobian%ldab, band0, jacobian%ab, self%block, self%ds, self%mass, scale, rate, &
+                        held_a, held_b, dynamic, self%block_scaled, self%mass_scaled)
       ! Distributed loads: node c and node c+1 each get -F_c / 2.
       if (allocated(self%loads)) then
          if (size(self%loads) > 0) then
@@ -1604,124 +1712,6 @@ contains
          residual(:, k) = res*scale
       end do
    end subroutine node_residuals
-
-   !> The Jacobian's terms of the cell forces and of the mass into band storage
-   !> (explicit shapes, so that the compiler keeps the addresses in registers).
-   !> dN_c/dR_node is block(c, cp) (+-1 / ds_cp) for the two nodes of cell cp;
-   !> node c gets -N_c (rows 2c - 1, 2c), node c+1 gets +N_c (rows 2c + 1,
-   !> 2c + 2); A(row, col) is ab(band0 + row - col, col). Every entry gets its
-   !> terms in the order of the loops over c, cp, side, then the mass term.
-   pure subroutine add_jacobian(n, ldab, band0, ab, block, ds, mass, scale, rate, held_a, held_b, dynamic)
-      integer, intent(in) :: n, ldab, band0
-      real(dp), intent(inout) :: ab(ldab, 2*n)
-      real(dp), intent(in) :: block(2, 2, -1:1, n - 1), ds(n - 1), mass(0:2, n), scale, rate
-      logical, intent(in) :: held_a, held_b, dynamic
-      integer :: c, cp, side, node, col, row, k, a
-      real(dp) :: sgn, blk(2, 2)
-      ! The cells in their order: 1, the inner cells, n - 1. (Three parts rather than a test in
-      ! one loop: 0.7 % of fast_180kN's instructions.)
-      call end_cell(1, ab)
-      do c = 2, n - 2
-            ! An inner cell: the same operations in the same order as end_cell's, with the loop
-            ! bounds and the held-end tests known, so that the compiler unrolls the loops.
-            ! (A copy, as in add_jacobian_window: the eight updates moved into a subroutine
-            ! were not inlined by gfortran 12 and cost +14 % of fast_180kN's instructions.)
-            do cp = c - 1, c + 1
-               do side = 0, 1
-                  node = cp + side
-                  sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
-                  blk = block(:, :, cp - c, c)*sgn*scale
-                  col = 2*(node - 1)
-                  row = 2*(c - 1) - col + band0
-                  ! Each column's two rows (adjacent in band storage) in one packed SSE2 operation:
-                  ! the a-loops kept as loops (unroll 1) so that gfortran 12's loop vectorizer packs
-                  ! them, which it does not do once they are unrolled. The same operations on each
-                  ! entry (66.1e6 -> 49.0e6 instructions in assemble on fast_180kN, callgrind).
-                  !GCC$ unroll 1
-                  do a = 1, 2
-                     ab(row + a - 1, col + 1) = ab(row + a - 1, col + 1) - blk(a, 1)
-                  end do
-                  !GCC$ unroll 1
-                  do a = 1, 2
-                     ab(row + a - 2, col + 2) = ab(row + a - 2, col + 2) - blk(a, 2)
-                  end do
-                  row = 2*c - col + band0
-                  !GCC$ unroll 1
-                  do a = 1, 2
-                     ab(row + a - 1, col + 1) = ab(row + a - 1, col + 1) + blk(a, 1)
-                  end do
-                  !GCC$ unroll 1
-                  do a = 1, 2
-                     ab(row + a - 2, col + 2) = ab(row + a - 2, col + 2) + blk(a, 2)
-                  end do
-               end do
-            end do
-      end do
-      if (n - 1 > 1) call end_cell(n - 1, ab)
-      if (.not. dynamic) return
-      ! The mass term, M_(k, k + j) / (theta dt^2) on the rows of node k and the columns of node k + j:
-      ! the nodes 3 .. n - 2 without the tests (2.1 % of fast_180kN's instructions), the others with them.
-      call add_mass_inner(n, ldab, 2*n, band0, ab, mass, scale, rate, 3, n - 2, 0)
-      ! The other nodes, 1, 2 and n - 1, n, in increasing order (a loop over all the nodes
-      ! that skipped the inner ones: with it and add_jacobian_window's, 0.6236e9 -> 0.6209e9
-      ! instructions on fast_180kN, callgrind).
-      do k = 1, min(2, n)
-         call mass_outer(k, ab)
-      end do
-      do k = max(3, n - 1), n
-         call mass_outer(k, ab)
-      end do
-
-   contains
-
-      !> The mass term on the rows of node k (1, 2, n - 1 or n), but those of a held end node.
-      pure subroutine mass_outer(k, ab)
-         integer, intent(in) :: k
-         real(dp), intent(inout) :: ab(ldab, 2*n)
-         integer :: a, row
-         if (k == 1 .and. held_a) return
-         if (k == n .and. held_b) return
-         do a = 1, 2
-            row = 2*(k - 1) + a
-            if (k >= 3) ab(band0 + 4, row - 4) = ab(band0 + 4, row - 4) + mass(2, k - 2)*rate*scale
-            if (k >= 2) ab(band0 + 2, row - 2) = ab(band0 + 2, row - 2) + mass(1, k - 1)*rate*scale
-            ab(band0, row) = ab(band0, row) + mass(0, k)*rate*scale
-            if (k <= n - 1) ab(band0 - 2, row + 2) = ab(band0 - 2, row + 2) + mass(1, k)*rate*scale
-            if (k <= n - 2) ab(band0 - 4, row + 4) = ab(band0 - 4, row + 4) + mass(2, k)*rate*scale
-         end do
-      end subroutine mass_outer
-
-      !> The terms of end cell c (1 or n - 1): its neighbours within the piece, its rows
-      !> but those of a held end node.
-      pure subroutine end_cell(c, ab)
-         integer, intent(in) :: c
-         real(dp), intent(inout) :: ab(ldab, 2*n)
-         integer :: cp, side, node, col, row
-         real(dp) :: sgn, blk(2, 2)
-         do cp = max(1, c - 1), min(n - 1, c + 1)
-            do side = 0, 1
-               node = cp + side
-               sgn = merge(1.0_dp, -1.0_dp, side == 1)/ds(cp)
-               blk = block(:, :, cp - c, c)*sgn*scale
-               col = 2*(node - 1)
-               if (.not. (c == 1 .and. held_a)) then
-                  row = 2*(c - 1) - col + band0
-                  ab(row, col + 1) = ab(row, col + 1) - blk(1, 1)
-                  ab(row + 1, col + 1) = ab(row + 1, col + 1) - blk(2, 1)
-                  ab(row - 1, col + 2) = ab(row - 1, col + 2) - blk(1, 2)
-                  ab(row, col + 2) = ab(row, col + 2) - blk(2, 2)
-               end if
-               if (.not. (c + 1 == n .and. held_b)) then
-                  row = 2*c - col + band0
-                  ab(row, col + 1) = ab(row, col + 1) + blk(1, 1)
-                  ab(row + 1, col + 1) = ab(row + 1, col + 1) + blk(2, 1)
-                  ab(row - 1, col + 2) = ab(row - 1, col + 2) + blk(1, 2)
-                  ab(row, col + 2) = ab(row, col + 2) + blk(2, 2)
-               end if
-            end do
-         end do
-      end subroutine end_cell
-   end subroutine add_jacobian
 
    !> The force the support exerts on end node k (1 or n) to keep the balance of
    !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step

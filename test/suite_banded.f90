@@ -256,8 +256,8 @@ contains
 
    !> Random band matrices, widths 0-12 (5, 5 and 8, 8 among them, the widths with
    !> their own compiled kernels), orders 1-300, with and without
-   !> dominant diagonals (no or frequent interchanges), exact zeros and a
-   !> zero pivot.
+   !> dominant diagonals (no or frequent interchanges), exact zeros, ties of
+   !> magnitude and zero pivots.
    subroutine test_kernels_random(error)
       type(error_type), allocatable, intent(out) :: error
       integer, parameter :: widths(2, 8) = reshape([5, 5, 8, 8, 7, 10, 0, 0, 1, 3, 4, 0, 12, 9, 2, 2], [2, 8])
@@ -276,15 +276,18 @@ contains
          do o = 1, size(orders)
             n = orders(o)
             if (n > 1 .and. (kl >= n .or. ku >= n)) cycle
-            do variant = 1, 3
+            do variant = 1, 4
                call a%init(n, kl, ku)
                do j = 1, n
                   do i = max(1, j - ku), min(n, j + kl)
                      call random_number(r)
                      a%ab(a%row(i, j), j) = r - 0.5_dp
-                     ! Variant 2: exact zeros; variant 3: a dominant diagonal.
+                     ! Variant 2: exact zeros; variant 3: a dominant diagonal; variant 4: the
+                     ! integers -3..3, with ties of magnitude in the pivot search (the first
+                     ! is the pivot) and zero pivots.
                      if (variant == 2 .and. i /= j .and. mod(i + 2*j, 3) == 0) a%ab(a%row(i, j), j) = 0
                      if (variant == 3 .and. i == j) a%ab(a%row(i, j), j) = 4 + r
+                     if (variant == 4) a%ab(a%row(i, j), j) = nint(7*r - 3.5_dp)
                   end do
                end do
                ! Garbage in the fill-in rows, which both must ignore.
@@ -304,6 +307,22 @@ contains
          end do
       end do
       call singular_agrees(a, error)
+      if (allocated(error)) return
+      ! A zero column 7 of 30 with widths 5, 5 and 8, 8 (their own instances) and 2, 1:
+      ! in band_lu's loop over columns 1..n - kl - ku, the one above is in its loop over
+      ! the last kl + ku columns.
+      do w = 1, 3
+         kl = merge(5, merge(8, 2, w == 2), w == 1)
+         ku = merge(5, merge(8, 1, w == 2), w == 1)
+         call a%init(30, kl, ku)
+         do j = 1, 30
+            do i = max(1, j - ku), min(30, j + kl)
+               if (j /= 7) a%ab(a%row(i, j), j) = cos(1.7_dp*i + 0.3_dp*j) + merge(2.0_dp, 0.0_dp, i == j)
+            end do
+         end do
+         call singular_agrees(a, error)
+         if (allocated(error)) return
+      end do
    end subroutine test_kernels_random
 
    !> A singular matrix: both kernels stop with the same column in the message.

@@ -6,22 +6,25 @@ module suite_rod
    use xcable_kinds, only: dp, i8
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
    use xcable_strings, only: str
-   use xcable_material_law, only: tanh_law, linear_law
+   use xcable_material_law, only: material_law, tanh_law, linear_law
+   use xcable_numerics_atan2, only: fast_atan2
    use xcable_material_tension_only, only: new_tension_only
    use xcable_material_table, only: table_law, new_table_law
-   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
+   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, cell_terms
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
    use xcable_ends_mass, only: mass_end
    use xcable_ends_motion, only: motion_end
    use xcable_solver_banded, only: band_matrix
    use xcable_fdcheck, only: check_jacobian
-   use, intrinsic :: iso_fortran_env, only: output_unit
+   use, intrinsic :: iso_fortran_env, only: output_unit, int64
    implicit none
    private
    public :: collect_rod
 
    integer, parameter :: n = 9
+   !> model/rod.f90's, for cell_terms_reference.
+   real(dp), parameter :: small_strain_step_ = 1.0e-6_dp, small_rotation_ = 1.0e-4_dp
 
 contains
 
@@ -35,7 +38,8 @@ contains
                new_unittest('discrete_gradient_exact', test_discrete_gradient), &
                new_unittest('old_level_from_last_evaluation', test_old_level_memo), &
                new_unittest('residual_alone_same_bits', test_residual_alone), &
-               new_unittest('energies_kinetic_and_gravity', test_energies_kinetic_gravity)]
+               new_unittest('energies_kinetic_and_gravity', test_energies_kinetic_gravity), &
+               new_unittest('cell_terms_blocks_same_bits', test_cell_terms_blocks)]
    end subroutine collect_rod
 
    !> A piece of 9 nodes: end a held (fixed or moving), end b loaded (force
@@ -332,4 +336,283 @@ contains
                  ' J, sum of weights times heights '//str(gravity)//' J')
    end subroutine test_energies_kinetic_gravity
 
+   !> cell_terms (the cells in blocks of 32, the inner ones packed two to an SSE2 operation)
+   !> against the loop over the cells it replaced (cell_terms_reference, its text), every force,
+   !> block entry and rotation by its bits, on random cells: a quarter with a strain step below
+   !> small_strain_step (the Taylor form of q), a quarter with a rotation below small_rotation
+   !> (the Taylor form of rho), a tenth both; the tanh and the linear law, with and without
+   !> damping, with and without the Jacobian; pieces of 2 to 100 nodes (the end cells 1 and
+   !> n - 1 with their couples, blocks cut at 32) and windows ca .. cb of them (the entries
+   !> outside a window must stay as they were). Broken once (dg_de's two divisions of the
+   !> packed loop swapped in their order), the test fails.
+   subroutine test_cell_terms_blocks(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(tanh_law) :: tanh
+      type(linear_law) :: linear
+      integer, parameter :: sizes(6) = [2, 3, 4, 35, 70, 100]
+      integer :: rep, is, nn, ilaw, w, jac, windows(2, 5), taylor_q, taylor_rho, differ, compared
+      integer(int64) :: state
+      state = 20261202_int64
+      taylor_q = 0
+      taylor_rho = 0
+      differ = 0
+      compared = 0
+      linear = linear_law(ea=4.5e5_dp)
+      do rep = 1, 4
+      do is = 1, size(sizes)
+         nn = sizes(is)
+         windows(:, 1) = [1, nn - 1]
+         windows(:, 2) = [1, 1]
+         windows(:, 3) = [nn - 1, nn - 1]
+         windows(:, 4) = [min(2, nn - 1), max(1, nn - 2)]
+         windows(:, 5) = [min(5, nn - 1), min(40, nn - 1)]
+         do ilaw = 1, 2
+            do jac = 0, 1
+               do w = 1, size(windows, 2)
+                  if (ilaw == 1) then
+                     call compare_once(nn, tanh, windows(1, w), windows(2, w), jac == 1)
+                  else
+                     call compare_once(nn, linear, windows(1, w), windows(2, w), jac == 1)
+                  end if
+               end do
+            end do
+         end do
+      end do
+      end do
+      write (output_unit, '(4x, a, i0, a, i0, a, i0, a)') 'cell_terms against the loop over the cells: ', compared, &
+         ' values, ', taylor_q, ' cells with the Taylor q, ', taylor_rho, ' with the Taylor rho'
+      call check(error, differ == 0, 'cell_terms: '//str(differ)//' of '//str(compared)// &
+                 ' values differ in their bits from the loop over the cells')
+      if (allocated(error)) return
+      call check(error, taylor_q > 100 .and. taylor_rho > 100, 'cell_terms: too few cells in the Taylor branches ('// &
+                 str(taylor_q)//' q, '//str(taylor_rho)//' rho)')
+   contains
+      subroutine compare_once(n, law, ca, cb, with_jacobian)
+         integer, intent(in) :: n, ca, cb
+         class(material_law), intent(in) :: law
+         logical, intent(in) :: with_jacobian
+         real(dp) :: e0(2, n - 1), e1(2, n - 1), l0(n - 1), l1(n - 1), ds(n - 1), mom(n), dmom(n), damping, &
+                     force_a(2, n - 1), force_b(2, n - 1), block_a(2, 2, -1:1, n - 1), block_b(2, 2, -1:1, n - 1), &
+                     dphi_a(n - 1), dphi_b(n - 1), couple_first, couple_last, phi, dphi, u, scale
+         integer :: c, k
+         do c = 1, n - 1
+            l0(c) = 1 + 0.3_dp*(uniform(state) - 0.3_dp)
+            phi = 6.283185307179586_dp*(uniform(state) - 0.5_dp)
+            u = uniform(state)
+            if (u < 0.25_dp .or. u >= 0.9_dp) then
+               l1(c) = l0(c) + 2.0e-6_dp*(uniform(state) - 0.5_dp)
+            else
+               l1(c) = l0(c)*(1 + 0.2_dp*(uniform(state) - 0.5_dp))
+            end if
+            if ((u >= 0.25_dp .and. u < 0.5_dp) .or. u >= 0.9_dp) then
+               dphi = 2.0e-4_dp*(uniform(state) - 0.5_dp)
+            else
+               dphi = 2.4_dp*(uniform(state) - 0.5_dp)
+            end if
+            ! (small_strain_step = 1e-6, small_rotation = 1e-4 in model/rod.f90.)
+            if (abs((l1(c) - 1) - (l0(c) - 1)) < 1.0e-6_dp) taylor_q = taylor_q + 1
+            if (abs(dphi) < 1.0e-4_dp) taylor_rho = taylor_rho + 1
+            e0(:, c) = l0(c)*[cos(phi), sin(phi)]
+            e1(:, c) = l1(c)*[cos(phi + dphi), sin(phi + dphi)]
+            ds(c) = 0.2_dp + 0.1_dp*uniform(state)
+         end do
+         ! Moments from 0.1 to 1e5 N m, so that the bending part of the blocks is not always lost in
+         ! the rounding of the strain part.
+         scale = 10**(6*uniform(state) - 1)
+         do k = 1, n
+            mom(k) = scale*(uniform(state) - 0.5_dp)
+            dmom(k) = scale*(uniform(state) - 0.5_dp)
+         end do
+         damping = merge(0.0_dp, 300.0_dp, uniform(state) < 0.5_dp)
+         couple_first = 0.1_dp*scale*(uniform(state) - 0.5_dp)
+         couple_last = 0.1_dp*scale*(uniform(state) - 0.5_dp)
+         force_a = 7
+         block_a = 7
+         dphi_a = 7
+         force_b = force_a
+         block_b = block_a
+         dphi_b = dphi_a
+         call cell_terms(n, law, e0, e1, l0, l1, ds, mom, dmom, damping, 1.0e-3_dp, couple_first, couple_last, &
+                         with_jacobian, force_a, block_a, dphi_a, ca, cb)
+         call cell_terms_reference(n, law, e0, e1, l0, l1, ds, mom, dmom, damping, 1.0e-3_dp, couple_first, &
+                                   couple_last, with_jacobian, force_b, block_b, dphi_b, ca, cb)
+         differ = differ + count(transfer(force_a, [0_int64]) /= transfer(force_b, [0_int64])) &
+                  + count(transfer(block_a, [0_int64]) /= transfer(block_b, [0_int64])) &
+                  + count(transfer(dphi_a, [0_int64]) /= transfer(dphi_b, [0_int64]))
+         compared = compared + size(force_a) + size(block_a) + size(dphi_a)
+      end subroutine compare_once
+   end subroutine test_cell_terms_blocks
+
+   !> Uniform in [0, 1) from a 64-bit linear congruential generator (reproducible everywhere).
+   real(dp) function uniform(state)
+      integer(int64), intent(inout) :: state
+      state = state*6364136223846793005_int64 + 1442695040888963407_int64
+      uniform = real(shiftr(state, 11), dp)*2.0_dp**(-53)
+   end function uniform
+
+   !> The loop over the cells that cell_terms did cell by cell before it went in blocks (efa47e9,
+   !> its text), the reference of test_cell_terms_blocks.
+   subroutine cell_terms_reference(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &
+                         with_jacobian, force, block, dphi1, ca, cb)
+      integer, intent(in) :: n
+      class(material_law), intent(in) :: law
+      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), ds(n - 1), mom(n), &
+                              dmom(n), damping, dt, couple_first, couple_last
+      logical, intent(in) :: with_jacobian
+      real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
+      !> Rotation of each cell from e0 to e1, rad.
+      real(dp), intent(inout) :: dphi1(n - 1)
+      !> First and last cell to compute.
+      integer, intent(in) :: ca, cb
+      integer :: c, i, j
+      real(dp) :: q, dq, lsum, em(2), dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid, f, fp, fpp
+      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), wsum(2), pem(2), wl(2), &
+                  e1l(2), fq(2)
+      real(dp), parameter :: jm(2, 2) = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2]), &
+                             id2(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+      ! The rotations as cell_rotations_of computes them (fast_atan2_array: the bits of fast_atan2,
+      ! suite_atan2).
+      do c = ca, cb
+         dphi1(c) = fast_atan2(e0_(1, c)*e1_(2, c) - e0_(2, c)*e1_(1, c), dot_product(e0_(:, c), e1_(:, c)))
+      end do
+      do c = ca, cb
+         associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
+            ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
+            eps0 = l0 - 1
+            eps1 = l1 - 1
+            h = eps1 - eps0
+            if (abs(h) < small_strain_step_) then
+               mid = 0.5_dp*(eps0 + eps1)
+               ! f, f', f'' in one call (the tanh law: one tanh and 1 / cosh^2 together).
+               call law%tension_stiffness_slope(mid, f, fp, fpp)
+               q = f + fpp*h*h/24
+               dq = 0.5_dp*fp + fpp*h/12
+            else
+               ! W1 - W0 from the law, not a difference of two W: that loses digits
+               ! (tanh_strain_energy_change). No W itself: only the ledger uses it (rod_energies).
+               ! dq only enters the blocks: a residual alone does not ask for the law's tension.
+               if (with_jacobian) then
+                  call law%strain_energy_change_tension(eps0, eps1, q, f)
+                  q = q/h
+                  dq = (f - q)/h
+               else
+                  q = law%strain_energy_change(eps0, eps1)/h
+                  dq = 0
+               end if
+            end if
+            lsum = l0 + l1
+            ! (The loops over i kept as loops, unroll 1, to be packed: see the blocks below.)
+            !GCC$ unroll 1
+            do i = 1, 2
+               wsum(i) = e0(i) + e1(i)
+            end do
+            ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
+            ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
+            q = q + damping*h/dt
+            dq = dq + damping/dt
+            ! The strain part q wsum / lsum of the force, to which the bending part is added.
+            !GCC$ unroll 1
+            do i = 1, 2
+               fq(i) = q*wsum(i)/lsum
+            end do
+            ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
+            !GCC$ unroll 1
+            do i = 1, 2
+               em(i) = 0.5_dp*wsum(i)
+            end do
+            dphi = dphi1(c)
+            if (abs(dphi) < small_rotation_) then
+               rho = 1 + dphi**2/6
+               drho = dphi/3
+            else
+               rho = dphi/sin(dphi)
+               drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
+            end if
+            g = rho/(l0*l1)
+            ! perp(em), written out: gfortran called perp (1.6e6 calls on fast_180kN).
+            pem(1) = -em(2)
+            pem(2) = em(1)
+            gvec = pem*g
+            couple = 0
+            if (c == 1) then
+               couple = couple_first
+            else if (c == n - 1) then
+               couple = couple_last
+            end if
+            s_c = mom(c) - mom(c + 1) - couple
+            !GCC$ unroll 1
+            do i = 1, 2
+               force(i, c) = fq(i) + s_c/ds(c)*gvec(i)
+            end do
+            if (.not. with_jacobian) cycle
+            ! The blocks column by column, each column's two rows in one packed SSE2 operation:
+            ! the loops over the rows i kept as loops (unroll 1) so that gfortran 12's loop
+            ! vectorizer packs them (it does not once they are unrolled). Element by element
+            ! the operations of the array expressions they replace, in the same order:
+            !   ds_dq = dq e1 / l1, dstrain = outer(wsum / lsum, ds_dq)
+            !     + q (identity2() / lsum - outer(wsum, e1 / l1) / lsum**2),
+            !   dg_de = drho dphi_de / (l0 l1) - rho / (l0 l1**2) e1 / l1,
+            !   dgvec = 0.5 g jm + outer(pem, dg_de), block_0 = dstrain + s_c / ds_c dgvec
+            !     + outer(gvec, ds_de(:, 0)) / ds_c, block_+-1 = outer(gvec, ds_de(:, +-1)) / ds_c.
+            !GCC$ unroll 1
+            do i = 1, 2
+               ds_dq(i) = dq*e1(i)/l1
+            end do
+            !GCC$ unroll 1
+            do i = 1, 2
+               wl(i) = wsum(i)/lsum
+            end do
+            !GCC$ unroll 1
+            do i = 1, 2
+               e1l(i) = e1(i)/l1
+            end do
+            dphi_de = [-e1(2), e1(1)]/l1**2
+            !GCC$ unroll 1
+            do i = 1, 2
+               dg_de(i) = drho*dphi_de(i)/(l0*l1) - rho/(l0*l1**2)*e1(i)/l1
+            end do
+            ds_de = moment_gradient_reference(n, c, e1_, l1_, dmom)
+            do j = 1, 2
+               !GCC$ unroll 1
+               do i = 1, 2
+                  dstrain(i, j) = wl(i)*ds_dq(j) + q*(id2(i, j)/lsum - wsum(i)*e1l(j)/lsum**2)
+               end do
+               !GCC$ unroll 1
+               do i = 1, 2
+                  dgvec(i, j) = 0.5_dp*g*jm(i, j) + pem(i)*dg_de(j)
+               end do
+               !GCC$ unroll 1
+               do i = 1, 2
+                  block(i, j, 0, c) = dstrain(i, j) + s_c/ds(c)*dgvec(i, j) + gvec(i)*ds_de(j, 0)/ds(c)
+               end do
+               !GCC$ unroll 1
+               do i = 1, 2
+                  block(i, j, -1, c) = gvec(i)*ds_de(j, -1)/ds(c)
+               end do
+               !GCC$ unroll 1
+               do i = 1, 2
+                  block(i, j, 1, c) = gvec(i)*ds_de(j, 1)/ds(c)
+               end do
+            end do
+         end associate
+      end do
+   end subroutine cell_terms_reference
+
+   !> moment_gradient_of, the reference's copy.
+   pure function moment_gradient_reference(n, c, e1, l1, dmom) result(d)
+      integer, intent(in) :: n, c
+      real(dp), intent(in) :: e1(2, n - 1), l1(n - 1), dmom(n)
+      real(dp) :: d(2, -1:1), dth(2)
+      d = 0
+      ! perp written out (not inlined by gfortran).
+      dth = [-e1(2, c), e1(1, c)]/l1(c)**2
+      if (c >= 2) then
+         d(:, 0) = d(:, 0) + dmom(c)*dth
+         d(:, -1) = -dmom(c)*[-e1(2, c - 1), e1(1, c - 1)]/l1(c - 1)**2
+      end if
+      if (c + 1 <= n - 1) then
+         d(:, 0) = d(:, 0) + dmom(c + 1)*dth
+         d(:, 1) = -dmom(c + 1)*[-e1(2, c + 1), e1(1, c + 1)]/l1(c + 1)**2
+      end if
+   end function moment_gradient_reference
 end module suite_rod

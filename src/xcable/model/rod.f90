@@ -56,8 +56,9 @@ module xcable_model_rod
    private
    public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
    public :: bend_energy, bend_moment, bend_curvature, cell_rotations
-   !> Public for its test (suite_quiescent, jacobian_gathered_as_cell_by_cell).
-   public :: add_jacobian
+   ! Public for their tests: cell_terms (suite_rod, cell_terms_blocks_same_bits) and
+   ! add_jacobian (suite_quiescent, jacobian_gathered_as_cell_by_cell).
+   public :: cell_terms, add_jacobian
 
    !> The unknowns of a node, in their order in Newton's vector (node after node).
    character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']
@@ -1227,6 +1228,19 @@ contains
    !> The cell forces N_c and, with_jacobian, their blocks dN_c/de_c' of a step (rod_step_system's
    !> loop over the cells) on explicit-shape arrays, so that the compiler keeps their addresses in
    !> registers; couple_first and couple_last: cell_couple of cells 1 and n - 1; the cells ca .. cb only.
+   !>
+   !> The cells go in blocks of 32 (cell_block_terms): the law's q and dq and rho(dphi) cell by cell
+   !> (they call functions), then the forces and blocks of the block's inner cells by one loop over
+   !> the cells that gfortran 12's loop vectoriser packs two cells to an SSE2 operation (one divpd
+   !> for two divisions); the end cells 1 and n - 1 (a couple, one neighbour) by end_cell_terms.
+   !> Element by element the operations are those of the loop over the cells they replace
+   !> (end_cell_terms is its body), in the same order, so the same bits (test/suite_rod.f90,
+   !> cell_terms_blocks_same_bits). Why: that loop packed only a cell's two rows, its per-cell
+   !> scalars (q, lsum, g, the divisions by l1, lsum, l0 l1, ds_c) one at a time, with broadcasts
+   !> and spills around them. Measured on a lean fast_180kN run (241 nodes, no figures, no
+   !> ledger): cell_terms 128.7e6 -> 110.9e6 instructions with its callees, the division
+   !> instructions in it 7.27e6 -> 5.83e6, the whole run 504.0e6 -> 486.5e6 (-3.5 %); docs/speed.md,
+   !> "cell_terms in blocks, fifth round (bit for bit)".
    subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &
                          with_jacobian, force, block, dphi1, ca, cb)
       integer, intent(in) :: n
@@ -1239,137 +1253,258 @@ contains
       real(dp), intent(inout) :: dphi1(n - 1)
       !> First and last cell to compute.
       integer, intent(in) :: ca, cb
-      integer :: c, i, j
-      real(dp) :: q, dq, lsum, em(2), dphi, rho, drho, g, gvec(2), s_c, couple, h, eps0, eps1, mid, f, fp, fpp
-      real(dp) :: ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), dgvec(2, 2), ds_de(2, -1:1), wsum(2), pem(2), wl(2), &
-                  e1l(2), fq(2)
-      real(dp), parameter :: jm(2, 2) = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2]), &
-                             id2(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+      integer, parameter :: nb = 32
+      integer :: first, last
       ! The cells' rotations first, in packed pairs (cell_rotations_of, fast_atan2_array), the
       ! same bits: cell_terms with cell_rotations_of 77.5e6 -> 76.3e6 instructions on fast_180kN.
       call cell_rotations_of(n, e0_, e1_, dphi1, ca, cb)
-      do c = ca, cb
-         associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
-            ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
-            eps0 = l0 - 1
-            eps1 = l1 - 1
-            h = eps1 - eps0
-            if (abs(h) < small_strain_step) then
-               mid = 0.5_dp*(eps0 + eps1)
-               ! f, f', f'' in one call (the tanh law: one tanh and 1 / cosh^2 together).
-               call law%tension_stiffness_slope(mid, f, fp, fpp)
-               q = f + fpp*h*h/24
-               dq = 0.5_dp*fp + fpp*h/12
-            else
-               ! W1 - W0 from the law, not a difference of two W: that loses digits
-               ! (tanh_strain_energy_change). No W itself: only the ledger uses it (rod_energies).
-               ! dq only enters the blocks: a residual alone does not ask for the law's tension.
-               if (with_jacobian) then
-                  call law%strain_energy_change_tension(eps0, eps1, q, f)
-                  q = q/h
-                  dq = (f - q)/h
-               else
-                  q = law%strain_energy_change(eps0, eps1)/h
-                  dq = 0
-               end if
-            end if
-            lsum = l0 + l1
-            ! (The loops over i kept as loops, unroll 1, to be packed: see the blocks below.)
-            !GCC$ unroll 1
-            do i = 1, 2
-               wsum(i) = e0(i) + e1(i)
-            end do
-            ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
-            ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
-            q = q + damping*h/dt
-            dq = dq + damping/dt
-            ! The strain part q wsum / lsum of the force, to which the bending part is added.
-            !GCC$ unroll 1
-            do i = 1, 2
-               fq(i) = q*wsum(i)/lsum
-            end do
-            ! Bending part: S_c G_c / ds_c with G_c = perp(e_mid) rho(dphi) / (l0 l1).
-            !GCC$ unroll 1
-            do i = 1, 2
-               em(i) = 0.5_dp*wsum(i)
-            end do
-            dphi = dphi1(c)
-            if (abs(dphi) < small_rotation) then
-               rho = 1 + dphi**2/6
-               drho = dphi/3
-            else
-               rho = dphi/sin(dphi)
-               drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
-            end if
-            g = rho/(l0*l1)
-            ! perp(em), written out: gfortran called perp (1.6e6 calls on fast_180kN).
-            pem(1) = -em(2)
-            pem(2) = em(1)
-            gvec = pem*g
-            couple = 0
-            if (c == 1) then
-               couple = couple_first
-            else if (c == n - 1) then
-               couple = couple_last
-            end if
-            s_c = mom(c) - mom(c + 1) - couple
-            !GCC$ unroll 1
-            do i = 1, 2
-               force(i, c) = fq(i) + s_c/ds(c)*gvec(i)
-            end do
-            if (.not. with_jacobian) cycle
-            ! The blocks column by column, each column's two rows in one packed SSE2 operation:
-            ! the loops over the rows i kept as loops (unroll 1) so that gfortran 12's loop
-            ! vectorizer packs them (it does not once they are unrolled). Element by element
-            ! the operations of the array expressions they replace, in the same order:
-            !   ds_dq = dq e1 / l1, dstrain = outer(wsum / lsum, ds_dq)
-            !     + q (identity2() / lsum - outer(wsum, e1 / l1) / lsum**2),
-            !   dg_de = drho dphi_de / (l0 l1) - rho / (l0 l1**2) e1 / l1,
-            !   dgvec = 0.5 g jm + outer(pem, dg_de), block_0 = dstrain + s_c / ds_c dgvec
-            !     + outer(gvec, ds_de(:, 0)) / ds_c, block_+-1 = outer(gvec, ds_de(:, +-1)) / ds_c.
-            !GCC$ unroll 1
-            do i = 1, 2
-               ds_dq(i) = dq*e1(i)/l1
-            end do
-            !GCC$ unroll 1
-            do i = 1, 2
-               wl(i) = wsum(i)/lsum
-            end do
-            !GCC$ unroll 1
-            do i = 1, 2
-               e1l(i) = e1(i)/l1
-            end do
-            dphi_de = [-e1(2), e1(1)]/l1**2
-            !GCC$ unroll 1
-            do i = 1, 2
-               dg_de(i) = drho*dphi_de(i)/(l0*l1) - rho/(l0*l1**2)*e1(i)/l1
-            end do
-            ds_de = moment_gradient_of(n, c, e1_, l1_, dmom)
-            do j = 1, 2
-               !GCC$ unroll 1
-               do i = 1, 2
-                  dstrain(i, j) = wl(i)*ds_dq(j) + q*(id2(i, j)/lsum - wsum(i)*e1l(j)/lsum**2)
-               end do
-               !GCC$ unroll 1
-               do i = 1, 2
-                  dgvec(i, j) = 0.5_dp*g*jm(i, j) + pem(i)*dg_de(j)
-               end do
-               !GCC$ unroll 1
-               do i = 1, 2
-                  block(i, j, 0, c) = dstrain(i, j) + s_c/ds(c)*dgvec(i, j) + gvec(i)*ds_de(j, 0)/ds(c)
-               end do
-               !GCC$ unroll 1
-               do i = 1, 2
-                  block(i, j, -1, c) = gvec(i)*ds_de(j, -1)/ds(c)
-               end do
-               !GCC$ unroll 1
-               do i = 1, 2
-                  block(i, j, 1, c) = gvec(i)*ds_de(j, 1)/ds(c)
-               end do
-            end do
-         end associate
+      do first = ca, cb, nb
+         last = min(first + nb - 1, cb)
+         call cell_block_terms(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &
+                               with_jacobian, force, block, dphi1, first, last)
       end do
    end subroutine cell_terms
+
+   !> cell_terms on the cells first .. last (at most 32), the rotations dphi1 given. Per cell of
+   !> the block (index p, cell first + p - 1), written out:
+   !>   q = (W1 - W0) / h (law) or its Taylor form, + c h / dt; N_c = q wsum / lsum + S_c / ds_c gvec,
+   !>   gvec = perp(wsum / 2) g, g = rho(dphi) / (l0 l1), wsum = e0 + e1, lsum = l0 + l1;
+   !>   ds_dq = dq e1 / l1, dstrain = outer(wsum / lsum, ds_dq)
+   !>     + q (identity2() / lsum - outer(wsum, e1 / l1) / lsum**2),
+   !>   dg_de = drho dphi_de / (l0 l1) - rho / (l0 l1**2) e1 / l1, dphi_de = perp(e1) / l1**2,
+   !>   dgvec = 0.5 g jm + outer(pem, dg_de), block_0 = dstrain + s_c / ds_c dgvec
+   !>     + outer(gvec, ds_de(:, 0)) / ds_c, block_+-1 = outer(gvec, ds_de(:, +-1)) / ds_c,
+   !>   ds_de = moment_gradient_of.
+   subroutine cell_block_terms(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &
+                               with_jacobian, force, block, dphi1, first, last)
+      integer, intent(in) :: n
+      class(material_law), intent(in) :: law
+      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), ds(n - 1), mom(n), &
+                              dmom(n), damping, dt, couple_first, couple_last, dphi1(n - 1)
+      logical, intent(in) :: with_jacobian
+      real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
+      integer, intent(in) :: first, last
+      integer, parameter :: nb = 32
+      integer :: m, p, c, pa, pb
+      real(dp) :: f, fp, fpp, mid, lsum, qq, dqq, w1, w2, g, pem1, pem2, gv1, gv2, sd, l0, l1, e11, e12, &
+                  dsdq1, dsdq2, wl1, wl2, e1l1, e1l2, dpd1, dpd2, rl, dg1, dg2, d01, d02, dm1, dm2, dp1, dp2, &
+                  il, zl, ls2, hg
+      real(dp) :: eps0(nb), eps1(nb), h(nb), qv(nb), dqv(nb), rhov(nb), drhov(nb)
+      real(dp), parameter :: jm(2, 2) = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2]), &
+                             id2(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+      m = last - first + 1
+      !GCC$ unroll 1
+      do p = 1, m
+         eps0(p) = l0_(first + p - 1) - 1
+         eps1(p) = l1_(first + p - 1) - 1
+         h(p) = eps1(p) - eps0(p)
+         ! rho(dphi) = dphi / sin(dphi) and its derivative: the Taylor form here, the others below.
+         rhov(p) = 1 + dphi1(first + p - 1)**2/6
+         drhov(p) = dphi1(first + p - 1)/3
+      end do
+      ! Cell by cell, what calls a function.
+      do p = 1, m
+         ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
+         if (abs(h(p)) < small_strain_step) then
+            mid = 0.5_dp*(eps0(p) + eps1(p))
+            ! f, f', f'' in one call (the tanh law: one tanh and 1 / cosh^2 together).
+            call law%tension_stiffness_slope(mid, f, fp, fpp)
+            qv(p) = f + fpp*h(p)*h(p)/24
+            dqv(p) = 0.5_dp*fp + fpp*h(p)/12
+         else
+            ! W1 - W0 from the law, not a difference of two W: that loses digits
+            ! (tanh_strain_energy_change). No W itself: only the ledger uses it (rod_energies).
+            ! dq only enters the blocks: a residual alone does not ask for the law's tension.
+            if (with_jacobian) then
+               call law%strain_energy_change_tension(eps0(p), eps1(p), qv(p), f)
+               qv(p) = qv(p)/h(p)
+               dqv(p) = (f - qv(p))/h(p)
+            else
+               qv(p) = law%strain_energy_change(eps0(p), eps1(p))/h(p)
+               dqv(p) = 0
+            end if
+         end if
+         associate (dphi => dphi1(first + p - 1))
+            if (.not. abs(dphi) < small_rotation) then
+               rhov(p) = dphi/sin(dphi)
+               drhov(p) = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
+            end if
+         end associate
+      end do
+      ! The inner cells (two neighbours, no couple), packed. The scalars are the loop's names
+      ! written per component: qq, dqq (q, dq with the damping), w (wsum), gv (gvec), sd (s_c / ds_c),
+      ! dsdq (ds_dq), dpd (dphi_de), dg (dg_de), d0, dm, dp (ds_de(:, 0), (:, -1), (:, 1)), il and zl
+      ! (identity2() / lsum: 1 / lsum, 0 / lsum), hg (0.5 g). The operations on a zero (0 / lsum,
+      ! 0 + ..., hg jm(1, 1)) stay: signed zeros ("cell_terms, third round").
+      pa = max(first, 2) - first + 1
+      pb = min(last, n - 2) - first + 1
+      if (with_jacobian) then
+         !GCC$ unroll 1
+         do p = pa, pb
+            c = first + p - 1
+            l0 = l0_(c)
+            l1 = l1_(c)
+            e11 = e1_(1, c)
+            e12 = e1_(2, c)
+            lsum = l0 + l1
+            ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
+            ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
+            qq = qv(p) + damping*h(p)/dt
+            dqq = dqv(p) + damping/dt
+            w1 = e0_(1, c) + e11
+            w2 = e0_(2, c) + e12
+            g = rhov(p)/(l0*l1)
+            pem1 = -(0.5_dp*w2)
+            pem2 = 0.5_dp*w1
+            gv1 = pem1*g
+            gv2 = pem2*g
+            sd = (mom(c) - mom(c + 1))/ds(c)
+            force(1, c) = qq*w1/lsum + sd*gv1
+            force(2, c) = qq*w2/lsum + sd*gv2
+            dsdq1 = dqq*e11/l1
+            dsdq2 = dqq*e12/l1
+            wl1 = w1/lsum
+            wl2 = w2/lsum
+            e1l1 = e11/l1
+            e1l2 = e12/l1
+            dpd1 = -e12/l1**2
+            dpd2 = e11/l1**2
+            rl = rhov(p)/(l0*l1**2)
+            dg1 = drhov(p)*dpd1/(l0*l1) - rl*e11/l1
+            dg2 = drhov(p)*dpd2/(l0*l1) - rl*e12/l1
+            ! moment_gradient_of (its dth is dphi_de).
+            d01 = 0 + dmom(c)*dpd1 + dmom(c + 1)*dpd1
+            d02 = 0 + dmom(c)*dpd2 + dmom(c + 1)*dpd2
+            dm1 = -(dmom(c)*(-e1_(2, c - 1))/l1_(c - 1)**2)
+            dm2 = -(dmom(c)*e1_(1, c - 1)/l1_(c - 1)**2)
+            dp1 = -(dmom(c + 1)*(-e1_(2, c + 1))/l1_(c + 1)**2)
+            dp2 = -(dmom(c + 1)*e1_(1, c + 1)/l1_(c + 1)**2)
+            il = id2(1, 1)/lsum
+            zl = id2(2, 1)/lsum
+            ls2 = lsum**2
+            hg = 0.5_dp*g
+            block(1, 1, 0, c) = wl1*dsdq1 + qq*(il - w1*e1l1/ls2) + sd*(hg*jm(1, 1) + pem1*dg1) + gv1*d01/ds(c)
+            block(2, 1, 0, c) = wl2*dsdq1 + qq*(zl - w2*e1l1/ls2) + sd*(hg*jm(2, 1) + pem2*dg1) + gv2*d01/ds(c)
+            block(1, 2, 0, c) = wl1*dsdq2 + qq*(zl - w1*e1l2/ls2) + sd*(hg*jm(1, 2) + pem1*dg2) + gv1*d02/ds(c)
+            block(2, 2, 0, c) = wl2*dsdq2 + qq*(il - w2*e1l2/ls2) + sd*(hg*jm(2, 2) + pem2*dg2) + gv2*d02/ds(c)
+            block(1, 1, -1, c) = gv1*dm1/ds(c)
+            block(2, 1, -1, c) = gv2*dm1/ds(c)
+            block(1, 2, -1, c) = gv1*dm2/ds(c)
+            block(2, 2, -1, c) = gv2*dm2/ds(c)
+            block(1, 1, 1, c) = gv1*dp1/ds(c)
+            block(2, 1, 1, c) = gv2*dp1/ds(c)
+            block(1, 2, 1, c) = gv1*dp2/ds(c)
+            block(2, 2, 1, c) = gv2*dp2/ds(c)
+         end do
+      else
+         !GCC$ unroll 1
+         do p = pa, pb
+            c = first + p - 1
+            lsum = l0_(c) + l1_(c)
+            qq = qv(p) + damping*h(p)/dt
+            w1 = e0_(1, c) + e1_(1, c)
+            w2 = e0_(2, c) + e1_(2, c)
+            g = rhov(p)/(l0_(c)*l1_(c))
+            gv1 = -(0.5_dp*w2)*g
+            gv2 = (0.5_dp*w1)*g
+            sd = (mom(c) - mom(c + 1))/ds(c)
+            force(1, c) = qq*w1/lsum + sd*gv1
+            force(2, c) = qq*w2/lsum + sd*gv2
+         end do
+      end if
+      ! The end cells (as an inner cell, but with the couple and one neighbour).
+      if (first == 1) call end_cell_terms(n, 1, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, &
+                                          with_jacobian, qv(1), dqv(1), rhov(1), drhov(1), h(1), force, block)
+      if (last == n - 1 .and. n > 2) &
+         call end_cell_terms(n, n - 1, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_last, with_jacobian, &
+                             qv(m), dqv(m), rhov(m), drhov(m), h(m), force, block)
+   end subroutine cell_block_terms
+
+   !> The force and, with_jacobian, the blocks of cell c as the loop over the cells computed them
+   !> (cell_block_terms' inner cells the same bits), from its law's q and dq, rho(dphi), its
+   !> derivative drho and the strain step h: for the end cells 1 and n - 1 (couple: cell_couple).
+   pure subroutine end_cell_terms(n, c, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple, with_jacobian, &
+                                  q0, dq0, rho, drho, h, force, block)
+      integer, intent(in) :: n, c
+      real(dp), intent(in) :: e0_(2, n - 1), e1_(2, n - 1), l0_(n - 1), l1_(n - 1), ds(n - 1), mom(n), &
+                              dmom(n), damping, dt, couple, q0, dq0, rho, drho, h
+      logical, intent(in) :: with_jacobian
+      real(dp), intent(inout) :: force(2, n - 1), block(2, 2, -1:1, n - 1)
+      real(dp), parameter :: jm(2, 2) = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2]), &
+                             id2(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+      real(dp) :: q, dq, lsum, em(2), g, gvec(2), s_c, ds_dq(2), dg_de(2), dphi_de(2), dstrain(2, 2), &
+                  dgvec(2, 2), ds_de(2, -1:1), wsum(2), pem(2), wl(2), e1l(2), fq(2)
+      integer :: i, j
+      associate (e0 => e0_(:, c), e1 => e1_(:, c), l0 => l0_(c), l1 => l1_(c))
+         q = q0
+         dq = dq0
+         lsum = l0 + l1
+         !GCC$ unroll 1
+         do i = 1, 2
+            wsum(i) = e0(i) + e1(i)
+         end do
+         q = q + damping*h/dt
+         dq = dq + damping/dt
+         !GCC$ unroll 1
+         do i = 1, 2
+            fq(i) = q*wsum(i)/lsum
+         end do
+         !GCC$ unroll 1
+         do i = 1, 2
+            em(i) = 0.5_dp*wsum(i)
+         end do
+         g = rho/(l0*l1)
+         pem(1) = -em(2)
+         pem(2) = em(1)
+         gvec = pem*g
+         s_c = mom(c) - mom(c + 1) - couple
+         !GCC$ unroll 1
+         do i = 1, 2
+            force(i, c) = fq(i) + s_c/ds(c)*gvec(i)
+         end do
+         if (.not. with_jacobian) return
+         !GCC$ unroll 1
+         do i = 1, 2
+            ds_dq(i) = dq*e1(i)/l1
+         end do
+         !GCC$ unroll 1
+         do i = 1, 2
+            wl(i) = wsum(i)/lsum
+         end do
+         !GCC$ unroll 1
+         do i = 1, 2
+            e1l(i) = e1(i)/l1
+         end do
+         dphi_de = [-e1(2), e1(1)]/l1**2
+         !GCC$ unroll 1
+         do i = 1, 2
+            dg_de(i) = drho*dphi_de(i)/(l0*l1) - rho/(l0*l1**2)*e1(i)/l1
+         end do
+         ds_de = moment_gradient_of(n, c, e1_, l1_, dmom)
+         do j = 1, 2
+            !GCC$ unroll 1
+            do i = 1, 2
+               dstrain(i, j) = wl(i)*ds_dq(j) + q*(id2(i, j)/lsum - wsum(i)*e1l(j)/lsum**2)
+            end do
+            !GCC$ unroll 1
+            do i = 1, 2
+               dgvec(i, j) = 0.5_dp*g*jm(i, j) + pem(i)*dg_de(j)
+            end do
+            !GCC$ unroll 1
+            do i = 1, 2
+               block(i, j, 0, c) = dstrain(i, j) + s_c/ds(c)*dgvec(i, j) + gvec(i)*ds_de(j, 0)/ds(c)
+            end do
+            !GCC$ unroll 1
+            do i = 1, 2
+               block(i, j, -1, c) = gvec(i)*ds_de(j, -1)/ds(c)
+            end do
+            !GCC$ unroll 1
+            do i = 1, 2
+               block(i, j, 1, c) = gvec(i)*ds_de(j, 1)/ds(c)
+            end do
+         end do
+      end associate
+   end subroutine end_cell_terms
 
    !> d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1 (columns -1:1), with the moments' derivatives
    !> dmom with respect to the new turning angles (statics and steps alike): the turning

@@ -14,7 +14,10 @@ the baseline of the ratios):
   fast_180kN as shipped and of lean runs (no gnuplot text, no ledger) on 241
   and 961 nodes, and per round the ratio of each build to the first;
 * ns per node-step of the lean runs (CPU time of the process, and the
-  dynamics' own wall time from /summary, over nodes x steps);
+  dynamics' own wall time from /summary, over nodes x steps), and the
+  marginal cost: the lean run's CPU time less that of the same run stopped
+  at 0.1 ms (start-up, statics, the HDF5 file: what every run costs), over
+  the node-steps between the two;
 * whether the results are the same: largest difference of the tension
   snapshots, end-b history and summary figures against the first build;
 * MoorDyn's stepping time on the same scene (N = 400 segments, RK4, time
@@ -56,13 +59,17 @@ PARTS = [
 ]
 
 
-def namelist(nodes, lean, path, out):
-    """fast_180kN as shipped, or lean (no gnuplot text, no ledger), on `nodes` nodes."""
+def namelist(nodes, lean, path, out, short=False):
+    """fast_180kN as shipped, or lean (no gnuplot text, no ledger), on `nodes` nodes; short: the
+    lean run stopped at t = 0.1 ms (one or two steps, before the break), which costs what a run
+    costs whatever its length (start-up, statics, the HDF5 file)."""
     text = open(os.path.join(ROOT, "input", "fast_180kN.nml")).read()
     text = text.replace("results/fast_180kN.h5", out)
     text = text.replace("nodes = 241", "nodes = %d" % nodes)
     if lean:
         text = text.replace("gnuplot = .true., energy = .true.", "gnuplot = .false., energy = .false.")
+    if short:
+        text = text.replace("t_end = 0.14", "t_end = 0.0001").replace("interval = 0.01", "interval = 0")
     with open(path, "w") as f:
         f.write(text)
 
@@ -188,12 +195,13 @@ def main():
     os.environ["OMP_NUM_THREADS"] = "1"
     os.environ["OPENBLAS_NUM_THREADS"] = "1"
     configs = [("fast_180kN as shipped, 241 nodes", 241, False), ("lean, 241 nodes", 241, True),
-               ("lean, 961 nodes", 961, True)]
+               ("lean, 961 nodes", 961, True), ("lean to 0.1 ms, 241 nodes", 241, True),
+               ("lean to 0.1 ms, 961 nodes", 961, True)]
     nml = {}
     for label, _ in builds:
         for i, (name, nodes, lean) in enumerate(configs):
             path = os.path.join(work, "%s_%d.nml" % (label, i))
-            namelist(nodes, lean, path, os.path.join(work, "%s_%d.h5" % (label, i)))
+            namelist(nodes, lean, path, os.path.join(work, "%s_%d.h5" % (label, i)), short=i >= 3)
             nml[label, i] = path
 
     print("# xcable speed, fast_180kN\n")
@@ -253,6 +261,24 @@ def main():
             print("| %s | %s | %.3f | %.3f | %.3f | %d | %.3f | %.0f | %.0f |" %
                   (name, label, wall, cpu, ratio, steps, dyn_wall, 1e9 * cpu / (nodes * steps),
                    1e9 * dyn_wall / (nodes * steps)))
+    print()
+    # The marginal cost: the lean run less the short one (the costs every run has), per node-step
+    # of the difference, CPU times paired within a round.
+    print("Marginal cost of a node-step (lean run less the run to 0.1 ms, process CPU, median of the rounds' "
+          "differences, over nodes x the difference of the steps):\n")
+    print("| build | " + " | ".join("%d nodes: fixed CPU ms, marginal ns per node-step" % configs[i][1]
+                                   for i in (1, 2)) + " |")
+    print("|---|" + "---:|" * 2)
+    for label, _ in builds:
+        cells = []
+        for i, j in ((1, 3), (2, 4)):
+            nodes = configs[i][1]
+            steps = summary(os.path.join(work, "%s_%d.h5" % (label, i)))[0]
+            steps_short = summary(os.path.join(work, "%s_%d.h5" % (label, j)))[0]
+            fixed = statistics.median(x[1] for x in times[label, j])
+            marginal = statistics.median(x[1] - y[1] for x, y in zip(times[label, i], times[label, j]))
+            cells.append("%.1f, %.0f" % (1e3 * fixed, 1e9 * marginal / (nodes * (steps - steps_short))))
+        print("| %s | %s |" % (label, " | ".join(cells)))
     print()
     if md:
         wall = statistics.median(x[0] for x in md)

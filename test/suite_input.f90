@@ -8,7 +8,7 @@ module suite_input
    use xcable_error, only: fatal_error, stat_input
    use xcable_io_input, only: case_config, read_config, read_values, config_text, value_text
    use xcable_io_schema, only: schema_entry, schema_table, schema_text, is_table
-   use xcable_strings, only: real_text, to_lower
+   use xcable_strings, only: real_text, to_lower, str
    use xcable_case, only: setup_case
    use xcable_model_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
@@ -82,8 +82,74 @@ contains
                new_unittest('material_table_inline_and_file', test_material_table_inline_and_file), &
                new_unittest('material_table_file_missing', test_material_table_file_missing), &
                new_unittest('material_table_file_malformed', test_material_table_file_malformed), &
-               new_unittest('damping_out_of_range', test_damping)]
+               new_unittest('damping_out_of_range', test_damping), &
+               new_unittest('real_text_shortest_round_trip', test_real_text)]
    end subroutine collect_input
+
+   !> real_text (the namelist echo's numbers): the text reads back to exactly x, and with one
+   !> significant digit fewer (x written by es editing to that many digits) it does not; plain
+   !> for 1e-4 <= |x| < 1e6, with an exponent otherwise. On 20 000 values: decimals of 1 to
+   !> 17 significant digits from 1e-12 to 1e12 of both signs, and random doubles.
+   subroutine test_real_text(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=40) :: buf, fmt
+      character(:), allocatable :: t, mant
+      real(dp) :: x, y, u(3)
+      integer :: i, nd, ios, e_at, n, nbad
+      nbad = 0
+      do i = 1, 20000
+         call random_number(u)
+         if (mod(i, 2) == 0) then
+            ! A decimal of nd digits.
+            nd = 1 + int(17*u(1))
+            write (fmt, '(a,i0,a)') '(es40.', nd - 1, 'e4)'
+            write (buf, fmt) (2*u(2) - 1)*10.0_dp**int(24*u(3) - 12)
+            read (buf, *) x
+         else
+            x = (2*u(2) - 1)*10.0_dp**(24*u(3) - 12)
+         end if
+         if (x == 0) cycle
+         t = real_text(x)
+         read (t, *, iostat=ios) y
+         if (ios /= 0 .or. y /= x) then
+            nbad = nbad + 1
+            cycle
+         end if
+         ! The significant digits of t.
+         e_at = scan(t, 'e')
+         mant = t
+         if (e_at > 0) mant = t(1:e_at - 1)
+         if ((abs(x) >= 1.0e-4_dp .and. abs(x) < 1.0e6_dp) .neqv. e_at == 0) nbad = nbad + 1
+         mant = strip(mant)
+         n = len(mant)
+         if (n >= 2) then
+            write (fmt, '(a,i0,a)') '(es40.', n - 2, 'e4)'
+            write (buf, fmt) x
+            read (buf, *) y
+            if (y == x) nbad = nbad + 1
+         end if
+      end do
+      call check(error, nbad == 0, str(nbad)//' of 20000 numbers not the shortest text that reads back')
+   contains
+      !> The digits of a mantissa without sign, point, and leading and trailing zeros.
+      function strip(m) result(d)
+         character(*), intent(in) :: m
+         character(:), allocatable :: d
+         integer :: k
+         d = ''
+         do k = 1, len(m)
+            if (index('0123456789', m(k:k)) > 0) d = d//m(k:k)
+         end do
+         do while (len(d) > 1)
+            if (d(1:1) /= '0') exit
+            d = d(2:)
+         end do
+         do while (len(d) > 1)
+            if (d(len(d):len(d)) /= '0') exit
+            d = d(1:len(d) - 1)
+         end do
+      end function strip
+   end subroutine test_real_text
 
    !> Read text as a case (validation and the law-dependent checks) and expect
    !> an input error whose message contains every one of the words.

@@ -55,8 +55,13 @@ contains
       !> Value.
       real(dp), intent(in) :: x
       character(:), allocatable :: s
-      character(len=40) :: buf
-      character(len=12) :: fmt
+      character(len=40) :: buf, best
+      ! The formats of the probes, es40.(d - 1)e4 for d = 1 .. 17 significant digits (written
+      ! out: an internal write of the format per probe was a quarter of the echo's cost).
+      character(len=12), parameter :: fmts(17) = [character(len=12) :: '(es40.0e4)', '(es40.1e4)', &
+         '(es40.2e4)', '(es40.3e4)', '(es40.4e4)', '(es40.5e4)', '(es40.6e4)', '(es40.7e4)', '(es40.8e4)', &
+         '(es40.9e4)', '(es40.10e4)', '(es40.11e4)', '(es40.12e4)', '(es40.13e4)', '(es40.14e4)', &
+         '(es40.15e4)', '(es40.16e4)']
       character(:), allocatable :: digits, sign
       real(dp) :: y
       integer :: d, ios, e_at, exponent, n, lo, hi
@@ -70,21 +75,26 @@ contains
       end if
       ! The fewest significant digits that read back exactly: 17 always do, and
       ! if d digits do, d + 1 do too, so bisect.
+      ! The text of the last probe that read back (hi's, when hi was probed) is kept.
       lo = 1
       hi = 17
+      best = ''
       do while (lo < hi)
          d = (lo + hi)/2
-         write (fmt, '(a,i0,a)') '(es40.', d - 1, 'e4)'
-         write (buf, fmt) x
+         write (buf, fmts(d)) x
          read (buf, *, iostat=ios) y
          if (ios == 0 .and. y == x) then
             hi = d
+            best = buf
          else
             lo = d + 1
          end if
       end do
-      write (fmt, '(a,i0,a)') '(es40.', hi - 1, 'e4)'
-      write (buf, fmt) x
+      if (len_trim(best) > 0) then
+         buf = best
+      else
+         write (buf, fmts(hi)) x
+      end if
       buf = adjustl(buf)
       sign = ''
       if (buf(1:1) == '-') then

@@ -1720,7 +1720,13 @@ contains
       real(dp), intent(in) :: mass(0:2, n), v1(2, n), mv0(2, n), dt, scale
       real(dp), intent(out) :: residual(2, k1:k2)
       integer :: k, a
-      real(dp) :: res(2), mv(2)
+      real(dp) :: res(2), mv(2), g(2)
+      ! The weight enters both rows of an inner node as (-0, weight) lumped(k): lumped(k) > 0
+      ! (half the lengths of its cells), so row 1 gains -0, and x + (-0) = x for every x: the
+      ! same bits, and the pair stays one register (res(2) alone went through the stack: a
+      ! packed load right after a scalar store, which waits). node_residuals 17.38e6 ->
+      ! 16.63e6 instructions on fast_180kN, process CPU about -2 % (docs/speed.md).
+      g = [-0.0_dp, weight]
       do k = k1, k2
          if (dynamic .and. k >= 3 .and. k <= n - 2) then
             ! An inner node of a step: the operations of the general case below, in its order,
@@ -1729,11 +1735,7 @@ contains
             ! instructions on fast_180kN, callgrind).
             !GCC$ unroll 1
             do a = 1, 2
-               res(a) = (0.0_dp + force(a, k - 1)) - force(a, k)
-            end do
-            res(2) = res(2) + weight*lumped(k)
-            !GCC$ unroll 1
-            do a = 1, 2
+               res(a) = ((0.0_dp + force(a, k - 1)) - force(a, k)) + g(a)*lumped(k)
                mv(a) = (((mass(0, k)*v1(a, k) + mass(1, k - 1)*v1(a, k - 1)) + mass(1, k)*v1(a, k + 1)) &
                         + mass(2, k - 2)*v1(a, k - 2)) + mass(2, k)*v1(a, k + 2)
                residual(a, k) = ((res(a) - load_node(a, k)) + (mv(a) - mv0(a, k))/dt)*scale

@@ -10,7 +10,8 @@ module suite_rod
    use xcable_numerics_atan2, only: fast_atan2
    use xcable_material_tension_only, only: new_tension_only
    use xcable_material_table, only: table_law, new_table_law
-   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, cell_terms
+   use xcable_model_rod, only: rod_problem, rod_piece, rod_kl, rod_ku, cell_terms, bend_nodes, small_rotation
+   use xcable_numerics_tan, only: fast_tan
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
    use xcable_ends_mass, only: mass_end
@@ -18,6 +19,7 @@ module suite_rod
    use xcable_solver_banded, only: band_matrix
    use xcable_fdcheck, only: check_jacobian
    use, intrinsic :: iso_fortran_env, only: output_unit, int64
+   use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_positive_inf
    implicit none
    private
    public :: collect_rod
@@ -39,8 +41,102 @@ contains
                new_unittest('old_level_from_last_evaluation', test_old_level_memo), &
                new_unittest('residual_alone_same_bits', test_residual_alone), &
                new_unittest('energies_kinetic_and_gravity', test_energies_kinetic_gravity), &
-               new_unittest('cell_terms_blocks_same_bits', test_cell_terms_blocks)]
+               new_unittest('cell_terms_blocks_same_bits', test_cell_terms_blocks), &
+               new_unittest('bend_terms_in_pairs_same_bits', test_bend_terms_same_bits)]
    end subroutine collect_rod
+
+   !> bend_nodes (model/rod.f90: the bending terms of a step in packed pairs, without
+   !> branches in the common case, bend_arguments and bend_divided_array) against the
+   !> per-node forms written out here as the code had them, every result by its bits:
+   !> the argument of tan by a branch on |th1 - th0| < small_rotation, then the Taylor form
+   !> or the divided difference. 2 10^5 reproducible nodes, th0 in [-3, 3], th1 - th0 in
+   !> five families: below small_rotation (log-uniform from 1e-14, the Taylor branch),
+   !> above it up to 1, within four units of small_rotation (either side, the limit itself
+   !> included), +-0, and NaN or infinite; in pieces of 1 to 40 nodes that alternate
+   !> between all Taylor and mixed (152796 Taylor nodes). Mutations seen to fail: the mask
+   !> without the sign bit's copy (shiftr for shifta in bend_argument: 132796 nodes
+   !> differ), the array's test of `others` reversed (`others < 0`: all 47204 other nodes
+   !> differ), its second loop on |h| > small_rotation (NaN and the limit: 9986),
+   !> bend_moment_of as 2 EI (t (1 + t^2)) / h_k (49165). (The Taylor correction of m with
+   !> h h grouped first changes no node: it is about 1e-9 of m.)
+   subroutine test_bend_terms_same_bits(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: total = 200000
+      type(rod_piece) :: p
+      real(dp) :: v(3), sg, h, x, t, third, m, dm, b1
+      logical :: ok
+      integer(i8) :: state
+      integer :: k, first, last, bad, taylor
+      allocate (p%th0(total), p%th1(total), p%dual(total), p%b0(total), p%mom(total), p%dmom(total), &
+                p%memo_b(total), p%memo_b_ok(total))
+      p%ei = 70.6_dp
+      state = 20261202_i8
+      do k = 1, total
+         v = [uniform(state), uniform(state), uniform(state)]
+         sg = merge(-1.0_dp, 1.0_dp, v(3) < 0.5_dp)
+         p%th0(k) = 6*v(2) - 3
+         p%dual(k) = 0.1_dp + v(3)
+         p%b0(k) = 10*v(1)*v(2)
+         if (mod(k/500, 2) == 0) then
+            h = sg*10.0_dp**(-14 + 10*v(1))
+         else
+            select case (mod(k, 5))
+            case (0)
+               h = sg*10.0_dp**(-14 + 10*v(1))
+            case (1)
+               h = sg*10.0_dp**(-4 + 4*v(1))
+            case (2)
+               h = sg*(small_rotation + (int(9*v(1)) - 4)*spacing(small_rotation))
+            case (3)
+               h = sg*0.0_dp
+            case default
+               h = merge(ieee_value(1.0_dp, ieee_quiet_nan), sg*ieee_value(1.0_dp, ieee_positive_inf), v(1) < 0.5_dp)
+            end select
+         end if
+         p%th1(k) = p%th0(k) + h
+      end do
+      first = 1
+      do while (first <= total)
+         last = min(total, first + int(40*uniform(state)))
+         call bend_nodes(p, first, last)
+         first = last + 1
+      end do
+      bad = 0
+      taylor = 0
+      do k = 1, total
+         associate (ei => p%ei, hk => p%dual(k), th0 => p%th0(k), th1 => p%th1(k))
+            h = th1 - th0
+            if (abs(h) < small_rotation) then
+               taylor = taylor + 1
+               x = 0.5_dp*(0.5_dp*(th0 + th1))
+               t = fast_tan(x)
+               third = ei*(1 + t*t)*t*(4 + 6*t*t)/hk
+               m = 2*ei*t*(1 + t*t)/hk + third*h*h/24
+               dm = 0.5_dp*(ei*(1 + t*t)*(1 + 3*t*t)/hk) + third*h/12
+               b1 = 0
+               ok = .false.
+            else
+               t = fast_tan(0.5_dp*th1)
+               b1 = 2*ei*t**2/hk
+               ok = .true.
+               m = (b1 - p%b0(k))/h
+               dm = (2*ei*t*(1 + t*t)/hk - m)/h
+            end if
+         end associate
+         if (transfer(p%mom(k), 0_i8) /= transfer(m, 0_i8) .or. transfer(p%dmom(k), 0_i8) /= transfer(dm, 0_i8) &
+             .or. transfer(p%memo_b(k), 0_i8) /= transfer(b1, 0_i8) .or. (p%memo_b_ok(k) .neqv. ok)) bad = bad + 1
+      end do
+      call check(error, bad == 0 .and. taylor > total/2 .and. taylor < total, &
+                 'bend_nodes: '//str(bad)//' of '//str(total)//' nodes differ from the per-node forms in their bits ('// &
+                 str(taylor)//' Taylor nodes)')
+   end subroutine test_bend_terms_same_bits
+
+   !> Uniform in [0, 1) from a 64-bit linear congruential generator (reproducible everywhere).
+   real(dp) function uniform(state)
+      integer(i8), intent(inout) :: state
+      state = state*6364136223846793005_i8 + 1442695040888963407_i8
+      uniform = real(shiftr(state, 11), dp)*2.0_dp**(-53)
+   end function uniform
 
    !> A piece of 9 nodes: end a held (fixed or moving), end b loaded (force
    !> ramp with a couple, or a point mass); a curved state with a strongly

@@ -56,9 +56,11 @@ module xcable_model_rod
    private
    public :: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
    public :: bend_energy, bend_moment, bend_curvature, cell_rotations
-   ! Public for their tests: cell_terms (suite_rod, cell_terms_blocks_same_bits) and
-   ! add_jacobian (suite_quiescent, jacobian_gathered_as_cell_by_cell).
-   public :: cell_terms, add_jacobian
+   ! Public for their tests: cell_terms (suite_rod, cell_terms_blocks_same_bits), add_jacobian
+   ! (suite_quiescent, jacobian_gathered_as_cell_by_cell), bend_nodes and small_rotation
+   ! (suite_rod, bend_terms_in_pairs_same_bits). bend_nodes' kernels stay private, inlined
+   ! into it (public, they cost 0.9e6 instructions on fast_180kN).
+   public :: cell_terms, add_jacobian, bend_nodes, small_rotation
 
    !> The unknowns of a node, in their order in Newton's vector (node after node).
    character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']
@@ -884,8 +886,7 @@ contains
    end subroutine cell_rotations_of
 
    !> The bending terms of a step (bend_divided) at the nodes k1 .. k2: the moment, its
-   !> derivative and, where computed, the new bending energy (memo). One call site, so that
-   !> the compiler keeps bend_divided inline as in the loop it came from.
+   !> derivative and, where computed, the new bending energy (memo).
    subroutine bend_nodes(self, k1, k2)
       type(rod_piece), intent(inout) :: self
       integer, intent(in) :: k1, k2
@@ -899,14 +900,14 @@ contains
       ! the whole process 0.5685e9 -> 0.5672e9 (callgrind, docs/speed.md).
       do first = k1, k2, block
          last = min(first + block - 1, k2)
-         do k = first, last
-            x(k - first + 1) = bend_argument(self%th0(k), self%th1(k))
-         end do
+         call bend_arguments(last - first + 1, self%th0(first:last), self%th1(first:last), x)
          call fast_tan_array(last - first + 1, x, t)
-         do k = first, last
-            call bend_divided(self, k, self%th0(k), self%th1(k), self%b0(k), t(k - first + 1), self%mom(k), &
-                              self%dmom(k), self%memo_b(k), self%memo_b_ok(k))
-         end do
+         ! Then bend_divided by bend_divided_array (its Taylor branch in packed SSE2 pairs, the
+         ! divisions too: about 96 % of the nodes on fast_180kN), the same bits; with the
+         ! packed arguments bend_nodes 22.59e6 -> 15.17e6 instructions, the lean run -1.5 %.
+         call bend_divided_array(last - first + 1, self%ei, self%dual(first:last), self%th0(first:last), &
+                                 self%th1(first:last), self%b0(first:last), t, self%mom(first:last), &
+                                 self%dmom(first:last), self%memo_b(first:last), self%memo_b_ok(first:last))
       end do
    end subroutine bend_nodes
 
@@ -1563,15 +1564,15 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: th
       bend_energy = 0
-      if (k >= 2 .and. k <= self%n - 1) bend_energy = bend_energy_of(self, k, fast_tan(0.5_dp*th))
+      if (k >= 2 .and. k <= self%n - 1) bend_energy = bend_energy_of(self%ei, self%dual(k), fast_tan(0.5_dp*th))
    end function bend_energy
 
    !> bend_energy from t = tan(th / 2).
-   pure real(dp) function bend_energy_of(self, k, t)
-      class(rod_piece), intent(in) :: self
-      integer, intent(in) :: k
-      real(dp), intent(in) :: t
-      bend_energy_of = 2*self%ei*t**2/self%dual(k)
+   !> (Bending stiffness ei, N m^2, and dual length hk of the node, m: also bend_moment_of,
+   !> bend_stiffness_of, bend_taylor, bend_divided.)
+   elemental real(dp) function bend_energy_of(ei, hk, t)
+      real(dp), intent(in) :: ei, hk, t
+      bend_energy_of = 2*ei*t**2/hk
    end function bend_energy_of
 
    !> The discrete curvature 2 tan(th / 2) / h_k of node k, 1/m (counter-clockwise positive).
@@ -1587,15 +1588,13 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_moment = bend_moment_of(self, k, fast_tan(0.5_dp*th))
+      bend_moment = bend_moment_of(self%ei, self%dual(k), fast_tan(0.5_dp*th))
    end function bend_moment
 
    !> bend_moment from t = tan(th / 2).
-   pure real(dp) function bend_moment_of(self, k, t)
-      class(rod_piece), intent(in) :: self
-      integer, intent(in) :: k
-      real(dp), intent(in) :: t
-      bend_moment_of = 2*self%ei*t*(1 + t*t)/self%dual(k)
+   elemental real(dp) function bend_moment_of(ei, hk, t)
+      real(dp), intent(in) :: ei, hk, t
+      bend_moment_of = 2*ei*t*(1 + t*t)/hk
    end function bend_moment_of
 
    !> d2B/dth2 of node k, N m.
@@ -1603,23 +1602,20 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_stiffness = bend_stiffness_of(self, k, fast_tan(0.5_dp*th))
+      bend_stiffness = bend_stiffness_of(self%ei, self%dual(k), fast_tan(0.5_dp*th))
    end function bend_stiffness
 
    !> bend_stiffness from t = tan(th / 2).
-   pure real(dp) function bend_stiffness_of(self, k, t)
-      class(rod_piece), intent(in) :: self
-      integer, intent(in) :: k
-      real(dp), intent(in) :: t
-      bend_stiffness_of = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual(k)
+   elemental real(dp) function bend_stiffness_of(ei, hk, t)
+      real(dp), intent(in) :: ei, hk, t
+      bend_stiffness_of = ei*(1 + t*t)*(1 + 3*t*t)/hk
    end function bend_stiffness_of
 
-   !> The discrete gradient of the bending energy of node k between the turning
+   !> The discrete gradient of the bending energy of a node between the turning
    !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
-   !> (Taylor forms when the two are close).
-   pure subroutine bend_divided(self, k, th0, th1, b0, t, m, dm, b1, b1_ok)
-      class(rod_piece), intent(in) :: self
-      integer, intent(in) :: k
+   !> (Taylor forms when the two are close, bend_taylor).
+   pure subroutine bend_divided(ei, hk, th0, th1, b0, t, m, dm, b1, b1_ok)
+      real(dp), intent(in) :: ei, hk
       !> Old and new turning angle, and the old one's bending energy B(th0).
       real(dp), intent(in) :: th0, th1, b0
       !> fast_tan(bend_argument(th0, th1)).
@@ -1628,36 +1624,97 @@ contains
       !> B(th1) when it was computed (b1_ok).
       real(dp), intent(out) :: b1
       logical, intent(out) :: b1_ok
-      real(dp) :: h, third
+      real(dp) :: h
       h = th1 - th0
       if (abs(h) < small_rotation) then
-         ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
-         third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual(k)
-         m = bend_moment_of(self, k, t) + third*h*h/24
-         dm = 0.5_dp*bend_stiffness_of(self, k, t) + third*h/12
+         call bend_taylor(ei, hk, h, t, m, dm)
          b1 = 0
          b1_ok = .false.
       else
          ! One tan for B(th1) and its moment (the compiler called tan twice here).
-         b1 = bend_energy_of(self, k, t)
+         b1 = bend_energy_of(ei, hk, t)
          b1_ok = .true.
          m = (b1 - b0)/h
-         dm = (bend_moment_of(self, k, t) - m)/h
+         dm = (bend_moment_of(ei, hk, t) - m)/h
       end if
    end subroutine bend_divided
 
+   !> bend_divided's Taylor forms (|h| < small_rotation, h = th1 - th0, t the tan of half
+   !> the mean turning angle): m = B' + B''' h^2 / 24 and dm = B'' / 2 + B''' h / 12.
+   elemental subroutine bend_taylor(ei, hk, h, t, m, dm)
+      real(dp), intent(in) :: ei, hk, h, t
+      real(dp), intent(out) :: m, dm
+      real(dp) :: third
+      ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
+      third = ei*(1 + t*t)*t*(4 + 6*t*t)/hk
+      m = bend_moment_of(ei, hk, t) + third*h*h/24
+      dm = 0.5_dp*bend_stiffness_of(ei, hk, t) + third*h/12
+   end subroutine bend_taylor
+
+   !> bend_divided at n nodes, bit for bit: bend_taylor at every node in a loop without
+   !> branches (gfortran 12 packs it two nodes to an SSE2 operation, divisions included),
+   !> then, if some node is not that case (|th1 - th0| >= small_rotation, NaN),
+   !> bend_divided itself for each of those. test/suite_rod.f90 compares bend_nodes' results
+   !> with the per-node forms by their bits (bend_terms_in_pairs_same_bits).
+   pure subroutine bend_divided_array(n, ei, hk, th0, th1, b0, t, m, dm, b1, b1_ok)
+      !> Number of nodes.
+      integer, intent(in) :: n
+      !> Bending stiffness, N m^2.
+      real(dp), intent(in) :: ei
+      !> The nodes' dual lengths, old and new turning angles, old bending energies and tan
+      !> (fast_tan(bend_argument(th0, th1))).
+      real(dp), intent(in) :: hk(n), th0(n), th1(n), b0(n), t(n)
+      !> bend_divided's results at each node.
+      real(dp), intent(out) :: m(n), dm(n), b1(n)
+      logical, intent(out) :: b1_ok(n)
+      real(dp) :: h
+      integer :: i
+      integer(i8) :: others
+      ! others: the OR of the complemented bits of |h| - small_rotation, whose sign bit is
+      ! set if some |h| >= small_rotation or is NaN (as in fast_tan_array).
+      others = 0
+      !GCC$ unroll 1
+      do i = 1, n
+         h = th1(i) - th0(i)
+         call bend_taylor(ei, hk(i), h, t(i), m(i), dm(i))
+         others = ior(others, not(transfer(abs(h) - small_rotation, 0_i8)))
+      end do
+      b1 = 0
+      b1_ok = .false.
+      if (others >= 0) return
+      do i = 1, n
+         if (.not. abs(th1(i) - th0(i)) < small_rotation) &
+            call bend_divided(ei, hk(i), th0(i), th1(i), b0(i), t(i), m(i), dm(i), b1(i), b1_ok(i))
+      end do
+   end subroutine bend_divided_array
+
    !> The argument of tan in bend_divided: half the mean turning angle where the two are
    !> close (its Taylor form), else half the new one.
-   pure real(dp) function bend_argument(th0, th1) result(x)
+   elemental real(dp) function bend_argument(th0, th1) result(x)
       real(dp), intent(in) :: th0, th1
-      real(dp) :: mid
-      if (abs(th1 - th0) < small_rotation) then
-         mid = 0.5_dp*(th0 + th1)
-         x = 0.5_dp*mid
-      else
-         x = 0.5_dp*th1
-      end if
+      integer(i8) :: close
+      ! Both forms, and the one that applies picked by a mask of bits, so that bend_arguments'
+      ! loop packs in SSE2 pairs (gfortran 12 keeps a merge of the two, or of integer masks
+      ! from a comparison, a branch). close: all bits set where |th1 - th0| < small_rotation,
+      ! the sign bit of |th1 - th0| - small_rotation copied (never -0; a NaN is positive, as
+      ! abs leaves it: not close, as the comparison).
+      close = shifta(transfer(abs(th1 - th0) - small_rotation, 0_i8), 63)
+      x = transfer(ior(iand(close, transfer(0.5_dp*(0.5_dp*(th0 + th1)), 0_i8)), &
+                       iand(not(close), transfer(0.5_dp*th1, 0_i8))), 0.0_dp)
    end function bend_argument
+
+   !> x(i) = bend_argument(th0(i), th1(i)), i = 1 .. n, in packed SSE2 pairs (explicit-shape
+   !> arrays, as fast_tan_array's).
+   pure subroutine bend_arguments(n, th0, th1, x)
+      integer, intent(in) :: n
+      real(dp), intent(in) :: th0(n), th1(n)
+      real(dp), intent(out) :: x(n)
+      integer :: i
+      !GCC$ unroll 1
+      do i = 1, n
+         x(i) = bend_argument(th0(i), th1(i))
+      end do
+   end subroutine bend_arguments
 
    !> Applied couple on cell c (the end cells), averaged over [ta, tb].
    pure real(dp) function cell_couple(self, c, ta, tb)
@@ -1773,7 +1830,13 @@ contains
       real(dp), intent(in) :: mass(0:2, n), v1(2, n), mv0(2, n), dt, scale
       real(dp), intent(out) :: residual(2, k1:k2)
       integer :: k, a
-      real(dp) :: res(2), mv(2)
+      real(dp) :: res(2), mv(2), g(2)
+      ! The weight enters both rows of an inner node as (-0, weight) lumped(k): lumped(k) > 0
+      ! (half the lengths of its cells), so row 1 gains -0, and x + (-0) = x for every x: the
+      ! same bits, and the pair stays one register (res(2) alone went through the stack: a
+      ! packed load right after a scalar store, which waits). node_residuals 17.38e6 ->
+      ! 16.63e6 instructions on fast_180kN, process CPU about -2 % (docs/speed.md).
+      g = [-0.0_dp, weight]
       do k = k1, k2
          if (dynamic .and. k >= 3 .and. k <= n - 2) then
             ! An inner node of a step: the operations of the general case below, in its order,
@@ -1782,11 +1845,7 @@ contains
             ! instructions on fast_180kN, callgrind).
             !GCC$ unroll 1
             do a = 1, 2
-               res(a) = (0.0_dp + force(a, k - 1)) - force(a, k)
-            end do
-            res(2) = res(2) + weight*lumped(k)
-            !GCC$ unroll 1
-            do a = 1, 2
+               res(a) = ((0.0_dp + force(a, k - 1)) - force(a, k)) + g(a)*lumped(k)
                mv(a) = (((mass(0, k)*v1(a, k) + mass(1, k - 1)*v1(a, k - 1)) + mass(1, k)*v1(a, k + 1)) &
                         + mass(2, k - 2)*v1(a, k - 2)) + mass(2, k)*v1(a, k + 2)
                residual(a, k) = ((res(a) - load_node(a, k)) + (mv(a) - mv0(a, k))/dt)*scale

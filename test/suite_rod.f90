@@ -539,13 +539,6 @@ contains
       end subroutine compare_once
    end subroutine test_cell_terms_blocks
 
-   !> Uniform in [0, 1) from a 64-bit linear congruential generator (reproducible everywhere).
-   real(dp) function uniform(state)
-      integer(int64), intent(inout) :: state
-      state = state*6364136223846793005_int64 + 1442695040888963407_int64
-      uniform = real(shiftr(state, 11), dp)*2.0_dp**(-53)
-   end function uniform
-
    !> The loop over the cells that cell_terms did cell by cell before it went in blocks (efa47e9,
    !> its text), the reference of test_cell_terms_blocks.
    subroutine cell_terms_reference(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &

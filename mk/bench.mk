@@ -1,9 +1,9 @@
 # Work-precision benchmark (issue 5): `make bench` runs example/bench against
 # the installed bin/xcable (one thread) for the box scheme and the rod (averaged
 # and lumped mass), and writes docs/benchmark_tables.md, docs/benchmark.dat and
-# the figure docs/benchmark.png (bench/benchmark.gp); about 40 minutes on 2
-# cores, of which the instruction counts (valgrind --tool=callgrind, BENCH_JOBS
-# at a time) take a third. `make bench-quick` times only the target configurations
+# the figure docs/benchmark.png (bench/benchmark.gp); about 8 minutes on 2
+# cores (2026-12-02), of which the instruction counts (valgrind --tool=callgrind,
+# BENCH_JOBS at a time) take a third. `make bench-quick` times only the target configurations
 # (before/after checks, a few minutes). Neither is part of `make test`.
 
 .PHONY: bench bench-quick

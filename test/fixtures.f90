@@ -3,10 +3,10 @@ module xcable_fixtures
    use xcable_kinds, only: dp
    use xcable_error, only: error_type
    use xcable_io_input, only: case_config
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model
+   use xcable_box_case, only: setup_case
+   use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options
+   use xcable_box_dynamics, only: dynamics_options
    implicit none
    private
    public :: paper_case, write_text

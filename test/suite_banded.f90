@@ -15,11 +15,11 @@ module suite_banded
    use xcable_io_config, only: case_config
    use xcable_model_rod, only: rod_kl, rod_ku
    use xcable_fixtures, only: paper_case
-   use xcable_model_equations, only: cable_model, n_eq
+   use xcable_box_equations, only: cable_model, n_eq
    use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options
-   use xcable_discrete_box, only: box_system
-   use xcable_statics, only: catenary_guess
+   use xcable_box_dynamics, only: dynamics_options
+   use xcable_box_discrete, only: box_system
+   use xcable_box_statics, only: catenary_guess
    use xcable_theory, only: wave_speed
    use suite_rod_dynamics, only: rupture_config, run_config
    use, intrinsic :: iso_fortran_env, only: output_unit

@@ -9,10 +9,10 @@ module suite_dynamics
    use xcable_error, only: fatal_error
    use xcable_strings, only: str
    use xcable_fixtures, only: paper_case
-   use xcable_model_equations, only: cable_model, n_eq, i_eps, i_u
+   use xcable_box_equations, only: cable_model, n_eq, i_eps, i_u
    use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture, rupture_factor
-   use xcable_statics, only: static_state, solve_statics
+   use xcable_box_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture, rupture_factor
+   use xcable_box_statics, only: static_state, solve_statics
    use xcable_theory, only: wall_drop_time, riemann_speed
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none

@@ -9,10 +9,10 @@ module suite_input
    use xcable_io_input, only: case_config, read_config, read_values, config_text, value_text
    use xcable_io_schema, only: schema_entry, schema_table, schema_text, is_table
    use xcable_strings, only: real_text, to_lower, str
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model
+   use xcable_box_case, only: setup_case
+   use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options
+   use xcable_box_dynamics, only: dynamics_options
    use xcable_fixtures, only: write_text
    implicit none
    private

@@ -7,11 +7,11 @@ module suite_jacobian
    use xcable_error, only: fatal_error
    use xcable_strings, only: str
    use xcable_fixtures, only: paper_case
-   use xcable_model_equations, only: cable_model, n_eq, equation_terms, equation_derivatives, mass_times
+   use xcable_box_equations, only: cable_model, n_eq, equation_terms, equation_derivatives, mass_times
    use xcable_solver_newton, only: newton_options, newton_workspace
-   use xcable_dynamics, only: dynamics_options
-   use xcable_discrete_box, only: box_system
-   use xcable_statics, only: catenary_guess
+   use xcable_box_dynamics, only: dynamics_options
+   use xcable_box_discrete, only: box_system
+   use xcable_box_statics, only: catenary_guess
    use xcable_theory, only: wave_speed
    implicit none
    private

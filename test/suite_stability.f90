@@ -7,12 +7,12 @@ module suite_stability
    use xcable_error, only: fatal_error
    use xcable_strings, only: str
    use xcable_io_input, only: case_config
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model, i_eps, i_om
-   use xcable_model_geometry, only: positions
+   use xcable_box_case, only: setup_case
+   use xcable_box_equations, only: cable_model, i_eps, i_om
+   use xcable_box_geometry, only: positions
    use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture
-   use xcable_statics, only: static_state, solve_statics
+   use xcable_box_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture
+   use xcable_box_statics, only: static_state, solve_statics
    use xcable_theory, only: riemann_speed
    implicit none
    private

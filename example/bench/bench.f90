@@ -43,11 +43,11 @@ program bench
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type
    use xcable_io_input, only: case_config, read_config
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model
+   use xcable_box_case, only: setup_case
+   use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
    use xcable_solver_banded, only: band_matrix
-   use xcable_dynamics, only: dynamics_options
+   use xcable_box_dynamics, only: dynamics_options
    use bench_theory, only: wave_reference, simple_wave_reference
    use bench_runs, only: run_spec, run_result, run_case, median, paired_ratio, instruction_command, read_instructions
    use bench_measure, only: run_errors, field_reference, measure, build_field_reference, save_reference, &

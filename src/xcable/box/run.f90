@@ -9,12 +9,12 @@ module xcable_box_run
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: str, real_text
    use xcable_io_config, only: case_config
-   use xcable_case, only: setup_case
-   use xcable_model_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
-   use xcable_model_geometry, only: positions, fixed_frame_velocity
+   use xcable_box_case, only: setup_case
+   use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
+   use xcable_box_geometry, only: positions, fixed_frame_velocity
    use xcable_solver_newton, only: newton_options
-   use xcable_statics, only: static_state, solve_statics
-   use xcable_dynamics, only: dynamics_options, box_history => run_history, box_summary => run_summary, &
+   use xcable_box_statics, only: static_state, solve_statics
+   use xcable_box_dynamics, only: dynamics_options, box_history => run_history, box_summary => run_summary, &
                               box_observer => run_observer, run_rupture, rupture_factor
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_fields, n_energy
    implicit none

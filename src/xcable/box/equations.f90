@@ -9,7 +9,7 @@
 !>
 !> Besides M and P this module gives the exact derivatives d(M(Y) z)/dY and
 !> dP/dY that the Jacobian of the discrete equations is built from.
-module xcable_model_equations
+module xcable_box_equations
    use xcable_kinds, only: dp
    use xcable_material_law, only: material_law
    implicit none
@@ -180,4 +180,4 @@ contains
       dforcing(7, i_sn) = onep**3/ei
       dforcing(7, i_eps) = 3*y(i_sn)*onep**2/ei
    end subroutine equation_derivatives
-end module xcable_model_equations
+end module xcable_box_equations

@@ -32,9 +32,9 @@
 !> - dynamics, fixed end: u = 0, v = 0, Omega3 = its static value;
 !>   breaking end: T t + Sn n = F_v i + F_h j (two rows), Omega3 = static value,
 !>   b0^2 + b3^2 = 1.
-module xcable_discrete_box
+module xcable_box_discrete
    use xcable_kinds, only: dp
-   use xcable_model_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om, &
+   use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om, &
                                      equation_terms, equation_derivatives, forcing_from_law, mass_times_from_law
    use xcable_solver_banded, only: band_matrix
    use xcable_solver_newton, only: newton_problem
@@ -376,4 +376,4 @@ contains
          jacobian%ab(band0 + row0 + row - col, col) = val
       end subroutine put_end
    end subroutine assemble
-end module xcable_discrete_box
+end module xcable_box_discrete

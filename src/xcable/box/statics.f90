@@ -1,11 +1,11 @@
 !> The initial static state (eq. 18 without time derivatives, boundary
 !> conditions 28-29): Newton's method from the extensible-catenary guess.
-module xcable_statics
+module xcable_box_statics
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, prefix_error
-   use xcable_model_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
-   use xcable_model_geometry, only: positions
-   use xcable_discrete_box, only: box_system
+   use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
+   use xcable_box_geometry, only: positions
+   use xcable_box_discrete, only: box_system
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use xcable_theory, only: horizontal_force, wave_speed
    implicit none
@@ -100,4 +100,4 @@ contains
       state%sag = max(state%z(1), state%z(np)) - minval(state%z)
       state%end_angle = atan2(-(state%y(i_b0, 1)**2 - state%y(i_b3, 1)**2), 2*state%y(i_b0, 1)*state%y(i_b3, 1))
    end subroutine solve_statics
-end module xcable_statics
+end module xcable_box_statics

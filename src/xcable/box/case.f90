@@ -2,15 +2,15 @@
 !> cable model, the grid and the controls of statics and dynamics. The checks
 !> that need the material law (the static strain within the law's documented
 !> range, a tension that can hold the cable) are made here, before any solve.
-module xcable_case
+module xcable_box_case
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
    use xcable_strings, only: str
    use xcable_io_input, only: case_config, max_time_steps, derive_defaults
    use xcable_material_law, only: new_law
-   use xcable_model_equations, only: cable_model
+   use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
-   use xcable_dynamics, only: dynamics_options
+   use xcable_box_dynamics, only: dynamics_options
    use xcable_theory, only: wave_speed
    implicit none
    private
@@ -106,4 +106,4 @@ contains
       dynamics%max_wall_time = config%max_wall_time
       dynamics%progress = .not. config%quiet
    end subroutine setup_case
-end module xcable_case
+end module xcable_box_case

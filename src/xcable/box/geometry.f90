@@ -1,9 +1,9 @@
 !> Kinematic quantities derived from the unknowns: tangent, position and
 !> velocity in the fixed frame (x horizontal = j component, z vertical = i
 !> component, i points up).
-module xcable_model_geometry
+module xcable_box_geometry
    use xcable_kinds, only: dp
-   use xcable_model_equations, only: n_eq, i_eps, i_u, i_v, i_b0, i_b3
+   use xcable_box_equations, only: n_eq, i_eps, i_u, i_v, i_b0, i_b3
    implicit none
    private
    public :: positions, fixed_frame_velocity
@@ -52,4 +52,4 @@ contains
       vel_z = y(i_u)*c2 - y(i_v)*s2
       vel_x = y(i_u)*s2 + y(i_v)*c2
    end subroutine fixed_frame_velocity
-end module xcable_model_geometry
+end module xcable_box_geometry

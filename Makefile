@@ -17,9 +17,11 @@ deps:
 # fpm builds and installs bin/xcable; tools/link-static.sh then links fpm's objects
 # again with HDF5, LAPACK, BLAS and libgfortran static (a faster start, the same
 # bits; it keeps fpm's program when it cannot). The program's old link is removed
-# first so that fpm links it again and its log holds the link command.
+# first so that fpm links it again and its log holds the link command. The library archive is
+# removed too: fpm adds objects to it and never takes one out, so a source file that was moved or
+# deleted would stay in it (and clash at the link).
 build: deps
-	@rm -f build/gfortran_*/app/xcable
+	@rm -f build/gfortran_*/app/xcable build/gfortran_*/xcable/libxcable.a
 	@log=$$(mktemp); \
 	if ! $(FPM) install --profile $(PROFILE) --prefix . --verbose >$$log 2>&1; then \
 		grep -v '<INFO>' $$log | tail -40; rm -f $$log; exit 1; fi; \

@@ -32,7 +32,8 @@ module stress_runs
    use xcable_error, only: error_type, stat_input
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
-   use xcable_material_law, only: material_law, new_law
+   use xcable_material_law, only: material_law
+   use xcable_material_factory, only: new_law
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
    use xcable_theory, only: riemann_speed, wave_speed, wall_drop_time

@@ -7,7 +7,7 @@ module xcable_box_case
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
    use xcable_strings, only: str
    use xcable_io_input, only: case_config, max_time_steps, derive_defaults
-   use xcable_material_law, only: new_law
+   use xcable_material_factory, only: new_law
    use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options

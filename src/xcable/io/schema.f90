@@ -19,6 +19,7 @@ module xcable_io_schema
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: real_text
    use xcable_io_config, only: max_table_points
+   use xcable_material_factory, only: law_names
    implicit none
    private
    public :: schema_entry, schema_table, schema_groups, find_entry, group_entries
@@ -107,7 +108,7 @@ contains
       call add(t, 'material', 'law', 'string', '-', "'tanh'", &
                "'tanh': T = p1 tanh(p2 eps + p3) + p4 + p5 eps (eq. 17); 'linear': T = EA eps; 'table': T from "// &
                'rows of strain and tension (table_strain and table_tension, or table_file)', length=16, &
-               choices='tanh linear table')
+               choices=join(law_names))
       call add(t, 'material', 'p', 'real', 'N, -, -, N, N', '270300, 10.2, -2.128, 262700, 135.5', &
                'p1..p5 of eq. 17; for the tanh law p1, p5 in (0, 1e12], p2 in (0, 1e6], p3 in [-1e3, 1e3]', &
                -1.0e12_dp, 1.0e12_dp, count=5)

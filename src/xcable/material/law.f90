@@ -12,7 +12,7 @@ module xcable_material_law
    use, intrinsic :: iso_c_binding, only: c_double
    implicit none
    private
-   public :: material_law, tanh_law, linear_law, new_law, strain_kept
+   public :: material_law, tanh_law, linear_law, tanh_law_of, strain_kept
    public :: paper_tanh_coefficients
 
    !> Coefficients p1..p5 of eq. 17 for the paper's nylon line (N, -, -, N, N).
@@ -147,30 +147,15 @@ contains
       f1 = self%tension(eps1)
    end subroutine strain_energy_change_tension
 
-   !> Build a law from its name and parameters.
-   subroutine new_law(law, name, p, ea, strain_max, error)
-      !> The law built.
-      class(material_law), allocatable, intent(out) :: law
-      !> 'tanh' or 'linear'.
-      character(*), intent(in) :: name
-      !> Coefficients of the tanh law.
+   !> The tanh law of coefficients p (eq. 17), with the constants of its strain energy kept.
+   function tanh_law_of(p, strain_max) result(law)
+      !> Coefficients p1..p5.
       real(dp), intent(in) :: p(5)
-      !> EA of the linear law, N.
-      real(dp), intent(in) :: ea
       !> Largest documented strain.
       real(dp), intent(in) :: strain_max
-      !> Error if the name is unknown.
-      type(error_type), allocatable, intent(out) :: error
-      select case (name)
-      case ('tanh')
-         allocate (law, source=tanh_law(p=p, strain_max=strain_max, lc3=[p(3), log_cosh(p(3)), &
-                                                                   1/(1 + exp(-2*p(3))), 1/(1 + exp(2*p(3)))]))
-      case ('linear')
-         allocate (law, source=linear_law(ea=ea, strain_max=strain_max))
-      case default
-         call fatal_error(error, "unknown material law '"//name//"'; allowed: 'tanh', 'linear'", stat_input)
-      end select
-   end subroutine new_law
+      type(tanh_law) :: law
+      law = tanh_law(p=p, strain_max=strain_max, lc3=[p(3), log_cosh(p(3)), 1/(1 + exp(-2*p(3))), 1/(1 + exp(2*p(3)))])
+   end function tanh_law_of
 
    !> Strain at which the law gives the tension t (f is strictly increasing).
    !> Safeguarded Newton inside an expanding bracket. With kept, the values at the

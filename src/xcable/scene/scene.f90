@@ -12,9 +12,8 @@ module xcable_scene
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
    use xcable_strings, only: str
    use xcable_io_config, only: case_config
-   use xcable_material_law, only: material_law, new_law
-   use xcable_material_tension_only, only: tension_only_law, new_tension_only
-   use xcable_material_table, only: table_law, new_table_law
+   use xcable_material_law, only: material_law
+   use xcable_material_factory, only: new_case_law
    use xcable_ends_end, only: end_condition
    use xcable_ends_factory, only: new_end
    use xcable_loads_load, only: load_slot, cable_load
@@ -86,8 +85,6 @@ contains
       !> Error (stat_input) naming what is inconsistent.
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: pi = acos(-1.0_dp)
-      class(material_law), allocatable :: law
-      type(table_law) :: table
       real(dp) :: area, ei, ea, rel
       integer :: k
       scene%source = config%source
@@ -97,23 +94,11 @@ contains
       if (ei == 0) ei = config%young*pi*config%diameter**4/64
       ea = config%ea
       if (ea == 0) ea = config%young*area
-      if (trim(config%law) == 'table') then
-         call new_table_law(config%material_table_strain(1:config%material_table_rows), &
-                            config%material_table_tension(1:config%material_table_rows), table, error)
-         if (.not. allocated(error)) allocate (law, source=table)
-      else
-         call new_law(law, trim(config%law), config%p, ea, config%strain_max, error)
-      end if
+      call new_case_law(config, ea, scene%law, error)
       if (allocated(error)) then
          call prefix_error(error, config%source//': &material: ')
          return
       end if
-      select case (trim(config%compression))
-      case ('none')
-         allocate (scene%law, source=new_tension_only(law))
-      case default
-         call move_alloc(law, scene%law)
-      end select
       scene%length = config%length
       scene%mass = config%density*area
       scene%gravity = config%gravity

@@ -528,7 +528,7 @@ contains
          "&end_b kind = 'fixed', x = 18.5, y = 0, z = -3.25, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
          "   history = 'constant', ramp_time = 0, motion = 'harmonic', amplitude = 0, period = 1, phase = 0,"//nl // &
          "   direction_x = 0, direction_y = 0, direction_z = 1, mass = 0 /"//nl // &
-         "&rupture enabled = .true., s_break = 20, t_break = 0.05, time = 0 /"//nl // &
+         "&rupture enabled = .false., s_break = 20, t_break = 0.05, time = 0 /"//nl // &
          "&numerics scheme = 'rod', model = 'auto', nodes = 21, dt = 0, courant = 1, t_end = 0.002,"//nl // &
          "   theta = 0.5, mass_matrix = 'averaged', newton_tol = 1e-7, newton_max_iter = 25,"//nl // &
          "   reuse_jacobian = .true., extrapolate = .true., skip_quiescent = .true.,"//nl // &
@@ -543,8 +543,8 @@ contains
                  index(config_text(config, fingerprint=.true.), "table_x = 0, 0.1, 0.3") > 0, &
                  'end b placed: the fingerprint reads'//nl//config_text(config, fingerprint=.true.))
       if (allocated(error)) return
-      call write_text(path, '&static tension = 150000 /'//nl//'&numerics nodes = 11, t_end = 0.001 /'//nl// &
-                      "&output file = 'results/p2.h5', interval = 0.001, quiet = .true. /"//nl)
+      call write_text(path, '&static tension = 150000 /'//nl//'&rupture /'//nl//'&numerics nodes = 11, t_end = 0.001 /'// &
+                      nl//"&output file = 'results/p2.h5', interval = 0.001, quiet = .true. /"//nl)
       call read_config(path, config, error)
       if (allocated(error)) return
       expected = "&cable length = 60, diameter = 0.05, density = 1140, young = 2.3e8, gravity = 9.81,"//nl // &
@@ -823,7 +823,7 @@ contains
 
    subroutine test_rupture_at_loose_end(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_error(error, "&end_b kind = 'free' /"//nl, &
+      call expect_error(error, "&end_b kind = 'free' /"//nl//'&rupture /'//nl, &
                         [character(40) :: path, '&rupture', 's_break = 60 (the default, L)', "kind = 'free'", &
                          'nothing to break', 'enabled = .false.'])
       if (allocated(error)) return

@@ -10,6 +10,8 @@ module suite_scenes
    use xcable_io_config, only: case_config
    use xcable_simulation, only: simulation
    use xcable_theory, only: wall_drop_time
+   use xcable_io_input, only: read_config
+   use xcable_fixtures, only: write_text
    use suite_rod_statics, only: statics_config
    use suite_rod_dynamics, only: rupture_config, run_config
    use suite_golden, only: snapshot_store
@@ -27,7 +29,8 @@ contains
       tests = [new_unittest('break_in_the_middle', test_middle_break), &
                new_unittest('hanging_chain_bessel', test_hanging_chain), &
                new_unittest('pendulum', test_pendulum), &
-               new_unittest('harmonic_end_motion_string_theory', test_harmonic)]
+               new_unittest('harmonic_end_motion_string_theory', test_harmonic), &
+               new_unittest('no_rupture_group_no_break', test_no_rupture)]
    end subroutine collect_scenes
 
    !> The paper's cable at 180 kN parting at mid-span: the two halves mirror
@@ -256,4 +259,45 @@ contains
          drive = amplitude*w*sin(2*pi*t/period)
       end function drive
    end subroutine test_harmonic
+
+   !> A case without &rupture does not break: the paper's 180 kN line held between its two
+   !> supports keeps its end tensions (a static state stays static), while the same case with a
+   !> &rupture group (t_break only) parts at end b as it always did.
+   subroutine test_no_rupture(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: body = "&static tension = 180000 /"//new_line('a')// &
+                                        "&numerics nodes = 41, courant = 1.0, t_end = 0.03 /"//new_line('a')// &
+                                        "&output quiet = .true., interval = 0.01 /"//new_line('a')
+      type(case_config) :: c
+      type(simulation) :: sim
+      real(dp) :: drift, drop
+      call write_text('build/test_no_rupture.nml', body)
+      call read_config('build/test_no_rupture.nml', c, error)
+      if (allocated(error)) return
+      call check(error, .not. c%break_enabled, 'a case without &rupture asks for a break')
+      if (allocated(error)) return
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      call sim%run(error=error)
+      if (allocated(error)) return
+      ! History row 5: end tension (driver/records.f90); ends 1, 2 are end a, end b.
+      associate (h => sim%rod%history)
+         drift = maxval(abs(h%ends(5, 1:2, h%n) - h%ends(5, 1:2, 0)))/h%ends(5, 2, 0)
+      end associate
+      call write_text('build/test_no_rupture.nml', body//"&rupture t_break = 0.005 /"//new_line('a'))
+      call read_config('build/test_no_rupture.nml', c, error)
+      if (allocated(error)) return
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      call sim%run(error=error)
+      if (allocated(error)) return
+      associate (h => sim%rod%history)
+         drop = h%ends(5, 2, h%n)/h%ends(5, 2, 0)
+      end associate
+      write (output_unit, '(4x,a,es10.3,a,f8.4)') 'no &rupture: end tensions drift by ', drift, &
+         ' of the static; with &rupture t_break = 0.005 / end b keeps ', drop
+      call check(error, drift < 1.0e-6_dp, 'the end tensions of a case without &rupture changed by '//str(drift))
+      if (allocated(error)) return
+      call check(error, drop < 0.1_dp, 'the same case with &rupture did not release end b ('//str(drop)//')')
+   end subroutine test_no_rupture
 end module suite_scenes

@@ -97,7 +97,9 @@ module xcable_io_config
       ! &end_a, &end_b
       type(end_config) :: end_a, end_b
       ! &rupture
-      !> Whether the cable breaks (&rupture enabled).
+      !> Whether the cable breaks: &rupture enabled, whose default .true. holds when the group is
+      !> given; a namelist without &rupture does not break (the reader sets .false., io/input.f90
+      !> read_values).
       logical :: break_enabled = .true.
       !> Unstretched arc length of the break from end a, m (negative: L, the paper's end break).
       real(dp) :: s_break = -1

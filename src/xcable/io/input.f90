@@ -108,6 +108,8 @@ contains
       allocate (present_group(size(groups)), counts(size(t)))
       call scan_groups(path, lines(1:nlines), t, groups, present_group, counts, error)
       if (allocated(error)) return
+      ! A break only when asked for: &rupture given (its enabled then defaults to .true.).
+      config%break_enabled = any(groups == 'rupture' .and. present_group)
       call read_groups(path, config, groups, present_group, error)
       if (allocated(error)) return
       config%given = ''

@@ -206,7 +206,8 @@ contains
                   'columns 0), # starts a comment; the path is relative to the working directory', length=512)
       end do
       ! &rupture
-      call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', 'whether the cable breaks')
+      call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', &
+               'whether the cable breaks; a case without the &rupture group does not break')
       call add(t, 'rupture', 's_break', 'real', 'm', '-1', &
                'unstretched arc length of the break from end a; a break at an end needs that end fixed or moving', &
                0.0_dp, 0.0_dp, upper_from='cable%length', default_means='L, the end b')

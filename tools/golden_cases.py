@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Golden figures of the input/ cases: every dataset of each case's result file reduced to a few
-numbers (shape, sum, sum of squares, largest magnitude, first and last value), so that a
-restructure cannot change a shipped case unnoticed.
+numbers (shape, sum, sum of squares, largest magnitude, first and last value), and every numeric
+attribute of /static and /summary likewise, so that a restructure cannot change a shipped case
+unnoticed.
 
     tools/golden_cases.py check [EXE]   run every input/*.nml with EXE (default bin/xcable) and
                                         compare with test/golden/input_cases.json; exit 1 on a
@@ -11,8 +12,9 @@ restructure cannot change a shipped case unnoticed.
 
 A dataset agrees when each of its numbers is within `RELATIVE` (1e-9) of the dataset's largest
 magnitude, at least FLOOR (sum and sum of squares scaled by the element count): round-off of a reordered
-expression passes, a changed result does not. The run's wall time, run id and the
-namelist's path are not compared."""
+expression passes, a changed result does not. The run's wall time, run id, the namelist's
+path and the Newton and factorisation counts (which a change of round-off may move by one) are
+not compared."""
 import json
 import os
 import subprocess
@@ -27,7 +29,7 @@ PINS = os.path.join(ROOT, 'test', 'golden', 'input_cases.json')
 RELATIVE = 1e-9
 # A dataset of round-off alone (a fixed end's velocity, 1e-16 m/s) is compared on this scale (SI units).
 FLOOR = 1e-6
-SKIP = {'wall_time'}
+SKIP = {'wall_time', 'newton_iterations', 'factorisations', 'max_newton_iterations'}
 
 
 def figures(path):
@@ -44,9 +46,21 @@ def figures(path):
                                      maxabs=float(np.abs(a).max()), first=float(a[0]), last=float(a[-1]))
                 else:
                     out[name] = dict(shape=list(obj.shape), nonfinite=int((~np.isfinite(a)).sum()))
+    def numeric_attributes(obj, prefix):
+        for k, v in obj.attrs.items():
+            a = np.asarray(v)
+            if k in SKIP or a.dtype.kind not in 'fiu' or a.size == 0:
+                continue
+            a = a.astype(float).ravel()
+            if np.all(np.isfinite(a)):
+                out[prefix + '@' + k] = dict(shape=list(a.shape), sum=float(a.sum()), sumsq=float((a * a).sum()),
+                                             maxabs=float(np.abs(a).max()), first=float(a[0]), last=float(a[-1]))
     with h5py.File(path, 'r') as f:
         out['@status'] = f.attrs['status'].decode() if isinstance(f.attrs['status'], bytes) else str(f.attrs['status'])
         f.visititems(visit)
+        for group in ('static', 'summary'):
+            if group in f:
+                numeric_attributes(f[group], group)
     return out
 
 

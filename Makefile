@@ -33,7 +33,10 @@ run: build
 	@$(MAKE) --no-print-directory figures-case CASE=$(CASE)
 	@echo "figures of $(CASE) in results/figures/$(CASE)/"
 
+# The test program is removed first: fpm does not link it again when only the library archive
+# changed (make build rebuilt it), and would run the old one.
 test: build
+	@rm -f build/gfortran_*/test/xcable-test
 	$(FPM) test --profile $(PROFILE)
 	tools/golden_cases.py check bin/xcable
 	test/test_figures.sh

@@ -20,11 +20,11 @@
 program xcable_main
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, stat_input, stat_io
-   use xcable_strings, only: str
+   use xcable_strings, only: str, quantity
    use xcable_io_input, only: case_config, read_config, config_text
    use xcable_io_schema, only: write_schema
    use xcable_simulation, only: simulation
-   use xcable_run_records, only: run_summary, run_history, static_info
+   use xcable_run_records, only: run_summary, run_history, static_info, summary_text
    use xcable_app_output, only: app_output
    use xcable_version, only: version_lines
    use xcable_io_checkpoint, only: checkpoint_path, remove_checkpoint
@@ -87,9 +87,11 @@ program xcable_main
    end if
    call sim%time_step(dt, steps)
    if (check_only) then
+      info => sim%static()
       write (output_unit, '(a)') trim(path)//': ok ('//trim(config%scheme)//' scheme, '//sim%model//' model, '// &
-         str(config%nodes)// &
-         ' nodes, dt '//str(dt)//' s, '//str(steps)//' steps)'
+         str(config%nodes)//' nodes, dt '//quantity(dt, 's')//', '//str(steps)//' steps); static end tensions: '// &
+         'end a '//quantity(info%tension_a, 'N')//', end b '//quantity(info%tension_b, 'N')//', span '// &
+         quantity(info%span, 'm')
       stop
    end if
 
@@ -144,9 +146,10 @@ program xcable_main
       if (rod) call sim%enable_checkpoints(checkpoint, fingerprint, run_id, config%checkpoint_interval, &
                                            on_termination=.true.)
       info => sim%static()
-      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: span '//str(info%span)// &
-         ' m, sag '//str(info%sag)//' m; dynamics with the '//trim(config%scheme)//' scheme, '// &
-         str(config%nodes)//' nodes, dt '//str(dt)//' s'
+      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: end tensions '// &
+         quantity(info%tension_a, 'N')//' (a), '//quantity(info%tension_b, 'N')//' (b), span '// &
+         quantity(info%span, 'm')//', sag '//quantity(info%sag, 'm')//'; dynamics with the '// &
+         trim(config%scheme)//' scheme, '//str(config%nodes)//' nodes, dt '//quantity(dt, 's')
    end if
 
    call sim%run(output, error)
@@ -156,7 +159,8 @@ program xcable_main
    ! A failed run keeps its history and summary too; the first error is reported.
    call output%write_history(history, write_error)
    if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
-   call output%write_summary(summary, history%end_labels, write_error)
+   info => sim%static()
+   call output%write_summary(summary, history%end_labels, write_error, info)
    if (.not. allocated(error) .and. allocated(write_error)) call move_alloc(write_error, error)
    if (allocated(error)) call fail_run(error, summary%time_reached)
    call output%finish('complete', warnings=summary%warnings, error=error)
@@ -173,9 +177,12 @@ program xcable_main
          stop 1, quiet=.true.
       end if
    end if
+   if (.not. config%quiet) call print_lines(summary_text(summary, info, history%end_labels))
    call print_warnings(summary%warnings)
-   if (.not. config%quiet) write (error_unit, '(a)') 'xcable: complete in '//str(summary%wall_time)//' s: '// &
-      str(summary%steps)//' steps, peak end speed '//str(summary%peak_end_speed)//' m/s, results in '//trim(config%file)
+   if (.not. config%quiet) then
+      write (error_unit, '(a)') 'xcable: complete in '//quantity(summary%wall_time, 's')//': '// &
+         str(summary%steps)//' steps to t = '//quantity(summary%time_reached, 's')//', results in '//trim(config%file)
+   end if
 
 contains
 
@@ -190,6 +197,22 @@ contains
       if (allocated(error)) call fail_input(error)
       stop
    end subroutine schema_option
+
+   !> Each line of text on stderr, after 'xcable: '.
+   subroutine print_lines(text)
+      character(*), intent(in) :: text
+      integer :: start, nl
+      start = 1
+      do while (start <= len(text))
+         nl = index(text(start:), new_line('a'))
+         if (nl == 0) then
+            write (error_unit, '(a)') 'xcable: '//text(start:)
+            exit
+         end if
+         write (error_unit, '(a)') 'xcable: '//text(start:start + nl - 2)
+         start = start + nl
+      end do
+   end subroutine print_lines
 
    !> One line per warning on stderr.
    subroutine print_warnings(text)
@@ -236,7 +259,7 @@ contains
    !> SIGTERM: the checkpoint is written; the file gets the summary so far and
    !> the status 'interrupted'; exit code 3.
    subroutine stop_interrupted()
-      call output%write_summary(summary, history%end_labels, write_error)
+      call output%write_summary(summary, history%end_labels, write_error, sim%static())
       if (allocated(write_error)) then
          write (error_unit, '(a)') 'xcable: interrupted (SIGTERM) at t = '//str(summary%time_reached)// &
             ' s, checkpoint '//checkpoint//' written, but: '//write_error%message

@@ -2,7 +2,7 @@
 !> attribute reads 'complete' only after finish('complete').
 module suite_output
    use xcable_kinds, only: dp, i8
-   use xcable_strings, only: str
+   use xcable_strings, only: str, quantity
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_run_records, only: run_history, run_summary
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
@@ -26,7 +26,8 @@ contains
                new_unittest('version_matches_fpm_toml', test_version), &
                new_unittest('reopen_to_resume', test_reopen), &
                new_unittest('number_text_as_formatted_write', test_number_text), &
-               new_unittest('number_text_fast_path_boundaries', test_number_text_boundaries)]
+               new_unittest('number_text_fast_path_boundaries', test_number_text_boundaries), &
+               new_unittest('quantities_as_people_write_them', test_quantity)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -484,4 +485,22 @@ contains
                                          got(1:w(f))//'", formatted write "'//expected(1:w(f))//'"')
       end function same_text
    end subroutine test_number_text_boundaries
+
+   !> Numbers in messages as people write them: four significant digits, SI prefixes for forces
+   !> and short times, no trailing zeros.
+   subroutine test_quantity(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=16), parameter :: want(12) = [character(len=16) :: '315 kN', '1.235 MN', '0.459 ms', &
+         '50 us', '70.66 m', '111.7 m/s', '-7.734 kN', '0 N', '1.235e-5 m', '1 kN', '12 s', '2.5e6 m']
+      real(dp), parameter :: x(12) = [315.0e3_dp, 1.2346e6_dp, 0.459e-3_dp, 0.05e-3_dp, 70.6584_dp, 111.74_dp, &
+                                      -7734.2_dp, 0.0_dp, 1.23456e-5_dp, 999.97_dp, 12.0_dp, 2.5e6_dp]
+      character(len=4), parameter :: unit(12) = [character(len=4) :: 'N', 'N', 's', 's', 'm', 'm/s', 'N', 'N', &
+                                                 'm', 'N', 's', 'm']
+      integer :: k
+      do k = 1, size(x)
+         call check(error, quantity(x(k), trim(unit(k))) == trim(want(k)), 'quantity('//str(x(k))//', '// &
+                    trim(unit(k))//') = "'//quantity(x(k), trim(unit(k)))//'", not "'//trim(want(k))//'"')
+         if (allocated(error)) return
+      end do
+   end subroutine test_quantity
 end module suite_output

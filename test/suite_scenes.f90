@@ -30,7 +30,8 @@ contains
                new_unittest('hanging_chain_bessel', test_hanging_chain), &
                new_unittest('pendulum', test_pendulum), &
                new_unittest('harmonic_end_motion_string_theory', test_harmonic), &
-               new_unittest('no_rupture_group_no_break', test_no_rupture)]
+               new_unittest('no_rupture_group_no_break', test_no_rupture), &
+               new_unittest('heave_summary_from_its_history', test_heave_summary)]
    end subroutine collect_scenes
 
    !> The paper's cable at 180 kN parting at mid-span: the two halves mirror
@@ -300,4 +301,59 @@ contains
       if (allocated(error)) return
       call check(error, drop < 0.1_dp, 'the same case with &rupture did not release end b ('//str(drop)//')')
    end subroutine test_no_rupture
+
+   !> A mooring line in heave (anchor fixed, fairlead moved harmonically, no break): the summary
+   !> is the history's own extremes. The peak end speed is the fairlead's (A omega once the ramp
+   !> is over, to the time step's error), the smallest fixed-end tension is the anchor's (not the moving end's), and there
+   !> is no front arrival (nothing broke).
+   subroutine test_heave_summary(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: case_text = &
+         "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+         "&end_b kind = 'motion', x = 50, z = 30, motion = 'harmonic', amplitude = 0.5, period = 2,"// &
+         " direction_x = 0, direction_z = 1, ramp_time = 1 /"//new_line('a')// &
+         "&material compression = 'none' /"//new_line('a')// &
+         "&numerics nodes = 41, courant = 1.0, t_end = 4 /"//new_line('a')// &
+         "&output quiet = .true., interval = 0.1 /"//new_line('a')
+      real(dp), parameter :: a_omega = 0.5_dp*2*pi/2
+      type(case_config) :: c
+      type(simulation) :: sim
+      real(dp) :: speed, fastest, lowest
+      integer :: i, j
+      call write_text('build/test_heave_summary.nml', case_text)
+      call read_config('build/test_heave_summary.nml', c, error)
+      if (allocated(error)) return
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      call sim%run(error=error)
+      if (allocated(error)) return
+      associate (h => sim%rod%history, m => sim%rod%summary)
+         fastest = 0
+         do j = 1, 2
+            call check(error, m%ends(j)%max_tension == maxval(h%ends(5, j, 0:h%n)) .and. &
+                       m%ends(j)%min_tension == minval(h%ends(5, j, 0:h%n)), &
+                       trim(h%end_labels(j))//': the summary tensions are not the history extremes')
+            if (allocated(error)) return
+            do i = 0, h%n
+               speed = norm2(h%ends(3:4, j, i))
+               fastest = max(fastest, speed)
+            end do
+         end do
+         lowest = minval(h%ends(5, 1, 0:h%n))
+         write (output_unit, '(4x,a,f8.5,a,f8.5,a,f10.3,a,l1)') 'heave: peak end speed ', m%peak_end_speed, &
+            ' m/s (A omega ', a_omega, '), smallest anchor tension ', m%min_fixed_end_tension, ' N; a front: ', &
+            m%has_front
+         call check(error, m%peak_end_speed == fastest .and. m%peak_end_speed_end == 'end_b', &
+                    'the peak end speed is not the fastest end of the history (the fairlead)')
+         if (allocated(error)) return
+         ! The recorded speed is the step's (theta rule), not the closed form's: 1.3e-5 off here.
+         call check(error, abs(m%peak_end_speed - a_omega) < 5.0e-5_dp*a_omega, &
+                    'the fairlead''s peak speed is not A omega: '//str(m%peak_end_speed))
+         if (allocated(error)) return
+         call check(error, m%has_fixed_end .and. m%min_fixed_end_tension == lowest, &
+                    'the smallest fixed-end tension is not the anchor''s')
+         if (allocated(error)) return
+         call check(error, .not. m%has_front .and. .not. m%broke, 'a front or a break reported for a heave')
+      end associate
+   end subroutine test_heave_summary
 end module suite_scenes

@@ -3,7 +3,7 @@ module xcable_strings
    use xcable_kinds, only: dp
    implicit none
    private
-   public :: str, to_lower, real_text
+   public :: str, to_lower, real_text, quantity
 
    !> Convert a number to a compact string.
    interface str
@@ -142,4 +142,90 @@ contains
          if (c >= iachar('A') .and. c <= iachar('Z')) t(i:i) = achar(c + 32)
       end do
    end function to_lower
+
+   !> A value with its unit as people write it: four significant digits without trailing
+   !> zeros, and for forces, energies and powers (N, J, W) a prefix k, M or G above 1000
+   !> ('315 kN', '1.234 MN'), for times below 1 s ms, below 0.1 ms us ('0.459 ms', '50 us');
+   !> other units keep their value ('70.66 m', '111.7 m/s', '-0.0001234 m' as '-1.234e-4 m').
+   pure function quantity(x, unit) result(s)
+      !> Value, in the SI unit given.
+      real(dp), intent(in) :: x
+      !> Its unit ('N', 'kg', 'm/s', ...; '' for a plain number).
+      character(*), intent(in) :: unit
+      character(:), allocatable :: s
+      character(len=*), parameter :: big(3) = ['k', 'M', 'G']
+      character(:), allocatable :: prefix
+      real(dp) :: v
+      integer :: k
+      v = x
+      prefix = ''
+      if (unit == 'N' .or. unit == 'J' .or. unit == 'W' .or. unit == 'N m') then
+         do k = 1, 3
+            if (abs(v) < 999.95_dp) exit
+            v = v/1000
+            prefix = big(k)
+         end do
+      else if (unit == 's' .and. abs(v) < 0.99995_dp .and. v /= 0) then
+         v = v*1000
+         prefix = 'm'
+         if (abs(v) < 0.099995_dp) then
+            v = v*1000
+            prefix = 'u'
+         end if
+      end if
+      s = significant(v)
+      if (len(unit) > 0) s = s//' '//prefix//unit
+   end function quantity
+
+   !> Four significant digits, plain between 1e-3 and 1e6, trailing zeros dropped ('315',
+   !> '0.004592', '1.234e-5').
+   pure function significant(x) result(s)
+      real(dp), intent(in) :: x
+      character(:), allocatable :: s
+      character(len=40) :: buf
+      integer :: e, digits, i
+      if (x /= x .or. abs(x) > huge(x)) then
+         s = str_real(x)
+         return
+      end if
+      if (x == 0) then
+         s = '0'
+         return
+      end if
+      e = floor(log10(abs(x)))
+      ! Rounding to four digits may carry into the next decade (9999.7 -> 1.000e4).
+      if (abs(x) >= 10.0_dp**(e + 1) - 0.5_dp*10.0_dp**(e - 3)) e = e + 1
+      if (e >= -3 .and. e < 6) then
+         digits = max(0, 3 - e)
+         write (buf, '(f40.'//str_int(digits)//')') x
+         s = trim(adjustl(buf))
+         if (index(s, '.') > 0) then
+            i = len(s)
+            do while (s(i:i) == '0')
+               i = i - 1
+            end do
+            if (s(i:i) == '.') i = i - 1
+            s = s(1:i)
+         end if
+      else
+         write (buf, '(es12.3e3)') x
+         s = trim(adjustl(buf))
+         i = index(s, 'E')
+         ! Mantissa without trailing zeros, exponent without a plus and leading zeros.
+         block
+            character(:), allocatable :: mant, ex
+            integer :: j, ev
+            mant = s(1:i - 1)
+            j = len(mant)
+            do while (mant(j:j) == '0')
+               j = j - 1
+            end do
+            if (mant(j:j) == '.') j = j - 1
+            mant = mant(1:j)
+            read (s(i + 1:), *) ev
+            ex = str_int(ev)
+            s = mant//'e'//ex
+         end block
+      end if
+   end function significant
 end module xcable_strings

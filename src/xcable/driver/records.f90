@@ -11,11 +11,17 @@
 module xcable_run_records
    use xcable_kinds, only: dp
    use xcable_error, only: error_type
+   use xcable_strings, only: str, quantity
    implicit none
    private
-   public :: run_history, run_summary, static_info, run_observer, end_summary
+   public :: run_history, run_summary, static_info, run_observer, end_summary, static_figures, summary_text
+   public :: slack_tension_fraction
    public :: n_end_quantities, end_quantity_names, n_energy, energy_names, field_names, n_fields
    public :: n_end_quantities_y, end_quantity_names_y, n_fields3, field3_names, field3_units
+
+   !> An end counts as slack while its cell's tension is at most this fraction of the largest
+   !> static tension (the summary's slack_time and slack intervals).
+   real(dp), parameter :: slack_tension_fraction = 1.0e-3_dp
 
    !> Quantities recorded per end and step.
    integer, parameter :: n_end_quantities = 7
@@ -71,6 +77,14 @@ module xcable_run_records
       real(dp) :: min_tension = 0, min_tension_time = 0, max_tension = 0
       !> First time the end force falls 1 % below its value at t = 0 (s; -1: never). Held ends only.
       real(dp) :: front_arrival_time = -1
+      !> When the largest tension happened (s).
+      real(dp) :: max_tension_time = 0
+      !> Kind of the end at the end of the run ('fixed', 'motion', ..., 'break').
+      character(len=16) :: kind = ''
+      !> Time the end was slack (its cell's tension at most slack_tension_fraction of the
+      !> largest static tension), s, and those intervals (2, k: start and end, s).
+      real(dp) :: slack_time = 0
+      real(dp), allocatable :: slack_intervals(:, :)
    end type end_summary
 
    !> Figures of a run.
@@ -82,6 +96,14 @@ module xcable_run_records
       real(dp) :: peak_end_speed = 0, peak_end_speed_time = 0
       real(dp) :: min_fixed_end_tension = 0, min_fixed_end_tension_time = 0
       real(dp) :: front_arrival_time = -1
+      !> Which end had the peak speed; whether the scene has a fixed end (min_fixed_end_tension
+      !> is of its fixed ends only) and whether a front arrived (after a break: front_arrival_time).
+      character(len=8) :: peak_end_speed_end = ''
+      logical :: has_fixed_end = .false., has_front = .false.
+      !> The break, when it happened: the time it started (s), its arc length from end a (m) and the
+      !> duration of its force ramp (s).
+      logical :: broke = .false.
+      real(dp) :: break_time = 0, break_s = 0, break_ramp = 0
       !> max |ledger - ledger(0)| / strain energy at t = 0 (-1: ledger not kept), and the
       !> numerical dissipation booked in the ledger (J).
       real(dp) :: energy_drift = -1, dissipated = 0
@@ -111,6 +133,9 @@ module xcable_run_records
       real(dp) :: end_angle = 0
       !> Tension at end a and end b, N.
       real(dp) :: tension_a = 0, tension_b = 0
+      !> Angle of the cable below the horizontal where it leaves end b (towards end a), rad; the
+      !> lowest point (height z, m, and arc length s, m); the largest tension, N (static_figures).
+      real(dp) :: end_angle_b = 0, lowest_z = 0, lowest_s = 0, max_tension = 0
       !> Newton iterations.
       integer :: newton_iterations = 0
       !> Euler parameters of the box scheme (absent for the rod).
@@ -232,4 +257,96 @@ contains
          allocate (e(n_energy, 0:n)); e(:, 0:m) = self%energy(:, 0:m); call move_alloc(e, self%energy)
       end if
    end subroutine history_reserve
+
+   !> The figures of the static state that follow from its fields: the angles at the ends (of
+   !> the end cells below the horizontal, looking into the cable), the lowest point and the largest tension (y of a 3-D state from extra, horizontal distances
+   !> in the plane of x and y).
+   subroutine static_figures(info)
+      !> The static state (fields set).
+      type(static_info), intent(inout) :: info
+      integer :: n, k
+      real(dp) :: dx, dy, dz
+      n = size(info%fields, 1)
+      k = minloc(info%fields(:, 7), 1)
+      info%lowest_z = info%fields(k, 7)
+      info%lowest_s = info%s(k)
+      info%max_tension = maxval(info%fields(:, 1))
+      dx = info%fields(2, 6) - info%fields(1, 6)
+      dz = info%fields(2, 7) - info%fields(1, 7)
+      dy = 0
+      if (allocated(info%extra)) dy = info%extra(2, 1) - info%extra(1, 1)
+      info%end_angle = atan2(-dz, hypot(dx, dy))
+      dx = info%fields(n - 1, 6) - info%fields(n, 6)
+      dz = info%fields(n - 1, 7) - info%fields(n, 7)
+      dy = 0
+      if (allocated(info%extra)) dy = info%extra(n - 1, 1) - info%extra(n, 1)
+      info%end_angle_b = atan2(-dz, hypot(dx, dy))
+   end subroutine static_figures
+
+   !> The summary as people read it, one line each: the static state, what each end did, the
+   !> events (break, slack), and the run's cost; warnings are printed apart.
+   function summary_text(summary, info, labels) result(text)
+      !> Figures of the run.
+      type(run_summary), intent(in) :: summary
+      !> The static state.
+      type(static_info), intent(in) :: info
+      !> Names of the ends, in the order of summary%ends.
+      character(len=*), intent(in) :: labels(:)
+      character(:), allocatable :: text
+      real(dp), parameter :: degree = 180/acos(-1.0_dp)
+      integer :: j, k
+      character(:), allocatable :: line
+      text = 'static state: end a '//quantity(info%tension_a, 'N')//angle_text(info%end_angle)//', end b '// &
+             quantity(info%tension_b, 'N')//angle_text(info%end_angle_b)//'; span '//quantity(info%span, 'm')// &
+             ', lowest point z = '//quantity(info%lowest_z, 'm')//' at s = '//quantity(info%lowest_s, 'm')
+      if (allocated(summary%ends)) then
+         do j = 1, size(summary%ends)
+            associate (e => summary%ends(j))
+               line = new_line('a')//trim(labels(j))//' ('//trim(e%kind)//'): tension '// &
+                      quantity(e%min_tension, 'N')//' to '//quantity(e%max_tension, 'N')
+               ! A fixed end does not move; a released end is slack by definition.
+               if (trim(e%kind) /= 'fixed') line = line//', peak speed '//quantity(e%peak_speed, 'm/s')// &
+                                                 ' at t = '//quantity(e%peak_speed_time, 's')
+               if (e%slack_time > 0 .and. trim(e%kind) /= 'break') &
+                  line = line//', slack for '//quantity(e%slack_time, 's')
+               if (summary%has_front .and. e%front_arrival_time >= 0) &
+                  line = line//', front arrived at '//quantity(e%front_arrival_time, 's')
+               text = text//line
+            end associate
+         end do
+      end if
+      if (summary%broke) then
+         text = text//new_line('a')//'break at s = '//quantity(summary%break_s, 'm')//', t = '// &
+                quantity(summary%break_time, 's')
+         if (summary%break_ramp > 0) then
+            text = text//', its force ramped down over '//quantity(summary%break_ramp, 's')
+         else
+            text = text//', at once'
+         end if
+      end if
+      if (allocated(summary%ends)) then
+         do j = 1, size(summary%ends)
+            associate (e => summary%ends(j))
+               if (.not. allocated(e%slack_intervals)) cycle
+               if (size(e%slack_intervals, 2) == 0 .or. trim(e%kind) == 'break') cycle
+               line = new_line('a')//trim(labels(j))//' slack: '
+               do k = 1, min(size(e%slack_intervals, 2), 5)
+                  if (k > 1) line = line//', '
+                  line = line//quantity(e%slack_intervals(1, k), 's')//' to '//quantity(e%slack_intervals(2, k), 's')
+               end do
+               if (size(e%slack_intervals, 2) > 5) line = line//' and '//str(size(e%slack_intervals, 2) - 5)//' more'
+               text = text//line
+            end associate
+         end do
+      end if
+   contains
+
+      !> ' at 12.3 deg down' (the cable leaves the end below the horizontal) or ' ... up'.
+      function angle_text(angle) result(t)
+         real(dp), intent(in) :: angle
+         character(:), allocatable :: t
+         t = ', '//quantity(degree*abs(angle), '')//' deg '//merge('down', 'up  ', angle >= 0)
+         t = trim(t)
+      end function angle_text
+   end function summary_text
 end module xcable_run_records

@@ -49,7 +49,7 @@ module xcable_rod3d_drive
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
    use xcable_ends_end, only: end_condition
-   use xcable_run_records, only: run_observer, n_fields
+   use xcable_run_records, only: run_observer, n_fields, static_figures
    use xcable_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
@@ -188,6 +188,7 @@ contains
             if (rod%scene%end_a%held()) rod%info%tension_a = norm2(reaction(:, 1))
             if (rod%scene%end_b%held()) rod%info%tension_b = norm2(reaction(:, 2))
          end associate
+         call static_figures(rod%info)
          rod%summary%min_strain = minval(piece%l1) - 1
          rod%summary%max_strain = maxval(piece%l1) - 1
          ! The static state's compression, for the warning (the planar run's fields held the first guess's).

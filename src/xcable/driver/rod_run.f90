@@ -44,7 +44,7 @@ module xcable_rod_run
    use xcable_solver_banded, only: band_matrix
    use xcable_rod_statics, only: rod_static_state, solve_rod_statics
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
-                                 n_end_quantities
+                                 n_end_quantities, static_figures, slack_tension_fraction
    use xcable_theory, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, &
                                 sync_logical
@@ -346,20 +346,18 @@ contains
    subroutine static_fields(self)
       type(rod_run), intent(inout) :: self
       integer :: n
-      real(dp) :: t_a(2)
       n = self%options%nodes
       self%info%s = self%s_out
       allocate (self%info%fields(self%n_out, n_fields))
       call self%fields(self%info%fields)
       self%info%span = self%static%span
       self%info%sag = self%static%sag
-      t_a = self%static%r(:, 2) - self%static%r(:, 1)
-      self%info%end_angle = atan2(-t_a(2), t_a(1))
       self%info%tension_a = self%info%fields(1, 1)
       self%info%tension_b = self%info%fields(self%n_out, 1)
       if (self%scene%end_a%held()) self%info%tension_a = norm2(self%static%reaction_a)
       if (self%scene%end_b%held() .or. self%scene%from_tension) self%info%tension_b = norm2(self%static%reaction_b)
       self%info%newton_iterations = self%static%newton_iterations
+      call static_figures(self%info)
    end subroutine static_fields
 
    !> Fields on the output nodes from the current state of the pieces: cell
@@ -1677,7 +1675,7 @@ contains
    subroutine summarise(self)
       type(rod_run), intent(inout) :: self
       integer :: i, j, n, n_ends
-      real(dp) :: speed, f0, f1, fi, reference
+      real(dp) :: speed, f0, f1, fi, reference, slack_level
       logical :: held_end
       n = self%history%n
       n_ends = size(self%history%end_labels)
@@ -1690,10 +1688,23 @@ contains
       self%summary%min_fixed_end_tension = huge(1.0_dp)
       self%summary%min_fixed_end_tension_time = 0
       self%summary%front_arrival_time = -1
+      self%summary%peak_end_speed_end = ''
+      self%summary%has_fixed_end = .false.
+      ! A front is the 1 % drop of a held end's tension after a break; other scenes have none.
+      self%summary%has_front = self%broken
+      self%summary%broke = self%broken
+      if (self%broken) then
+         self%summary%break_time = self%scene%break_time
+         self%summary%break_s = self%scene%s_break
+         self%summary%break_ramp = self%scene%t_break
+      end if
+      slack_level = slack_tension_fraction*max(self%info%max_tension, self%info%tension_a, self%info%tension_b)
       do j = 1, n_ends
          associate (e => self%summary%ends(j))
+            e%kind = end_kind(self, j)
             e%min_tension = self%history%ends(5, j, 0)
             e%max_tension = self%history%ends(5, j, 0)
+            e%max_tension_time = self%history%time(0)
             do i = 0, n
                speed = norm2(self%history%ends(3:4, j, i))
                ! A 3-D run (driver/rod3d_drive.f90): with the y velocity.
@@ -1706,10 +1717,28 @@ contains
                   e%min_tension = self%history%ends(5, j, i)
                   e%min_tension_time = self%history%time(i)
                end if
-               e%max_tension = max(e%max_tension, self%history%ends(5, j, i))
+               if (self%history%ends(5, j, i) > e%max_tension) then
+                  e%max_tension = self%history%ends(5, j, i)
+                  e%max_tension_time = self%history%time(i)
+               end if
             end do
+            call slack_intervals(self%history, j, slack_level, e%slack_intervals, e%slack_time)
+            ! The peak end speed: the fastest end, whatever its kind (a released end after a break,
+            ! a moving fairlead, a mass).
+            if (e%peak_speed > self%summary%peak_end_speed) then
+               self%summary%peak_end_speed = e%peak_speed
+               self%summary%peak_end_speed_time = e%peak_speed_time
+               self%summary%peak_end_speed_end = self%history%end_labels(j)
+            end if
+            if (trim(e%kind) == 'fixed') then
+               self%summary%has_fixed_end = .true.
+               if (e%min_tension < self%summary%min_fixed_end_tension) then
+                  self%summary%min_fixed_end_tension = e%min_tension
+                  self%summary%min_fixed_end_tension_time = e%min_tension_time
+               end if
+            end if
             held_end = end_is_held(self, j)
-            if (held_end) then
+            if (held_end .and. self%summary%has_front) then
                ! The 1 % drop of the tension at the end.
                f0 = self%history%ends(5, j, 0)
                do i = 1, n
@@ -1721,16 +1750,9 @@ contains
                      exit
                   end if
                end do
-               if (e%min_tension < self%summary%min_fixed_end_tension) then
-                  self%summary%min_fixed_end_tension = e%min_tension
-                  self%summary%min_fixed_end_tension_time = e%min_tension_time
-               end if
                if (e%front_arrival_time >= 0 .and. (self%summary%front_arrival_time < 0 .or. &
                                                     e%front_arrival_time < self%summary%front_arrival_time)) &
                   self%summary%front_arrival_time = e%front_arrival_time
-            else if (e%peak_speed > self%summary%peak_end_speed) then
-               self%summary%peak_end_speed = e%peak_speed
-               self%summary%peak_end_speed_time = e%peak_speed_time
             end if
          end associate
       end do
@@ -1779,6 +1801,68 @@ contains
          self%summary%warnings = self%summary%warnings//line
       end subroutine warn
    end subroutine summarise
+
+   !> The intervals in which end j of the history was slack (its tension at most level), with the
+   !> crossings interpolated linearly between records, and their total length, s.
+   subroutine slack_intervals(history, j, level, intervals, total)
+      !> History of the run.
+      type(run_history), intent(in) :: history
+      !> The end's slot.
+      integer, intent(in) :: j
+      !> Tension at and below which the end counts as slack, N.
+      real(dp), intent(in) :: level
+      !> Start and end of each interval (2, k), s.
+      real(dp), allocatable, intent(out) :: intervals(:, :)
+      !> Their total, s.
+      real(dp), intent(out) :: total
+      real(dp), allocatable :: grown(:, :)
+      real(dp) :: start, f0, f1, tc
+      integer :: i, k
+      logical :: slack
+      allocate (intervals(2, 8))
+      k = 0
+      slack = history%ends(5, j, 0) <= level
+      start = history%time(0)
+      do i = 1, history%n
+         f0 = history%ends(5, j, i - 1)
+         f1 = history%ends(5, j, i)
+         if ((f1 <= level) .eqv. slack) cycle
+         tc = history%time(i - 1) + (history%time(i) - history%time(i - 1))*(level - f0)/(f1 - f0)
+         if (slack) then
+            call push(start, tc)
+         else
+            start = tc
+         end if
+         slack = .not. slack
+      end do
+      if (slack) call push(start, history%time(history%n))
+      intervals = intervals(:, 1:k)
+      total = sum(intervals(2, :) - intervals(1, :))
+   contains
+      subroutine push(a, b)
+         real(dp), intent(in) :: a, b
+         if (k == size(intervals, 2)) then
+            allocate (grown(2, 2*k))
+            grown(:, 1:k) = intervals
+            call move_alloc(grown, intervals)
+         end if
+         k = k + 1
+         intervals(:, k) = [a, b]
+      end subroutine push
+   end subroutine slack_intervals
+
+   !> Kind of the end in history slot j at the end of the run ('fixed', 'motion', ..., 'break').
+   function end_kind(self, j) result(kind)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: j
+      character(:), allocatable :: kind
+      integer :: p
+      kind = ''
+      do p = 1, size(self%pieces)
+         if (self%pieces(p)%end_slot(1) == j) kind = self%pieces(p)%problem%piece%end_a%kind()
+         if (self%pieces(p)%end_slot(2) == j) kind = self%pieces(p)%problem%piece%end_b%kind()
+      end do
+   end function end_kind
 
    !> Whether history slot j belongs to an end held at the end of the run.
    logical function end_is_held(self, j)

@@ -632,6 +632,10 @@ contains
          call put_real_attr(group, 'end_angle', info%end_angle, ok)
          call put_real_attr(group, 'tension_a', info%tension_a, ok)
          call put_real_attr(group, 'tension_b', info%tension_b, ok)
+         call put_real_attr(group, 'end_angle_b', info%end_angle_b, ok)
+         call put_real_attr(group, 'lowest_z', info%lowest_z, ok)
+         call put_real_attr(group, 'lowest_s', info%lowest_s, ok)
+         call put_real_attr(group, 'max_tension', info%max_tension, ok)
          call put_int_attr(group, 'newton_iterations', info%newton_iterations, ok)
          call h5gclose_f(group, hdferr)
       end if
@@ -894,7 +898,7 @@ contains
    end subroutine result_write_history
 
    !> Write the summary figures as attributes of /summary.
-   subroutine result_write_summary(self, summary, end_labels, error)
+   subroutine result_write_summary(self, summary, end_labels, error, info)
       !> Result file.
       class(result_file), intent(inout) :: self
       !> Figures of the run.
@@ -903,6 +907,8 @@ contains
       character(len=*), intent(in) :: end_labels(:)
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
+      !> The static state (its figures go first: static_*).
+      type(static_info), intent(in), optional :: info
       integer(hid_t) :: group
       integer :: hdferr, j
       logical :: ok
@@ -910,12 +916,33 @@ contains
       call h5gcreate_f(self%file, 'summary', group, hdferr)
       ok = hdferr == 0
       if (ok) then
+         ! A figure that does not apply to the scene is absent (no -1, no 0 for "none").
+         if (present(info)) then
+            call put_real_attr(group, 'static_tension_a', info%tension_a, ok)
+            call put_real_attr(group, 'static_tension_b', info%tension_b, ok)
+            call put_real_attr(group, 'static_angle_a', info%end_angle, ok)
+            call put_real_attr(group, 'static_angle_b', info%end_angle_b, ok)
+            call put_real_attr(group, 'static_span', info%span, ok)
+            call put_real_attr(group, 'static_lowest_z', info%lowest_z, ok)
+            call put_real_attr(group, 'static_lowest_s', info%lowest_s, ok)
+            call put_real_attr(group, 'static_max_tension', info%max_tension, ok)
+         end if
          call put_real_attr(group, 'peak_end_speed', summary%peak_end_speed, ok)
          call put_real_attr(group, 'peak_end_speed_time', summary%peak_end_speed_time, ok)
-         call put_real_attr(group, 'min_fixed_end_tension', summary%min_fixed_end_tension, ok)
-         call put_real_attr(group, 'min_fixed_end_tension_time', summary%min_fixed_end_tension_time, ok)
-         call put_real_attr(group, 'front_arrival_time', summary%front_arrival_time, ok)
-         call put_real_attr(group, 'energy_drift', summary%energy_drift, ok)
+         if (len_trim(summary%peak_end_speed_end) > 0) &
+            call put_text_attr(group, 'peak_end_speed_end', trim(summary%peak_end_speed_end), ok)
+         if (summary%has_fixed_end) then
+            call put_real_attr(group, 'min_fixed_end_tension', summary%min_fixed_end_tension, ok)
+            call put_real_attr(group, 'min_fixed_end_tension_time', summary%min_fixed_end_tension_time, ok)
+         end if
+         if (summary%has_front .and. summary%front_arrival_time >= 0) &
+            call put_real_attr(group, 'front_arrival_time', summary%front_arrival_time, ok)
+         if (summary%broke) then
+            call put_real_attr(group, 'break_time', summary%break_time, ok)
+            call put_real_attr(group, 'break_s', summary%break_s, ok)
+            call put_real_attr(group, 'break_ramp', summary%break_ramp, ok)
+         end if
+         if (summary%energy_drift >= 0) call put_real_attr(group, 'energy_drift', summary%energy_drift, ok)
          call put_real_attr(group, 'dissipated', summary%dissipated, ok)
          call put_real_attr(group, 'time_reached', summary%time_reached, ok)
          call put_real_attr(group, 'wall_time', summary%wall_time, ok)
@@ -937,12 +964,22 @@ contains
             do j = 1, size(summary%ends)
                label = trim(end_labels(j))
                associate (e => summary%ends(j))
+                  if (len_trim(e%kind) > 0) call put_text_attr(group, label//'_kind', trim(e%kind), ok)
                   call put_real_attr(group, label//'_peak_speed', e%peak_speed, ok)
                   call put_real_attr(group, label//'_peak_speed_time', e%peak_speed_time, ok)
                   call put_real_attr(group, label//'_min_tension', e%min_tension, ok)
                   call put_real_attr(group, label//'_min_tension_time', e%min_tension_time, ok)
                   call put_real_attr(group, label//'_max_tension', e%max_tension, ok)
-                  call put_real_attr(group, label//'_front_arrival_time', e%front_arrival_time, ok)
+                  call put_real_attr(group, label//'_max_tension_time', e%max_tension_time, ok)
+                  call put_real_attr(group, label//'_slack_time', e%slack_time, ok)
+                  if (summary%has_front .and. e%front_arrival_time >= 0) &
+                     call put_real_attr(group, label//'_front_arrival_time', e%front_arrival_time, ok)
+                  if (allocated(e%slack_intervals)) then
+                     if (size(e%slack_intervals, 2) > 0) then
+                        call put_real_vector(group, label//'_slack_start', e%slack_intervals(1, :), ok, 's')
+                        call put_real_vector(group, label//'_slack_end', e%slack_intervals(2, :), ok, 's')
+                     end if
+                  end if
                end associate
             end do
          end if

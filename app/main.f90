@@ -26,7 +26,7 @@ program xcable_main
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_summary, run_history, static_info, summary_text
    use xcable_app_output, only: app_output
-   use xcable_version, only: version_lines
+   use xcable_version, only: version_lines, unoptimised_note
    use xcable_io_checkpoint, only: checkpoint_path, remove_checkpoint
    use xcable_io_xdmf, only: write_xdmf, remove_xdmf, probe_xdmf
    use xcable_system_posix, only: install_termination_handler, new_run_id
@@ -79,6 +79,8 @@ program xcable_main
 
    call read_config(trim(path), config, error)
    if (allocated(error)) call fail_input(error)
+   if (len(unoptimised_note()) > 0 .and. .not. config%quiet) write (error_unit, '(a)') 'xcable: note: '// &
+      unoptimised_note()
    call sim%prepare(config, error)
    if (allocated(error)) then
       if (error%stat == stat_input .or. error%stat == stat_io) call fail_input(error)

@@ -31,13 +31,21 @@ contains
       integer(hid_t) :: dset, space
       integer(hsize_t) :: dims(1)
       integer :: hdferr
+      real(dp), allocatable :: packed(:)
       dims = size(values)
       call h5screate_simple_f(1, dims, space, hdferr)
       call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, space, dset, hdferr)
       if (hdferr /= 0) then
          ok = .false.
       else
-         call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+         if (is_contiguous(values)) then
+            call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, dims, hdferr)
+         else
+            ! A strided section (one end's history): packed here, not by a hidden temporary
+            ! (which a debug build reports at run time).
+            packed = values
+            call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, packed, dims, hdferr)
+         end if
          ok = ok .and. hdferr == 0
          if (present(units)) then
             if (len(units) > 0) call put_text_attr(dset, 'units', units, ok)

@@ -89,6 +89,8 @@ program xcable_main
    end if
    call sim%time_step(dt, steps)
    if (check_only) then
+      ! The result file's folder must take a file: a probe next to it, removed at once.
+      call probe_output(trim(config%file))
       info => sim%static()
       write (output_unit, '(a)') trim(path)//': ok ('//trim(config%scheme)//' scheme, '//sim%model//' model, '// &
          str(config%nodes)//' nodes, dt '//quantity(dt, 's')//', '//str(steps)//' steps); static end tensions: '// &
@@ -199,6 +201,17 @@ contains
       if (allocated(error)) call fail_input(error)
       stop
    end subroutine schema_option
+
+   !> --check: stop with an input error unless a file can be made where the result file goes.
+   subroutine probe_output(file)
+      character(*), intent(in) :: file
+      integer :: unit, ios
+      character(len=256) :: msg
+      open (newunit=unit, file=file//'.check', status='replace', action='write', iostat=ios, iomsg=msg)
+      if (ios /= 0) call fail_text(trim(path)//": &output: file = '"//file//"': cannot write there ("//trim(msg)// &
+                                   '): does its folder exist and is it writable?')
+      close (unit, status='delete')
+   end subroutine probe_output
 
    !> Each line of text on stderr, after 'xcable: '.
    subroutine print_lines(text)

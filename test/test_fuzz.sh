@@ -691,6 +691,12 @@ from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'case.nml'|"; che
 begin 'output path is the root directory' 'file'
 from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = '/'|"; check
 
+begin '--check: the output folder does not exist' 'file' 'no_such_folder' 'does its folder exist'
+from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'no_such_folder/x.h5'|"; args=(--check case.nml); check
+
+begin 'more than a million steps: a hint at the step' 't_end' 'courant = ' 'any Courant number'
+from slow_315kN; edit "s|t_end = 0.16|t_end = 2000|"; edit "s|interval = 0.01|interval = 1|"; check
+
 echo "$n cases, $failed failed"
 if ((failed > 0)); then
    printf '%s\n' "${failures[@]}"

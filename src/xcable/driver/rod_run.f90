@@ -317,8 +317,12 @@ contains
       if (.not. (options%t_end/self%dt <= max_steps)) then
          call fatal_error(error, scene%source//': &numerics: the time step '//str(self%dt)//' s (courant = '// &
                           str(options%courant)//', ds = '//str(ds_max)//' m, largest wave speed '//str(c_max)// &
-                          ' m/s) gives more than '//str(max_steps)//' steps to t_end = '//str(options%t_end)//' s', &
-                          stat_input)
+                          ' m/s) gives more than '//str(max_steps)//' steps to t_end = '//str(options%t_end)//' s'// &
+                          '; give a longer step: courant = '//str(1.01_dp*options%t_end/max_steps*c_max/ds_max)// &
+                          ' or more (or dt = '//str(1.01_dp*options%t_end/max_steps)//' s or more). The implicit '// &
+                          'scheme is stable at any Courant number (the step control retries a step Newton cannot '// &
+                          'take); for slow motions, as a heave over minutes, 10 to 100 is usual: check it against '// &
+                          'a run at half the step', stat_input)
          return
       end if
       ! Output nodes: the break node twice.

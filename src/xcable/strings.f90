@@ -12,7 +12,8 @@ module xcable_strings
 
 contains
 
-   !> Real to string (shortest general format).
+   !> Real to string as people write it: six significant digits without trailing zeros, plain
+   !> from 1e-3 to 1e6 ('0.229588', '315000', '1'), else with an exponent ('1.5e-7').
    pure function str_real(x) result(s)
       !> Value.
       real(dp), intent(in) :: x
@@ -23,8 +24,7 @@ contains
       else if (abs(x) > huge(x)) then
          s = merge('+Inf', '-Inf', x > 0)
       else
-         write (buf, '(g0.6)') x
-         s = trim(adjustl(buf))
+         s = significant(x, 6)
       end if
    end function str_real
 
@@ -65,8 +65,11 @@ contains
       character(:), allocatable :: digits, sign
       real(dp) :: y
       integer :: d, ios, e_at, exponent, n, lo, hi
-      if (x /= x .or. abs(x) > huge(x)) then
-         s = str_real(x)
+      if (x /= x) then
+         s = 'NaN'
+         return
+      else if (abs(x) > huge(x)) then
+         s = merge('+Inf', '-Inf', x > 0)
          return
       end if
       if (x == 0) then
@@ -173,19 +176,23 @@ contains
             prefix = 'u'
          end if
       end if
-      s = significant(v)
+      s = significant(v, 4)
       if (len(unit) > 0) s = s//' '//prefix//unit
    end function quantity
 
-   !> Four significant digits, plain between 1e-3 and 1e6, trailing zeros dropped ('315',
+   !> n significant digits, plain between 1e-3 and 1e6, trailing zeros dropped (for 4: '315',
    !> '0.004592', '1.234e-5').
-   pure function significant(x) result(s)
+   pure function significant(x, n) result(s)
       real(dp), intent(in) :: x
+      integer, intent(in) :: n
       character(:), allocatable :: s
       character(len=40) :: buf
       integer :: e, digits, i
-      if (x /= x .or. abs(x) > huge(x)) then
-         s = str_real(x)
+      if (x /= x) then
+         s = 'NaN'
+         return
+      else if (abs(x) > huge(x)) then
+         s = merge('+Inf', '-Inf', x > 0)
          return
       end if
       if (x == 0) then
@@ -194,9 +201,9 @@ contains
       end if
       e = floor(log10(abs(x)))
       ! Rounding to four digits may carry into the next decade (9999.7 -> 1.000e4).
-      if (abs(x) >= 10.0_dp**(e + 1) - 0.5_dp*10.0_dp**(e - 3)) e = e + 1
+      if (abs(x) >= 10.0_dp**(e + 1) - 0.5_dp*10.0_dp**(e + 1 - n)) e = e + 1
       if (e >= -3 .and. e < 6) then
-         digits = max(0, 3 - e)
+         digits = max(0, n - 1 - e)
          write (buf, '(f40.'//str_int(digits)//')') x
          s = trim(adjustl(buf))
          if (index(s, '.') > 0) then
@@ -208,7 +215,7 @@ contains
             s = s(1:i)
          end if
       else
-         write (buf, '(es12.3e3)') x
+         write (buf, '(es20.'//str_int(n - 1)//'e3)') x
          s = trim(adjustl(buf))
          i = index(s, 'E')
          ! Mantissa without trailing zeros, exponent without a plus and leading zeros.

@@ -33,10 +33,17 @@ run: build
 	@$(MAKE) --no-print-directory figures-case CASE=$(CASE)
 	@echo "figures of $(CASE) in results/figures/$(CASE)/"
 
-# The test program is removed first: fpm does not link it again when only the library archive
-# changed (make build rebuilt it), and would run the old one.
+# When make build has rebuilt the library, the test program and the tests' objects and modules
+# are removed first: fpm neither links the test program again nor compiles the tests against the
+# library's new modules (it ran a stale program, or stopped at a module mismatch).
 test: build
-	@rm -f build/gfortran_*/test/xcable-test
+	@for exe in build/gfortran_*/test/xcable-test; do \
+		[ -e "$$exe" ] || continue; \
+		if [ -n "$$(find build -name libxcable.a -newer "$$exe")" ]; then \
+			rm -f build/gfortran_*/test/xcable-test build/gfortran_*/xcable/test_*.o build/gfortran_*/suite_*.mod \
+				build/gfortran_*/xcable_testing.mod build/gfortran_*/xcable_fixtures.mod build/gfortran_*/xcable_fdcheck.mod; \
+		fi; \
+	done
 	$(FPM) test --profile $(PROFILE)
 	tools/golden_cases.py check bin/xcable
 	test/test_figures.sh

@@ -31,7 +31,8 @@ contains
                new_unittest('pendulum', test_pendulum), &
                new_unittest('harmonic_end_motion_string_theory', test_harmonic), &
                new_unittest('no_rupture_group_no_break', test_no_rupture), &
-               new_unittest('heave_summary_from_its_history', test_heave_summary)]
+               new_unittest('heave_summary_from_its_history', test_heave_summary), &
+               new_unittest('coarse_grid_warned_with_nodes', test_coarse_grid)]
    end subroutine collect_scenes
 
    !> The paper's cable at 180 kN parting at mid-span: the two halves mirror
@@ -356,4 +357,51 @@ contains
          call check(error, .not. m%has_front .and. .not. m%broke, 'a front or a break reported for a heave')
       end associate
    end subroutine test_heave_summary
+
+   !> A grid too coarse for the scene is warned with the node count that resolves it: a slack
+   !> line on 5 nodes (its shape turns by 0.64 rad per cell) and the paper's break ramped over
+   !> 5 ms on 11 nodes (its front spans one cell); the same scenes on enough nodes are not warned.
+   subroutine test_coarse_grid(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: slack = "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                                         "&end_b kind = 'fixed', x = 50, z = 0 /"//new_line('a')// &
+                                         "&output quiet = .true. /"//new_line('a')
+      character(*), parameter :: paper = "&static tension = 180000 /"//new_line('a')//"&rupture t_break = 0.005 /"// &
+                                         new_line('a')//"&output quiet = .true., interval = 0.0005 /"//new_line('a')
+      character(:), allocatable :: warned
+      call warnings_of(slack//"&numerics nodes = 5, t_end = 0.01 /", warned, error)
+      if (allocated(error)) return
+      call check(error, index(warned, 'too coarse for the shape; about 27 nodes') > 0, &
+                 'a slack line on 5 nodes is not warned with 27 nodes: '//warned)
+      if (allocated(error)) return
+      call warnings_of(slack//"&numerics nodes = 41, t_end = 0.01 /", warned, error)
+      if (allocated(error)) return
+      call check(error, index(warned, 'too coarse') == 0, 'a slack line on 41 nodes is warned: '//warned)
+      if (allocated(error)) return
+      call warnings_of(paper//"&numerics nodes = 11, t_end = 0.001 /", warned, error)
+      if (allocated(error)) return
+      call check(error, index(warned, 'front') > 0 .and. index(warned, 'nodes resolve it') > 0, &
+                 'the paper''s 5 ms break on 11 nodes is not warned: '//warned)
+      if (allocated(error)) return
+      call warnings_of(paper//"&numerics nodes = 241, t_end = 0.001 /", warned, error)
+      if (allocated(error)) return
+      call check(error, index(warned, 'front') == 0, 'the paper''s break on 241 nodes is warned: '//warned)
+   contains
+      subroutine warnings_of(text, warnings, error)
+         character(*), intent(in) :: text
+         character(:), allocatable, intent(out) :: warnings
+         type(error_type), allocatable, intent(out) :: error
+         type(case_config) :: c
+         type(simulation) :: sim
+         call write_text('build/test_coarse_grid.nml', text//new_line('a'))
+         call read_config('build/test_coarse_grid.nml', c, error)
+         if (allocated(error)) return
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         call sim%run(error=error)
+         if (allocated(error)) return
+         warnings = sim%rod%summary%warnings
+         write (output_unit, '(4x,a)') 'warned: '//warnings
+      end subroutine warnings_of
+   end subroutine test_coarse_grid
 end module suite_scenes

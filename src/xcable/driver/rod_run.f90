@@ -72,6 +72,11 @@ module xcable_rod_run
    real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
                                   warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp, &
                                   warn_static_compression = 1.0e-6_dp
+   !> Resolution warnings: the largest turning of the static shape between neighbouring cells
+   !> (rad; where the shape turns by theta per cell, a cell's chord misses the arc by about
+   !> theta / 8 of its length: 1.2 % at 0.1) and the fewest cells
+   !> across a break's front (the length over which its force ramps down, c t_break).
+   real(dp), parameter, public :: warn_static_turn = 0.1_dp, min_front_cells = 4
 
    !> Controls of a rod run.
    type :: rod_run_options
@@ -184,6 +189,10 @@ module xcable_rod_run
       !> Lowest tension of the static state's cells (N), the arc length of that cell's middle (m)
       !> and the largest tension magnitude (N): a static state in compression is reported (summarise).
       real(dp) :: static_min_tension = 0, static_min_tension_s = 0, static_max_tension = 0
+      !> What the grid resolves, for the warnings: the largest turning between neighbouring cells
+      !> of the static state (rad), and the cells across the break's front (its ramp t_break at the
+      !> largest wave speed; 0: no front, or an instant break).
+      real(dp) :: static_max_turn = 0, front_cells = 0
       !> History and summary.
       type(run_history) :: history
       type(run_summary) :: summary
@@ -313,7 +322,14 @@ contains
             self%static_min_tension_s = 0.5_dp*(self%s(c_low) + self%s(c_low + 1))
             self%static_max_tension = maxval(abs(cell_tension))
          end block
+         block
+            real(dp) :: e(2, n - 1)
+            e = self%static%r(:, 2:n) - self%static%r(:, 1:n - 1)
+            if (n > 2) self%static_max_turn = maxval(abs(atan2(e(1, 1:n - 2)*e(2, 2:n - 1) - e(2, 1:n - 2)*e(1, 2:n - 1), &
+                                                            e(1, 1:n - 2)*e(1, 2:n - 1) + e(2, 1:n - 2)*e(2, 2:n - 1))))
+         end block
       end associate
+      if (scene%breaks .and. scene%t_break > 0) self%front_cells = c_max*scene%t_break/ds_max
       if (.not. (options%t_end/self%dt <= max_steps)) then
          call fatal_error(error, scene%source//': &numerics: the time step '//str(self%dt)//' s (courant = '// &
                           str(options%courant)//', ds = '//str(ds_max)//' m, largest wave speed '//str(c_max)// &
@@ -1790,6 +1806,15 @@ contains
          str(self%static_min_tension_s)//' m (largest tension '//str(self%static_max_tension)//' N); a rope '// &
          'cannot push: this state is held by the bending stiffness and the law''s compression branch, and may '// &
          'be a loop or a buckle (compare with compression = ''none'' and with more nodes)')
+      ! The grid against the scene: the static shape and the break's front.
+      if (self%static_max_turn > warn_static_turn) call warn('the static shape turns by up to '// &
+         str(self%static_max_turn)//' rad between neighbouring cells (more than '//str(warn_static_turn)// &
+         ' rad): the grid is too coarse for the shape; about '//str(nodes_for(self%static_max_turn/warn_static_turn))// &
+         ' nodes resolve it')
+      if (self%front_cells > 0 .and. self%front_cells < min_front_cells) call warn('the break''s front (t_break = '// &
+         str(self%scene%t_break)//' s at wave speed '//str(self%front_cells*maxval(self%pieces(1)%problem%piece%ds)/ &
+         self%scene%t_break)//' m/s) spans '//str(self%front_cells)//' cells, fewer than '//str(min_front_cells)// &
+         ': about '//str(nodes_for(min_front_cells/self%front_cells))//' nodes resolve it')
       if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
          str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &
          ' accepted): the step control struggled; a smaller dt or courant may be more economical')
@@ -1804,6 +1829,12 @@ contains
          if (len(self%summary%warnings) > 0) self%summary%warnings = self%summary%warnings//new_line('a')
          self%summary%warnings = self%summary%warnings//line
       end subroutine warn
+
+      !> The node count that refines the grid by factor (its cells factor times shorter).
+      integer function nodes_for(factor)
+         real(dp), intent(in) :: factor
+         nodes_for = ceiling(factor*(self%options%nodes - 1)) + 1
+      end function nodes_for
    end subroutine summarise
 
    !> The intervals in which end j of the history was slack (its tension at most level), with the

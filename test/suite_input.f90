@@ -887,7 +887,7 @@ contains
                         [character(40) :: path, '&material', 'table_tension = 0, Inf', '"Inf" is not a finite real'])
       if (allocated(error)) return
       call expect_error(error, "&material law = 'table', table_strain = -1, 0.1, table_tension = 0, 1e4 /"//nl, &
-                        [character(40) :: path, '&material', 'table_strain(1) = -1', '> -1 and <= 10'])
+                        [character(40) :: path, '&material', 'table_strain(1) = -1', '> -1 and <= 1'])
    end subroutine test_material_table_not_finite
 
    subroutine test_material_strain_order(error)

@@ -463,7 +463,7 @@ begin 'table law tension NaN' 'table_tension = 0, NaN' '"NaN" is not a finite re
 from slow_315kN; add "&material law = 'table', table_strain = 0, 0.1, table_tension = 0, NaN /"; check
 begin 'table law strain -Inf' 'table_strain = -Inf, 0' '"-Inf" is not a finite real number'
 from slow_315kN; add "&material law = 'table', table_strain = -Inf, 0, table_tension = 0, 1e4 /"; check
-begin 'table law strain at -1' 'table_strain(1) = -1' '> -1 and <= 10'
+begin 'table law strain at -1' 'table_strain(1) = -1' '> -1 and <= 1'
 from slow_315kN; add "&material law = 'table', table_strain = -1, 0, table_tension = 0, 1e4 /"; check
 begin 'table law columns of unequal counts' 'table_strain has 3 values' 'table_tension 2' 'equal counts'
 from slow_315kN; add "&material law = 'table', table_strain = 0, 0.1, 0.2, table_tension = 0, 1e4 /"; check
@@ -693,6 +693,18 @@ from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = '/'|"; check
 
 begin '--check: the output folder does not exist' 'file' 'no_such_folder' 'does its folder exist'
 from fast_180kN; edit "s|file = 'results/fast_180kN.h5'|file = 'no_such_folder/x.h5'|"; args=(--check case.nml); check
+
+begin 'a diameter in millimetres: a hint at the unit' 'diameter = 50' 'in metres'
+from slow_315kN; add '&cable diameter = 50 /'; check
+
+begin 'strain_max in per cent: a hint at the unit' 'strain_max = 35' 'not per cent'
+from slow_315kN; add '&material strain_max = 35 /'; check
+
+begin 'table strains in per cent: a hint at the unit' 'table_strain(3) = 5' 'not per cent'
+from slow_315kN; add "&material law = 'table', table_strain = 0, 1, 5, table_tension = 0, 1e4, 6e4 /"; check
+
+begin 'a tension in kN: a hint at the unit' 'tension = 180' 'in N'
+from slow_315kN; edit "s|tension = 315000|tension = 180|"; check
 
 begin 'more than a million steps: a hint at the step' 't_end' 'courant = ' 'any Courant number'
 from slow_315kN; edit "s|t_end = 0.16|t_end = 2000|"; edit "s|interval = 0.01|interval = 1|"; check

@@ -88,7 +88,8 @@ contains
       allocate (t(0))
       ! &cable
       call add(t, 'cable', 'length', 'real', 'm', '60', 'unstretched length L', 1.0e-2_dp, 1.0e5_dp)
-      call add(t, 'cable', 'diameter', 'real', 'm', '0.05', 'diameter d', 1.0e-4_dp, 10.0_dp)
+      call add(t, 'cable', 'diameter', 'real', 'm', '0.05', 'diameter d', 1.0e-4_dp, 1.0_dp, &
+               note='in metres: a 50 mm line is 0.05')
       call add(t, 'cable', 'density', 'real', 'kg/m^3', '1140', 'density rho (mass per length m = rho A)', &
                1.0_dp, 1.0e5_dp)
       call add(t, 'cable', 'young', 'real', 'Pa', '2.3e8', "Young's modulus E (for EI and for EA of the linear law)", &
@@ -115,8 +116,8 @@ contains
       call add(t, 'material', 'ea', 'real', 'N', '0', 'EA of the linear law', 1.0_dp, 1.0e13_dp, zero_means='young * area')
       call add(t, 'material', 'table_strain', 'real', '-', '', &
                "rows of the 'table' law: engineering strain of the unstretched length, strictly increasing, at "// &
-               'least 2 rows; table_tension has as many (only with law = '//"'table')", -1.0_dp, 10.0_dp, &
-               lower_open=.true., count=max_table_points)
+               'least 2 rows; table_tension has as many (only with law = '//"'table')", -1.0_dp, 1.0_dp, &
+               lower_open=.true., count=max_table_points, note='a strain, not per cent: 5 % is 0.05')
       call add(t, 'material', 'table_tension', 'real', 'N', '', &
                "rows of the 'table' law: tension, strictly increasing (a positive slope)", -1.0e12_dp, 1.0e12_dp, &
                count=max_table_points)
@@ -124,8 +125,8 @@ contains
                "the rows of the 'table' law from a text file instead: columns strain and tension, # starts a "// &
                'comment; the path is relative to the working directory', length=512)
       call add(t, 'material', 'strain_max', 'real', '-', '0.35', &
-               'largest static strain the law is used for (the tanh fit reaches about 504 kN there)', 0.0_dp, 10.0_dp, &
-               lower_open=.true.)
+               'largest static strain the law is used for (the tanh fit reaches about 504 kN there)', 0.0_dp, 1.0_dp, &
+               lower_open=.true., note='a strain, not per cent: 35 % is 0.35')
       call add(t, 'material', 'compression', 'string', '-', "'law'", &
                "behaviour in compression: 'law' (the law continued below zero strain) or 'none' (no compressive tension)", &
                length=16, choices='law none')

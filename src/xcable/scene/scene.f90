@@ -144,7 +144,7 @@ contains
       if (scene%from_tension .and. config%tension <= 1.001_dp*0.5_dp*scene%weight*scene%length) then
          call fatal_error(error, config%source//': &static: tension = '//str(config%tension)// &
                           ': must exceed half the weight of the cable, w0 L / 2 = '// &
-                          str(0.5_dp*scene%weight*scene%length)//' N', stat_input)
+                          str(0.5_dp*scene%weight*scene%length)//' N (tensions are in N: 180 kN is 180000)', stat_input)
          return
       end if
 

@@ -32,7 +32,8 @@ contains
                new_unittest('harmonic_end_motion_string_theory', test_harmonic), &
                new_unittest('no_rupture_group_no_break', test_no_rupture), &
                new_unittest('heave_summary_from_its_history', test_heave_summary), &
-               new_unittest('coarse_grid_warned_with_nodes', test_coarse_grid)]
+               new_unittest('coarse_grid_warned_with_nodes', test_coarse_grid), &
+               new_unittest('dynamic_compression_warned', test_compression_warned)]
    end subroutine collect_scenes
 
    !> The paper's cable at 180 kN parting at mid-span: the two halves mirror
@@ -404,4 +405,28 @@ contains
          write (output_unit, '(4x,a)') 'warned: '//warnings
       end subroutine warnings_of
    end subroutine test_coarse_grid
+
+   !> The paper's fast 180 kN break compresses the line near the fixed end after the reflection:
+   !> with compression = 'law' the run warns with the compression, where and when (the smallest
+   !> strain of the history); a rope that cannot push (compression = 'none') is not warned.
+   subroutine test_compression_warned(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      type(simulation) :: sim
+      c = rupture_config(180.0e3_dp, 0.005_dp, 0.12_dp, 61)
+      c%compression = 'law'
+      call run_config(c, sim, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a)') 'law: '//sim%rod%summary%warnings
+      call check(error, index(sim%rod%summary%warnings, 'compressed to -') > 0 .and. &
+                 index(sim%rod%summary%warnings, ' at s = ') > 0 .and. &
+                 sim%rod%summary%min_strain_time > 0.05_dp .and. sim%rod%summary%min_strain_s < 30, &
+                 'the compression of the paper''s break near its fixed end after the reflection is not warned')
+      if (allocated(error)) return
+      c%compression = 'none'
+      call run_config(c, sim, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a)') 'none: '//sim%rod%summary%warnings
+      call check(error, index(sim%rod%summary%warnings, 'compressed') == 0, 'a rope that cannot push is warned')
+   end subroutine test_compression_warned
 end module suite_scenes

@@ -15,7 +15,7 @@ module xcable_run_records
    implicit none
    private
    public :: run_history, run_summary, static_info, run_observer, end_summary, static_figures, summary_text
-   public :: slack_tension_fraction
+   public :: slack_tension_fraction, note_min_strain
    public :: n_end_quantities, end_quantity_names, n_energy, energy_names, field_names, n_fields
    public :: n_end_quantities_y, end_quantity_names_y, n_fields3, field3_names, field3_units
 
@@ -117,6 +117,8 @@ module xcable_run_records
       real(dp) :: max_unit_norm_error = 0, max_turning_angle = 0
       !> Smallest and largest strain reached.
       real(dp) :: min_strain = 0, max_strain = 0
+      !> Where (arc length of the cell's middle, m) and when (s) the smallest strain was reached.
+      real(dp) :: min_strain_s = 0, min_strain_time = 0
       !> Warnings: one line each ('' : none).
       character(:), allocatable :: warnings
    end type run_summary
@@ -282,6 +284,28 @@ contains
       if (allocated(info%extra)) dy = info%extra(n - 1, 1) - info%extra(n, 1)
       info%end_angle_b = atan2(-dz, hypot(dx, dy))
    end subroutine static_figures
+
+   !> Keep the smallest strain of a piece's cells (lengths l1 over the unstretched ones) with
+   !> where (the cell's middle, from the output columns of its nodes) and when it happened.
+   subroutine note_min_strain(summary, l1, column, s_out, t)
+      !> Figures of the run.
+      type(run_summary), intent(inout) :: summary
+      !> Cell stretches |e| = 1 + strain.
+      real(dp), intent(in) :: l1(:)
+      !> Output columns of the piece's nodes.
+      integer, intent(in) :: column(:)
+      !> Arc lengths of the output columns, m.
+      real(dp), intent(in) :: s_out(:)
+      !> Time, s.
+      real(dp), intent(in) :: t
+      integer :: c
+      c = minloc(l1(1:size(column) - 1), 1)
+      if (l1(c) - 1 < summary%min_strain) then
+         summary%min_strain = l1(c) - 1
+         summary%min_strain_s = 0.5_dp*(s_out(column(c)) + s_out(column(c + 1)))
+         summary%min_strain_time = t
+      end if
+   end subroutine note_min_strain
 
    !> The summary as people read it, one line each: the static state, what each end did, the
    !> events (break, slack), and the run's cost; warnings are printed apart.

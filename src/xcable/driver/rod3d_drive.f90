@@ -49,7 +49,7 @@ module xcable_rod3d_drive
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
    use xcable_ends_end, only: end_condition
-   use xcable_run_records, only: run_observer, n_fields, static_figures
+   use xcable_run_records, only: run_observer, n_fields, static_figures, note_min_strain
    use xcable_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
@@ -189,7 +189,8 @@ contains
             if (rod%scene%end_b%held()) rod%info%tension_b = norm2(reaction(:, 2))
          end associate
          call static_figures(rod%info)
-         rod%summary%min_strain = minval(piece%l1) - 1
+         rod%summary%min_strain = huge(1.0_dp)
+         call note_min_strain(rod%summary, piece%l1, self%pieces(1)%column, rod%s_out, 0.0_dp)
          rod%summary%max_strain = maxval(piece%l1) - 1
          ! The static state's compression, for the warning (the planar run's fields held the first guess's).
          rod%static_min_tension = minval(piece%law%tension(piece%l1(1:n - 1) - 1))
@@ -716,7 +717,7 @@ contains
                   h%ends_y(:, slot, i) = [x(3*k - 1), run%v(2, k), f(2)]
                end do
                rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
-               rod%summary%min_strain = min(rod%summary%min_strain, minval(piece%l1) - 1)
+               call note_min_strain(rod%summary, piece%l1, self%pieces(p)%column, rod%s_out, rod%t)
                rod%summary%max_strain = max(rod%summary%max_strain, maxval(piece%l1) - 1)
                if (rod%options%energy) then
                   en = en + run%energies()

@@ -32,7 +32,7 @@
 module xcable_rod_run
    use xcable_kinds, only: dp, i8
    use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
-   use xcable_strings, only: str
+   use xcable_strings, only: str, quantity
    use xcable_scene, only: scene_type, scene_grid
    use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
                                bend_curvature, cell_rotations
@@ -44,7 +44,7 @@ module xcable_rod_run
    use xcable_solver_banded, only: band_matrix
    use xcable_rod_statics, only: rod_static_state, solve_rod_statics
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
-                                 n_end_quantities, static_figures, slack_tension_fraction
+                                 n_end_quantities, static_figures, slack_tension_fraction, note_min_strain
    use xcable_theory, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, &
                                 sync_logical
@@ -77,6 +77,9 @@ module xcable_rod_run
    !> theta / 8 of its length: 1.2 % at 0.1) and the fewest cells
    !> across a break's front (the length over which its force ramps down, c t_break).
    real(dp), parameter, public :: warn_static_turn = 0.1_dp, min_front_cells = 4
+   !> A compression (a negative tension of the law) beyond this fraction of the largest static
+   !> tension is warned, with where and when.
+   real(dp), parameter, public :: warn_dynamic_compression = 0.01_dp
 
    !> Controls of a rod run.
    type :: rod_run_options
@@ -312,6 +315,7 @@ contains
       ! The strains reached start with those of the static state.
       associate (piece => self%pieces(1)%problem%piece)
          self%summary%min_strain = minval(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
+         self%summary%min_strain_s = self%static_min_tension_s
          self%summary%max_strain = maxval(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
          block
             real(dp) :: cell_tension(n - 1)
@@ -883,6 +887,8 @@ contains
          call sync_real(a, 'summary/courant_requested', s%courant_requested, saving)
          call sync_real(a, 'summary/max_turning_angle', s%max_turning_angle, saving)
          call sync_real(a, 'summary/min_strain', s%min_strain, saving)
+         call sync_real(a, 'summary/min_strain_s', s%min_strain_s, saving)
+         call sync_real(a, 'summary/min_strain_time', s%min_strain_time, saving)
          call sync_real(a, 'summary/max_strain', s%max_strain, saving)
       end associate
    end subroutine exchange_records
@@ -1387,7 +1393,7 @@ contains
                end if
             end if
             self%summary%max_turning_angle = max(self%summary%max_turning_angle, maxval(abs(piece%th1)))
-            self%summary%min_strain = min(self%summary%min_strain, minval(piece%l1) - 1)
+            call note_min_strain(self%summary, piece%l1, run_piece%column, self%s_out, self%t + h)
             self%summary%max_strain = max(self%summary%max_strain, maxval(piece%l1) - 1)
             ! The levels change hands without copies (four copies of (2, n) through the
             ! components' descriptors cost 21 million instructions on fast_180kN).
@@ -1806,6 +1812,14 @@ contains
          str(self%static_min_tension_s)//' m (largest tension '//str(self%static_max_tension)//' N); a rope '// &
          'cannot push: this state is held by the bending stiffness and the law''s compression branch, and may '// &
          'be a loop or a buckle (compare with compression = ''none'' and with more nodes)')
+      ! A rope that pushes: the law's compressive branch reached in the dynamics.
+      associate (law => self%pieces(1)%problem%piece%law)
+         if (law%tension(self%summary%min_strain) < -warn_dynamic_compression*self%static_max_tension) &
+            call warn('the line was compressed to '//quantity(law%tension(self%summary%min_strain), 'N')// &
+                      ' (strain '//str(self%summary%min_strain)//') at s = '//quantity(self%summary%min_strain_s, 'm')// &
+                      ', t = '//quantity(self%summary%min_strain_time, 's')//': with compression = ''law'' the rope '// &
+                      'pushes back along its law below zero strain; a rope cannot push: compression = ''none''')
+      end associate
       ! The grid against the scene: the static shape and the break's front.
       if (self%static_max_turn > warn_static_turn) call warn('the static shape turns by up to '// &
          str(self%static_max_turn)//' rad between neighbouring cells (more than '//str(warn_static_turn)// &

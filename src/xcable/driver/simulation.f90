@@ -35,7 +35,7 @@ module xcable_simulation
    public :: simulation, run_options_from_config, checkpoint_settings
 
    !> Inertia kept by the shortest wave (two cells) with the averaged mass
-   !> matrix, as a fraction of the lumped one (model/rod.f90, docs/numerics.md).
+   !> matrix, as a fraction of the lumped one (model/rod.f90, docs/theory/numerics.md).
    real(dp), parameter, public :: averaged_sawtooth_mass = 0.1_dp
 
    !> Where and when a run writes checkpoints.

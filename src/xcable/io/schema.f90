@@ -256,7 +256,7 @@ contains
                'planar rod: solve each step only on the part of the cable that moves (the nodes that moved in the '// &
                'last step by more than 1e-5 newton_tol cell lengths or 16 units of round-off of the coordinates, '// &
                'and 8 nodes on either side; grown and solved again when the motion reaches the margin); the rest '// &
-               'keeps its state. Results agree with the whole solve to round-off, not to the bit (docs/speed.md)')
+               'keeps its state. Results agree with the whole solve to round-off, not to the bit (docs/measurements/speed.md)')
       call add(t, 'numerics', 'min_step_fraction', 'real', '-', '0.0009765625', &
                'the step control halves a failed step down to this fraction of dt (1/1024), then stops with a named '// &
                'error', 1.0e-9_dp, 1.0_dp)

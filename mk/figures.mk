@@ -1,4 +1,4 @@
-# Figures with gnuplot (plots/, README "Figures", docs/user/scenes.md). Included by the main Makefile.
+# Figures with gnuplot (plots/, docs/user/results.md "Figures", docs/user/scenes.md). Included by the main Makefile.
 #   make figures                 run the four paper cases and draw every figure (PNG)
 #   make figures FORMAT=pdf      the same as PDF (pdfcairo), for papers
 #   make figures-scenes          run the example scenes (input/<scene>.nml, docs/user/scenes.md) and

@@ -376,7 +376,7 @@ contains
       b1 = index(now(b0:), new_line('a'))
       b1 = merge(len(now), b0 + b1 - 2, b1 == 0)
       text = 'the namelist differs in line '//str(line)//": '"//then(a0:a1)//"' (checkpoint), '"//now(b0:b1)// &
-             "' (now); the variables that may differ are marked in README's input table"
+             "' (now); the variables that may differ are marked in docs/user/namelist.md"
    end function first_difference
 
    integer function sim_snapshots_written(self) result(n)

@@ -3,7 +3,7 @@
 !> values or range, meaning). The reader (io/input.f90) takes from it the
 !> names and types the scanner checks, the range and allowed-value checks of
 !> the validation and the order and form of the echo; `write_schema` makes
-!> from it the input table of README.md and the sweep scripts' variable table
+!> from it the input table of docs/user/namelist.md and the sweep scripts' variable table
 !> (`xcable --schema markdown|tsv`).
 !>
 !> Adding a variable: a component with its default in io/config.f90, an
@@ -443,7 +443,7 @@ contains
       s = '&'//e%upper_from(1:pct - 1)//' '//trim(e%upper_from(pct + 1:))
    end function upper_name
 
-   !> The table as text: 'markdown' (the input table of README.md) or 'tsv'
+   !> The table as text: 'markdown' (the input table of docs/user/namelist.md) or 'tsv'
    !> (group, variable, type, count, with a header line; the sweep scripts'
    !> table). Lines end with a new line; '' for an unknown format.
    function schema_text(format) result(text)

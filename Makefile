@@ -45,6 +45,7 @@ test: build
 		fi; \
 	done
 	$(FPM) test --profile $(PROFILE)
+	tools/check_links.py
 	tools/golden_cases.py check bin/xcable
 	test/test_figures.sh
 	test/test_fuzz.sh bin/xcable

@@ -3,7 +3,7 @@
 !>   xcable case.nml
 !>   xcable --resume case.nml       (continue from the checkpoint of case.nml's result file)
 !>   xcable --check case.nml        (validate the case, solve its statics, and exit)
-!>   xcable --schema markdown|tsv   (the input table: README's, or the sweep scripts')
+!>   xcable --schema markdown|tsv   (the input table: docs/user/namelist.md's, or the sweep scripts')
 !>   xcable --version               (the version, the compiler and its options)
 !>
 !> Exit codes: 0 complete (warnings, if any, on stderr and in the file);
@@ -46,7 +46,7 @@ program xcable_main
    real(dp) :: dt
    logical :: check_only, resume, exists, rod
    character(len=*), parameter :: usage = 'usage: xcable [--check | --resume] <case.nml>   (--check: validate only; '// &
-                                          '--resume: continue from the checkpoint; see README.md for the namelist '// &
+                                          '--resume: continue from the checkpoint; see docs/user/namelist.md for the namelist '// &
                                           'groups); xcable --schema markdown|tsv; xcable --version'
 
    nargs = command_argument_count()

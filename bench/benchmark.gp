@@ -1,7 +1,7 @@
 # Work-precision figure of the xcable benchmark: error against CPU time
 # (user + system of the whole process, one thread) for the box scheme and the rod (averaged and
-# lumped mass), from docs/benchmark.dat (written by `make bench`).
-#   gnuplot bench/benchmark.gp   ->  docs/benchmark.png
+# lumped mass), from docs/measurements/data/benchmark.dat (written by `make bench`).
+#   gnuplot bench/benchmark.gp   ->  docs/measurements/benchmark.png
 # Data blocks (gnuplot index): case base (fast_180kN 0, slow_315kN 15) + variant
 # (box 0, rod averaged 5, rod lumped 10) + series (0, 1, 2: grids at Courant
 # 0.5, 1, 2; 3: grids between at Courant 1; 4: the target configuration);
@@ -10,7 +10,7 @@
 # speed error|, 7 |1% drop error| (ms), 8 mean|dT|/Ts, 9 max|dT|/Ts,
 # 10 reached t_end (1/0), 11 instructions, 12 theta.
 set terminal pngcairo size 1500,1650 font ',11'
-set output 'docs/benchmark.png'
+set output 'docs/measurements/benchmark.png'
 array colour[3] = ['#1f4e9c', '#c0282d', '#2a9a3a']
 array variant[3] = ['box', 'rod, averaged mass', 'rod, lumped mass']
 array courant_pt[3] = [8, 7, 4]
@@ -26,7 +26,7 @@ set xlabel 'CPU time of the whole process (s)'
 set format y '10^{%T}'
 
 # plot_panel(c, column): every variant's ladders, grids between, target, failures
-plot_cmd = "plot for [v=0:2] for [k=0:2] 'docs/benchmark.dat' index block(C, v, k) using 4:COL with linespoints lw 1.5 pt courant_pt[k+1] dt courant_dt[k+1] lc rgb colour[v+1] notitle, \
+plot_cmd = "plot for [v=0:2] for [k=0:2] 'docs/measurements/data/benchmark.dat' index block(C, v, k) using 4:COL with linespoints lw 1.5 pt courant_pt[k+1] dt courant_dt[k+1] lc rgb colour[v+1] notitle, \
    for [v=0:2] '' index block(C, v, 3) using 4:COL with points pt 7 ps 0.6 lc rgb colour[v+1] notitle, \
    for [v=0:2] '' index block(C, v, 4) using 4:COL with points pt 2 ps 3.5 lw 2.5 lc rgb colour[v+1] notitle, \
    for [v=0:2] for [k=0:3] '' index block(C, v, k) using 4:(failed(column(COL))) with points pt 4 ps 2 lc rgb 'black' notitle, \

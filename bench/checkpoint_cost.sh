@@ -1,10 +1,10 @@
 #!/usr/bin/env bash
-# The cost of checkpoints (docs/benchmark.md, "Cost of checkpoints").
+# The cost of checkpoints (docs/measurements/benchmark.md, "Cost of checkpoints").
 #
 #   bench/checkpoint_cost.sh [REPS] [CASE]   (default 7 and input/fast_180kN.nml;
 #                                             about a minute, plus three callgrind runs of ~30 s)
 #
-# docs/benchmark.md has its tables for input/fast_180kN.nml (REPS 7) and
+# docs/measurements/benchmark.md has its tables for input/fast_180kN.nml (REPS 7) and
 # input/hanging_mass_heave.nml (REPS 3, about 5 minutes).
 #
 # On the case (fast_180kN: 241 nodes, 592 steps, the energy ledger on), with

@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Floating-point work of full Newton per node-step, and the floor it implies (docs/speed.md).
+"""Floating-point work of full Newton per node-step, and the floor it implies (docs/measurements/data/speed_rounds.md).
 
     python3 bench/floor.py [BIN] [--nodes 241 961] [--work DIR]
 
@@ -7,7 +7,7 @@ Issue 16 estimated a floor for the cost of a node-step from the arithmetic a
 step needs (about 900 flops for one residual, one substitution, and a
 Jacobian with its factorisation every fifth step) at 130-200 ns, that is at
 4.5-6.9 flops per ns. The rod keeps full Newton (a fresh Jacobian and its
-factorisation at every iteration, about two iterations a step: docs/speed.md,
+factorisation at every iteration, about two iterations a step: docs/measurements/data/speed_rounds.md,
 "Measured and not taken"), so its floor by the same reckoning is the
 arithmetic full Newton does, at the same rate.
 

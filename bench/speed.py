@@ -1,5 +1,5 @@
 #!/usr/bin/env python3
-"""Speed of xcable builds on fast_180kN, and MoorDyn's stepping time (docs/speed.md).
+"""Speed of xcable builds on fast_180kN, and MoorDyn's stepping time (docs/measurements/data/speed_rounds.md).
 
     python3 bench/speed.py NAME=BIN [NAME=BIN ...] [--rounds 7] [--no-callgrind]
                            [--no-moordyn] [--work DIR]

@@ -1,4 +1,4 @@
-!> checkpoint_cost: what checkpoints cost a rod run (docs/benchmark.md,
+!> checkpoint_cost: what checkpoints cost a rod run (docs/measurements/benchmark.md,
 !> "Cost of checkpoints"; bench/checkpoint_cost.sh runs it).
 !>
 !>   checkpoint_cost CASE.nml [REPS] [MODE]

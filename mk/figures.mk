@@ -1,7 +1,7 @@
-# Figures with gnuplot (plots/, README "Figures", docs/scenes.md). Included by the main Makefile.
+# Figures with gnuplot (plots/, docs/user/results.md "Figures", docs/user/scenes.md). Included by the main Makefile.
 #   make figures                 run the four paper cases and draw every figure (PNG)
 #   make figures FORMAT=pdf      the same as PDF (pdfcairo), for papers
-#   make figures-scenes          run the example scenes (input/<scene>.nml, docs/scenes.md) and
+#   make figures-scenes          run the example scenes (input/<scene>.nml, docs/user/scenes.md) and
 #                                draw their figures into $(FIGDIR)/<scene>/ (FORMAT=pdf too)
 #   make figures-case            draw the figures of results/$(CASE) (no run); CASE=slow_315kN by default
 #   make test-figures            check that every plot script draws a PNG without gnuplot warnings

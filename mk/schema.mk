@@ -1,17 +1,19 @@
-# The input table of README.md (section "Input reference", between the
-# markers <!-- schema:begin --> and <!-- schema:end -->) is written from the
+# The namelist reference docs/user/namelist.md holds, between the markers
+# <!-- schema:begin --> and <!-- schema:end -->, the input table written from the
 # schema (src/xcable/io/schema.f90) by `xcable --schema markdown`.
-#   make schema   rewrite that section of README.md (fpm test checks that it is current)
+#   make schema   rewrite that table (fpm test, and so make test, checks that it is current)
 
 .PHONY: schema
 
+SCHEMA_DOC = docs/user/namelist.md
+
 schema: build
-	@grep -q '^<!-- schema:begin -->$$' README.md && grep -q '^<!-- schema:end -->$$' README.md || \
-		{ echo "make schema: README.md lacks the markers <!-- schema:begin --> / <!-- schema:end -->" >&2; exit 2; }
+	@grep -q '^<!-- schema:begin -->$$' $(SCHEMA_DOC) && grep -q '^<!-- schema:end -->$$' $(SCHEMA_DOC) || \
+		{ echo "make schema: $(SCHEMA_DOC) lacks the markers <!-- schema:begin --> / <!-- schema:end -->" >&2; exit 2; }
 	@mkdir -p build
 	./bin/xcable --schema markdown >build/schema.md
 	awk -v table=build/schema.md \
 		'/^<!-- schema:begin -->$$/ { print; while ((getline line < table) > 0) print line; skip = 1; next } \
-		 /^<!-- schema:end -->$$/ { skip = 0 } !skip' README.md >build/README.md.new
-	mv build/README.md.new README.md
-	@echo "README.md: input table rewritten from bin/xcable --schema markdown"
+		 /^<!-- schema:end -->$$/ { skip = 0 } !skip' $(SCHEMA_DOC) >build/namelist.md.new
+	mv build/namelist.md.new $(SCHEMA_DOC)
+	@echo "$(SCHEMA_DOC): input table rewritten from bin/xcable --schema markdown"

@@ -3,7 +3,7 @@
 #   gnuplot -e "stem='results/sway3d'; out='motion3d.png'" plots/motion3d.gp
 # Optional: title='...', label_a, label_b, view_rot_x, view_rot_z (the view angles in degrees,
 # default 62 and 32). Variables: see plots/common.gp. The snapshot text of a 3-D run has y in
-# column 10 (README, Figures); a planar run's text has no y and is refused with a message.
+# column 10 (docs/user/results.md, Figures); a planar run's text has no y and is refused with a message.
 _lastslash(p, i) = i < 1 ? 0 : (p[i:i] eq "/" ? i : _lastslash(p, i - 1))
 if (!exists("plotdir")) { plotdir = _lastslash(ARG0, strlen(ARG0)) ? ARG0[1:_lastslash(ARG0, strlen(ARG0)) - 1] : "." }
 load plotdir."/common.gp"

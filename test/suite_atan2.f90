@@ -8,7 +8,7 @@
 !> Measured here: 1 unit from the correctly rounded value at worst, 1.40 units
 !> from the exact value in the first branch (t < 1/16), 0.555 in the table
 !> branch (bench/atan2/accuracy.f90 on 2e7 arguments: 1, 1.469, 0.566); the
-!> bounds are 1 unit, 1.5 (the first branch's bound, docs/speed.md) and 0.6.
+!> bounds are 1 unit, 1.5 (the first branch's bound, docs/measurements/data/speed_rounds.md) and 0.6.
 !> Mutations seen to fail: the last coefficient of the first polynomial dropped
 !> (739 units), c*big_lo left out of the table branch (123 units), the table
 !> index one off (1.8e16 units), no scaling of huge arguments (NaN) or of tiny

@@ -303,10 +303,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call expect_error(error, "&material law = 'cubic' /"//nl, [character(24) :: path, '&material', 'cubic', 'tanh'])
    end subroutine test_unknown_law
-   !> The input table of README.md is the schema's (make schema rewrites it).
+   !> The input table of docs/user/namelist.md is the schema's (make schema rewrites it).
    subroutine test_readme_table(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=*), parameter :: readme = 'README.md', begin = '<!-- schema:begin -->', finish = '<!-- schema:end -->'
+      character(len=*), parameter :: readme = 'docs/user/namelist.md'
+      character(len=*), parameter :: begin = '<!-- schema:begin -->', finish = '<!-- schema:end -->'
       character(:), allocatable :: table, expected
       character(len=4096) :: line
       integer :: unit, ios, lineno, at, first

@@ -300,7 +300,7 @@ contains
    end subroutine test_inverse
 
    !> The paper's statements: 180 kN gives 17.8 % and 315 kN 22.8 % (section 4.2);
-   !> f(0) is about -42 N (PHYSICS.md); the law is convex below -p3/p2.
+   !> f(0) is about -42 N (docs/theory/laws.md); the law is convex below -p3/p2.
    subroutine test_paper_values(error)
       type(error_type), allocatable, intent(out) :: error
       type(tanh_law) :: law

@@ -1118,7 +1118,7 @@ contains
    !> back by 2.56 rad, a compressed cell at -387 N) reported as a complete
    !> run. The folded state is refused at every step of the continuation,
    !> which stalls (at 11 % of the loads); until the relaxation (rod_statics,
-   !> docs/numerics.md) the run then stopped, naming the fold. Now the
+   !> docs/theory/numerics.md) the run then stopped, naming the fold. Now the
    !> relaxation from the catenary under the mean load finds the unfolded
    !> state: the bow of the current (turning -1.89 rad in all, the largest
    !> turn between cells 0.31 rad). With the planar fold check left out

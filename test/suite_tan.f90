@@ -8,7 +8,7 @@
 !> Measured here (units in the last place of the correctly rounded value, from the
 !> exact one): 0.501 for |x| < 1/16, 0.638 for 1/16 <= |x| <= pi/4, 0.91 for
 !> pi/4 < |x| <= pi/2; at most 1 unit from the intrinsic's. Bounds: 0.6, 0.8,
-!> 1.0 and 2 (bench/tan/accuracy.f90 on 1.6e7 arguments: docs/speed.md "An own tan").
+!> 1.0 and 2 (bench/tan/accuracy.f90 on 1.6e7 arguments: docs/measurements/data/speed_rounds.md "An own tan").
 !> Mutations seen to fail: the last coefficient of the first polynomial dropped
 !> (72 units), the table's low part tan_lo left out (1.22), T tan u left out of the
 !> middle branch's denominator (1e12), the tail e of the reduction pi/2 - x left out

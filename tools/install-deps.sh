@@ -24,7 +24,7 @@ fi
 if [ ${#missing_apt[@]} -gt 0 ]; then
   if [ "${sudo_cmd[0]:-}" = none ]; then
     echo "install-deps: missing Debian packages: ${missing_apt[*]} (no root: install them, or load the" \
-         "cluster's modules; see README 'Building on a cluster')" >&2
+         "cluster's modules; see docs/user/install.md, 'On a cluster')" >&2
     exit 1
   fi
   echo "install-deps: installing from apt: ${missing_apt[*]}"

@@ -6,7 +6,7 @@
 #
 # Why: linked dynamically, xcable loads 43 shared libraries (HDF5 brings curl, TLS,
 # Kerberos and LDAP along), and loading them costs about 13 ms of CPU per process
-# on the development machine, 16 % of the shipped fast_180kN (docs/speed.md,
+# on the development machine, 16 % of the shipped fast_180kN (docs/measurements/data/speed_rounds.md,
 # "Static linking by default"). Linked this way it loads 8. The objects are
 # fpm's, taken from its own link command in INSTALL_LOG, so the program computes
 # the same bits.

@@ -1,6 +1,6 @@
 !> Accuracy of fast_atan2 (src/xcable/numerics/atan2.f90) and of the intrinsic (glibc)
 !> against atan2 in quad precision (libquadmath) rounded to double, which is taken as
-!> the correctly rounded value. Build and run (docs/speed.md, "An own atan2"):
+!> the correctly rounded value. Build and run (docs/measurements/data/speed_rounds.md, "An own atan2"):
 !>
 !>     gfortran -O3 -funroll-loops src/xcable/kinds.f90 src/xcable/numerics/atan2.f90 \
 !>        bench/atan2/accuracy.f90 -o /tmp/atan2_accuracy && /tmp/atan2_accuracy [millions]

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """How far results move: one program against another on every case of input/,
 and the first program against itself with one input changed by a unit in the
-last place (docs/speed.md, "An own atan2").
+last place (docs/measurements/data/speed_rounds.md, "An own atan2").
 
     python3 bench/atan2/moves.py BASE_BIN NEW_BIN [case ...]
 

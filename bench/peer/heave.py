@@ -98,7 +98,7 @@ def x_tag(n, dt):
 def xcable_run(n, dt, work, t_end):
     tag = x_tag(n, dt)
     nml, h5 = os.path.join(work, tag + ".nml"), os.path.join(work, tag + ".h5")
-    # 'none' blends the law to zero for |eps| < 1e-3 (docs/compression.md); a stiffer
+    # 'none' blends the law to zero for |eps| < 1e-3 (docs/theory/compression.md); a stiffer
     # line (--ea-scale) strains less than that, so it keeps the law (it stays in tension)
     comp = "none" if fs.EA_SCALE == 1 else "law"
     txt = (f"&cable length = {fs.LENGTH}, diameter = {fs.DIAM}, density = {fs.RHO_C}, gravity = {fs.G} /\n"

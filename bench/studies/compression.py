@@ -9,7 +9,7 @@ turning angle between neighbouring cells), the lowest tension at end a, and
 the released end's position at the end of the run, so that the convergence of
 the post-reflection results can be read off the ladder.
 
-    python3 bench/studies/compression.py [--exe bin/xcable] [--work build/study] [--out docs/compression.md]
+    python3 bench/studies/compression.py [--exe bin/xcable] [--work build/study] [--out docs/theory/compression.md]
 
 Needs h5py and numpy (pip install h5py numpy); not part of make test.
 """
@@ -56,7 +56,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", default="bin/xcable")
     ap.add_argument("--work", default="build/study")
-    ap.add_argument("--out", default="docs/compression.md")
+    ap.add_argument("--out", default="docs/theory/compression.md")
     ap.add_argument("--paper-nodes", default="121,241,481,961")
     ap.add_argument("--slack-nodes", default="241,481")
     a = ap.parse_args()
@@ -65,7 +65,7 @@ def main():
     exe = os.path.join(a.work, "xcable")
     subprocess.run(["cp", a.exe, exe], check=True)
     a.exe = exe
-    # The columns are explained in the hand-written text of docs/compression.md, above the tables.
+    # The columns are explained in the hand-written text of docs/theory/compression.md, above the tables.
     lines = []
     for title, cases, nodes in (("The paper's four runs", PAPER, [int(n) for n in a.paper_nodes.split(",")]),
                                 ("Slack releases", SLACK, [int(n) for n in a.slack_nodes.split(",")])):

@@ -2,7 +2,7 @@
 """Study of internal (Kelvin-Voigt) damping on the paper's runs (issue 13).
 
 The paper's four runs to their t_end, with &material damping c = 0, values
-around the realistic one (docs/laws.md) and a large one. For each: the
+around the realistic one (docs/theory/laws.md) and a large one. For each: the
 released end's peak speed and its mean speed from the end of the break to the
 return of the (undamped) front; the front's arrival at the fixed end (1 % drop)
 and its width (1 % to 50 % drop); the fastest fall of the tension there during
@@ -12,7 +12,7 @@ largest turning angle between cells (buckling); the energy dissipated over the
 initial strain energy, the ledger drift and the number of warnings.
 
     python3 bench/studies/damping.py [--exe bin/xcable] [--work build/study_damping] \
-        [--out docs/damping.md] [--nodes 481] [--damping 0,1.5e3,4.5e3,1.4e4,4.5e4]
+        [--out docs/theory/damping.md] [--nodes 481] [--damping 0,1.5e3,4.5e3,1.4e4,4.5e4]
 
 Needs h5py and numpy (pip install h5py numpy); not part of make test.
 """
@@ -68,7 +68,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", default="bin/xcable")
     ap.add_argument("--work", default="build/study_damping")
-    ap.add_argument("--out", default="docs/damping.md")
+    ap.add_argument("--out", default="docs/theory/damping.md")
     ap.add_argument("--nodes", type=int, default=481)
     ap.add_argument("--damping", default="0,1.5e3,4.5e3,1.4e4,4.5e4")
     a = ap.parse_args()

@@ -11,7 +11,7 @@ tension at the fixed end, the smallest strain and the largest turning angle
 between cells (buckling); the ledger drift; the static sag.
 
     python3 bench/studies/fluid.py [--exe bin/xcable] [--work build/study_fluid] \
-        [--out docs/fluid.md] [--nodes 241]
+        [--out docs/theory/fluid.md] [--nodes 241]
 
 Needs h5py and numpy; not part of make test.
 """
@@ -23,7 +23,7 @@ from common import text_attr, write_tables
 # The paper's runs and their t_end (s).
 CASES = [("fast_180kN", 180e3, 0.005, 0.14), ("slow_180kN", 180e3, 0.05, 0.17),
          ("fast_315kN", 315e3, 0.005, 0.13), ("slow_315kN", 315e3, 0.05, 0.16)]
-# Media: name, &fluid group ('' for vacuum). Coefficients: docs/fluid.md says where they come from.
+# Media: name, &fluid group ('' for vacuum). Coefficients: docs/theory/fluid.md says where they come from.
 MEDIA = [("vacuum", ""),
          ("air", "&fluid density = 1.2, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0 /\n"),
          ("water", "&fluid density = 1025, cd_normal = 1.979, cd_tangential = 0.008, ca_normal = 1.1 /\n")]
@@ -68,7 +68,7 @@ def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("--exe", default="bin/xcable")
     ap.add_argument("--work", default="build/study_fluid")
-    ap.add_argument("--out", default="docs/fluid.md")
+    ap.add_argument("--out", default="docs/theory/fluid.md")
     ap.add_argument("--nodes", type=int, default=241)
     a = ap.parse_args()
     os.makedirs(a.work, exist_ok=True)

@@ -4,7 +4,7 @@
 !>     gfortran -O2 src/xcable/kinds.f90 src/xcable/numerics/tan.f90 bench/tan/accuracy.f90 \
 !>        -o /tmp/tan_accuracy && /tmp/tan_accuracy [arguments per family, default 2000000]
 !>
-!> (docs/speed.md quotes a run with 1500000: 1.2e7 arguments.)
+!> (docs/measurements/data/speed_rounds.md quotes a run with 1500000: 1.2e7 arguments.)
 !>
 !> Per family of arguments: the share not correctly rounded (the quad value rounded to
 !> double taken as the correctly rounded one), the largest and the mean distance from

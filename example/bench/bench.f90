@@ -1,6 +1,6 @@
-!> Work-precision benchmark of xcable (issue 5), for both discretisations.
+!> Work-precision benchmark of xcable, for both discretisations.
 !>
-!>   fpm run --example bench --profile release -- [quick] [exe=bin/xcable] [work=build/bench] [out=docs]
+!>   fpm run --example bench --profile release -- [quick] [exe=bin/xcable] [work=build/bench] [out=docs/measurements/data]
 !>                                                 [version=TEXT] [jobs=2]
 !>
 !> For fast_180kN and slow_315kN it runs the `xcable` executable (the whole
@@ -120,7 +120,7 @@ program bench
    quick = .false.
    exe = 'bin/xcable'
    work = 'build/bench'
-   out = 'docs'
+   out = 'docs/measurements/data'
    version = ''
    jobs = 2
    do i = 1, command_argument_count()
@@ -139,7 +139,7 @@ program bench
          read (arg(6:), *, iostat=stat) jobs
          if (stat /= 0 .or. jobs < 1) error stop 'bench: jobs= takes a positive integer'
       else
-         write (error_unit, '(a)') 'usage: bench [quick] [exe=bin/xcable] [work=build/bench] [out=docs] '// &
+         write (error_unit, '(a)') 'usage: bench [quick] [exe=bin/xcable] [work=build/bench] [out=docs/measurements/data] '// &
             '[version=TEXT] [jobs=2]'
          error stop 2
       end if

@@ -18,7 +18,7 @@
 !>
 !> When all that fails (both ends held or one), the statics relaxes: a
 !> sequence of anchored equilibria (anchored_problem), an overdamped path to
-!> the state, then Newton with the fold check from there (docs/numerics.md,
+!> the state, then Newton with the fold check from there (docs/theory/numerics.md,
 !> Statics when Newton fails). A state the direct path finds is unchanged.
 module xcable_rod_statics
    use xcable_kinds, only: dp
@@ -41,7 +41,7 @@ module xcable_rod_statics
    !> Gauss-Legendre panels per cell of the catenary first guess (catenary_from_force; its
    !> exact reference takes 8): one panel of 8 points is exact to round-off on a cell, and
    !> the statics' Newton iteration takes the guess to the same state to round-off
-   !> (docs/speed.md, "The statics' first guess").
+   !> (docs/measurements/data/speed_rounds.md, "The statics' first guess").
    integer, parameter :: guess_panels = 1
 
    !> The static equilibrium with every loaded node tied by a spring to an

@@ -92,7 +92,7 @@ contains
          ! the box scheme's shortest waves run ahead of the front (up to c /
          ! lambda^2), and a step rounded down (lambda = 0.98 at 241 nodes) brings
          ! the 1 % tension drop at the fixed end 0.14 ms early instead of 0.03 ms
-         ! late (docs/benchmark.md).
+         ! late (docs/measurements/benchmark.md).
          if (config%interval >= dynamics%dt) then
             dynamics%dt = config%interval/floor(config%interval/dynamics%dt*(1 + 1.0e-9_dp))
          end if

@@ -26,7 +26,7 @@
 !> much (it scales with kl (kl + ku)), and no order of the rows alone does
 !> better than 17 (checked over all 7! orders).
 !>
-!> Boundary conditions (PHYSICS.md):
+!> Boundary conditions (docs/theory/equations.md):
 !> - statics, fixed end: f(eps) = T_s, Sn = 0, u = 0, v = 0;
 !>   free end: f(eps) = T_s, Sn = 0, b0^2 + b3^2 = 1;
 !> - dynamics, fixed end: u = 0, v = 0, Omega3 = its static value;

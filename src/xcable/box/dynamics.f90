@@ -257,7 +257,7 @@ contains
       allocate (y(n_eq, np), y_prev(n_eq, np), x_new(n_eq*np), xpos(np), zpos(np))
       y = y_static
       y_prev = y_static
-      ! Newton settings of a time step (docs/benchmark.md, "Speed work"): stop on
+      ! Newton settings of a time step (docs/measurements/benchmark.md, "Speed work"): stop on
       ! the contraction estimate, keep the Jacobian while it contracts by 0.5
       ! per iteration within a step, refresh it at the start of a step once it
       ! contracted by more than 0.05, and skip the report's final residual.

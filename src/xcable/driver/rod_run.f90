@@ -68,7 +68,7 @@ module xcable_rod_run
    !> window that must stay quiet.
    real(dp), parameter :: quiet_fraction = 1.0e-5_dp, quiet_ulps = 16
    integer, parameter :: window_margin = 8, check_nodes = 2
-   !> Warning thresholds (documented in the README, "Warnings").
+   !> Warning thresholds (documented in docs/user/results.md, "Warnings").
    real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
                                   warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp, &
                                   warn_static_compression = 1.0e-6_dp

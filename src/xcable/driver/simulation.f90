@@ -35,7 +35,7 @@ module xcable_simulation
    public :: simulation, run_options_from_config, checkpoint_settings
 
    !> Inertia kept by the shortest wave (two cells) with the averaged mass
-   !> matrix, as a fraction of the lumped one (model/rod.f90, docs/numerics.md).
+   !> matrix, as a fraction of the lumped one (model/rod.f90, docs/theory/numerics.md).
    real(dp), parameter, public :: averaged_sawtooth_mass = 0.1_dp
 
    !> Where and when a run writes checkpoints.
@@ -376,7 +376,7 @@ contains
       b1 = index(now(b0:), new_line('a'))
       b1 = merge(len(now), b0 + b1 - 2, b1 == 0)
       text = 'the namelist differs in line '//str(line)//": '"//then(a0:a1)//"' (checkpoint), '"//now(b0:b1)// &
-             "' (now); the variables that may differ are marked in README's input table"
+             "' (now); the variables that may differ are marked in docs/user/namelist.md"
    end function first_difference
 
    integer function sim_snapshots_written(self) result(n)

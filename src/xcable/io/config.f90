@@ -2,7 +2,7 @@
 !> grouped as in the file, with the paper's values as defaults (the slow
 !> rupture at 315 kN). The schema (io/schema.f90) describes every component:
 !> its group, type, unit, range and meaning; the reader, the validation, the
-!> echo into the result file and the README table all follow the schema.
+!> echo into the result file and docs/user/namelist.md all follow the schema.
 module xcable_io_config
    use xcable_kinds, only: dp
    use xcable_material_law, only: paper_tanh_coefficients

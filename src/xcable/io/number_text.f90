@@ -4,7 +4,7 @@
 !> Why: gfortran's formatted output costs about 5 000 instructions per
 !> number (the format interpreter, then snprintf), and the gnuplot text of a
 !> run (snapshots and history) writes tens of thousands of numbers: 9 % of
-!> fast_180kN's instructions as shipped (docs/speed.md).
+!> fast_180kN's instructions as shipped (docs/measurements/data/speed_rounds.md).
 !>
 !> How: |x| = m 2^e2 with m < 2^53 an integer. The d + 1 significant digits
 !> are D = |x| 10^(d - E) rounded to the nearest integer, ties to even, with

@@ -3,7 +3,7 @@
 !> values or range, meaning). The reader (io/input.f90) takes from it the
 !> names and types the scanner checks, the range and allowed-value checks of
 !> the validation and the order and form of the echo; `write_schema` makes
-!> from it the input table of README.md and the sweep scripts' variable table
+!> from it the input table of docs/user/namelist.md and the sweep scripts' variable table
 !> (`xcable --schema markdown|tsv`).
 !>
 !> Adding a variable: a component with its default in io/config.f90, an
@@ -258,7 +258,7 @@ contains
                'planar rod: solve each step only on the part of the cable that moves (the nodes that moved in the '// &
                'last step by more than 1e-5 newton_tol cell lengths or 16 units of round-off of the coordinates, '// &
                'and 8 nodes on either side; grown and solved again when the motion reaches the margin); the rest '// &
-               'keeps its state. Results agree with the whole solve to round-off, not to the bit (docs/speed.md)')
+               'keeps its state. Results agree with the whole solve to round-off, not to the bit (docs/measurements/speed.md)')
       call add(t, 'numerics', 'min_step_fraction', 'real', '-', '0.0009765625', &
                'the step control halves a failed step down to this fraction of dt (1/1024), then stops with a named '// &
                'error', 1.0e-9_dp, 1.0_dp)
@@ -445,7 +445,7 @@ contains
       s = '&'//e%upper_from(1:pct - 1)//' '//trim(e%upper_from(pct + 1:))
    end function upper_name
 
-   !> The table as text: 'markdown' (the input table of README.md) or 'tsv'
+   !> The table as text: 'markdown' (the input table of docs/user/namelist.md) or 'tsv'
    !> (group, variable, type, count, with a header line; the sweep scripts'
    !> table). Lines end with a new line; '' for an unknown format.
    function schema_text(format) result(text)

@@ -323,7 +323,7 @@ contains
    !> nearly the same size, so W computed so carries an absolute round-off of up to 1e-11 J/m
    !> and the rods' divided difference (W1 - W0) / (eps1 - eps0) an error of that over the
    !> strain step, up to 1e-5 N at the smallest steps it is taken at (1e-6; below, the rods
-   !> take a Taylor form), docs/model3d.md (Water in motion). With x = p2 eps + p3, log cosh x1 - log cosh x0 =
+   !> take a Taylor form), docs/theory/model3d.md (Water in motion). With x = p2 eps + p3, log cosh x1 - log cosh x0 =
    !> 2 atanh(tanh(x_mid) tanh(dx / 2)), which keeps the relative accuracy of the change, so
    !> the error is that of the tension itself (a few 1e-11 N). For p2 |eps1 - eps0| >= 1,
    !> where nothing cancels, the difference of the two energies.

@@ -1,5 +1,5 @@
 !> The energy-conserving discrete rod: the default discretisation of the
-!> planar cable (docs/ARCHITECTURE.md, docs/numerics.md).
+!> planar cable (docs/ARCHITECTURE.md, docs/theory/numerics.md).
 !>
 !> The continuum is the paper's (extensible, shear-rigid, bending stiffness
 !> EI, T = f(eps), moment M = EI Omega with Omega the curvature per unstretched
@@ -388,7 +388,7 @@ contains
    !> e_k-1 . e_k) bit for bit, by fast_atan2_array (packed SSE2 pairs) on blocks of 32 nodes
    !> (its arguments on the stack). On fast_180kN (callgrind): fast_atan2 31.6e6 -> 0.76e6
    !> instructions, with fast_atan2_array 15.0e6, geometry_of and geometry_cells 20.3e6 -> 19.2e6
-   !> with this routine; the whole process 0.5887e9 -> 0.5685e9 with cell_terms' (docs/speed.md).
+   !> with this routine; the whole process 0.5887e9 -> 0.5685e9 with cell_terms' (docs/measurements/data/speed_rounds.md).
    pure subroutine turning_angles(n, e, th, ka, kb)
       integer, intent(in) :: n, ka, kb
       real(dp), intent(in) :: e(2, n - 1)
@@ -431,7 +431,7 @@ contains
    !> M V with the band of M in mass(0:2, n), on explicit-shape arrays: the same
    !> operations in the same order as on the assumed-shape arrays and the class
    !> component, in 5 times fewer instructions (callgrind, fast_180kN; the other
-   !> kernels below: 2-3 times; docs/speed.md).
+   !> kernels below: 2-3 times; docs/measurements/data/speed_rounds.md).
    pure subroutine mass_product(n, mass, v, mv)
       integer, intent(in) :: n
       real(dp), intent(in) :: mass(0:2, n), v(2, n)
@@ -805,7 +805,7 @@ contains
    !> blocks, the other nodes' moments and velocities and the residual are not computed
    !> (they stay those of the last evaluation). Window lo .. hi (1 .. n: the whole piece);
    !> x holds the new positions of its nodes. On fast_180kN (241 nodes) it takes about
-   !> 101 000 instructions, the residual alone it replaces about 235 000 (docs/speed.md).
+   !> 101 000 instructions, the residual alone it replaces about 235 000 (docs/measurements/data/speed_rounds.md).
    subroutine step_state(self, x, lo, hi, t0, dt, theta)
       type(rod_piece), intent(inout) :: self
       real(dp), intent(in) :: x(:)
@@ -897,7 +897,7 @@ contains
       ! The tan of each node first, by fast_tan_array (packed SSE2 pairs), of bend_divided's
       ! argument computed as it did, the same bits: on fast_180kN fast_tan 10.20e6 -> 3.02e6
       ! instructions (bend_energy's calls), fast_tan_array 4.77e6, bend_nodes 21.60e6 -> 22.59e6;
-      ! the whole process 0.5685e9 -> 0.5672e9 (callgrind, docs/speed.md).
+      ! the whole process 0.5685e9 -> 0.5672e9 (callgrind, docs/measurements/data/speed_rounds.md).
       do first = k1, k2, block
          last = min(first + block - 1, k2)
          call bend_arguments(last - first + 1, self%th0(first:last), self%th1(first:last), x)
@@ -1216,7 +1216,7 @@ contains
    !> scalars (q, lsum, g, the divisions by l1, lsum, l0 l1, ds_c) one at a time, with broadcasts
    !> and spills around them. Measured on a lean fast_180kN run (241 nodes, no figures, no
    !> ledger): cell_terms 128.7e6 -> 110.9e6 instructions with its callees, the division
-   !> instructions in it 7.27e6 -> 5.83e6, the whole run 504.0e6 -> 486.5e6 (-3.5 %); docs/speed.md,
+   !> instructions in it 7.27e6 -> 5.83e6, the whole run 504.0e6 -> 486.5e6 (-3.5 %); docs/measurements/data/speed_rounds.md,
    !> "cell_terms in blocks, fifth round (bit for bit)".
    subroutine cell_terms(n, law, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, couple_last, &
                          with_jacobian, force, block, dphi1, ca, cb)
@@ -1835,7 +1835,7 @@ contains
       ! (half the lengths of its cells), so row 1 gains -0, and x + (-0) = x for every x: the
       ! same bits, and the pair stays one register (res(2) alone went through the stack: a
       ! packed load right after a scalar store, which waits). node_residuals 17.38e6 ->
-      ! 16.63e6 instructions on fast_180kN, process CPU about -2 % (docs/speed.md).
+      ! 16.63e6 instructions on fast_180kN, process CPU about -2 % (docs/measurements/data/speed_rounds.md).
       g = [-0.0_dp, weight]
       do k = k1, k2
          if (dynamic .and. k >= 3 .and. k <= n - 2) then

@@ -1,5 +1,5 @@
 !> The energy-conserving discrete rod in three dimensions, with torsion
-!> (docs/model3d.md). It lifts the planar rod of model/rod.f90 so that a
+!> (docs/theory/model3d.md). It lifts the planar rod of model/rod.f90 so that a
 !> planar motion gives the planar rod's numbers to round-off.
 !>
 !> Unknowns per node k: the position R_k = (x, y, z), z up, and the material
@@ -1187,7 +1187,7 @@ contains
 
    !> The Jacobian's position blocks (cells, inertia, distributed loads) in band storage ab, as
    !> explicit-shape arrays (a class argument's allocatable components cost several times the
-   !> instructions in these loops, docs/speed.md item 4); the same sums in the same order.
+   !> instructions in these loops, docs/measurements/data/speed_rounds.md item 4); the same sums in the same order.
    pure subroutine add_position_blocks(n, ld, ncol, ab, band0, block, ds, mass, load_block, scale, rate, held_a, held_b, &
                                        dynamic, loads)
       integer, intent(in) :: n, ld, ncol, band0

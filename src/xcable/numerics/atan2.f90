@@ -4,7 +4,7 @@
 !> saving and restoring of the floating-point environment) costs about 128
 !> instructions a call. This one costs 43 on the rod's arguments (a small
 !> angle, a . b > 0) and stays within 1 unit in the last place of the
-!> correctly rounded atan2 (measured: docs/speed.md, "An own atan2").
+!> correctly rounded atan2 (measured: docs/measurements/data/speed_rounds.md, "An own atan2").
 !>
 !> Method. With a = |x|, b = |y|, the quotient t = min(a, b)/max(a, b) in
 !> [0, 1] and the quadrant o (0: b <= a, x >= +0; 1: b > a, x >= +0;
@@ -219,7 +219,7 @@ contains
    !> rounded value; (0, 0), (+-inf, +-inf) and NaNs are passed to the intrinsic.
    elemental real(dp) function fast_atan2(y, x) result(angle)
       ! y and x by value (in registers, not stored by the caller and loaded here): fast_180kN
-      ! 0.6893e9 -> 0.6840e9 instructions with fast_tan's the same (callgrind, docs/speed.md).
+      ! 0.6893e9 -> 0.6840e9 instructions with fast_tan's the same (callgrind, docs/measurements/data/speed_rounds.md).
       !> Ordinate (for the rod: the cross product of the two stretch vectors).
       real(dp), value :: y
       !> Abscissa (for the rod: their dot product).

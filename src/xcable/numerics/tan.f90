@@ -4,7 +4,7 @@
 !> glibc's tan (__tan_fma with the saving and restoring of the floating-point
 !> environment) costs about 50 instructions a call. This one costs 21 on
 !> the rods' arguments (|x| < 1/16) and stays within 0.94 units in the last place
-!> of the exact value (0.51 below 1/16; measured: docs/speed.md, "An own tan").
+!> of the exact value (0.51 below 1/16; measured: docs/measurements/data/speed_rounds.md, "An own tan").
 !>
 !> Method, a = |x|, s = x^2:
 !>
@@ -106,7 +106,7 @@ contains
    !> tan(x) within 1 unit in the last place of the exact value for |x| <= pi/2 (the
    !> double below it); other arguments (and NaN) are passed to the intrinsic.
    elemental real(dp) function fast_tan(x) result(t)
-      ! x by value, as fast_atan2's arguments (fewer instructions a call, docs/speed.md).
+      ! x by value, as fast_atan2's arguments (fewer instructions a call, docs/measurements/data/speed_rounds.md).
       !> Angle, rad (for the rods: half a turning angle).
       real(dp), value :: x
       real(dp) :: a, s, u, r0, r, e, r_hi, r_lo, q, d
@@ -158,7 +158,7 @@ contains
       ! |x| >= 1/16 or is NaN (abs makes a NaN positive), integer operations packed with the
       ! rest. The second loop runs only then: with it for every call fast_tan_array cost 6.42e6
       ! instructions on fast_180kN and the whole process 0.5687e9 (more than fast_tan's
-      ! 0.5685e9), with this test 4.77e6 and 0.5672e9 (callgrind, docs/speed.md).
+      ! 0.5685e9), with this test 4.77e6 and 0.5672e9 (callgrind, docs/measurements/data/speed_rounds.md).
       others = 0
       do i = 1, m
          s = x(i)*x(i)

@@ -17,7 +17,7 @@
 !> 114 000 with band_lu; 72 000 per substitution with the former plain-loop
 !> copy of dgbtrs (136 000 with dgbtrs itself), 36 000 with band_substitute;
 !> the whole run 2.42e9 -> 2.20e9 instructions, results bit for bit the same
-!> (docs/speed.md).
+!> (docs/measurements/data/speed_rounds.md).
 !> - `band_lu` does the operations of LAPACK's unblocked dgbtf2 (which dgbtrf
 !>   calls for kl < 32) in the same order: the first entry of largest
 !>   magnitude as pivot, the rows interchanged over columns j..ju, the

@@ -11,7 +11,7 @@
 !> `refresh_contraction` (the kept Jacobian has aged: a fresh one at the first
 !> guess saves more iterations than it costs). In the paper's ruptures a
 !> factorisation with its Jacobian costs about six iterations (residual and
-!> substitution); 0.05 and 0.5 minimise the total (docs/benchmark.md).
+!> substitution); 0.05 and 0.5 minimise the total (docs/measurements/benchmark.md).
 !> All work arrays live in `newton_workspace`, allocated once.
 !>
 !> Convergence: the update is at most the tolerance; with `estimate_error`,

@@ -62,3 +62,10 @@ set palette defined (0 '#1a1a80', 1 '#1f78b4', 2 '#1b9e77', 3 '#6a9a00', 4 '#e08
 
 set grid lc rgb '#d0d0d0' lw 0.5
 set border lw 1
+
+# The key of a figure, in one row in the bottom margin below the x label: clear of the data and of
+# the title whatever the scene (test/test_figures.sh draws every figure with and without its key
+# and fails when the key covers anything).
+bottom_key = "set key at screen 0.5, screen 0.01 center bottom horizontal maxrows 1 box opaque samplen 1 spacing 1.1 width 1; set bmargin 5.5"
+# In the top left corner of the figure, for a 3-D view (its margins are not the plot's to set).
+corner_key = "set key at screen 0.01, screen 0.99 left top Left reverse box opaque samplen 1 spacing 1.1 width 1"

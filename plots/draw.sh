@@ -5,7 +5,7 @@
 # the run must have written gnuplot text (&output gnuplot = .true.; energy = .true. for the energy
 # figure). Works for any scene (ends held, free, loaded, moved or carrying a mass; a break at an
 # end or inside the cable). Writes <outdir>/{motion,tension,velocity,ends,energy,map}.<png|pdf>;
-# the map (tension against s and t) only from 30 snapshots up (&output interval), the energy
+# the map (tension against s and t) only from 10 snapshots up (&output interval), the energy
 # figure only for a run with the energy ledger; for a 3-D run also motion3d (perspective, to
 # scale) and plan (seen from above). The titles and the names of the ends in the keys
 # come from the namelist in <stem>.h5 when h5dump is installed.
@@ -50,8 +50,8 @@ failed=()
 for kind in $kinds; do
   out="$outdir/$kind.$ext"
   rm -f "$out"
-  if [ "$kind" = map ] && [ "$nsnap" -lt 30 ]; then
-    echo "draw.sh: $stem.snapshots.dat holds $nsnap snapshots (fewer than 30): map not drawn (a smaller &output interval gives it)"
+  if [ "$kind" = map ] && [ "$nsnap" -lt 10 ]; then
+    echo "draw.sh: $stem.snapshots.dat holds $nsnap snapshots (fewer than 10): map not drawn (a smaller &output interval gives it)"
     continue
   fi
   if gnuplot -e "stem='$stem'; out='$out'; title='$title'; $labels" "$here/$kind.gp"; then

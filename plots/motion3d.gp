@@ -36,8 +36,8 @@ set view view_rot_x, view_rot_z
 set view equal xyz
 set xyplane at zfloor
 set grid xtics ytics ztics lc rgb '#d0d0d0' lw 0.5
-set key top left box opaque samplen 1 spacing 1.1
-splot for [i = 0:nsnap - 1:stride] snap index i using 2:10:(zfloor) with lines lw 1 lc rgb '#c8c8c8' notitle, \
+@corner_key
+splot for [i = 0:nsnap - 1:stride] snap index i using 2:10:(zfloor) with lines lw 2 lc rgb '#9a9a9a' notitle, \
       for [i = 0:nsnap - 1:stride] snap index i using 2:10:3:(tval(i)) with lines lw 1.5 lc palette notitle, \
       ends using 4:12:(drawn($1) && $2 == 0 ? $5 : NaN):(tval($1)) with points pt 5 ps 0.8 lc palette notitle, \
       ends using 4:12:(drawn($1) && $2 == 1 ? $5 : NaN):(tval($1)) with points pt 7 ps 0.9 lc palette notitle, \

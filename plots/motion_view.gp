@@ -12,9 +12,15 @@ if (_view == 0) {
     set ylabel sprintf("deflection from the chord [%s]%s", _ex == 100 ? "cm" : "m", _ex == 100 ? _scale : "  (×10)")
 }
 # The key in the first view only (the second view shares it).
-set key top left box opaque samplen 1 spacing 1.1
-if (_view == 0 && _ex == 1 && v0_z1 - v0_z0 > v0_x1 - v0_x0) { set key top right }
-if (_view == 0 && c_sin > 0.05 && _ex == 1) { set key bottom right }
+if (exists("panel")) {
+    set key top left box opaque samplen 1 spacing 1.1
+    if (_view == 0 && _ex == 1 && v0_z1 - v0_z0 > v0_x1 - v0_x0) { set key top right }
+    if (_view == 0 && c_sin > 0.05 && _ex == 1) { set key bottom right }
+} else {
+    # Below the last view (the key is drawn with the first; the second view keeps the margin).
+    @bottom_key
+    if (two_views && _view == 0) { set bmargin 3 }
+}
 if (_view == 1) { set key off }
 # Pieces: a single blank line inside a block ends a line in gnuplot, so a broken cable is drawn
 # as two lines. End symbols: square end a, circle end b, triangles the two new ends at a break.

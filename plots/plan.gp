@@ -32,7 +32,7 @@ set size ratio -(_ex / _yf)
 set xlabel "x, horizontal distance from end a [m]"
 _scale = _ex == 1 ? "" : (_ex == 100 ? "  (1 cm drawn as 1 m)" : "  (×10)")
 set ylabel sprintf("y, across the x-z plane [%s]%s", _ex == 100 ? "cm" : "m", _scale)
-set key top left box opaque samplen 1 spacing 1.1
+@bottom_key
 plot for [i = 0:nsnap - 1:stride] snap index i using 2:(_yf * $10):(tval(i)) with lines lw 1.5 lc palette notitle, \
      ends using 4:(drawn($1) && $2 == 0 ? _yf * $12 : NaN):(tval($1)) with points pt 5 ps 0.8 lc palette notitle, \
      ends using 4:(drawn($1) && $2 == 1 ? _yf * $12 : NaN):(tval($1)) with points pt 7 ps 0.9 lc palette notitle, \

@@ -33,7 +33,7 @@ set xlabel "s, unstretched arc length from end a [m]"
 if (!exists("panel")) { set xrange [0 : Lcab] }
 set ylabel "tangential velocity u [m/s]  (positive: towards end b)"
 set xzeroaxis lt -1 lw 0.5
-set key top left box opaque samplen 1 spacing 1.1
+if (exists("panel")) { set key top left box opaque samplen 1 spacing 1.1 } else { @bottom_key }
 plot for [i = 0:nsnap - 1:stride] snap index i using 1:6:(tval(i)) with lines lw 1.5 lc palette notitle, \
      ends using 3:(drawn($1) && $2 == 0 ? $8 : NaN):(tval($1)) with points pt 5 ps 0.8 lc palette notitle, \
      ends using 3:(drawn($1) && $2 == 1 ? $8 : NaN):(tval($1)) with points pt 7 ps 0.9 lc palette notitle, \

@@ -170,6 +170,33 @@ for field in strain u v; do
   check "map.gp field=$field (break_middle)" "$out" "$stem_m.map_$field.err" "$rc"
 done
 
+# Keys that cover nothing: each figure is drawn again from a copy of the scripts with every key
+# off (and the margins they keep), and the pixels where the two drawings differ, the key's, must
+# be blank in the drawing without it (tools/check_figure_keys.py): a key over data, a grid line, a
+# label or the title fails.
+keyless=$tmp/keyless
+rm -rf "$keyless"; cp -r "$plots" "$keyless"
+sed -i -E -e 's/set key (top|bottom|at|left|right|outside|below|inside)[^};]*/set key off /' "$keyless"/*.gp
+# A 3-D view lays itself out anew without a key: its key is drawn in white instead (same layout).
+sed -i -E -e 's/^bottom_key = .*/bottom_key = "set key off; set bmargin 5.5"/' \
+   -e "s/^corner_key = .*/corner_key = \"set key at screen 0.01, screen 0.99 left top Left reverse box lc rgb 'white' opaque textcolor rgb 'white' samplen 1 spacing 1.1 width 1\"/" \
+   "$keyless/common.gp"
+sed -i -e "s/lc rgb '#404040' title label_/lc rgb '#ffffff' title label_/" "$keyless/motion3d.gp"
+for stem in "$stem_a" "$stem_m" "$stem_h" "$stem_3"; do
+  kinds="motion tension velocity ends energy"
+  [ "$stem" = "$stem_3" ] && kinds="$kinds motion3d plan"
+  for kind in $kinds; do
+    name="$kind.gp ($(basename "$stem"))" rc=0
+    gnuplot -e "stem='$stem'; out='$stem.$kind.keyless.png'" "$keyless/$kind.gp" 2> "$stem.$kind.keyless.err" || rc=$?
+    if [ "$rc" -ne 0 ] || [ ! -s "$stem.$kind.keyless.png" ]; then fail "$name without its key: $(head -c 300 "$stem.$kind.keyless.err")"; continue; fi
+    if msg=$(python3 "$root/tools/check_figure_keys.py" "$stem.$kind.png" "$stem.$kind.keyless.png" "$name"); then
+      pass "$msg"
+    else
+      fail "$msg"
+    fi
+  done
+done
+
 # The paired panels: (a) 180 kN beside (b) 315 kN, and two scenes side by side.
 for kind in motion tension velocity; do
   out=$tmp/pair_$kind.png rc=0

@@ -214,17 +214,22 @@ contains
    end subroutine probe_output
 
    !> Each line of text on stderr, after 'xcable: '.
-   subroutine print_lines(text)
+   subroutine print_lines(text, prefix)
       character(*), intent(in) :: text
+      !> Written after 'xcable: ' on each line ('warning: ').
+      character(*), intent(in), optional :: prefix
+      character(:), allocatable :: head
       integer :: start, nl
+      head = 'xcable: '
+      if (present(prefix)) head = head//prefix
       start = 1
       do while (start <= len(text))
          nl = index(text(start:), new_line('a'))
          if (nl == 0) then
-            write (error_unit, '(a)') 'xcable: '//text(start:)
+            write (error_unit, '(a)') head//text(start:)
             exit
          end if
-         write (error_unit, '(a)') 'xcable: '//text(start:start + nl - 2)
+         write (error_unit, '(a)') head//text(start:start + nl - 2)
          start = start + nl
       end do
    end subroutine print_lines
@@ -232,17 +237,7 @@ contains
    !> One line per warning on stderr.
    subroutine print_warnings(text)
       character(*), intent(in) :: text
-      integer :: start, nl
-      start = 1
-      do while (start <= len(text))
-         nl = index(text(start:), new_line('a'))
-         if (nl == 0) then
-            write (error_unit, '(a)') 'xcable: warning: '//text(start:)
-            exit
-         end if
-         write (error_unit, '(a)') 'xcable: warning: '//text(start:start + nl - 2)
-         start = start + nl
-      end do
+      call print_lines(text, 'warning: ')
    end subroutine print_warnings
 
    !> Bad input: one line on stderr, exit code 2.

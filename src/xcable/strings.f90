@@ -18,14 +18,7 @@ contains
       !> Value.
       real(dp), intent(in) :: x
       character(:), allocatable :: s
-      character(len=32) :: buf
-      if (x /= x) then
-         s = 'NaN'
-      else if (abs(x) > huge(x)) then
-         s = merge('+Inf', '-Inf', x > 0)
-      else
-         s = significant(x, 6)
-      end if
+      s = significant(x, 6)
    end function str_real
 
    !> Integer to string.
@@ -65,17 +58,9 @@ contains
       character(:), allocatable :: digits, sign
       real(dp) :: y
       integer :: d, ios, e_at, exponent, n, lo, hi
-      if (x /= x) then
-         s = 'NaN'
-         return
-      else if (abs(x) > huge(x)) then
-         s = merge('+Inf', '-Inf', x > 0)
-         return
-      end if
-      if (x == 0) then
-         s = '0'
-         return
-      end if
+      logical :: special
+      call special_text(x, s, special)
+      if (special) return
       ! The fewest significant digits that read back exactly: 17 always do, and
       ! if d digits do, d + 1 do too, so bisect.
       ! The text of the last probe that read back (hi's, when hi was probed) is kept.
@@ -188,17 +173,9 @@ contains
       character(:), allocatable :: s
       character(len=40) :: buf
       integer :: e, digits, i
-      if (x /= x) then
-         s = 'NaN'
-         return
-      else if (abs(x) > huge(x)) then
-         s = merge('+Inf', '-Inf', x > 0)
-         return
-      end if
-      if (x == 0) then
-         s = '0'
-         return
-      end if
+      logical :: special
+      call special_text(x, s, special)
+      if (special) return
       e = floor(log10(abs(x)))
       ! Rounding to four digits may carry into the next decade (9999.7 -> 1.000e4).
       if (abs(x) >= 10.0_dp**(e + 1) - 0.5_dp*10.0_dp**(e + 1 - n)) e = e + 1
@@ -235,4 +212,21 @@ contains
          end block
       end if
    end function significant
+
+   !> NaN, an infinity or zero as text ('NaN', '+Inf', '-Inf', '0'): is_special .true. and s set for those.
+   pure subroutine special_text(x, s, is_special)
+      real(dp), intent(in) :: x
+      character(:), allocatable, intent(out) :: s
+      logical, intent(out) :: is_special
+      is_special = .true.
+      if (x /= x) then
+         s = 'NaN'
+      else if (abs(x) > huge(x)) then
+         s = merge('+Inf', '-Inf', x > 0)
+      else if (x == 0) then
+         s = '0'
+      else
+         is_special = .false.
+      end if
+   end subroutine special_text
 end module xcable_strings

@@ -13,7 +13,11 @@
 !>   (for a light line w^2 -> (k + EA / L) / M: the mass sits between the
 !>   line and the spring, which act in parallel), and the trapezoidal rule's
 !>   own frequency w_h = (2 / dt) atan(w dt / 2) of a linear oscillator;
-!>   in 2-D and in 3-D along a line out of the plane; the ledger closes.
+!>   in 2-D and in 3-D along a line out of the plane; the ledger closes;
+!> - the ledger of a mass on a spring with a rest length and a dashpot swinging
+!>   across the line (the spring turns): the discrete gradient of the
+!>   spring's energy closes it to the Newton tolerance, where the midpoint
+!>   rule would not (its error grows with the spring's rotation per step).
 module suite_spring
    use xcable_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
@@ -36,6 +40,8 @@ module suite_spring
    !> the trapezoidal rule's frequency of the exact one, and the sagging line's end point
    !> extrapolated from 41 and 81 nodes against the catenary, m.
    real(dp), parameter :: err_period_measured = 4.4e-7_dp, err_r_measured = 1.7e-8_dp
+   !> Measured: the swinging spring's ledger drift over its largest energy.
+   real(dp), parameter :: swing_drift_measured = 1.1e-13_dp
 
 contains
 
@@ -45,7 +51,8 @@ contains
                new_unittest('straight_line_3d_out_of_plane', test_straight_3d), &
                new_unittest('sagging_line_catenary', test_sagging), &
                new_unittest('mass_on_spring_period', test_period), &
-               new_unittest('mass_on_spring_period_3d', test_period_3d)]
+               new_unittest('mass_on_spring_period_3d', test_period_3d), &
+               new_unittest('ledger_swinging_spring', test_swing)]
    end subroutine collect_spring
 
    !> A 10 m line of the linear law in zero gravity, end a fixed at the origin, end b on a spring
@@ -392,4 +399,42 @@ contains
       call check(error, err < 3*err_period_measured .and. worst/scale < 1.0e-11_dp, '3-D mass on a spring: '// &
                  'period error '//str(err)//', ledger '//str(worst/scale))
    end subroutine test_period_3d
+
+   !> Zero gravity, a 5 kg mass at the end of the 10 m line, on a spring (k = 2e4 N/m, rest
+   !> length 0.3 m, dashpot 20 N s/m) to the anchor (10.5, 0) m, the line set swinging across at
+   !> up to 3 m/s; 2 ms steps: the ledger (stored energy, spring included, minus work plus
+   !> dissipation, the dashpot's included) closes to the Newton tolerance, and the dashpot took
+   !> energy.
+   subroutine test_swing(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp) :: drift, taken
+      integer :: n, j, nh
+      c = straight_config(21, 1.0e5_dp, 2.0e4_dp, 10.5_dp, 0.3_dp)
+      c%end_b%mass = 5
+      c%end_b%damping = 20
+      c%dt = 2.0e-3_dp
+      c%t_end = 1
+      c%energy = .true.
+      c%interval = 0
+      c%newton_tol = 1.0e-12_dp
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      n = size(sim%rod%pieces(1)%v, 2)
+      do j = 1, n
+         sim%rod%pieces(1)%v(:, j) = [0.0_dp, 3.0_dp*(j - 1)/(n - 1)]
+      end do
+      call sim%run(error=error)
+      if (allocated(error)) return
+      nh = sim%rod%history%n
+      associate (en => sim%rod%history%energy)
+         drift = maxval(abs(en(7, 0:nh) - en(7, 0)))/maxval(abs(en(1:4, 0:nh)))
+         taken = en(6, nh)/maxval(abs(en(1:4, 0:nh)))
+      end associate
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'swinging mass on a spring: ledger drift ', drift, &
+         ' of the largest energy; the dashpot took ', taken, ' of it'
+      call check(error, drift < 3*swing_drift_measured .and. taken > 1.0e-4_dp, 'swinging mass on a spring: ledger '// &
+                 'drift '//str(drift)//', dashpot '//str(taken))
+   end subroutine test_swing
 end module suite_spring

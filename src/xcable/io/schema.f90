@@ -213,7 +213,9 @@ contains
                   'distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
                   own_kinds_only=.true.)
          call add(t, ends(k), 'rest_length', 'real', 'm', '0', &
-                  'rest length of a spring end (the spring pushes when shorter)', 0.0_dp, 1.0e5_dp, &
+                  'rest length of a spring end (the spring pushes when shorter; with a rest length the anchor must '// &
+                  "not be the point of a held other end: the spring's direction at rest would be undetermined)", &
+                  0.0_dp, 1.0e5_dp, &
                   own_kinds_only=.true.)
          call add(t, ends(k), 'table_time', 'real', 's', '', &
                   "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; table_x and "// &

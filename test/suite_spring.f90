@@ -79,6 +79,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: ea = 4.0e5_dp, k = 3.0e4_dp, d = 10.7_dp, l0 = 0.25_dp
       type(simulation) :: sim
+      type(case_config) :: c
       real(dp) :: eps, tension, err_t, err_x, x_end, t_num
       integer :: n
       call sim%prepare(straight_config(21, ea, k, d, l0), error)
@@ -94,6 +95,23 @@ contains
          ', end position error / L ', err_x, ' (T = ', tension, ' N)'
       call check(error, err_t < 1.0e-12_dp .and. err_x < 1.0e-12_dp .and. abs(sim%rod%static%r(2, n)) < 1.0e-12_dp, &
                  'straight line on a spring: tension error '//str(err_t)//', position error '//str(err_x))
+      if (allocated(error)) return
+      ! Mirrored: the spring at end a (anchor at 10 - D), end b fixed at (10, 0).
+      c = straight_config(21, ea, k, d, l0)
+      c%end_a = c%end_b
+      c%end_a%x = 10 - d
+      c%end_b = end_config()
+      c%end_b%x = 10
+      c%given = 'end_a%x end_a%z end_b%x end_b%z'
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      t_num = ea*((sim%rod%static%r(1, 2) - sim%rod%static%r(1, 1))/0.5_dp - 1)
+      err_t = abs(t_num - tension)/tension
+      err_x = abs(sim%rod%static%r(1, 1) - (10 - 10*(1 + eps)))/10
+      write (output_unit, '(4x,a,es9.2,a,es9.2)') 'the same with the spring at end a: tension error ', err_t, &
+         ', end position error / L ', err_x
+      call check(error, err_t < 1.0e-12_dp .and. err_x < 1.0e-12_dp, 'straight line on a spring at end a: tension '// &
+                 'error '//str(err_t)//', position error '//str(err_x))
    end subroutine test_straight
 
    !> The tanh law's T = f(eps) = k (D - L (1 + eps) - L0) by bisection on eps.

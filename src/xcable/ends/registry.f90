@@ -114,16 +114,12 @@ contains
       logical, intent(in), optional :: held
       character(:), allocatable :: names
       type(end_kind), allocatable :: kinds(:)
-      integer :: i
       kinds = end_kind_list()
-      names = ''
-      do i = 1, size(kinds)
-         if (present(held)) then
-            if (kinds(i)%held .neqv. held) cycle
-         end if
-         if (len(names) > 0) names = names//' '
-         names = names//trim(kinds(i)%name)
-      end do
+      if (present(held)) then
+         names = words_of(kinds, kinds%held .eqv. held)
+      else
+         names = words_of(kinds, spread(.true., 1, size(kinds)))
+      end if
    end function end_kind_names
 
    !> The words of the kinds that use a variable, blank-separated ('' : none).
@@ -134,11 +130,23 @@ contains
       type(end_kind), allocatable :: kinds(:)
       integer :: i
       kinds = end_kind_list()
+      names = words_of(kinds, [(index(' '//trim(kinds(i)%variables)//' ', ' '//trim(variable)//' ') > 0, &
+                                i=1, size(kinds))])
+   end function kinds_using
+
+   !> The words of the kinds where keep is true, blank-separated.
+   function words_of(kinds, keep) result(names)
+      !> The kinds.
+      type(end_kind), intent(in) :: kinds(:)
+      !> Which to name.
+      logical, intent(in) :: keep(:)
+      character(:), allocatable :: names
+      integer :: i
       names = ''
       do i = 1, size(kinds)
-         if (index(' '//trim(kinds(i)%variables)//' ', ' '//trim(variable)//' ') == 0) cycle
+         if (.not. keep(i)) cycle
          if (len(names) > 0) names = names//' '
          names = names//trim(kinds(i)%name)
       end do
-   end function kinds_using
+   end function words_of
 end module xcable_ends_registry

@@ -16,6 +16,7 @@ program xcable_tests
    use suite_scenes, only: collect_scenes
    use suite_laws, only: collect_laws
    use suite_registry, only: collect_registry
+   use suite_spring, only: collect_spring
    use suite_fluid, only: collect_fluid
    use suite_checkpoint, only: collect_checkpoint
    use suite_rod3d, only: collect_rod3d
@@ -43,6 +44,7 @@ program xcable_tests
              new_testsuite('rod_dynamics', collect_rod_dynamics), &
              new_testsuite('scenes', collect_scenes), &
              new_testsuite('laws', collect_laws), &
+            new_testsuite('spring', collect_spring), &
              new_testsuite('registry', collect_registry), &
              new_testsuite('fluid', collect_fluid), &
              new_testsuite('checkpoint', collect_checkpoint), &

@@ -60,6 +60,9 @@ contains
                new_unittest('two_free_ends', test_two_free_ends), &
                new_unittest('nothing_holds_cable', test_nothing_holds), &
                new_unittest('position_of_loose_end', test_position_of_loose_end), &
+               new_unittest('spring_values', test_spring_values), &
+               new_unittest('variable_of_another_kind', test_variable_of_another_kind), &
+               new_unittest('unknown_kind_lists_registry', test_unknown_kind_lists_registry), &
                new_unittest('ramp_without_time', test_ramp_without_time), &
                new_unittest('harmonic_period', test_harmonic_period), &
                new_unittest('harmonic_direction', test_harmonic_direction), &
@@ -732,6 +735,66 @@ contains
       call expect_error(error, "&end_a kind = 'free', z = -3 /"//nl, &
                         [character(32) :: path, '&end_a', 'z = -3', "kind = 'free'", 'follows from the statics'])
    end subroutine test_position_of_loose_end
+
+   !> A spring end's own conditions: a stiffness and damping not negative (the schema's range), a
+   !> stiffness > 0, and with a rest length an anchor apart from the other (held) end's point.
+   subroutine test_spring_values(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: a = "&end_a kind = 'fixed', x = 0, z = 0 /"//nl
+      call expect_error(error, a//"&end_b kind = 'spring', x = 12, z = -1, stiffness = -5 /"//nl, &
+                        [character(32) :: path, '&end_b', 'stiffness = -5', '[0, 1e12]'])
+      if (allocated(error)) return
+      call expect_error(error, a//"&end_b kind = 'spring', x = 12, z = -1, stiffness = 1e3, damping = -0.5 /"//nl, &
+                        [character(32) :: path, '&end_b', 'damping = -0.5', '[0, 1e12]'])
+      if (allocated(error)) return
+      call expect_error(error, a//"&end_b kind = 'spring', x = 12, z = -1 /"//nl, &
+                        [character(40) :: path, '&end_b', 'stiffness = 0', "must be > 0 for kind = 'spring'"])
+      if (allocated(error)) return
+      call expect_error(error, a//"&end_b kind = 'spring', x = 0, z = 0, stiffness = 1e3, rest_length = 2 /"//nl, &
+                        [character(40) :: path, '&end_b', 'x, y, z = 0, 0, 0', 'rest_length = 2', &
+                         "the other end's point"])
+      if (allocated(error)) return
+      ! The same anchor without a rest length, or beside a loaded end, is a scene.
+      call expect_accepted(error, a//"&end_b kind = 'spring', x = 0, z = 0, stiffness = 1e3 /"//nl// &
+                           '&rupture enabled = .false. /'//nl)
+   end subroutine test_spring_values
+
+   !> A variable of one kind given to another is refused, naming the kinds that use it (issue 29:
+   !> amplitude and period on an end left 'fixed'); a variable at its default is not (the echo
+   !> writes every variable).
+   subroutine test_variable_of_another_kind(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'fixed', x = 50, amplitude = 0.5, period = 2 /"//nl, &
+                        [character(40) :: path, '&end_b', 'amplitude = 0.5', "kind = 'fixed'", "kind 'motion'", &
+                         'x, y, z'])
+      if (allocated(error)) return
+      call expect_error(error, "&end_b kind = 'force', force_x = 1e4, stiffness = 1000 /"//nl// &
+                        '&rupture s_break = 30 /'//nl, &
+                        [character(40) :: path, '&end_b', 'stiffness = 1000', "kind = 'force'", "kind 'spring'"])
+      if (allocated(error)) return
+      call expect_error(error, "&end_a kind = 'motion', mass = 3, amplitude = 1 /"//nl, &
+                        [character(40) :: path, '&end_a', 'mass = 3', "kind = 'motion'", "kind 'mass' or 'spring'"])
+      if (allocated(error)) return
+      call expect_accepted(error, "&end_b kind = 'fixed', x = 50, amplitude = 0, period = 1 /"//nl)
+   end subroutine test_variable_of_another_kind
+
+   !> An unknown kind: the message lists the registered kinds, the spring among them.
+   subroutine test_unknown_kind_lists_registry(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_error(error, "&end_b kind = 'pinned' /"//nl, &
+                        [character(40) :: path, '&end_b', "'fixed'", "'motion'", "'mass'", "'spring'"])
+   end subroutine test_unknown_kind_lists_registry
+
+   !> Read text as a case: it must be accepted.
+   subroutine expect_accepted(error, text)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), intent(in) :: text
+      type(case_config) :: config
+      type(error_type), allocatable :: err
+      call write_text(path, text)
+      call read_config(path, config, err)
+      if (allocated(err)) call fatal_error(error, 'refused: '//text//': '//err%message)
+   end subroutine expect_accepted
 
    subroutine test_ramp_without_time(error)
       type(error_type), allocatable, intent(out) :: error

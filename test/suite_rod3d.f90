@@ -896,8 +896,8 @@ contains
       integer :: i, side
       real(dp) :: worst_jac, worst_ledger, jac, ledger
       variants = [character(len=16) :: 'fixed', 'free', 'force ramp', 'force table', 'motion harmonic', &
-                  'motion table', 'mass']
-      if (size(variants) < size(end_kinds) + 2) call fatal_error(error, 'a kind of the factory is missing here')
+                  'motion table', 'mass', 'spring', 'spring damped']
+      if (size(variants) < size(end_kinds()) + 2) call fatal_error(error, 'a kind of the factory is missing here')
       if (allocated(error)) return
       worst_jac = 0
       worst_ledger = 0
@@ -964,6 +964,18 @@ contains
       held%z = merge(pa(3), pb(3), side == 2)
       loaded%x = merge(pb(1), pa(1), side == 1)
       loaded%z = merge(pb(3), pa(3), side == 1)
+      if (loaded%kind == 'spring') then
+         ! The anchor out of the plane, beyond the loaded end's start.
+         loaded%x = loaded%x + merge(0.3_dp, -0.3_dp, side == 1)
+         loaded%y = 0.8_dp
+         loaded%z = loaded%z - 0.4_dp
+         loaded%stiffness = 5.0e3_dp
+         if (variant == 'spring damped') then
+            loaded%damping = 200
+            loaded%rest_length = 0.3_dp
+            loaded%mass = 3
+         end if
+      end if
       if (side == 1) then
          held%x = pa(1)
          held%z = pa(3)
@@ -1264,15 +1276,17 @@ contains
       type(simulation) :: sim
       type(case_config) :: c
       character(len=8), allocatable :: vs(:)
+      character(len=16), allocatable :: kinds(:)
       real(dp) :: worst, d, out_of_plane, worst_run
       integer :: i, j, k, n, wet, step
+      kinds = end_kinds()
       worst = 0
       worst_run = 0
       do wet = 0, 1
-         do i = 1, size(end_kinds)
-            vs = variants(trim(end_kinds(i)))
+         do i = 1, size(end_kinds())
+            vs = variants(trim(kinds(i)))
             do j = 1, size(vs)
-               c = scene_config(trim(end_kinds(i)), trim(vs(j)), 'tanh', 'law', 0.0_dp, wet == 1)
+               c = scene_config(trim(kinds(i)), trim(vs(j)), 'tanh', 'law', 0.0_dp, wet == 1)
                call sim%prepare(c, error)
                if (allocated(error)) return
                block
@@ -1292,7 +1306,7 @@ contains
                   end do
                   call run%statics(0.0_dp, error)
                   if (allocated(error)) then
-                     error%message = trim(end_kinds(i))//' '//trim(vs(j))//': '//error%message
+                     error%message = trim(kinds(i))//' '//trim(vs(j))//': '//error%message
                      return
                   end if
                   d = planar_difference(run%x, r2, out_of_plane)

@@ -320,6 +320,22 @@ from slow_315kN; set_in output "fields = 'tension torque'"; check
 # --- scenes: ends, tables, the rupture position ----------------------------------
 begin 'unknown end kind' "kind = 'pinned'" "'fixed', 'free', 'force', 'motion', 'mass'"
 from slow_315kN; add "&end_a kind = 'pinned' /"; check
+begin 'unknown end kind lists the spring' "kind = 'pinned'" "'mass', 'spring'"
+from slow_315kN; add "&end_b kind = 'pinned' /"; check
+begin 'spring with a negative stiffness' '&end_b' 'stiffness = -5' '[0, 1e12]'
+from slow_315kN; add "&end_b kind = 'spring', x = 70, stiffness = -5 /"; set_in rupture 's_break = 30'; check
+begin 'spring with a negative damping' '&end_b' 'damping = -1' '[0, 1e12]'
+from slow_315kN; add "&end_b kind = 'spring', x = 70, stiffness = 1e4, damping = -1 /"; set_in rupture 's_break = 30'; check
+begin 'spring with no stiffness' '&end_b' 'stiffness = 0' "must be > 0 for kind = 'spring'"
+from slow_315kN; add "&end_b kind = 'spring', x = 70 /"; set_in rupture 's_break = 30'; check
+begin 'spring values given to a force end' '&end_b' 'stiffness = 1000' "kind = 'force'" "kind 'spring'"
+from slow_315kN; add "&end_b kind = 'force', force_x = 1e4, stiffness = 1000 /"; set_in rupture 's_break = 30'; check
+begin 'rest_length given to a fixed end' '&end_b' 'rest_length = 2' "kind = 'fixed'" "kind 'spring'"
+from slow_315kN; add "&end_b kind = 'fixed', x = 50, rest_length = 2 /"; check
+begin 'amplitude and period on a fixed end (issue 29)' '&end_b' 'amplitude = 0.5' "kind = 'fixed'" "kind 'motion'"
+from slow_315kN; add "&end_b kind = 'fixed', x = 50, amplitude = 0.5, period = 2 /"; check
+begin "spring anchored at the other end's point with a rest length" '&end_b' 'rest_length = 2' "the other end's point"
+from slow_315kN; add "&end_b kind = 'spring', x = 0, z = 0, stiffness = 1e4, rest_length = 2 /"; set_in rupture 's_break = 30'; check
 begin 'end kind given as a number' 'kind = 1' 'must be a quoted string'
 from slow_315kN; add '&end_b kind = 1 /'; check
 begin 'unknown force history' "history = 'sudden'" "'constant', 'ramp', 'table'"

@@ -27,6 +27,7 @@ module xcable_rod_statics
    use xcable_scene, only: scene_type
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_ends_fixed, only: fixed_end
+   use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
    use xcable_solver_banded, only: band_matrix
    use xcable_material_law, only: material_law
@@ -462,12 +463,17 @@ contains
          else if (held_a) then
             ! The internal force at s = L is the load of end b (its force and the point mass's weight).
             load = problem%piece%end_b%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_b%point_mass()]
+            ! An end on a spring: the load where the spring balances the catenary.
+            if (problem%piece%end_b%state_dependent()) &
+               call state_end_load(problem%piece%end_b, problem%piece%end_a%position(0.0_dp), .true., load)
             n0 = load - [0.0_dp, scene%weight*scene%length]
             pa = problem%piece%end_a%position(0.0_dp)
             call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten, guess_panels)
          else if (held_b) then
             ! The internal force at s = 0 balances the load of end a.
             load = problem%piece%end_a%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_a%point_mass()]
+            if (problem%piece%end_a%state_dependent()) &
+               call state_end_load(problem%piece%end_a, problem%piece%end_b%position(0.0_dp), .false., load)
             n0 = -load
             pb = problem%piece%end_b%position(0.0_dp)
             call catenary_from_force(scene%law, scene%weight, n0, [0.0_dp, 0.0_dp], ss, rr, eps, ten, &
@@ -479,6 +485,96 @@ contains
                              'no static position', stat_input)
          end if
       end subroutine first_guess
+
+      !> The load of a state-dependent loaded end (a spring) for the catenary guess: the load
+      !> (time-only force, state force at the catenary's end point, the point mass's weight)
+      !> equal to the catenary's internal force there, by a damped Newton iteration on that
+      !> force (central differences), from the catenary between the held end's point and the
+      !> end's own position (a spring's anchor). The iteration's best load is kept; the
+      !> statics' Newton iteration on the whole cable finishes from the guess.
+      subroutine state_end_load(end, held_point, at_b, load)
+         !> The state-dependent end.
+         class(end_condition), intent(in) :: end
+         !> The held end's point (x, z), m.
+         real(dp), intent(in) :: held_point(2)
+         !> Whether the end is end b (the held end is a), or end a.
+         logical, intent(in) :: at_b
+         !> In: the load without the state force (time-only force and weight); out: with it, N.
+         real(dp), intent(inout) :: load(2)
+         type(error_type), allocatable :: err
+         real(dp) :: fixed_load(2), y(2), g(2), gp(2), gm(2), jac(2, 2), step(2), trial(2), gt(2), h, det, own(3), d(2)
+         integer :: it, j, ls
+         fixed_load = load
+         own = end%position3(0.0_dp)
+         d = [own(1), own(3)] - held_point
+         ! The internal force at the end from the catenary between the two points.
+         if (at_b) then
+            call catenary_between(scene%law, scene%weight, scene%length, held_point, [own(1), own(3)], y, err)
+            y = y + [0.0_dp, scene%weight*scene%length]
+         else
+            call catenary_between(scene%law, scene%weight, scene%length, [own(1), own(3)], held_point, y, err)
+         end if
+         if (allocated(err)) then
+            ! (Ends one above the other: a straight line towards the end's point.)
+            y = merge(1.0_dp, -1.0_dp, at_b)*(scene%weight*scene%length + 1)*d/max(norm2(d), tiny(1.0_dp))
+         end if
+         g = state_mismatch(end, held_point, at_b, fixed_load, y)
+         do it = 1, 60
+            if (norm2(g) <= 1.0e-10_dp*max(norm2(y), scene%weight*scene%length, 1.0_dp)) exit
+            h = 1.0e-6_dp*max(norm2(y), scene%weight*scene%length, 1.0_dp)
+            do j = 1, 2
+               trial = y
+               trial(j) = y(j) + h
+               gp = state_mismatch(end, held_point, at_b, fixed_load, trial)
+               trial(j) = y(j) - h
+               gm = state_mismatch(end, held_point, at_b, fixed_load, trial)
+               jac(:, j) = (gp - gm)/(2*h)
+            end do
+            det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+            if (.not. abs(det) > 0) exit
+            step = [jac(2, 2)*g(1) - jac(1, 2)*g(2), -jac(2, 1)*g(1) + jac(1, 1)*g(2)]/det
+            do ls = 1, 30
+               trial = y - step
+               gt = state_mismatch(end, held_point, at_b, fixed_load, trial)
+               if (norm2(gt) < norm2(g)) exit
+               step = 0.5_dp*step
+            end do
+            if (.not. norm2(gt) < norm2(g)) exit
+            y = trial
+            g = gt
+         end do
+         load = merge(y, -y, at_b)
+      end subroutine state_end_load
+
+      !> For state_end_load, an internal force yy at the end (N(L) at end b, N(0) at end a): the
+      !> internal force minus the load at the catenary's end point (N(0) = -load at end a).
+      function state_mismatch(end, held_point, at_b, fixed_load, yy) result(m)
+         class(end_condition), intent(in) :: end
+         real(dp), intent(in) :: held_point(2), fixed_load(2), yy(2)
+         logical, intent(in) :: at_b
+         real(dp) :: m(2), rr(2, n), ee(n), tt(n), p(2), f3(3), dx(3, 3), dv(3, 3), damp(3)
+         if (at_b) then
+            call catenary_from_force(scene%law, scene%weight, yy - [0.0_dp, scene%weight*scene%length], &
+                                     held_point, ss_all(), rr, ee, tt, guess_panels)
+            p = rr(:, n)
+         else
+            call catenary_from_force(scene%law, scene%weight, yy, [0.0_dp, 0.0_dp], ss_all(), rr, ee, tt, &
+                                     guess_panels)
+            p = held_point - rr(:, n)
+         end if
+         call end%state_force(0.0_dp, [p(1), 0.0_dp, p(2)], [0.0_dp, 0.0_dp, 0.0_dp], f3, dx, dv, damp)
+         if (at_b) then
+            m = yy - (fixed_load + f3([1, 3]))
+         else
+            m = yy + (fixed_load + f3([1, 3]))
+         end if
+      end function state_mismatch
+
+      !> The nodes' arc lengths from end a of the piece, m.
+      function ss_all() result(ss)
+         real(dp) :: ss(n)
+         ss = problem%piece%s - problem%piece%s(1)
+      end function ss_all
 
       !> Span, sag and the reactions of the solution.
       subroutine finish()

@@ -708,9 +708,11 @@ contains
                   if (side == 1) then
                      f = reaction(:, 1)
                      if (.not. piece%end_a%held()) f = piece%end_a%applied_force3(rod%t)
+                     if (piece%end_a%state_dependent()) f = f + state_force(piece%end_a, rod%t, x(1:3), run%v(:, 1))
                   else
                      f = reaction(:, 2)
                      if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(rod%t)
+                     if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, rod%t, x(3*n - 2:3*n), run%v(:, n))
                   end if
                   h%ends(:, slot, i) = [x(3*k - 2), x(3*k), run%v(1, k), run%v(3, k), end_tension(piece, side), &
                                         f(1), f(3)]
@@ -749,6 +751,18 @@ contains
          end if
       end associate
    end subroutine record
+
+   !> The force of a state-dependent end's own state at position x with velocity v, N.
+   function state_force(end, t, x, v) result(f)
+      !> The end.
+      class(end_condition), intent(in) :: end
+      !> Time, s.
+      real(dp), intent(in) :: t
+      !> Position and velocity of its node (x, y, z).
+      real(dp), intent(in) :: x(3), v(3)
+      real(dp) :: f(3), dx(3, 3), dv(3, 3), damp(3)
+      call end%state_force(t, x, v, f, dx, dv, damp)
+   end function state_force
 
    !> Tension at an end (side 1: node 1, side 2: node n) from its end cells
    !> (piece%l1 set), extrapolated as the planar run's end values.

@@ -10,6 +10,7 @@ module xcable_rod3d_run
    use xcable_error, only: error_type, prefix_error
    use xcable_strings, only: str
    use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, couple_plane
+   use xcable_ends_end, only: end_condition
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    implicit none
    private
@@ -188,6 +189,9 @@ contains
             eps1 = piece%l1(c) - 1
             self%dissipated = self%dissipated + piece%damping*piece%ds(c)*(eps1 - eps0)**2/dt
          end do
+         ! State-dependent ends (springs): what their damping took.
+         if (piece%end_a%state_dependent()) call end_damping(piece%end_a, 1)
+         if (piece%end_b%state_dependent()) call end_damping(piece%end_b, n)
          if (theta > 0.5_dp) then
             do k = 1, n
                dv = v1(:, k) - self%v(:, k)
@@ -199,6 +203,15 @@ contains
       end associate
 
    contains
+
+      !> Minus the work of the damping part of a state-dependent end's step force at node k.
+      subroutine end_damping(end, k)
+         class(end_condition), intent(in) :: end
+         integer, intent(in) :: k
+         real(dp) :: f(3), jac(3, 3), damp(3)
+         call end%step_force(self%t, dt, r0(:, k), r1(:, k), f, jac, damp)
+         self%dissipated = self%dissipated - dot_product(damp, r1(:, k) - r0(:, k))
+      end subroutine end_damping
 
       !> The end at node k: the work over the step of its force, its torque and its couple.
       subroutine book_end(k)

@@ -266,7 +266,8 @@ contains
             return
          end if
       end if
-      if (scene%gravity <= 0 .and. .not. (scene%end_a%held() .and. scene%end_b%held())) then
+      if (scene%gravity <= 0 .and. .not. ((scene%end_a%held() .or. scene%end_a%state_dependent()) .and. &
+                                          (scene%end_b%held() .or. scene%end_b%state_dependent()))) then
          call fatal_error(error, scene%source//': &cable: gravity = 0: a cable held at one end only has no '// &
                           'static shape without weight', stat_input)
          return
@@ -1041,8 +1042,7 @@ contains
    !> Whether an end moves or changes its load in time.
    logical function ends_change(self)
       type(rod_run), intent(in) :: self
-      ends_change = self%scene%end_a%time_dependent() .or. self%scene%end_b%time_dependent() .or. &
-                    self%scene%end_a%kind() == 'motion' .or. self%scene%end_b%kind() == 'motion'
+      ends_change = self%scene%end_a%time_dependent() .or. self%scene%end_b%time_dependent()
    end function ends_change
 
    !> Newton controls of a time step (see the module header).
@@ -1251,17 +1251,13 @@ contains
       end associate
    end subroutine choose_window
 
-   !> Whether an end's condition stays the same over [ta, tb]: a fixed end, or an end that
-   !> is not held and whose force and couple do not depend on time (free, a point mass, a
-   !> constant force).
+   !> Whether an end's condition stays the same over [ta, tb]: an end that does not change
+   !> with time (a fixed end, a free end, a point mass, a constant force, a spring; not a
+   !> moving end nor a force history).
    logical function end_steady(end, ta, tb)
       class(end_condition), intent(in) :: end
       real(dp), intent(in) :: ta, tb
-      if (end%held()) then
-         end_steady = end%kind() == 'fixed'
-      else
-         end_steady = .not. end%time_dependent() .and. end%kind() /= 'motion'
-      end if
+      end_steady = .not. end%time_dependent()
       if (.not. end_steady) return
       end_steady = all(same_value(end%applied_force(ta), end%applied_force(tb))) .and. &
                    same_value(end%applied_couple(ta), end%applied_couple(tb))
@@ -1384,6 +1380,9 @@ contains
                ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt.
                if (piece%damping > 0) self%dissipation = self%dissipation + &
                   piece%damping*sum(piece%ds*(piece%l1 - piece%l0)**2)/h
+               ! Ends that depend on their state (springs): their damping's work over the step.
+               if (piece%end_a%state_dependent()) call end_damping(piece%end_a, 1)
+               if (piece%end_b%state_dependent()) call end_damping(piece%end_b, n)
                if (theta /= 0.5_dp) then
                   dv = v1 - run_piece%v
                   allocate (mdv(2, n))
@@ -1405,6 +1404,21 @@ contains
       end do
 
    contains
+
+      !> What the damping of a state-dependent end at node `node` took in the step: minus the
+      !> work of the damping part of its step force (the elastic part is the change of its
+      !> stored energy, which the energies hold).
+      subroutine end_damping(end, node)
+         class(end_condition), intent(in) :: end
+         integer, intent(in) :: node
+         real(dp) :: x0(3), x1(3), f3(3), j3(3, 3), damp(3)
+         associate (run_piece => self%pieces(p))
+            x0 = [run_piece%r(1, node), 0.0_dp, run_piece%r(2, node)]
+            x1 = [r1(1, node), 0.0_dp, r1(2, node)]
+            call end%step_force(self%t, h, x0, x1, f3, j3, damp)
+            self%dissipation = self%dissipation - dot_product(damp, x1 - x0)
+         end associate
+      end subroutine end_damping
 
       !> Work of one end in the step: force times displacement, couple times the end cell's rotation.
       subroutine end_work(end, node, side)
@@ -1488,12 +1502,14 @@ contains
                      f = run_piece%reaction(:, 1)
                   else
                      f = piece%end_a%applied_force(self%t)
+                     if (piece%end_a%state_dependent()) f = f + state_force(piece%end_a, node)
                   end if
                else
                   if (piece%end_b%held()) then
                      f = run_piece%reaction(:, 2)
                   else
                      f = piece%end_b%applied_force(self%t)
+                     if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, node)
                   end if
                end if
                self%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
@@ -1526,6 +1542,20 @@ contains
          self%history%energy(7, i) = sum(en) - self%work - self%load_work + self%dissipation
          self%history%energy(8, i) = self%load_work
       end if
+
+   contains
+
+      !> The force of a state-dependent end's own state at its node (x, z), N.
+      function state_force(end, node) result(force)
+         class(end_condition), intent(in) :: end
+         integer, intent(in) :: node
+         real(dp) :: force(2), f3(3), dx(3, 3), dv(3, 3), damp(3)
+         associate (run_piece => self%pieces(p))
+            call end%state_force(self%t, [run_piece%r(1, node), 0.0_dp, run_piece%r(2, node)], &
+                                 [run_piece%v(1, node), 0.0_dp, run_piece%v(2, node)], f3, dx, dv, damp)
+         end associate
+         force = f3([1, 3])
+      end function state_force
    end subroutine record
 
    !> Tension at an end of a piece (side 1: node 1, side 2: node n), from its

@@ -1,10 +1,11 @@
 !> A fixed end: the end node stays at a given point (a pin: no moment).
 module xcable_ends_fixed
    use xcable_kinds, only: dp
+   use xcable_io_config, only: end_config
    use xcable_ends_end, only: end_condition
    implicit none
    private
-   public :: fixed_end
+   public :: fixed_end, new_fixed_end
 
    !> An end pinned at a point.
    type, extends(end_condition) :: fixed_end
@@ -20,6 +21,15 @@ module xcable_ends_fixed
    end type fixed_end
 
 contains
+
+   !> The fixed end of a validated &end_a / &end_b group.
+   subroutine new_fixed_end(config, end)
+      !> The group.
+      type(end_config), intent(in) :: config
+      !> The end built.
+      class(end_condition), allocatable, intent(out) :: end
+      allocate (end, source=fixed_end(point=[config%x, config%z], y=config%y))
+   end subroutine new_fixed_end
 
    pure function fixed_kind(self) result(name)
       class(fixed_end), intent(in) :: self

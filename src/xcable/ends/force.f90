@@ -8,11 +8,14 @@
 !> moment at the break point (kind 'break').
 module xcable_ends_force
    use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_strings, only: real_text
+   use xcable_io_config, only: end_config
    use xcable_ends_end, only: end_condition, smooth_ramp
-   use xcable_ends_table, only: time_table
+   use xcable_ends_table, only: time_table, group_table
    implicit none
    private
-   public :: force_end
+   public :: force_end, new_force_end, check_force_end
 
    !> A force-loaded end.
    type, extends(end_condition) :: force_end
@@ -44,6 +47,36 @@ module xcable_ends_force
    end type force_end
 
 contains
+
+   !> The force end of a validated &end_a / &end_b group.
+   subroutine new_force_end(config, end)
+      !> The group.
+      type(end_config), intent(in) :: config
+      !> The end built.
+      class(end_condition), allocatable, intent(out) :: end
+      allocate (end, source=force_end(history=config%history, force0=[config%force_x, config%force_z], &
+                                      duration=config%ramp_time, table=group_table(config, .true.), &
+                                      force0_y=config%force_y, torque0=config%torque))
+   end subroutine new_force_end
+
+   !> A force end's group: a ramp time > 0 for a ramp, a table for a 'table' history.
+   subroutine check_force_end(prefix, e, other, other_held, error)
+      !> Start of a message: 'file: &end_b: '.
+      character(*), intent(in) :: prefix
+      !> The group, the other end's group and whether that end is held.
+      type(end_config), intent(in) :: e, other
+      logical, intent(in) :: other_held
+      !> Error naming the variable, its value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      if (e%history == 'ramp' .and. .not. e%ramp_time > 0) then
+         call fatal_error(error, prefix//'ramp_time = '//real_text(e%ramp_time)//": must be > 0 for history = 'ramp'", &
+                          stat_input)
+         return
+      end if
+      if (e%history == 'table' .and. e%table_rows == 0) &
+         call fatal_error(error, prefix//"history = 'table' without a table: give table_time, table_x and table_z "// &
+                          '(at least 2 rows) or table_file', stat_input)
+   end subroutine check_force_end
 
    pure function force_kind(self) result(name)
       class(force_end), intent(in) :: self

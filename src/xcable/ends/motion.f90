@@ -7,11 +7,14 @@
 !> tabulated displacement (x, y, z; cubic Hermite, continuous velocity).
 module xcable_ends_motion
    use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_strings, only: real_text
+   use xcable_io_config, only: end_config
    use xcable_ends_end, only: end_condition, smooth_ramp, smooth_ramp_rate
-   use xcable_ends_table, only: time_table
+   use xcable_ends_table, only: time_table, group_table
    implicit none
    private
-   public :: motion_end
+   public :: motion_end, new_motion_end, check_motion_end
 
    real(dp), parameter :: two_pi = 2*acos(-1.0_dp)
 
@@ -36,9 +39,60 @@ module xcable_ends_motion
       procedure :: velocity => motion_velocity
       procedure :: position3 => motion_position3
       procedure :: velocity3 => motion_velocity3
+      procedure :: time_dependent => motion_time_dependent
    end type motion_end
 
 contains
+
+   !> The moving end of a validated &end_a / &end_b group.
+   subroutine new_motion_end(config, end)
+      !> The group.
+      type(end_config), intent(in) :: config
+      !> The end built.
+      class(end_condition), allocatable, intent(out) :: end
+      real(dp) :: direction(3)
+      ! The direction normalised over its three components (x, y, z).
+      direction = [config%direction_x, config%direction_y, config%direction_z]
+      if (norm2(direction) > 0) direction = direction/norm2(direction)
+      allocate (end, source=motion_end(motion=config%motion, origin=[config%x, config%z], &
+                                       amplitude=config%amplitude, period=config%period, phase=config%phase, &
+                                       direction=direction([1, 3]), ramp_time=config%ramp_time, &
+                                       table=group_table(config, .false.), origin_y=config%y, &
+                                       direction_y=direction(2)))
+   end subroutine new_motion_end
+
+   !> A moving end's group: a period > 0 and a direction for a harmonic motion, a table for a
+   !> 'table' motion.
+   subroutine check_motion_end(prefix, e, other, other_held, error)
+      !> Start of a message: 'file: &end_b: '.
+      character(*), intent(in) :: prefix
+      !> The group, the other end's group and whether that end is held.
+      type(end_config), intent(in) :: e, other
+      logical, intent(in) :: other_held
+      !> Error naming the variable, its value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      if (e%motion == 'harmonic') then
+         if (.not. e%period > 0) then
+            call fatal_error(error, prefix//'period = '//real_text(e%period)//": must be > 0 for motion = 'harmonic'", &
+                             stat_input)
+            return
+         end if
+         if (e%direction_x == 0 .and. e%direction_y == 0 .and. e%direction_z == 0) then
+            call fatal_error(error, prefix//'direction_x = 0, direction_y = 0, direction_z = 0: the direction of the '// &
+                             'harmonic motion must not be zero (a vector of nonzero length)', stat_input)
+            return
+         end if
+      end if
+      if (e%motion == 'table' .and. e%table_rows == 0) &
+         call fatal_error(error, prefix//"motion = 'table' without a table: give table_time, table_x and table_z "// &
+                          '(at least 2 rows) or table_file', stat_input)
+   end subroutine check_motion_end
+
+   !> A moving end changes with time (its position).
+   pure logical function motion_time_dependent(self)
+      class(motion_end), intent(in) :: self
+      motion_time_dependent = .true.
+   end function motion_time_dependent
 
    pure function motion_kind(self) result(name)
       class(motion_end), intent(in) :: self

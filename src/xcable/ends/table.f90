@@ -8,9 +8,10 @@
 !> row holds, after the last the last row.
 module xcable_ends_table
    use xcable_kinds, only: dp
+   use xcable_io_config, only: end_config
    implicit none
    private
-   public :: time_table
+   public :: time_table, group_table
 
    !> Rows of a table.
    type :: time_table
@@ -28,6 +29,22 @@ module xcable_ends_table
    end type time_table
 
 contains
+
+   !> The table of an &end_a / &end_b group (no rows when it has fewer than 2).
+   function group_table(config, linear) result(table)
+      !> The group.
+      type(end_config), intent(in) :: config
+      !> Straight segments (a force table) instead of the cubic.
+      logical, intent(in) :: linear
+      type(time_table) :: table
+      table%linear = linear
+      if (config%table_rows < 2) return
+      table%time = config%table_time(1:config%table_rows)
+      allocate (table%value(3, config%table_rows))
+      table%value(1, :) = config%table_x(1:config%table_rows)
+      table%value(2, :) = config%table_y(1:config%table_rows)
+      table%value(3, :) = config%table_z(1:config%table_rows)
+   end function group_table
 
    !> Row interval holding t and the local coordinate u in [0, 1].
    pure subroutine locate(self, t, i, u, outside)

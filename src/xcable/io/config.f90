@@ -15,9 +15,9 @@ module xcable_io_config
 
    !> One end of the cable (&end_a at s = 0, &end_b at s = L).
    type :: end_config
-      !> 'fixed', 'free', 'force', 'motion' or 'mass'.
+      !> A kind of the registry (ends/registry.f90): 'fixed', 'free', 'force', 'motion', 'mass', 'spring'.
       character(len=16) :: kind = 'fixed'
-      !> Position of a fixed end, or the mean position of a moving end, m (x horizontal, z up).
+      !> Position of a fixed end, the mean position of a moving end, or a spring's anchor, m (x horizontal, z up).
       real(dp) :: x = 0, z = 0
       !> Its y (3-D model), m.
       real(dp) :: y = 0
@@ -35,8 +35,10 @@ module xcable_io_config
       real(dp) :: amplitude = 0, period = 1, phase = 0, direction_x = 0, direction_z = 1
       !> y component of the direction of the harmonic motion (3-D model).
       real(dp) :: direction_y = 0
-      !> Point mass of a mass end, kg.
+      !> Point mass of a mass end (or at a spring end), kg.
       real(dp) :: mass = 0
+      !> A spring end: stiffness (N/m), damping of the dashpot in line with it (N s/m), rest length (m).
+      real(dp) :: stiffness = 0, damping = 0, rest_length = 0
       !> Inline table: times (s) and x, z columns (force in N, or displacement in m).
       real(dp) :: table_time(max_table_points) = 0, table_x(max_table_points) = 0, table_z(max_table_points) = 0
       !> Its y column (3-D model; 0 when not given).

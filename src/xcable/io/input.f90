@@ -20,6 +20,7 @@ module xcable_io_input
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: str, to_lower, real_text
    use xcable_io_config, only: case_config, end_config, max_table_points
+   use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names, kinds_using
    use xcable_io_schema, only: schema_entry, schema_table, schema_groups, find_entry, group_entries, allowed_text, &
                                known_fields, is_table
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
@@ -821,19 +822,22 @@ contains
       character(len=*), intent(inout) :: msg
       character(len=16) :: kind, history, motion
       real(dp) :: x, z, force_x, force_z, ramp_time, amplitude, period, phase, direction_x, direction_z, mass
-      real(dp) :: y, force_y, torque, direction_y
+      real(dp) :: y, force_y, torque, direction_y, stiffness, damping, rest_length
       real(dp) :: table_time(max_table_points), table_x(max_table_points), table_z(max_table_points)
       real(dp) :: table_y(max_table_points)
       character(len=512) :: table_file
       namelist /end_a/ kind, x, y, z, force_x, force_y, force_z, torque, history, ramp_time, motion, amplitude, &
-         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_y, table_z, table_file
+         period, phase, direction_x, direction_y, direction_z, mass, stiffness, damping, rest_length, table_time, &
+         table_x, table_y, table_z, table_file
       namelist /end_b/ kind, x, y, z, force_x, force_y, force_z, torque, history, ramp_time, motion, amplitude, &
-         period, phase, direction_x, direction_y, direction_z, mass, table_time, table_x, table_y, table_z, table_file
+         period, phase, direction_x, direction_y, direction_z, mass, stiffness, damping, rest_length, table_time, &
+         table_x, table_y, table_z, table_file
 
       kind = e%kind; x = e%x; z = e%z; force_x = e%force_x; force_z = e%force_z; history = e%history
       ramp_time = e%ramp_time; motion = e%motion; amplitude = e%amplitude; period = e%period; phase = e%phase
       direction_x = e%direction_x; direction_z = e%direction_z; mass = e%mass
       y = e%y; force_y = e%force_y; torque = e%torque; direction_y = e%direction_y
+      stiffness = e%stiffness; damping = e%damping; rest_length = e%rest_length
       table_time = e%table_time; table_x = e%table_x; table_z = e%table_z; table_file = e%table_file
       table_y = e%table_y
       if (group == 'end_a') then
@@ -846,6 +850,7 @@ contains
       e%ramp_time = ramp_time; e%motion = motion; e%amplitude = amplitude; e%period = period; e%phase = phase
       e%direction_x = direction_x; e%direction_z = direction_z; e%mass = mass
       e%y = y; e%force_y = force_y; e%torque = torque; e%direction_y = direction_y
+      e%stiffness = stiffness; e%damping = damping; e%rest_length = rest_length
       e%table_time = table_time; e%table_x = table_x; e%table_z = table_z; e%table_file = table_file
       e%table_y = table_y
    end subroutine read_end
@@ -978,6 +983,9 @@ contains
       case ('direction_x'); call move(e%direction_x, v, store)
       case ('direction_z'); call move(e%direction_z, v, store)
       case ('mass'); call move(e%mass, v, store)
+      case ('stiffness'); call move(e%stiffness, v, store)
+      case ('damping'); call move(e%damping, v, store)
+      case ('rest_length'); call move(e%rest_length, v, store)
       case ('table_time'); call move_rows(e%table_time, e%table_rows, v, store)
       case ('table_x'); call move_rows(e%table_x, e%table_rows, v, store)
       case ('table_y'); call move_rows(e%table_y, e%table_rows, v, store)
@@ -1324,16 +1332,16 @@ contains
       type(case_config), intent(inout) :: c
       !> Error naming file, group, variable, value and what is allowed.
       type(error_type), allocatable, intent(out) :: error
-      character(:), allocatable :: position, broken
+      character(:), allocatable :: position, broken, held
       type(end_config) :: e
       logical :: held_a, held_b
 
       e = c%end_a
-      call check_end(c, 'end_a', e, error)
+      call check_end(c, 'end_a', e, c%end_b, error)
       if (allocated(error)) return
       c%end_a = e
       e = c%end_b
-      call check_end(c, 'end_b', e, error)
+      call check_end(c, 'end_b', e, c%end_a, error)
       if (allocated(error)) return
       c%end_b = e
 
@@ -1370,16 +1378,17 @@ contains
          return
       end if
 
-      held_a = is_word(c%end_a%kind, 'fixed motion')
-      held_b = is_word(c%end_b%kind, 'fixed motion')
+      held = quoted_words(end_kind_names(held=.true.), ' or ')
+      held_a = is_word(c%end_a%kind, end_kind_names(held=.true.))
+      held_b = is_word(c%end_b%kind, end_kind_names(held=.true.))
       if (.not. (held_a .or. held_b)) then
          if (c%end_a%kind == 'free' .and. c%end_b%kind == 'free') then
             call fatal_error(error, c%source//": &end_a: kind = 'free' and &end_b: kind = 'free': a cable with no "// &
-                             "support has no static state; make one end 'fixed' or 'motion'", stat_input)
+                             'support has no static state; make one end '//held, stat_input)
          else
             call fatal_error(error, c%source//": &end_a: kind = '"//trim(c%end_a%kind)//"' and &end_b: kind = '"// &
-                             trim(c%end_b%kind)//"': nothing holds the cable (no 'fixed' or 'motion' end), so it "// &
-                             "has no static state; make one end 'fixed' or 'motion'", stat_input)
+                             trim(c%end_b%kind)//"': nothing holds the cable (no "//held//' end), so it '// &
+                             'has no static state; make one end '//held, stat_input)
          end if
          return
       end if
@@ -1400,7 +1409,7 @@ contains
             position = position//", at end b, whose kind = '"//trim(c%end_b%kind)//"'"
          end if
          call fatal_error(error, c%source//': &rupture: s_break = '//position//': nothing holds that end, so '// &
-                          "there is nothing to break; break at a 'fixed' or 'motion' end, inside the cable "// &
+                          'there is nothing to break; break at a '//held//' end, inside the cable '// &
                           '(0 < s_break < L), or set enabled = .false.', stat_input)
       end if
    end subroutine check_scene
@@ -1457,60 +1466,60 @@ contains
       end subroutine end_datum
    end function out_of_plane
 
-   !> The conditions of one end: no position where the statics give it, a
-   !> positive mass, ramp time and period, a direction (normalised here), and
-   !> a table of at least 2 rows with increasing times where one is used.
-   subroutine check_end(c, group, e, error)
+   !> The conditions of one end: no variable its kind does not use (the kinds of
+   !> the registry, ends/registry.f90: a position x, y, z where the statics give
+   !> it is refused when given at all, another variable when it differs from its
+   !> default: the echo writes every variable), the conditions of its kind (its
+   !> registry line's check), and the motion direction normalised.
+   subroutine check_end(c, group, e, other, error)
       !> The case (for its source and what was given).
       type(case_config), intent(in) :: c
       !> 'end_a' or 'end_b'.
       character(*), intent(in) :: group
       !> The end; its motion direction is normalised.
       type(end_config), intent(inout) :: e
+      !> The other end.
+      type(end_config), intent(in) :: other
       !> Error naming file, group, variable, value and what is allowed.
       type(error_type), allocatable, intent(out) :: error
-      character(:), allocatable :: prefix, kind, uses
+      type(schema_entry), allocatable :: t(:)
+      integer, allocatable :: mine(:)
+      type(end_kind) :: line, other_line
+      character(:), allocatable :: prefix, kind, name, value
+      logical :: found, other_found
       real(dp) :: norm
+      integer :: i
 
       prefix = c%source//': &'//group//': '
       kind = "kind = '"//trim(e%kind)//"'"
-      if (is_word(e%kind, 'free force mass')) then
-         if (c%is_given(group, 'x')) then
-            call fatal_error(error, prefix//'x = '//real_text(e%x)//': given for '//kind//': the position of a '// &
-                             "'free', 'force' or 'mass' end follows from the statics; leave x out", stat_input)
-            return
-         end if
-         if (c%is_given(group, 'z')) then
-            call fatal_error(error, prefix//'z = '//real_text(e%z)//': given for '//kind//': the position of a '// &
-                             "'free', 'force' or 'mass' end follows from the statics; leave z out", stat_input)
-            return
-         end if
-         if (c%is_given(group, 'y')) then
-            call fatal_error(error, prefix//'y = '//real_text(e%y)//': given for '//kind//': the position of a '// &
-                             "'free', 'force' or 'mass' end follows from the statics; leave y out", stat_input)
-            return
-         end if
-      end if
-      if (e%kind == 'mass' .and. .not. e%mass > 0) then
-         call fatal_error(error, prefix//'mass = '//real_text(e%mass)//': must be > 0 for '//kind, stat_input)
+      call find_end_kind(e%kind, line, found)
+      if (.not. found) then
+         call fatal_error(error, prefix//kind//': unknown kind; registered: '// &
+                          quoted_words(end_kind_names(), ', '), stat_input)
          return
       end if
-      if (e%kind == 'force' .and. e%history == 'ramp' .and. .not. e%ramp_time > 0) then
-         call fatal_error(error, prefix//'ramp_time = '//real_text(e%ramp_time)//": must be > 0 for history = 'ramp'", &
-                          stat_input)
+      t = schema_table()
+      mine = group_entries(t, group)
+      do i = 1, size(mine)
+         name = trim(t(mine(i))%name)
+         if (name == 'kind' .or. is_word(name, line%variables)) cycle
+         if (.not. c%is_given(group, name)) cycle
+         value = value_text(c, t(mine(i)))
+         if (is_word(name, 'x y z')) then
+            call fatal_error(error, prefix//name//' = '//value//': given for '//kind//": the position of a '"// &
+                             trim(e%kind)//"' end follows from the statics; leave "//name//' out', stat_input)
+            return
+         end if
+         if (value == trim(t(mine(i))%default)) cycle
+         call fatal_error(error, prefix//name//' = '//value//': given for '//kind//', which does not use it: '// &
+                          name//' is a variable of kind '//quoted_words(kinds_using(name), ' or ')//'; '// &
+                          kind//' takes '//variable_list(line%variables), stat_input)
          return
-      end if
-      if (e%kind == 'motion' .and. e%motion == 'harmonic') then
-         if (.not. e%period > 0) then
-            call fatal_error(error, prefix//'period = '//real_text(e%period)//": must be > 0 for motion = 'harmonic'", &
-                             stat_input)
-            return
-         end if
-         if (e%direction_x == 0 .and. e%direction_y == 0 .and. e%direction_z == 0) then
-            call fatal_error(error, prefix//'direction_x = 0, direction_y = 0, direction_z = 0: the direction of the '// &
-                             'harmonic motion must not be zero (a vector of nonzero length)', stat_input)
-            return
-         end if
+      end do
+      if (associated(line%check)) then
+         call find_end_kind(other%kind, other_line, other_found)
+         call line%check(prefix, e, other, other_found .and. other_line%held, error)
+         if (allocated(error)) return
       end if
       norm = norm2([e%direction_x, e%direction_y, e%direction_z])
       if (norm > 0) then
@@ -1518,17 +1527,46 @@ contains
          e%direction_y = e%direction_y/norm
          e%direction_z = e%direction_z/norm
       end if
-
-      uses = ''
-      if (e%kind == 'force' .and. e%history == 'table') uses = "history = 'table'"
-      if (e%kind == 'motion' .and. e%motion == 'table') uses = "motion = 'table'"
-      if (len(uses) > 0 .and. e%table_rows == 0) then
-         call fatal_error(error, prefix//uses//' without a table: give table_time, table_x and table_z (at least 2 '// &
-                          'rows) or table_file', stat_input)
-         return
-      end if
       call check_column(prefix, 'table_time', e%table_time(1:e%table_rows), time_order, error)
+
+   contains
+
+      !> A kind's variables as 'x, y, z' ('no other variable' when none).
+      function variable_list(words) result(text)
+         character(*), intent(in) :: words
+         character(:), allocatable :: text
+         text = comma_words(words)
+         if (len(text) == 0) text = 'no other variable'
+      end function variable_list
    end subroutine check_end
+
+   !> Blank-separated words as "'a', 'b' and 'c'" with the given last separator (' or ').
+   function quoted_words(words, last) result(text)
+      !> The words.
+      character(*), intent(in) :: words
+      !> Separator before the last word (', ' for all commas).
+      character(*), intent(in) :: last
+      character(:), allocatable :: text, item
+      integer :: pos, n, k
+      n = 0
+      pos = 1
+      do
+         call next_item(words, pos, item)
+         if (len(item) == 0) exit
+         n = n + 1
+      end do
+      text = ''
+      pos = 1
+      do k = 1, n
+         call next_item(words, pos, item)
+         if (k > 1 .and. k == n) then
+            text = text//last
+         else if (k > 1) then
+            text = text//', '
+         end if
+         text = text//"'"//item//"'"
+      end do
+   end function quoted_words
 
    !> Read an end's table_file, if given, into its table: two, three or four
    !> numbers a line (t, x; t, x, z; or t, x, y, z; y and z are 0 when absent),
@@ -1915,7 +1953,8 @@ contains
 
    !> Whether the echo writes a variable: the tension only for the paper's
    !> symmetric case (both ends fixed, no position given for end b), end b's
-   !> position only when given; not the position of a free, force or mass end;
+   !> position only when given; not the position of an end whose kind does not use it (free,
+   !> force, mass), nor a variable of own_kinds_only for another kind;
    !> no table without rows, and no table_file unless given.
    logical function echoed(c, e, position_b)
       !> The case.
@@ -1938,23 +1977,28 @@ contains
       end if
       ! The end itself, not a copy (a copy of its tables cost more than the rest of the echo).
       if (e%group == 'end_a') then
-         echoed = end_echoed(c%end_a, e%name)
+         echoed = end_echoed(c%end_a, e)
       else if (e%group == 'end_b') then
-         echoed = end_echoed(c%end_b, e%name)
+         echoed = end_echoed(c%end_b, e)
          if (is_word(e%name, 'x y z')) echoed = echoed .and. position_b
       end if
    end function echoed
 
    !> `echoed` for a variable of &end_a or &end_b, but for the condition on end b's position.
-   logical function end_echoed(side, name)
+   logical function end_echoed(side, e)
       !> The end.
       type(end_config), intent(in) :: side
-      !> Variable name.
-      character(*), intent(in) :: name
+      !> The variable.
+      type(schema_entry), intent(in) :: e
       end_echoed = .true.
-      select case (name)
+      if (e%own_kinds_only) then
+         end_echoed = is_word(e%name, kind_variables(side%kind))
+         return
+      end if
+      select case (e%name)
       case ('x', 'y', 'z')
-         end_echoed = .not. is_word(side%kind, 'free force mass')
+         ! Not for the kinds whose position follows from the statics.
+         end_echoed = is_word(e%name, kind_variables(side%kind))
       case ('table_time', 'table_x', 'table_z')
          end_echoed = side%table_rows > 0
       case ('table_y')
@@ -1963,6 +2007,18 @@ contains
          end_echoed = len_trim(side%table_file) > 0
       end select
    end function end_echoed
+
+   !> The variables a kind uses, blank-separated ('' for a word that is not a kind).
+   function kind_variables(kind) result(words)
+      !> The kind's word.
+      character(*), intent(in) :: kind
+      character(:), allocatable :: words
+      type(end_kind) :: line
+      logical :: found
+      call find_end_kind(kind, line, found)
+      words = ''
+      if (found) words = trim(line%variables)
+   end function kind_variables
 
    !> Identifier starting at position i of a line, lower case.
    function word_at(line, i) result(word)

@@ -20,6 +20,7 @@ module xcable_io_schema
    use xcable_strings, only: real_text
    use xcable_io_config, only: max_table_points
    use xcable_material_factory, only: law_names
+   use xcable_ends_registry, only: end_kind, end_kind_list, end_kind_names, kinds_using
    implicit none
    private
    public :: schema_entry, schema_table, schema_groups, find_entry, group_entries
@@ -60,6 +61,9 @@ module xcable_io_schema
       character(len=40) :: default_means = ''
       !> Added to a range error: why the range is what it is.
       character(len=120) :: note = ''
+      !> A variable of &end_a / &end_b that the echo writes only for the kinds that use it (the
+      !> others are written for every kind, as the files before the end-kind registry had them).
+      logical :: own_kinds_only = .false.
       !> Whether the value may differ between a run and its `xcable --resume` (it steers the run,
       !> not what it computes: left out of the namelist fingerprint a checkpoint is checked against).
       logical :: resume_may_differ = .false.
@@ -84,6 +88,8 @@ contains
       !> The table.
       type(schema_entry), allocatable, intent(out) :: t(:)
       character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
+      type(end_kind), allocatable :: kinds(:)
+      character(:), allocatable :: kind_doc
       integer :: k
       allocate (t(0))
       ! &cable
@@ -153,14 +159,21 @@ contains
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &
                'exceed w0 L / 2 and need a strain below strain_max; not together with &end_b x or z', 0.0_dp, 1.0e9_dp, &
                lower_open=.true.)
-      ! &end_a (s = 0) and &end_b (s = L): the same variables.
+      ! &end_a (s = 0) and &end_b (s = L): the same variables; the kinds from the registry.
+      kinds = end_kind_list()
+      kind_doc = ''
+      do k = 1, size(kinds)
+         if (k > 1 .and. k < size(kinds)) kind_doc = kind_doc//', '
+         if (k > 1 .and. k == size(kinds)) kind_doc = kind_doc//' or '
+         kind_doc = kind_doc//"'"//trim(kinds(k)%name)//"' ("//trim(kinds(k)%doc)//')'
+      end do
+      kind_doc = kind_doc//'; at least one end '//words_or(end_kind_names(held=.true.))
       do k = 1, size(ends)
-         call add(t, ends(k), 'kind', 'string', '-', "'fixed'", &
-                  "'fixed' (held at x, z), 'free', 'force' (an applied force), 'motion' (moved about x, z) or 'mass' "// &
-                  '(a point mass); at least one end fixed or motion', length=16, choices='fixed free force motion mass')
+         call add(t, ends(k), 'kind', 'string', '-', "'"//trim(kinds(1)%name)//"'", kind_doc, length=16, &
+                  choices=end_kind_names())
          call add(t, ends(k), 'x', 'real', 'm', '0', &
-                  'horizontal position of a fixed end, or mean position of a motion end (not for free, force and mass '// &
-                  'ends, whose position follows from the statics; &end_b: not together with &static tension)', &
+                  'horizontal position of a fixed end, mean position of a motion end, or anchor of a spring end (the '// &
+                  'position of the other kinds follows from the statics; &end_b: not together with &static tension)', &
                   -1.0e5_dp, 1.0e5_dp)
          call add(t, ends(k), 'y', 'real', 'm', '0', &
                   'horizontal position across the x-z plane (3-D model), as x', -1.0e5_dp, 1.0e5_dp)
@@ -191,7 +204,21 @@ contains
                   'direction of the harmonic motion, y component (3-D model)', -1.0e6_dp, 1.0e6_dp)
          call add(t, ends(k), 'direction_z', 'real', '-', '1', 'direction of the harmonic motion, z component', &
                   -1.0e6_dp, 1.0e6_dp)
-         call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0)', 0.0_dp, 1.0e9_dp)
+         call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0), or at a spring end', &
+                  0.0_dp, 1.0e9_dp)
+         call add(t, ends(k), 'stiffness', 'real', 'N/m', '0', &
+                  'stiffness k of a spring end (> 0): the spring pulls the end towards the anchor x, y, z with '// &
+                  'the force k (l - rest_length), l the distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
+                  own_kinds_only=.true.)
+         call add(t, ends(k), 'damping', 'real', 'N s/m', '0', &
+                  'damping c of the dashpot in line with a spring end: the force c dl/dt along the spring, l the '// &
+                  'distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
+                  own_kinds_only=.true.)
+         call add(t, ends(k), 'rest_length', 'real', 'm', '0', &
+                  'rest length of a spring end (the spring pushes when shorter; with a rest length the anchor must '// &
+                  "not be the point of a held other end: the spring's direction at rest would be undetermined)", &
+                  0.0_dp, 1.0e5_dp, &
+                  own_kinds_only=.true.)
          call add(t, ends(k), 'table_time', 'real', 's', '', &
                   "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; table_x and "// &
                   'table_z have as many values, table_y as many or none', -1.0e7_dp, 1.0e7_dp, count=max_table_points)
@@ -205,6 +232,11 @@ contains
          call add(t, ends(k), 'table_file', 'string', '-', "''", &
                   'the table from a text file instead: 2, 3 or 4 columns t, x; t, x, z; or t, x, y, z (absent '// &
                   'columns 0), # starts a comment; the path is relative to the working directory', length=512)
+      end do
+      ! Each variable of an end names the kinds that use it (the registry's lines).
+      do k = 1, size(t)
+         if (.not. any(t(k)%group == ends) .or. t(k)%name == 'kind') cycle
+         t(k)%doc = trim(t(k)%doc)//' [kind '//words_or(kinds_using(t(k)%name))//']'
       end do
       ! &rupture
       call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', &
@@ -289,7 +321,7 @@ contains
 
    !> Append an entry. A number is bounded when lower and upper are given.
    subroutine add(t, group, name, type, unit, default, doc, lower, upper, count, length, choices, word_list, &
-                  lower_open, upper_from, zero_means, default_means, note, resume_may_differ)
+                  lower_open, upper_from, zero_means, default_means, note, resume_may_differ, own_kinds_only)
       !> The table.
       type(schema_entry), allocatable, intent(inout) :: t(:)
       !> Group, variable, type, unit, default (as the echo writes it) and meaning.
@@ -308,6 +340,8 @@ contains
       character(*), intent(in), optional :: upper_from, zero_means, default_means, note
       !> Whether it may differ between a run and its resume.
       logical, intent(in), optional :: resume_may_differ
+      !> Whether the echo writes it only for the end kinds that use it.
+      logical, intent(in), optional :: own_kinds_only
       type(schema_entry) :: e
       e%group = group
       e%name = name
@@ -330,8 +364,30 @@ contains
       if (present(default_means)) e%default_means = default_means
       if (present(note)) e%note = note
       if (present(resume_may_differ)) e%resume_may_differ = resume_may_differ
+      if (present(own_kinds_only)) e%own_kinds_only = own_kinds_only
       t = [t, e]
    end subroutine add
+
+   !> Blank-separated words as 'a, b or c'.
+   function words_or(words) result(text)
+      !> The words.
+      character(*), intent(in) :: words
+      character(:), allocatable :: text, rest
+      integer :: i
+      text = ''
+      rest = trim(adjustl(words))
+      do while (len(rest) > 0)
+         i = index(rest, ' ')
+         if (i == 0) then
+            if (len(text) > 0) text = text//' or '
+            text = text//rest
+            exit
+         end if
+         if (len(text) > 0) text = text//', '
+         text = text//rest(1:i - 1)
+         rest = trim(adjustl(rest(i + 1:)))
+      end do
+   end function words_or
 
    !> The groups of the table, in order.
    function schema_groups(t) result(groups)

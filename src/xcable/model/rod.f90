@@ -483,6 +483,9 @@ contains
       do c = 1, self%n - 1
          en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
       end do
+      ! The energy stored in state-dependent ends (springs) goes with the strain energy.
+      if (self%end_a%state_dependent()) en(1) = en(1) + self%end_a%stored_energy(point3(r(:, 1)))
+      if (self%end_b%state_dependent()) en(1) = en(1) + self%end_b%stored_energy(point3(r(:, self%n)))
       en(2) = kinetic_energy(self%n, self%mass, v)
       do k = 1, self%n
          ! node_weight's value, without its call for the inner nodes.
@@ -940,8 +943,8 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       logical, intent(in) :: with_jacobian
       integer :: n, off, va, vb
-      real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new
-      logical :: held_a, held_b
+      real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new, jac_a(2, 2), jac_b(2, 2)
+      logical :: held_a, held_b, state_a, state_b
       n = self%n
       scale = 1/self%tension_ref
       held_a = self%end_a%held()
@@ -961,6 +964,11 @@ contains
       fext_b = 0
       if (lo == 1) fext_a = 0.5_dp*(self%end_a%applied_force(t0) + self%end_a%applied_force(t_new))
       if (hi == n) fext_b = 0.5_dp*(self%end_b%applied_force(t0) + self%end_b%applied_force(t_new))
+      state_a = lo == 1 .and. self%end_a%state_dependent()
+      state_b = hi == n .and. self%end_b%state_dependent()
+      if (state_a) call add_end_state(self%end_a, .true., t0, dt, self%r0(:, 1), self%memo_x(1:2), fext_a, jac_a)
+      if (state_b) call add_end_state(self%end_b, .true., t0, dt, self%r0(:, n), self%memo_x(2*n - 1:2*n), fext_b, &
+                                      jac_b)
       call node_residuals(n, lo, hi, self%force, node_weight(self, 1), node_weight(self, n), self%weight, &
                           self%lumped, self%load_node, fext_a, fext_b, .true., self%mass, self%v1, self%mv0, dt, &
                           scale, residual)
@@ -972,6 +980,8 @@ contains
       call jacobian%clear()
       call add_jacobian(n, lo, hi, jacobian%ldab, jacobian%kl + jacobian%ku + 1, jacobian%ab, self%block, self%ds, &
                         self%mass, scale, rate, held_a, held_b, .true., self%block_scaled, self%mass_scaled)
+      if (state_a) call add_end_block(jacobian, 0, jac_a, scale)
+      if (state_b) call add_end_block(jacobian, 2*(hi - lo), jac_b, scale)
       if (held_a .and. lo == 1) then
          jacobian%ab(jacobian%kl + jacobian%ku + 1, 1:2) = 1/self%length_ref
       end if
@@ -1738,8 +1748,8 @@ contains
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in), optional :: theta
       integer :: n, c, k, j, side, node, band0, a, b, row, col
-      real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new
-      logical :: held_a, held_b
+      real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new, jac_a(2, 2), jac_b(2, 2)
+      logical :: held_a, held_b, state_a, state_b
       n = self%n
       scale = 1/self%tension_ref
       held_a = self%end_a%held()
@@ -1762,6 +1772,11 @@ contains
          fext_b = self%end_b%applied_force(t1)
          rate = 0
       end if
+      ! Ends that depend on their own state (springs): their force at the node, and its derivative.
+      state_a = self%end_a%state_dependent()
+      state_b = self%end_b%state_dependent()
+      if (state_a) call add_end_state(self%end_a, dynamic, t1, t2, self%r0(:, 1), x(1:2), fext_a, jac_a)
+      if (state_b) call add_end_state(self%end_b, dynamic, t1, t2, self%r0(:, n), x(2*n - 1:2*n), fext_b, jac_b)
       ! Node k: N_k - N_k-1, its weight, loads, applied forces and in a step the inertia
       ! [M (V^n+1 - V^n)]_k / dt, over T_ref. Each node's rows are summed in one go, their
       ! terms in the order of the former loops (a pass over the residual for each kind of
@@ -1776,6 +1791,8 @@ contains
       band0 = jacobian%kl + jacobian%ku + 1
       call add_jacobian(n, 1, n, jacobian%ldab, band0, jacobian%ab, self%block, self%ds, self%mass, scale, rate, &
                         held_a, held_b, dynamic, self%block_scaled, self%mass_scaled)
+      if (state_a) call add_end_block(jacobian, 0, jac_a, scale)
+      if (state_b) call add_end_block(jacobian, 2*n - 2, jac_b, scale)
       ! Distributed loads: node c and node c+1 each get -F_c / 2.
       if (allocated(self%loads)) then
          if (size(self%loads) > 0) then
@@ -1814,6 +1831,61 @@ contains
          end do
       end subroutine held_rows
    end subroutine assemble
+
+   !> The force of an end that depends on its own state, added to f (the time-only applied
+   !> force of its node), and its derivative with respect to the node's (new) position: the
+   !> statics' state_force at rest at x (dynamic false, t the time), or a step's step_force
+   !> from x0 at t to x over dt.
+   subroutine add_end_state(end, dynamic, t, dt, x0, x, f, jac)
+      !> The end (state_dependent).
+      class(end_condition), intent(in) :: end
+      !> A step (or the statics).
+      logical, intent(in) :: dynamic
+      !> Time (the step's start), s; the step, s.
+      real(dp), intent(in) :: t, dt
+      !> The node's old (a step) and new position (x, z), m.
+      real(dp), intent(in) :: x0(2), x(2)
+      !> Force on the node, N: the end's force is added.
+      real(dp), intent(inout) :: f(2)
+      !> d (end's force) / d x, N/m.
+      real(dp), intent(out) :: jac(2, 2)
+      real(dp) :: f3(3), j3(3, 3), dv(3, 3), damp(3)
+      if (dynamic) then
+         call end%step_force(t, dt, point3(x0), point3(x), f3, j3, damp)
+      else
+         call end%state_force(t, point3(x), [0.0_dp, 0.0_dp, 0.0_dp], f3, j3, dv, damp)
+      end if
+      f = f + f3([1, 3])
+      jac = j3([1, 3], [1, 3])
+   end subroutine add_end_state
+
+   !> -jac times the row scale on the 2x2 diagonal block of the rows and columns off + 1, off + 2
+   !> (an end node's: its rows hold -F).
+   subroutine add_end_block(jacobian, off, jac, scale)
+      !> Jacobian, band storage.
+      type(band_matrix), intent(inout) :: jacobian
+      !> Unknowns before the block.
+      integer, intent(in) :: off
+      !> d F / d x of the end, N/m.
+      real(dp), intent(in) :: jac(2, 2)
+      !> Row scale.
+      real(dp), intent(in) :: scale
+      integer :: a, b, band0
+      band0 = jacobian%kl + jacobian%ku + 1
+      do b = 1, 2
+         do a = 1, 2
+            jacobian%ab(band0 + a - b, off + b) = jacobian%ab(band0 + a - b, off + b) - jac(a, b)*scale
+         end do
+      end do
+   end subroutine add_end_block
+
+   !> A planar point (x, z) as the 3-D point (x, 0, z) of the ends' state procedures.
+   pure function point3(p) result(q)
+      !> The point (x, z).
+      real(dp), intent(in) :: p(2)
+      real(dp) :: q(3)
+      q = [p(1), 0.0_dp, p(2)]
+   end function point3
 
    !> The node residuals of assemble before the held ends' rows, on explicit-shape arrays:
    !> N_k - N_k-1, the weight (w1, wn at the end nodes, weight lumped(k) inside), the loads,

@@ -529,6 +529,9 @@ contains
       do k = 2, self%n - 1
          en(3) = en(3) + bend_energy(self, k, th(k))
       end do
+      ! The energy stored in state-dependent ends (springs) goes with the strain energy.
+      if (self%end_a%state_dependent()) en(1) = en(1) + self%end_a%stored_energy(r(:, 1))
+      if (self%end_b%state_dependent()) en(1) = en(1) + self%end_b%stored_energy(r(:, self%n))
    end function rod3d_energies
 
    !> Twist rate tau_c = Omega1 of each cell of x (n - 1), 1/m.
@@ -1086,9 +1089,9 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in) :: theta
-      integer :: n, c, k, band0, a
-      real(dp) :: scale, rate, t_new, r(3, self%n), psi(self%n), twist_scale, tau
-      logical :: held_a, held_b, anchor_a, anchor_b
+      integer :: n, c, k, band0, a, b
+      real(dp) :: scale, rate, t_new, r(3, self%n), psi(self%n), twist_scale, tau, jac_a(3, 3), jac_b(3, 3)
+      logical :: held_a, held_b, anchor_a, anchor_b, state_a, state_b
       n = self%n
       scale = 1/self%tension_ref
       twist_scale = self%length_ref/self%gip
@@ -1123,6 +1126,11 @@ contains
          residual(3*n - 2:3*n) = residual(3*n - 2:3*n) - self%end_b%applied_force3(t1)
          rate = 0
       end if
+      ! Ends that depend on their own state (springs): their force, and its derivative.
+      state_a = self%end_a%state_dependent()
+      state_b = self%end_b%state_dependent()
+      if (state_a) call end_state(self%end_a, self%r0(:, 1), r(:, 1), residual(1:3), jac_a)
+      if (state_b) call end_state(self%end_b, self%r0(:, n), r(:, n), residual(3*n - 2:3*n), jac_b)
       residual = residual*scale
       ! Twist rows (quasi-static, at the new time): dU/dpsi_k minus the applied torques.
       do c = 1, n - 1
@@ -1150,6 +1158,12 @@ contains
          call add_twist(3*n + c + 1, 3*n + c, -self%gip/self%ds(c)*twist_scale)
          call add_twist(3*n + c + 1, 3*n + c + 1, self%gip/self%ds(c)*twist_scale)
       end do
+      do b = 1, 3
+         do a = 1, 3
+            if (state_a) call add_twist(a, b, -jac_a(a, b)*scale)
+            if (state_b) call add_twist(3*(n - 1) + a, 3*(n - 1) + b, -jac_b(a, b)*scale)
+         end do
+      end do
       if (anchor_a) call set_row(3*n + 1, [3*n + 1], [1.0_dp])
       if (anchor_b) call set_row(4*n, [4*n], [1.0_dp])
       if (held_a) then
@@ -1165,6 +1179,23 @@ contains
 
    contains
 
+      !> A state-dependent end's force taken from its node's rows (statics: at rest at x1, time t1;
+      !> a step: from x0 over t2), and its derivative with respect to x1.
+      subroutine end_state(end, x0, x1, rows, jac)
+         class(end_condition), intent(in) :: end
+         real(dp), intent(in) :: x0(3), x1(3)
+         real(dp), intent(inout) :: rows(3)
+         real(dp), intent(out) :: jac(3, 3)
+         real(dp) :: f(3), dv(3, 3), damp(3)
+         if (dynamic) then
+            call end%step_force(t1, t2, x0, x1, f, jac, damp)
+         else
+            call end%state_force(t1, x1, [0.0_dp, 0.0_dp, 0.0_dp], f, jac, dv, damp)
+         end if
+         rows = rows - f
+      end subroutine end_state
+
+      !> Adds value to the entry (rr, cc) of the band.
       subroutine add_twist(rr, cc, value)
          integer, intent(in) :: rr, cc
          real(dp), intent(in) :: value

@@ -15,3 +15,14 @@ schema: build
 		 /^<!-- schema:end -->$$/ { skip = 0 } !skip' README.md >build/README.md.new
 	mv build/README.md.new README.md
 	@echo "README.md: input table rewritten from bin/xcable --schema markdown"
+
+# The page of the result file's datasets, docs/user/output.md, is written from the output
+# registry (src/xcable/io/output_registry.f90) by `xcable --outputs markdown`.
+#   make outputs  rewrite it (fpm test checks that it is current: suite output, outputs_page_current)
+
+.PHONY: outputs
+
+outputs: build
+	@mkdir -p docs/user
+	./bin/xcable --outputs markdown >docs/user/output.md
+	@echo "docs/user/output.md: written from bin/xcable --outputs markdown"

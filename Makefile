@@ -51,6 +51,7 @@ test: build
 	test/test_fuzz.sh bin/xcable
 	test/test_checkpoint.sh bin/xcable
 	test/test_xdmf.sh bin/xcable
+	test/test_outputs.py bin/xcable
 
 clean:
 	rm -rf build bin

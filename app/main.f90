@@ -4,6 +4,7 @@
 !>   xcable --resume case.nml       (continue from the checkpoint of case.nml's result file)
 !>   xcable --check case.nml        (validate the case, solve its statics, and exit)
 !>   xcable --schema markdown|tsv   (the input table: docs/user/namelist.md's, or the sweep scripts')
+!>   xcable --outputs markdown|tsv  (the output registry: docs/user/output.md)
 !>   xcable --version               (the version, the compiler and its options)
 !>
 !> Exit codes: 0 complete (warnings, if any, on stderr and in the file);
@@ -23,6 +24,7 @@ program xcable_main
    use xcable_strings, only: str, quantity
    use xcable_io_input, only: case_config, read_config, config_text
    use xcable_io_schema, only: write_schema
+   use xcable_io_output_registry, only: write_outputs
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_summary, run_history, static_info, summary_text
    use xcable_app_output, only: app_output
@@ -47,7 +49,8 @@ program xcable_main
    logical :: check_only, resume, exists, rod
    character(len=*), parameter :: usage = 'usage: xcable [--check | --resume] <case.nml>   (--check: validate only; '// &
                                           '--resume: continue from the checkpoint; see docs/user/namelist.md for the namelist '// &
-                                          'groups); xcable --schema markdown|tsv; xcable --version'
+                                          'groups); xcable --schema markdown|tsv; xcable --outputs markdown|tsv; '// &
+                                          'xcable --version'
 
    nargs = command_argument_count()
    call schema_option()
@@ -190,14 +193,19 @@ program xcable_main
 
 contains
 
-   !> xcable --schema markdown|tsv: print the input table and stop.
+   !> xcable --schema markdown|tsv: print the input table and stop; xcable --outputs
+   !> markdown|tsv: the output registry (every dataset and attribute of the result file).
    subroutine schema_option()
       character(len=16) :: option, format
       if (nargs /= 2) return
       call get_command_argument(1, option)
-      if (option /= '--schema') return
+      if (option /= '--schema' .and. option /= '--outputs') return
       call get_command_argument(2, format)
-      call write_schema(output_unit, trim(format), error)
+      if (option == '--schema') then
+         call write_schema(output_unit, trim(format), error)
+      else
+         call write_outputs(output_unit, trim(format), error)
+      end if
       if (allocated(error)) call fail_input(error)
       stop
    end subroutine schema_option

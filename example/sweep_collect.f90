@@ -24,7 +24,8 @@
 program sweep_collect
    use xcable_kinds, only: dp
    use hdf5
-   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_int_attr, put_text_attr
+   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_int_attr, put_text_attr, &
+                             get_text_attr
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan
    implicit none
@@ -314,28 +315,12 @@ contains
       character(*), intent(in) :: name
       !> Its value, trimmed.
       character(:), allocatable, intent(out) :: text
-      integer(hid_t) :: attr, file_type, memory_type
-      integer(size_t) :: length
-      integer :: hdferr, class
-      logical :: exists
-      character(len=reason_len) :: buffer
-      call h5aexists_f(loc, name, exists, hdferr)
-      if (.not. exists .or. hdferr /= 0) return
-      call h5aopen_f(loc, name, attr, hdferr)
-      if (hdferr /= 0) return
-      call h5aget_type_f(attr, file_type, hdferr)
-      call h5tget_class_f(file_type, class, hdferr)
-      call h5tget_size_f(file_type, length, hdferr)
-      if (class == H5T_STRING_F .and. length <= len(buffer)) then
-         call h5tcopy_f(H5T_NATIVE_CHARACTER, memory_type, hdferr)
-         call h5tset_size_f(memory_type, length, hdferr)
-         buffer = ''
-         call h5aread_f(attr, memory_type, buffer(1:length), [1_hsize_t], hdferr)
-         if (hdferr == 0) text = trim(buffer(1:length))
-         call h5tclose_f(memory_type, hdferr)
-      end if
-      call h5tclose_f(file_type, hdferr)
-      call h5aclose_f(attr, hdferr)
+      character(:), allocatable :: value
+      logical :: ok
+      ! get_text_attr reads fixed-length strings and the result file's variable-length UTF-8 ones.
+      ok = .true.
+      call get_text_attr(loc, name, value, ok)
+      if (ok .and. len(value) <= reason_len) text = value
    end subroutine read_text
 
    !> A real scalar attribute; value is unchanged when it is absent.

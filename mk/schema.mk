@@ -17,3 +17,14 @@ schema: build
 		 /^<!-- schema:end -->$$/ { skip = 0 } !skip' $(SCHEMA_DOC) >build/namelist.md.new
 	mv build/namelist.md.new $(SCHEMA_DOC)
 	@echo "$(SCHEMA_DOC): input table rewritten from bin/xcable --schema markdown"
+
+# The page of the result file's datasets, docs/user/output.md, is written from the output
+# registry (src/xcable/io/output_registry.f90) by `xcable --outputs markdown`.
+#   make outputs  rewrite it (fpm test checks that it is current: suite output, outputs_page_current)
+
+.PHONY: outputs
+
+outputs: build
+	@mkdir -p docs/user
+	./bin/xcable --outputs markdown >docs/user/output.md
+	@echo "docs/user/output.md: written from bin/xcable --outputs markdown"

@@ -6,7 +6,8 @@ module suite_output
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_run_records, only: run_history, run_summary
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
-                             put_text_attr
+                             put_text_attr, get_text_attr
+   use xcable_io_output_registry, only: output_item, find_output, outputs_text
    use xcable_io_output, only: result_file
    use xcable_version, only: code_version
    use xcable_error, only: stat_input
@@ -27,7 +28,11 @@ contains
                new_unittest('reopen_to_resume', test_reopen), &
                new_unittest('number_text_as_formatted_write', test_number_text), &
                new_unittest('number_text_fast_path_boundaries', test_number_text_boundaries), &
-               new_unittest('quantities_as_people_write_them', test_quantity)]
+               new_unittest('quantities_as_people_write_them', test_quantity), &
+               new_unittest('utf8_text_attributes', test_utf8_text), &
+               new_unittest('registry_finds_paths', test_registry), &
+               new_unittest('unregistered_dataset_refused', test_unregistered), &
+               new_unittest('outputs_page_current', test_outputs_page)]
    end subroutine collect_output
 
    !> Each writer keeps ok on success and clears it when HDF5 refuses (a name
@@ -128,6 +133,120 @@ contains
       call check(error, text == 'complete', 'status after finish: "'//text//'"')
       call delete_file(path)
    end subroutine test_result_file
+
+   !> A UTF-8 text attribute (variable length) reads back as written, and is one: its
+   !> type is a variable-length string with the UTF-8 character set.
+   subroutine test_utf8_text(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: path = 'build/test_output_utf8.h5'
+      character(*), parameter :: text = 'tension in N, '//achar(226)//achar(137)//achar(164)//' 315 kN'
+      integer(hid_t) :: file, attr, atype
+      integer :: hdferr, cset
+      logical :: ok, variable
+      character(:), allocatable :: back
+      call h5open_f(hdferr)
+      call h5eset_auto_f(0, hdferr)
+      call h5fcreate_f(path, H5F_ACC_TRUNC_F, file, hdferr)
+      ok = .true.
+      call put_text_attr(file, 'note', text, ok, utf8=.true.)
+      call put_text_attr(file, 'empty', '', ok, utf8=.true.)
+      call get_text_attr(file, 'note', back, ok)
+      call check(error, ok .and. back == text, 'the UTF-8 attribute reads back as "'//back//'"')
+      if (.not. allocated(error)) then
+         call get_text_attr(file, 'empty', back, ok)
+         call check(error, ok .and. back == '', 'the empty UTF-8 attribute reads back as "'//back//'"')
+      end if
+      if (.not. allocated(error)) then
+         call h5aopen_f(file, 'note', attr, hdferr)
+         call h5aget_type_f(attr, atype, hdferr)
+         call h5tis_variable_str_f(atype, variable, hdferr)
+         call h5tget_cset_f(atype, cset, hdferr)
+         call h5tclose_f(atype, hdferr)
+         call h5aclose_f(attr, hdferr)
+         call check(error, variable .and. cset == H5T_CSET_UTF8_F, 'the attribute is not a variable-length UTF-8 string')
+      end if
+      call h5fclose_f(file, hdferr)
+      call delete_file(path)
+   end subroutine test_utf8_text
+
+   !> The registry finds fixed and per-end paths with their units, and not a path it lacks.
+   subroutine test_registry(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(output_item) :: item
+      logical :: found
+      call find_output('/history/break_b/vy', item, found)
+      call check(error, found .and. item%units == 'm/s', '/history/break_b/vy: not found or not m/s')
+      if (allocated(error)) return
+      call find_output('/summary@end_a_max_tension_time', item, found)
+      call check(error, found .and. item%units == 's', '/summary@end_a_max_tension_time: not found or not s')
+      if (allocated(error)) return
+      call find_output('/summary/end_b_slack_start', item, found)
+      call check(error, found .and. item%dims == 'interval', '/summary/end_b_slack_start: not found')
+      if (allocated(error)) return
+      call find_output('/history/step', item, found)
+      call check(error, .not. found, '/history/step (renamed dt) is still in the registry')
+      if (allocated(error)) return
+      call find_output('/history/end_a/x/y', item, found)
+      call check(error, .not. found, '<end> matched across a /')
+      if (allocated(error)) return
+      call find_output('/w', item, found)
+      call check(error, .not. found, '/w (renamed vy) is still in the registry')
+   end subroutine test_registry
+
+   !> A snapshot field the registry does not list is refused, with its name and the registry's
+   !> in the message.
+   subroutine test_unregistered(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: path = 'build/test_output_unregistered.h5'
+      type(result_file) :: output
+      type(error_type), allocatable :: write_error
+      real(dp) :: fields(3, 8)
+      integer :: i
+      call output%create(path, [(real(i, dp), i=0, 2)], 'tension', '&static tension = 180000 /', 'test.nml', &
+                         .false., 'rod', 'strain', [integer ::], error)
+      if (allocated(error)) return
+      fields = 1
+      call output%snapshot(0.0_dp, fields, write_error)
+      call check(error, .not. allocated(write_error), 'the first snapshot failed')
+      if (allocated(error)) return
+      call output%snapshot_extra(0.0_dp, [character(len=8) :: 'y', 'w'], fields(:, 1:2), write_error)
+      call check(error, allocated(write_error), 'a snapshot field w, not in the registry, was written')
+      if (allocated(error)) return
+      call check(error, index(write_error%message, "'/w' is not in the output registry") > 0, &
+                 'message: '//write_error%message)
+      call output%finish('failed', 'test')
+      call delete_file(path)
+   end subroutine test_unregistered
+
+   !> docs/user/output.md is the registry's page (make outputs rewrites it).
+   subroutine test_outputs_page(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(*), parameter :: page = 'docs/user/output.md'
+      character(:), allocatable :: text, expected
+      character(len=4096) :: line
+      integer :: unit, ios, lineno, at
+      open (newunit=unit, file=page, status='old', action='read', iostat=ios)
+      call check(error, ios == 0, page//' not found in the working directory (fpm test runs in the project root)')
+      if (allocated(error)) return
+      text = ''
+      do
+         read (unit, '(a)', iostat=ios) line
+         if (ios /= 0) exit
+         text = text//trim(line)//new_line('a')
+      end do
+      close (unit)
+      expected = outputs_text('markdown')
+      if (text == expected) return
+      at = 1
+      lineno = 1
+      do while (at <= min(len(text), len(expected)))
+         if (text(at:at) /= expected(at:at)) exit
+         if (text(at:at) == new_line('a')) lineno = lineno + 1
+         at = at + 1
+      end do
+      call check(error, .false., page//' is not the output registry''s page from line '//str(lineno)// &
+                 ': run make outputs')
+   end subroutine test_outputs_page
 
    !> The echo of a case with long tables (above the 64 KB of a compact HDF5
    !> attribute) is written and reads back whole.
@@ -326,24 +445,14 @@ contains
    end subroutine test_reopen
 
    !> A string attribute of loc ('' when it cannot be read).
+   !> A text attribute, fixed-length or variable-length ('' when absent).
    subroutine read_text_attr(loc, name, text)
       integer(hid_t), intent(in) :: loc
       character(*), intent(in) :: name
       character(:), allocatable, intent(out) :: text
-      integer(hid_t) :: attr, atype
-      integer(size_t) :: length
-      integer :: hdferr
-      text = ''
-      call h5aopen_f(loc, name, attr, hdferr)
-      if (hdferr /= 0) return
-      call h5aget_type_f(attr, atype, hdferr)
-      call h5tget_size_f(atype, length, hdferr)
-      deallocate (text)
-      allocate (character(len=int(length)) :: text)
-      call h5aread_f(attr, atype, text, [1_hsize_t], hdferr)
-      if (hdferr /= 0) text = ''
-      call h5tclose_f(atype, hdferr)
-      call h5aclose_f(attr, hdferr)
+      logical :: ok
+      ok = .true.
+      call get_text_attr(loc, name, text, ok)
    end subroutine read_text_attr
 
    subroutine delete_file(path)

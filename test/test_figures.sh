@@ -72,7 +72,7 @@ stem_3=$tmp/sway3d
 
 # The 3-D run's text: the snapshot header names the 3-D columns 10-15 and every data line has
 # 15 columns, y (column 10) reaching end b's 20 m; the history names each end's y, vy, force_y.
-want3="y[m] w[m/s] curvature_z[1/m] twist[1/m] binormal_shear[N] curvature_n[1/m]"
+want3="y[m] vy[m/s] curvature_z[1/m] twist[1/m] binormal_shear[N] curvature_n[1/m]"
 if sed -n 2p "$stem_3.snapshots.dat" | grep -qF "curvature[1/m] $want3"; then
   pass "sway3d: the snapshot header names the 3-D columns"
 else

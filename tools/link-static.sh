@@ -34,7 +34,8 @@ done
 [ ${#objects[@]} -gt 0 ] || keep "no objects in fpm's link command"
 hdf5_dir=$(pkg-config --variable=libdir hdf5 2>/dev/null)
 [ -n "$hdf5_dir" ] || hdf5_dir=/usr/lib/x86_64-linux-gnu/hdf5/serial
-archives=("$hdf5_dir/libhdf5_fortran.a" "$hdf5_dir/libhdf5.a")
+# The high-level library (dimension scales, io/output.f90) before the library it builds on.
+archives=("$hdf5_dir/libhdf5hl_fortran.a" "$hdf5_dir/libhdf5_fortran.a" "$hdf5_dir/libhdf5_hl.a" "$hdf5_dir/libhdf5.a")
 # gfortran prints the full path of a library it finds on its search path, the bare name otherwise.
 for name in liblapack.a libblas.a; do
   archives+=("$(gfortran -print-file-name=$name)")

@@ -2,12 +2,15 @@
 """tools/same_h5.py A.h5 B.h5 [--relative R]: compare every dataset and attribute of two xcable
 result files, bit for bit (default) or to R relative to each dataset's largest magnitude. The
 attributes that differ between two runs of the same case (run_id, wall_time, the namelist path)
-are skipped. Prints what differs; exit 1 if anything does."""
+are skipped; dimension scales are compared by name. Prints what differs; exit 1 if anything does."""
 import sys
 import h5py
 import numpy as np
 
 SKIP = {'run_id', 'wall_time', 'namelist_file', 'created'}
+# The dimension scales' bookkeeping: DIMENSION_LIST is compared by the names of the scales it
+# attaches, REFERENCE_LIST (its mirror on the scale) not at all.
+SCALES = {'DIMENSION_LIST', 'REFERENCE_LIST'}
 
 
 def items(f):
@@ -16,7 +19,12 @@ def items(f):
         if isinstance(obj, h5py.Dataset):
             out['D ' + name] = obj[()]
         for k, v in obj.attrs.items():
-            if k not in SKIP:
+            if k in SCALES:
+                # Object references (addresses in the file): compared as the scales' names.
+                if k == 'DIMENSION_LIST':
+                    out['A ' + name + '@' + k] = np.array(
+                        [[d.label] + [d[i].name for i in range(len(d))] for d in obj.dims], dtype=object)
+            elif k not in SKIP:
                 out['A ' + name + '@' + k] = v
     for k, v in f.attrs.items():
         if k not in SKIP:

@@ -42,7 +42,7 @@ def run(exe, work, name, tension, t_break, nodes, damping, t_end, window_end=Non
     with h5py.File(h5, "r") as h:
         s = h["summary"].attrs
         t = h["history/time"][:]
-        step = h["history/step"][:]
+        step = h["history/dt"][:]
         ta = h["history/end_a/tension"][:]
         vb = np.hypot(h["history/end_b/vx"][:], h["history/end_b/vz"][:])
         front = float(s["front_arrival_time"])

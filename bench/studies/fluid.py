@@ -45,7 +45,7 @@ def run(exe, work, name, medium, fluid, tension, t_break, t_end, nodes, window_e
     with h5py.File(h5, "r") as h:
         s = h["summary"].attrs
         t = h["history/time"][:]
-        step = h["history/step"][:]
+        step = h["history/dt"][:]
         vb = np.hypot(h["history/end_b/vx"][:], h["history/end_b/vz"][:])
         front = float(s["front_arrival_time"])
         end = window_end if window_end is not None else 2 * front - t_break

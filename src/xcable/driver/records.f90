@@ -17,7 +17,7 @@ module xcable_run_records
    public :: run_history, run_summary, static_info, run_observer, end_summary, static_figures, summary_text
    public :: slack_tension_fraction, note_min_strain
    public :: n_end_quantities, end_quantity_names, n_energy, energy_names, field_names, n_fields
-   public :: n_end_quantities_y, end_quantity_names_y, n_fields3, field3_names, field3_units
+   public :: n_end_quantities_y, end_quantity_names_y, n_fields3, field3_names
 
    !> An end counts as slack while its cell's tension is at most this fraction of the largest
    !> static tension (the summary's slack_time and slack intervals).
@@ -40,13 +40,13 @@ module xcable_run_records
    character(len=*), parameter :: field_names(n_fields) = &
       [character(len=9) :: 'tension', 'shear', 'strain', 'u', 'v', 'x', 'z', 'curvature']
    !> Fields a 3-D run writes besides them (driver/rod3d_fields.f90): y, the
-   !> velocity along y (w), the curvature about z (the plan view's), the
+   !> velocity along the global y axis (vy), the curvature about z (the plan view's), the
    !> twist rate Omega1 = dpsi/ds, the shear force along the binormal (Sb)
-   !> and the curvature about the normal (Omega2); and their units.
+   !> and the curvature about the normal (Omega2); their units and descriptions are in
+   !> the output registry (io/output_registry.f90).
    integer, parameter :: n_fields3 = 6
    character(len=*), parameter :: field3_names(n_fields3) = &
-      [character(len=14) :: 'y', 'w', 'curvature_z', 'twist', 'binormal_shear', 'curvature_n']
-   character(len=*), parameter :: field3_units(n_fields3) = [character(len=3) :: 'm', 'm/s', '1/m', '1/m', 'N', '1/m']
+      [character(len=14) :: 'y', 'vy', 'curvature_z', 'twist', 'binormal_shear', 'curvature_n']
 
    !> One record per accepted step (index 0: the static state at t = 0).
    type :: run_history

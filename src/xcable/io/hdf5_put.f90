@@ -6,9 +6,14 @@
 !> so that a caller can write many items and check once. Attributes are
 !> replaced if they exist (the status of a result file is rewritten). A
 !> reader of an absent attribute clears ok and leaves its value empty.
+!>
+!> Text attributes are fixed-length strings, or with `utf8` variable-length
+!> UTF-8 strings (the result file's: h5py reads those as str, fixed-length ones
+!> as bytes); get_text_attr reads both.
 module xcable_io_hdf5
    use xcable_kinds, only: dp
    use hdf5
+   use, intrinsic :: iso_c_binding, only: c_ptr, c_char, c_loc, c_f_pointer, c_size_t, c_null_char, c_associated, c_int
    implicit none
    private
    public :: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, put_text_attr
@@ -16,8 +21,9 @@ module xcable_io_hdf5
 
 contains
 
-   !> A 1-D real dataset, with a `units` attribute when units is given and not empty.
-   subroutine put_real_vector(loc, name, values, ok, units)
+   !> A 1-D real dataset, with a `units` attribute when units is given and not empty, and a
+   !> `description` when one is given (both UTF-8 text).
+   subroutine put_real_vector(loc, name, values, ok, units, description)
       !> File or group.
       integer(hid_t), intent(in) :: loc
       !> Dataset name.
@@ -28,6 +34,8 @@ contains
       logical, intent(inout) :: ok
       !> Units.
       character(*), intent(in), optional :: units
+      !> One line saying what it holds.
+      character(*), intent(in), optional :: description
       integer(hid_t) :: dset, space
       integer(hsize_t) :: dims(1)
       integer :: hdferr
@@ -48,15 +56,16 @@ contains
          end if
          ok = ok .and. hdferr == 0
          if (present(units)) then
-            if (len(units) > 0) call put_text_attr(dset, 'units', units, ok)
+            if (len(units) > 0) call put_text_attr(dset, 'units', units, ok, utf8=.true.)
          end if
+         if (present(description)) call put_text_attr(dset, 'description', description, ok, utf8=.true.)
          call h5dclose_f(dset, hdferr)
       end if
       call h5sclose_f(space, hdferr)
    end subroutine put_real_vector
 
-   !> A 1-D integer dataset.
-   subroutine put_int_vector(loc, name, values, ok)
+   !> A 1-D integer dataset, with `units` and `description` attributes when given (UTF-8 text).
+   subroutine put_int_vector(loc, name, values, ok, units, description)
       !> File or group.
       integer(hid_t), intent(in) :: loc
       !> Dataset name.
@@ -65,6 +74,8 @@ contains
       integer, intent(in) :: values(:)
       !> Cleared on an HDF5 error.
       logical, intent(inout) :: ok
+      !> Units and one line saying what it holds.
+      character(*), intent(in), optional :: units, description
       integer(hid_t) :: dset, space
       integer(hsize_t) :: dims(1)
       integer :: hdferr
@@ -76,6 +87,8 @@ contains
       else
          call h5dwrite_f(dset, H5T_NATIVE_INTEGER, values, dims, hdferr)
          ok = ok .and. hdferr == 0
+         if (present(units)) call put_text_attr(dset, 'units', units, ok, utf8=.true.)
+         if (present(description)) call put_text_attr(dset, 'description', description, ok, utf8=.true.)
          call h5dclose_f(dset, hdferr)
       end if
       call h5sclose_f(space, hdferr)
@@ -170,9 +183,10 @@ contains
       call h5sclose_f(space, hdferr)
    end subroutine put_int_attr
 
-   !> A fixed-length string attribute (replaced if it exists; an empty text is
-   !> written as one blank, since HDF5 has no zero-length fixed string).
-   subroutine put_text_attr(loc, name, text, ok)
+   !> A string attribute (replaced if it exists): fixed-length (an empty text is
+   !> written as one blank, since HDF5 has no zero-length fixed string), or with
+   !> utf8 a variable-length UTF-8 string (an empty text stays empty).
+   subroutine put_text_attr(loc, name, text, ok, utf8)
       !> File, group or dataset.
       integer(hid_t), intent(in) :: loc
       !> Attribute name.
@@ -181,17 +195,39 @@ contains
       character(*), intent(in) :: text
       !> Cleared on an HDF5 error.
       logical, intent(inout) :: ok
+      !> Write a variable-length UTF-8 string (default: fixed-length).
+      logical, intent(in), optional :: utf8
       integer(hid_t) :: attr, space, string_type
-      integer :: hdferr
+      integer :: hdferr, i
+      logical :: variable
+      character(kind=c_char), allocatable, target :: chars(:)
+      type(c_ptr), target :: pointers(1)
+      type(c_ptr) :: buffer
+      variable = .false.
+      if (present(utf8)) variable = utf8
       call drop_attr(loc, name, ok)
       call h5screate_f(H5S_SCALAR_F, space, hdferr)
-      call h5tcopy_f(H5T_NATIVE_CHARACTER, string_type, hdferr)
-      call h5tset_size_f(string_type, int(max(len(text), 1), size_t), hdferr)
+      if (variable) then
+         call h5tcopy_f(H5T_STRING, string_type, hdferr)
+         call h5tset_cset_f(string_type, H5T_CSET_UTF8_F, hdferr)
+      else
+         call h5tcopy_f(H5T_NATIVE_CHARACTER, string_type, hdferr)
+         call h5tset_size_f(string_type, int(max(len(text), 1), size_t), hdferr)
+      end if
       call h5acreate_f(loc, name, string_type, space, attr, hdferr)
       if (hdferr /= 0) then
          ok = .false.
       else
-         if (len(text) > 0) then
+         if (variable) then
+            allocate (chars(len(text) + 1))
+            do i = 1, len(text)
+               chars(i) = text(i:i)
+            end do
+            chars(len(text) + 1) = c_null_char
+            pointers(1) = c_loc(chars)
+            buffer = c_loc(pointers)
+            call h5awrite_f(attr, string_type, buffer, hdferr)
+         else if (len(text) > 0) then
             call h5awrite_f(attr, string_type, text, [1_hsize_t], hdferr)
          else
             call h5awrite_f(attr, string_type, ' ', [1_hsize_t], hdferr)
@@ -215,8 +251,8 @@ contains
       logical, intent(inout) :: ok
       integer(hid_t) :: attr, file_type, memory_type
       integer(size_t) :: length
-      integer :: hdferr, class
-      logical :: exists
+      integer :: hdferr, class, cset
+      logical :: exists, variable
       text = ''
       call h5aexists_f(loc, name, exists, hdferr)
       if (hdferr /= 0 .or. .not. exists) then
@@ -231,8 +267,16 @@ contains
       call h5aget_type_f(attr, file_type, hdferr)
       call h5tget_class_f(file_type, class, hdferr)
       call h5tget_size_f(file_type, length, hdferr)
+      variable = .false.
+      if (hdferr == 0 .and. class == H5T_STRING_F) call h5tis_variable_str_f(file_type, variable, hdferr)
       if (hdferr /= 0 .or. class /= H5T_STRING_F) then
          ok = .false.
+      else if (variable) then
+         call h5tget_cset_f(file_type, cset, hdferr)
+         call h5tcopy_f(H5T_STRING, memory_type, hdferr)
+         call h5tset_cset_f(memory_type, cset, hdferr)
+         call read_variable(text)
+         call h5tclose_f(memory_type, hdferr)
       else
          deallocate (text)
          allocate (character(len=int(length)) :: text)
@@ -248,6 +292,45 @@ contains
       end if
       call h5tclose_f(file_type, hdferr)
       call h5aclose_f(attr, hdferr)
+
+   contains
+
+      !> Read the variable-length string of attr (its memory freed by HDF5's allocator).
+      subroutine read_variable(value)
+         character(:), allocatable, intent(out) :: value
+         type(c_ptr), target :: pointers(1)
+         type(c_ptr) :: buffer
+         character(kind=c_char), pointer :: chars(:)
+         integer :: n, i
+         interface
+            function c_strlen(s) bind(c, name='strlen') result(n)
+               import :: c_ptr, c_size_t
+               type(c_ptr), value :: s
+               integer(c_size_t) :: n
+            end function c_strlen
+            function h5_free_memory(p) bind(c, name='H5free_memory') result(status)
+               import :: c_ptr, c_int
+               type(c_ptr), value :: p
+               integer(c_int) :: status
+            end function h5_free_memory
+         end interface
+         value = ''
+         buffer = c_loc(pointers)
+         call h5aread_f(attr, memory_type, buffer, hdferr)
+         if (hdferr /= 0) then
+            ok = .false.
+            return
+         end if
+         if (.not. c_associated(pointers(1))) return
+         n = int(c_strlen(pointers(1)))
+         call c_f_pointer(pointers(1), chars, [n])
+         value = repeat(' ', n)
+         do i = 1, n
+            value(i:i) = chars(i)
+         end do
+         if (h5_free_memory(pointers(1)) < 0) ok = .false.
+         value = trim(value)
+      end subroutine read_variable
    end subroutine get_text_attr
 
    !> A real scalar attribute (0 and ok cleared when absent).

@@ -7,16 +7,23 @@
 !>      run_id (the run's identifier, also in its checkpoints), resumes (how
 !>      often it was resumed from a checkpoint), model ('2d' or '3d')
 !>   /s, /time, and one 2-D dataset per field asked for in &output fields;
-!>      a 3-D run also /y, /w, /curvature_z, /twist, /binormal_shear,
+!>      a 3-D run also /y, /vy, /curvature_z, /twist, /binormal_shear,
 !>      /curvature_n (field3_names; driver/rod3d_fields.f90)
 !>   /static/{s,x,z,tension,shear,strain,u,v,curvature} (+ beta0, beta3 of the
 !>      box scheme; + the 3-D fields of a 3-D run), attributes span, sag,
 !>      end_angle, tension_a, tension_b, newton_iterations
-!>   /history/{time,step,newton_iterations,rejected}
+!>   /history/{time,dt,newton_iterations,rejected}
 !>   /history/<end>/{x,z,vx,vz,tension,force_x,force_z} for each end (+ y, vy,
 !>      force_y of a 3-D run)
 !>   /history/energy/{strain,kinetic,bending,gravity,work,dissipation,ledger} with the ledger
 !>   /summary attributes
+!> Every dataset, group and attribute is one of the output registry
+!> (io/output_registry.f90), which gives each dataset its `units` and
+!> `description` attributes and each group its `description`; a path it does
+!> not list is not written (the write fails, naming it). /time and /s are
+!> dimension scales ('time', 'node') attached to every [time, node] dataset,
+!> /static/s to the static fields, /history/time to the history. Texts are
+!> variable-length UTF-8 strings.
 !> The status is 'running' from creation, so a run that is killed never looks
 !> complete; 'interrupted' (with /summary, without /history) when it stopped
 !> at SIGTERM with a checkpoint. Only the fields asked for are written.
@@ -31,13 +38,15 @@ module xcable_io_output
    use xcable_strings, only: str
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
                                  field_names, n_fields, n_end_quantities, end_quantity_names, n_end_quantities_y, &
-                                 end_quantity_names_y, n_fields3, field3_names, field3_units
+                                 end_quantity_names_y, n_fields3, field3_names
    use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr, &
-                             get_text_attr, get_int_attr
+                             get_text_attr, get_int_attr, get_real_attr
+   use xcable_io_output_registry, only: output_item, find_output, output_items
    use xcable_system_posix, only: replace_file
    use xcable_version, only: code_version
    use xcable_io_number_text, only: put_es, put_int
    use hdf5
+   use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f, h5dsis_attached_f, h5dsset_label_f
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
    private
@@ -77,6 +86,8 @@ module xcable_io_output
       !> pending until they arrive.
       logical :: three_d = .false.
       real(dp), allocatable :: pending(:, :)
+      !> The first path a write found missing from the output registry (for the error message).
+      character(:), allocatable :: unregistered
    contains
       procedure :: create => result_create
       procedure :: reopen => result_reopen
@@ -147,18 +158,19 @@ contains
          return
       end if
       ok = .true.
-      call put_text_attr(self%file, 'status', 'running', ok)
-      call put_text_attr(self%file, 'namelist', namelist_text, ok)
-      call put_text_attr(self%file, 'input_file', input_file, ok)
-      call put_text_attr(self%file, 'code_version', code_version, ok)
-      call put_text_attr(self%file, 'compiler_version', compiler_version(), ok)
-      call put_text_attr(self%file, 'compiler_options', compiler_options(), ok)
-      call put_text_attr(self%file, 'scheme', scheme, ok)
-      call put_text_attr(self%file, 'terms', terms, ok)
-      if (present(run_id)) call put_text_attr(self%file, 'run_id', run_id, ok)
-      call put_real_vector(self%file, 's', s, ok, 'm')
+      call put_text(self%file, 'status', 'running', ok)
+      call put_text(self%file, 'namelist', namelist_text, ok)
+      call put_text(self%file, 'input_file', input_file, ok)
+      call put_text(self%file, 'code_version', code_version, ok)
+      call put_text(self%file, 'compiler_version', compiler_version(), ok)
+      call put_text(self%file, 'compiler_options', compiler_options(), ok)
+      call put_text(self%file, 'scheme', scheme, ok)
+      call put_text(self%file, 'terms', terms, ok)
+      if (present(run_id)) call put_text(self%file, 'run_id', run_id, ok)
+      call describe_group(self, self%file, '/', ok)
+      call put_reals(self, self%file, '', 's', s, ok)
       if (.not. ok) then
-         call fatal_error(error, "writing the provenance to '"//path//"' failed", stat_io)
+         call fatal_error(error, "writing the provenance to '"//path//"' failed"//why(self), stat_io)
          return
       end if
       if (gnuplot) then
@@ -191,13 +203,16 @@ contains
 
    contains
 
-      !> The 3-D columns of the header: ' y[m] w[m/s] ...'.
+      !> The 3-D columns of the header: ' y[m] vy[m/s] ...'.
       function extra_header() result(text)
          character(:), allocatable :: text
          integer :: q
+         type(output_item) :: item
+         logical :: found
          text = ''
          do q = 1, n_fields3
-            text = text//' '//trim(field3_names(q))//'['//trim(field3_units(q))//']'
+            call find_output('/'//trim(field3_names(q)), item, found)
+            text = text//' '//trim(field3_names(q))//'['//trim(item%units)//']'
          end do
       end function extra_header
    end subroutine result_create
@@ -333,15 +348,16 @@ contains
       ! each dataset built afresh. Until the rename the old file stays as it was.
       call copy_kept(error)
       if (allocated(error)) return
+      call lay_out(self, ok)
       resumes = 0
       call get_int_attr(self%file, 'resumes', resumes, exists)
       call put_int_attr(self%file, 'resumes', resumes + 1, ok)
-      call put_text_attr(self%file, 'namelist', namelist_text, ok)
-      call put_text_attr(self%file, 'input_file', input_file, ok)
-      call put_text_attr(self%file, 'status', 'running', ok)
+      call put_text(self%file, 'namelist', namelist_text, ok)
+      call put_text(self%file, 'input_file', input_file, ok)
+      call put_text(self%file, 'status', 'running', ok)
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
       if (.not. ok .or. hdferr /= 0) then
-         call fatal_error(error, "reopening '"//path//"' to resume: an HDF5 write failed", stat_io)
+         call fatal_error(error, "reopening '"//path//"' to resume: an HDF5 write failed"//why(self), stat_io)
          return
       end if
       self%snapshots = snapshots
@@ -364,10 +380,10 @@ contains
       !> (closed), and the partial copy removed.
       subroutine copy_kept(error)
          type(error_type), allocatable, intent(out) :: error
-         character(len=*), parameter :: text_attrs(10) = [character(len=16) :: 'status', 'namelist', &
+         character(len=*), parameter :: text_attrs(11) = [character(len=16) :: 'status', 'namelist', &
             'input_file', 'code_version', 'compiler_version', 'compiler_options', 'scheme', 'terms', 'run_id', &
-            'model']
-         integer(hid_t) :: new, access
+            'model', 'description']
+         integer(hid_t) :: new, access, copy_list
          character(:), allocatable :: temporary, text, message
          logical :: found, copied
          integer :: q, unit, status_code
@@ -390,20 +406,24 @@ contains
             call h5aexists_f(self%file, trim(text_attrs(q)), found, hdferr)
             if (.not. found) cycle
             call get_text_attr(self%file, trim(text_attrs(q)), text, copied)
-            call put_text_attr(new, trim(text_attrs(q)), text, copied)
+            call put_text(new, trim(text_attrs(q)), text, copied)
          end do
          call h5aexists_f(self%file, 'resumes', found, hdferr)
          if (found) then
             call get_int_attr(self%file, 'resumes', resumes, copied)
             call put_int_attr(new, 'resumes', resumes, copied)
          end if
-         call h5ocopy_f(self%file, 's', new, 's', hdferr)
+         ! /s and /static are copied without their attributes: HDF5 1.10 crashes copying the
+         ! dimension scales' references (H5Ocopy of /s, in H5T_convert). Their units and
+         ! descriptions come again from the registry, their scales from lay_out, the static
+         ! figures are copied one by one.
+         call h5pcreate_f(H5P_OBJECT_COPY_F, copy_list, hdferr)
+         call h5pset_copy_object_f(copy_list, H5O_COPY_WITHOUT_ATTR_FLAG_F, hdferr)
+         call h5ocopy_f(self%file, 's', new, 's', hdferr, ocpypl_id=copy_list)
          copied = copied .and. hdferr == 0
          call h5lexists_f(self%file, 'static', found, hdferr)
-         if (found) then
-            call h5ocopy_f(self%file, 'static', new, 'static', hdferr)
-            copied = copied .and. hdferr == 0
-         end if
+         if (found) call copy_static(new, copy_list, copied)
+         call h5pclose_f(copy_list, hdferr)
          call copy_rows(self%file, new, 'time', 1, snapshots, copied)
          do q = 1, n_fields
             if (self%want(q)) call copy_rows(self%file, new, trim(field_names(q)), 2, snapshots, copied)
@@ -434,7 +454,48 @@ contains
             call fatal_error(error, "the result file '"//path//"' cannot be opened again after its kept part "// &
                              "was copied", stat_io)
          end if
+
       end subroutine copy_kept
+      !> /static into new: its datasets without attributes (copy_list), described from the
+      !> registry; its figures (attributes) one by one.
+      subroutine copy_static(new, copy_list, copied)
+         integer(hid_t), intent(in) :: new, copy_list
+         logical, intent(inout) :: copied
+         character(len=*), parameter :: names(n_fields + n_fields3 + 3) = [character(len=14) :: 's', &
+                                                                             field_names, field3_names, 'beta0', 'beta3']
+         type(output_item), allocatable :: items(:)
+         integer(hid_t) :: from, to
+         integer :: k, value_int, hdferr
+         real(dp) :: value
+         logical :: exists
+         call h5gopen_f(self%file, 'static', from, hdferr)
+         call h5gcreate_f(new, 'static', to, hdferr)
+         copied = copied .and. hdferr == 0
+         if (hdferr /= 0) return
+         call describe_group(self, to, '/static', copied)
+         do k = 1, size(names)
+            call h5lexists_f(from, trim(names(k)), exists, hdferr)
+            if (.not. exists) cycle
+            call h5ocopy_f(from, trim(names(k)), to, trim(names(k)), hdferr, ocpypl_id=copy_list)
+            copied = copied .and. hdferr == 0
+            call describe_dataset(self, to, '/static', trim(names(k)), copied)
+         end do
+         items = output_items()
+         do k = 1, size(items)
+            if (index(items(k)%path, '/static@') /= 1) cycle
+            call h5aexists_f(from, trim(items(k)%path(9:)), exists, hdferr)
+            if (.not. exists) cycle
+            if (items(k)%units == '1') then
+               call get_int_attr(from, trim(items(k)%path(9:)), value_int, copied)
+               call put_int_attr(to, trim(items(k)%path(9:)), value_int, copied)
+            else
+               call get_real_attr(from, trim(items(k)%path(9:)), value, copied)
+               call put_real_attr(to, trim(items(k)%path(9:)), value, copied)
+            end if
+         end do
+         call h5gclose_f(to, hdferr)
+         call h5gclose_f(from, hdferr)
+      end subroutine copy_static
 
       !> Refuse: close the file unchanged.
       subroutine refuse(message)
@@ -614,17 +675,18 @@ contains
       call h5gcreate_f(self%file, 'static', group, hdferr)
       ok = hdferr == 0
       if (ok) then
-         call put_real_vector(group, 's', info%s, ok, 'm')
+         call describe_group(self, group, '/static', ok)
+         call put_reals(self, group, '/static', 's', info%s, ok)
          do i = 1, n_fields
-            call put_real_vector(group, trim(field_names(i)), info%fields(:, i), ok, field_unit(i))
+            call put_reals(self, group, '/static', trim(field_names(i)), info%fields(:, i), ok)
          end do
          if (allocated(info%beta0)) then
-            call put_real_vector(group, 'beta0', info%beta0, ok)
-            call put_real_vector(group, 'beta3', info%beta3, ok)
+            call put_reals(self, group, '/static', 'beta0', info%beta0, ok)
+            call put_reals(self, group, '/static', 'beta3', info%beta3, ok)
          end if
          if (allocated(info%extra)) then
             do i = 1, n_fields3
-               call put_real_vector(group, trim(field3_names(i)), info%extra(:, i), ok, trim(field3_units(i)))
+               call put_reals(self, group, '/static', trim(field3_names(i)), info%extra(:, i), ok)
             end do
          end if
          call put_real_attr(group, 'span', info%span, ok)
@@ -637,10 +699,13 @@ contains
          call put_real_attr(group, 'lowest_s', info%lowest_s, ok)
          call put_real_attr(group, 'max_tension', info%max_tension, ok)
          call put_int_attr(group, 'newton_iterations', info%newton_iterations, ok)
+         call check_attributes(self, group, '/static', ok)
          call h5gclose_f(group, hdferr)
       end if
+      call lay_out(self, ok)
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
-      if (.not. ok .or. hdferr /= 0) call fatal_error(error, "writing /static to '"//self%path//"' failed", stat_io)
+      if (.not. ok .or. hdferr /= 0) call fatal_error(error, "writing /static to '"//self%path//"' failed"//why(self), &
+                                                      stat_io)
    end subroutine result_static
 
    !> Append one snapshot (run_observer).
@@ -661,9 +726,10 @@ contains
       do i = 1, n_fields
          if (self%want(i)) call append(self%file, trim(field_names(i)), fields(:, i), 2, ok, self%kept(i))
       end do
+      if (self%snapshots == 1) call lay_out(self, ok)
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
       if (.not. ok .or. hdferr /= 0) then
-         call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed", stat_io)
+         call fatal_error(error, "writing snapshot at t = "//str(t)//" s to '"//self%path//"' failed"//why(self), stat_io)
          return
       end if
       if (self%gnuplot_text) then
@@ -715,19 +781,23 @@ contains
       character(*), intent(in) :: names(:)
       !> Fields (nodes, size(names)).
       real(dp), intent(in) :: fields(:, :)
-      !> Error when writing fails.
+      !> Error when writing fails (a name the output registry lacks is not written).
       type(error_type), allocatable, intent(out) :: error
       integer :: i, hdferr
       logical :: ok
+      character(:), allocatable :: units, description
       ok = .true.
       do i = 1, size(names)
-         call append(self%file, trim(names(i)), fields(:, i), 2, ok)
+         call lookup(self, '/'//trim(names(i)), units, description, ok)
+         if (len(description) > 0) call append(self%file, trim(names(i)), fields(:, i), 2, ok)
       end do
+      if (self%snapshots == 1) call lay_out(self, ok)
       ! On disk before a checkpoint can count this snapshot (as result_snapshot's fields).
       call h5fflush_f(self%file, H5F_SCOPE_GLOBAL_F, hdferr)
       ok = ok .and. hdferr == 0
       if (.not. ok) then
-         call fatal_error(error, 'writing the 3-D fields at t = '//str(t)//" s to '"//self%path//"' failed", stat_io)
+         call fatal_error(error, 'writing the 3-D fields at t = '//str(t)//" s to '"//self%path//"' failed"// &
+                          why(self), stat_io)
          return
       end if
       if (self%gnuplot_text .and. self%three_d .and. allocated(self%pending)) then
@@ -746,8 +816,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       logical :: ok
       ok = .true.
-      call put_text_attr(self%file, name, text, ok)
-      if (.not. ok) call fatal_error(error, "writing the attribute '"//name//"' to '"//self%path//"' failed", stat_io)
+      call put_text(self%file, name, text, ok)
+      call check_attributes(self, self%file, '/', ok)
+      if (.not. ok) call fatal_error(error, "writing the attribute '"//name//"' to '"//self%path//"' failed"// &
+                                     why(self), stat_io)
    end subroutine result_mark
 
    !> Write the history of the run (and its gnuplot text).
@@ -758,31 +830,40 @@ contains
       type(run_history), intent(in) :: history
       !> Error when writing fails.
       type(error_type), allocatable, intent(out) :: error
-      integer(hid_t) :: group, egroup
+      integer(hid_t) :: group, egroup, scale
       integer :: hdferr, n, i, j, q, unit, ios, n_ends, pos
       logical :: ok
       character(:), allocatable :: header, line
-      character(len=3), parameter :: units_y(n_end_quantities_y) = [character(len=3) :: 'm', 'm/s', 'N']
       n = history%n
       n_ends = size(history%end_labels)
       call h5gcreate_f(self%file, 'history', group, hdferr)
       ok = hdferr == 0
       if (ok) then
-         call put_real_vector(group, 'time', history%time(0:n), ok, 's')
-         call put_real_vector(group, 'step', history%step(0:n), ok, 's')
-         call put_int_vector(group, 'newton_iterations', history%newton_iterations(0:n), ok)
-         call put_int_vector(group, 'rejected', history%rejected(0:n), ok)
+         call describe_group(self, group, '/history', ok)
+         call put_reals(self, group, '/history', 'time', history%time(0:n), ok)
+         call put_reals(self, group, '/history', 'dt', history%step(0:n), ok)
+         call put_ints(self, group, '/history', 'newton_iterations', history%newton_iterations(0:n), ok)
+         call put_ints(self, group, '/history', 'rejected', history%rejected(0:n), ok)
+         ! /history/time is the dimension scale of every history dataset.
+         call open_scale(group, 'time', 'time', scale, ok)
+         call attach(scale, group, 'dt', 0, 'time', ok)
+         call attach(scale, group, 'newton_iterations', 0, 'time', ok)
+         call attach(scale, group, 'rejected', 0, 'time', ok)
          do j = 1, n_ends
             call h5gcreate_f(group, trim(history%end_labels(j)), egroup, hdferr)
             ok = ok .and. hdferr == 0
             if (hdferr /= 0) cycle
+            call describe_group(self, egroup, '/history/'//trim(history%end_labels(j)), ok)
             do q = 1, n_end_quantities
-               call put_real_vector(egroup, trim(end_quantity_names(q)), history%ends(q, j, 0:n), ok, end_unit(q))
+               call put_reals(self, egroup, '/history/'//trim(history%end_labels(j)), trim(end_quantity_names(q)), &
+                             history%ends(q, j, 0:n), ok)
+               call attach(scale, egroup, trim(end_quantity_names(q)), 0, 'time', ok)
             end do
             if (allocated(history%ends_y)) then
                do q = 1, n_end_quantities_y
-                  call put_real_vector(egroup, trim(end_quantity_names_y(q)), history%ends_y(q, j, 0:n), ok, &
-                                       trim(units_y(q)))
+                  call put_reals(self, egroup, '/history/'//trim(history%end_labels(j)), &
+                                trim(end_quantity_names_y(q)), history%ends_y(q, j, 0:n), ok)
+                  call attach(scale, egroup, trim(end_quantity_names_y(q)), 0, 'time', ok)
                end do
             end if
             call h5gclose_f(egroup, hdferr)
@@ -791,16 +872,19 @@ contains
             call h5gcreate_f(group, 'energy', egroup, hdferr)
             ok = ok .and. hdferr == 0
             if (hdferr == 0) then
+               call describe_group(self, egroup, '/history/energy', ok)
                do i = 1, n_energy
-                  call put_real_vector(egroup, trim(energy_names(i)), history%energy(i, 0:n), ok, 'J')
+                  call put_reals(self, egroup, '/history/energy', trim(energy_names(i)), history%energy(i, 0:n), ok)
+                  call attach(scale, egroup, trim(energy_names(i)), 0, 'time', ok)
                end do
                call h5gclose_f(egroup, hdferr)
             end if
          end if
+         if (scale >= 0) call h5dclose_f(scale, hdferr)
          call h5gclose_f(group, hdferr)
       end if
       if (.not. ok) then
-         call fatal_error(error, "writing /history to '"//self%path//"' failed", stat_io)
+         call fatal_error(error, "writing /history to '"//self%path//"' failed"//why(self), stat_io)
          return
       end if
       if (.not. allocated(self%text_stem)) return
@@ -916,6 +1000,7 @@ contains
       call h5gcreate_f(self%file, 'summary', group, hdferr)
       ok = hdferr == 0
       if (ok) then
+         call describe_group(self, group, '/summary', ok)
          ! A figure that does not apply to the scene is absent (no -1, no 0 for "none").
          if (present(info)) then
             call put_real_attr(group, 'static_tension_a', info%tension_a, ok)
@@ -930,7 +1015,7 @@ contains
          call put_real_attr(group, 'peak_end_speed', summary%peak_end_speed, ok)
          call put_real_attr(group, 'peak_end_speed_time', summary%peak_end_speed_time, ok)
          if (len_trim(summary%peak_end_speed_end) > 0) &
-            call put_text_attr(group, 'peak_end_speed_end', trim(summary%peak_end_speed_end), ok)
+            call put_text(group, 'peak_end_speed_end', trim(summary%peak_end_speed_end), ok)
          if (summary%has_fixed_end) then
             call put_real_attr(group, 'min_fixed_end_tension', summary%min_fixed_end_tension, ok)
             call put_real_attr(group, 'min_fixed_end_tension_time', summary%min_fixed_end_tension_time, ok)
@@ -959,12 +1044,12 @@ contains
          call put_int_attr(group, 'newton_iterations', summary%newton_iterations, ok)
          call put_int_attr(group, 'max_newton_iterations', summary%max_newton_iterations, ok)
          call put_int_attr(group, 'factorisations', summary%factorisations, ok)
-         if (allocated(summary%warnings)) call put_text_attr(group, 'warnings', summary%warnings, ok)
+         if (allocated(summary%warnings)) call put_text(group, 'warnings', summary%warnings, ok)
          if (allocated(summary%ends)) then
             do j = 1, size(summary%ends)
                label = trim(end_labels(j))
                associate (e => summary%ends(j))
-                  if (len_trim(e%kind) > 0) call put_text_attr(group, label//'_kind', trim(e%kind), ok)
+                  if (len_trim(e%kind) > 0) call put_text(group, label//'_kind', trim(e%kind), ok)
                   call put_real_attr(group, label//'_peak_speed', e%peak_speed, ok)
                   call put_real_attr(group, label//'_peak_speed_time', e%peak_speed_time, ok)
                   call put_real_attr(group, label//'_min_tension', e%min_tension, ok)
@@ -976,16 +1061,17 @@ contains
                      call put_real_attr(group, label//'_front_arrival_time', e%front_arrival_time, ok)
                   if (allocated(e%slack_intervals)) then
                      if (size(e%slack_intervals, 2) > 0) then
-                        call put_real_vector(group, label//'_slack_start', e%slack_intervals(1, :), ok, 's')
-                        call put_real_vector(group, label//'_slack_end', e%slack_intervals(2, :), ok, 's')
+                        call put_reals(self, group, '/summary', label//'_slack_start', e%slack_intervals(1, :), ok)
+                        call put_reals(self, group, '/summary', label//'_slack_end', e%slack_intervals(2, :), ok)
                      end if
                   end if
                end associate
             end do
          end if
+         call check_attributes(self, group, '/summary', ok)
          call h5gclose_f(group, hdferr)
       end if
-      if (.not. ok) call fatal_error(error, "writing /summary to '"//self%path//"' failed", stat_io)
+      if (.not. ok) call fatal_error(error, "writing /summary to '"//self%path//"' failed"//why(self), stat_io)
    end subroutine result_write_summary
 
    !> Close the snapshot datasets kept open by result_snapshot (before the file).
@@ -1023,36 +1109,254 @@ contains
       logical :: ok
       if (self%file < 0) return
       ok = .true.
-      if (present(reason)) call put_text_attr(self%file, 'failure_reason', reason, ok)
+      if (present(reason)) call put_text(self%file, 'failure_reason', reason, ok)
       if (present(time)) call put_real_attr(self%file, 'failure_time', time, ok)
-      if (present(warnings)) call put_text_attr(self%file, 'warnings', warnings, ok)
-      call put_text_attr(self%file, 'status', status, ok)
+      if (present(warnings)) call put_text(self%file, 'warnings', warnings, ok)
+      call put_text(self%file, 'status', status, ok)
+      call check_attributes(self, self%file, '/', ok)
       call close_kept(self, ok)
       call h5fclose_f(self%file, hdferr)
       if ((.not. ok .or. hdferr /= 0) .and. present(error)) &
-         call fatal_error(error, "writing the status '"//status//"' to '"//self%path//"' failed", stat_io)
+         call fatal_error(error, "writing the status '"//status//"' to '"//self%path//"' failed"//why(self), stat_io)
       self%file = -1
       call h5close_f(hdferr)
       if (self%gnuplot_text) close (self%text_unit)
       self%gnuplot_text = .false.
    end subroutine result_finish
 
-   !> Units of a snapshot field.
-   pure function field_unit(i) result(u)
-      integer, intent(in) :: i
-      character(:), allocatable :: u
-      character(len=5), parameter :: units(n_fields) = [character(len=5) :: 'N', 'N', '', 'm/s', 'm/s', 'm', 'm', '1/m']
-      u = trim(units(i))
-   end function field_unit
+   !> A text attribute of the result file: a variable-length UTF-8 string.
+   subroutine put_text(loc, name, text, ok)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name, text
+      logical, intent(inout) :: ok
+      call put_text_attr(loc, name, text, ok, utf8=.true.)
+   end subroutine put_text
 
-   !> Units of an end quantity.
-   pure function end_unit(i) result(u)
-      integer, intent(in) :: i
-      character(:), allocatable :: u
-      character(len=3), parameter :: units(n_end_quantities) = [character(len=3) :: 'm', 'm', 'm/s', 'm/s', 'N', &
-                                                                 'N', 'N']
-      u = trim(units(i))
-   end function end_unit
+   !> The registry's units and description of a path ('/group/name' or '/group@name'); when the
+   !> registry does not list it, ok is cleared and the path kept for the error message.
+   subroutine lookup(self, path, units, description, ok)
+      class(result_file), intent(inout) :: self
+      character(*), intent(in) :: path
+      character(:), allocatable, intent(out) :: units, description
+      logical, intent(inout) :: ok
+      type(output_item) :: item
+      logical :: found
+      call find_output(path, item, found)
+      units = trim(item%units)
+      description = trim(item%description)
+      if (.not. found) then
+         ok = .false.
+         description = ''
+         if (.not. allocated(self%unregistered)) self%unregistered = path
+      end if
+   end subroutine lookup
+
+   !> ' (the path is not in the output registry)' after a failed write that found one, else ''.
+   function why(self) result(text)
+      class(result_file), intent(in) :: self
+      character(:), allocatable :: text
+      text = ''
+      if (allocated(self%unregistered)) text = " ('"//self%unregistered// &
+                                               "' is not in the output registry, io/output_registry.f90)"
+   end function why
+
+   !> A real dataset name of the group at path group ('' : the root) with the registry's units
+   !> and description; not written when the registry does not list it (ok cleared).
+   subroutine put_reals(self, loc, group, name, values, ok)
+      class(result_file), intent(inout) :: self
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: group, name
+      real(dp), intent(in) :: values(:)
+      logical, intent(inout) :: ok
+      character(:), allocatable :: units, description
+      call lookup(self, group//'/'//name, units, description, ok)
+      if (len(description) > 0) call put_real_vector(loc, name, values, ok, units, description)
+   end subroutine put_reals
+
+   !> An integer dataset as put_reals.
+   subroutine put_ints(self, loc, group, name, values, ok)
+      class(result_file), intent(inout) :: self
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: group, name
+      integer, intent(in) :: values(:)
+      logical, intent(inout) :: ok
+      character(:), allocatable :: units, description
+      call lookup(self, group//'/'//name, units, description, ok)
+      if (len(description) > 0) call put_int_vector(loc, name, values, ok, units, description)
+   end subroutine put_ints
+
+   !> The registry's description of a group (or the root, path '/') as its attribute.
+   subroutine describe_group(self, loc, path, ok)
+      class(result_file), intent(inout) :: self
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: path
+      logical, intent(inout) :: ok
+      character(:), allocatable :: units, description
+      call lookup(self, path, units, description, ok)
+      if (len(description) > 0) call put_text(loc, 'description', description, ok)
+   end subroutine describe_group
+
+   !> The registry's units and description on the dataset name of the group at path group
+   !> ('' : the root), when it exists and lacks them (the snapshot datasets, made row by row).
+   subroutine describe_dataset(self, loc, group, name, ok)
+      class(result_file), intent(inout) :: self
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: group, name
+      logical, intent(inout) :: ok
+      character(:), allocatable :: units, description
+      integer(hid_t) :: dset
+      integer :: hdferr
+      logical :: exists
+      call h5lexists_f(loc, name, exists, hdferr)
+      if (.not. exists) return
+      call h5dopen_f(loc, name, dset, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      call h5aexists_f(dset, 'description', exists, hdferr)
+      if (.not. exists) then
+         call lookup(self, group//'/'//name, units, description, ok)
+         if (len(description) > 0) then
+            call put_text(dset, 'units', units, ok)
+            call put_text(dset, 'description', description, ok)
+         end if
+      end if
+      call h5dclose_f(dset, hdferr)
+   end subroutine describe_dataset
+
+   !> Every attribute of loc (the group at path, '/' for the root) must be in the registry
+   !> (those of HDF5's dimension scales and `description` aside); ok cleared if one is not.
+   subroutine check_attributes(self, loc, path, ok)
+      class(result_file), intent(inout) :: self
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: path
+      logical, intent(inout) :: ok
+      integer :: count, k, hdferr
+      character(len=64) :: name
+      character(:), allocatable :: units, description
+      call h5aget_num_attrs_f(loc, count, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      do k = 0, count - 1
+         call h5aget_name_by_idx_f(loc, '.', H5_INDEX_NAME_F, H5_ITER_INC_F, int(k, hsize_t), name, hdferr)
+         if (hdferr /= 0) then
+            ok = .false.
+            cycle
+         end if
+         if (trim(name) == 'description') cycle
+         if (path == '/') then
+            call lookup(self, '/@'//trim(name), units, description, ok)
+         else
+            call lookup(self, path//'@'//trim(name), units, description, ok)
+         end if
+      end do
+   end subroutine check_attributes
+
+   !> The snapshot and static datasets described (describe_dataset) and given their dimension
+   !> scales: /time ('time') and /s ('node') made scales and attached to every [time, node]
+   !> dataset, /static/s to the static fields. Each step is skipped when done already, so this
+   !> runs after the static state, the first snapshot, its 3-D fields and a reopen alike.
+   subroutine lay_out(self, ok)
+      class(result_file), intent(inout) :: self
+      logical, intent(inout) :: ok
+      character(len=*), parameter :: names(n_fields + n_fields3 + 2) = [character(len=14) :: field_names, &
+                                                                          field3_names, 'beta0', 'beta3']
+      integer(hid_t) :: time_scale, node_scale, group
+      integer :: q, hdferr
+      logical :: exists
+      call describe_dataset(self, self%file, '', 'time', ok)
+      call describe_dataset(self, self%file, '', 's', ok)
+      do q = 1, n_fields + n_fields3
+         call describe_dataset(self, self%file, '', trim(names(q)), ok)
+      end do
+      call open_scale(self%file, 'time', 'time', time_scale, ok)
+      call open_scale(self%file, 's', 'node', node_scale, ok)
+      if (time_scale >= 0 .and. node_scale >= 0) then
+         do q = 1, n_fields + n_fields3
+            call attach(time_scale, self%file, trim(names(q)), 0, 'time', ok)
+            call attach(node_scale, self%file, trim(names(q)), 1, 'node', ok)
+         end do
+      end if
+      if (time_scale >= 0) call h5dclose_f(time_scale, hdferr)
+      if (node_scale >= 0) call h5dclose_f(node_scale, hdferr)
+      call h5lexists_f(self%file, 'static', exists, hdferr)
+      if (.not. exists) return
+      call h5gopen_f(self%file, 'static', group, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      call open_scale(group, 's', 'node', node_scale, ok)
+      if (node_scale >= 0) then
+         do q = 1, size(names)
+            call attach(node_scale, group, trim(names(q)), 0, 'node', ok)
+         end do
+         call h5dclose_f(node_scale, hdferr)
+      end if
+      call h5gclose_f(group, hdferr)
+   end subroutine lay_out
+
+   !> Open the dataset name of loc as a dimension scale called scale_name (made one if it is
+   !> not yet); scale is -1 when the dataset does not exist.
+   subroutine open_scale(loc, name, scale_name, scale, ok)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name, scale_name
+      integer(hid_t), intent(out) :: scale
+      logical, intent(inout) :: ok
+      integer :: hdferr
+      logical :: exists
+      scale = -1
+      call h5lexists_f(loc, name, exists, hdferr)
+      if (.not. exists) return
+      call h5dopen_f(loc, name, scale, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         scale = -1
+         return
+      end if
+      call h5aexists_f(scale, 'CLASS', exists, hdferr)
+      if (.not. exists) then
+         call h5dsset_scale_f(scale, hdferr, scale_name)
+         ok = ok .and. hdferr == 0
+      end if
+   end subroutine open_scale
+
+   !> Attach the dimension scale `scale` to dimension `dimension` (0 the slowest, as h5py
+   !> and C count) of the dataset name of loc, labelled `label`, unless it is attached
+   !> already; nothing when the dataset does not exist.
+   subroutine attach(scale, loc, name, dimension, label, ok)
+      integer(hid_t), intent(in) :: scale, loc
+      character(*), intent(in) :: name, label
+      integer, intent(in) :: dimension
+      logical, intent(inout) :: ok
+      integer(hid_t) :: dset
+      integer :: hdferr, index
+      logical :: exists, attached
+      call h5lexists_f(loc, name, exists, hdferr)
+      if (.not. exists) return
+      call h5dopen_f(loc, name, dset, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      ! HDF5 1.10's Fortran interface takes the dimension as C counts it, from 1 (checked with
+      ! h5py: test/test_outputs.py).
+      index = dimension + 1
+      call h5dsis_attached_f(dset, scale, index, attached, hdferr)
+      if (hdferr /= 0) attached = .false.
+      if (.not. attached) then
+         call h5dsattach_scale_f(dset, scale, index, hdferr)
+         ok = ok .and. hdferr == 0
+         call h5dsset_label_f(dset, index, label, hdferr)
+         ok = ok .and. hdferr == 0
+      end if
+      call h5dclose_f(dset, hdferr)
+   end subroutine attach
+
+
 
    !> Append a value (rank 1) or a row of node values (rank 2) to the
    !> extendible dataset name, created on first use.

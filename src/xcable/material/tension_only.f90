@@ -178,14 +178,15 @@ contains
       real(dp) :: ez, h, qc, dq, f, fp, fpp, mid, d, dd
       ez = law%strain_slack
       h = eps1 - eps0
-      if (max(eps0, eps1) <= ez) then
-         qc = 0
-         dq = 0
-      else if (min(eps0, eps1) >= ez .and. abs(h) < small_step) then
+      if (min(eps0, eps1) >= ez .and. abs(h) < small_step) then
+         ! (Both at eps_z: q = 0 and the taut side's dq = f'(eps_z) / 2.)
          mid = 0.5_dp*(eps0 + eps1)
          call law%tension_stiffness_slope(mid, f, fp, fpp)
          qc = f + fpp*h*h/24
          dq = 0.5_dp*fp + fpp*h/12
+      else if (max(eps0, eps1) <= ez) then
+         qc = 0
+         dq = 0
       else
          ! Straddling the kink the Taylor form is not the divided difference (f'' jumps there):
          ! the exact one, at any h.

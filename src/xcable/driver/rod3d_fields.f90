@@ -28,6 +28,7 @@
 module xcable_rod3d_fields
    use xcable_kinds, only: dp
    use xcable_vector3, only: cross3
+   use xcable_material_tension_only, only: damped_tension
    use xcable_rod_run, only: end_value
    use xcable_model_rod3d, only: rod3d_piece
    use xcable_run_records, only: n_fields3, field3_names
@@ -71,8 +72,9 @@ contains
       do j = 1, n - 1
          eps(j) = l(j) - 1
          ten(j) = piece%law%tension(eps(j))
-         if (piece%damping > 0) ten(j) = ten(j) + piece%damping*dot_product(e(:, j), v(:, j + 1) - v(:, j))/ &
-                                         (piece%ds(j)*l(j))
+         if (piece%damping > 0) ten(j) = damped_tension(piece%law, eps(j), ten(j), &
+                                                        piece%damping*dot_product(e(:, j), v(:, j + 1) - v(:, j))/ &
+                                                        (piece%ds(j)*l(j)))
          dm = (mom(:, j + 1) - mom(:, j))/(piece%ds(j)*l(j))
          sn(j) = -dot_product(dm, bc(:, j))
          sb(j) = dot_product(dm, nc(:, j))

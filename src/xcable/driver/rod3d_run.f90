@@ -9,8 +9,9 @@ module xcable_rod3d_run
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, prefix_error
    use xcable_strings, only: str
-   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, couple_plane
+   use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, couple_plane, small_strain_step
    use xcable_ends_end, only: end_condition
+   use xcable_material_tension_only, only: slack_dissipation
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    implicit none
    private
@@ -187,7 +188,12 @@ contains
          do c = 1, n - 1
             eps0 = piece%l0(c) - 1
             eps1 = piece%l1(c) - 1
-            self%dissipated = self%dissipated + piece%damping*piece%ds(c)*(eps1 - eps0)**2/dt
+            if (piece%law%strain_slack > -huge(1.0_dp)) then
+               self%dissipated = self%dissipated + piece%ds(c)*slack_dissipation(piece%law, eps0, eps1, &
+                                                                                  piece%damping, dt, small_strain_step)
+            else
+               self%dissipated = self%dissipated + piece%damping*piece%ds(c)*(eps1 - eps0)**2/dt
+            end if
          end do
          ! State-dependent ends (springs): what their damping took.
          if (piece%end_a%state_dependent()) call end_damping(piece%end_a, 1)

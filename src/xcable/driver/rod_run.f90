@@ -35,9 +35,10 @@ module xcable_rod_run
    use xcable_strings, only: str, quantity
    use xcable_scene, only: scene_type, scene_grid
    use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
-                               bend_curvature, cell_rotations
+                               bend_curvature, cell_rotations, small_strain_step
    use xcable_ends_end, only: end_condition
    use xcable_material_law, only: material_law
+   use xcable_material_tension_only, only: slack_dissipation
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve, largest_magnitude
@@ -1377,9 +1378,16 @@ contains
                call end_work(piece%end_b, n, 2)
                ! Distributed loads: their force on each node (centred on the step) times its displacement.
                self%load_work = self%load_work + displacement_work(n, piece%load_node, r1, run_piece%r)
-               ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt.
-               if (piece%damping > 0) self%dissipation = self%dissipation + &
-                  piece%damping*sum(piece%ds*(piece%l1 - piece%l0)**2)/h
+               ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt; a rope that
+               ! cannot push, ds (N - q) (eps1 - eps0) (slack_cell_force).
+               if (piece%damping > 0) then
+                  if (piece%law%strain_slack > -huge(1.0_dp)) then
+                     self%dissipation = self%dissipation + sum(piece%ds*slack_dissipation(piece%law, piece%l0 - 1, &
+                                                               piece%l1 - 1, piece%damping, h, small_strain_step))
+                  else
+                     self%dissipation = self%dissipation + piece%damping*sum(piece%ds*(piece%l1 - piece%l0)**2)/h
+                  end if
+               end if
                ! Ends that depend on their state (springs): their damping's work over the step.
                if (piece%end_a%state_dependent()) call end_damping(piece%end_a, 1)
                if (piece%end_b%state_dependent()) call end_damping(piece%end_b, n)

@@ -39,6 +39,9 @@ module xcable_material_law
       !> Smallest strain for which the law is given (a table's first row); a run that
       !> compresses cells below it is warned.
       real(dp) :: strain_min = -huge(1.0_dp)
+      !> Strain at and below which the law carries no tension: the kink of a rope that cannot
+      !> push (material/tension_only.f90); -huge for a law continued into compression.
+      real(dp) :: strain_slack = -huge(1.0_dp)
    contains
       !> Tension f(eps), N.
       procedure(law_function), deferred :: tension

@@ -1,152 +1,240 @@
 !> A rope that cannot push: any law with its compressive branch removed
 !> (&material compression = 'none').
 !>
-!> Below the strain eps_z where the law gives zero tension the tension is 0.
-!> So that Newton's method sees a continuous stiffness, the law is blended
-!> into zero over a band of strain 2 delta around eps_z, delta = 1e-3 or, for a
-!> stiffer law whose range strain_max is below 0.35, 0.3 % of strain_max: a
-!> cubic Hermite from (eps_z - delta, 0, slope 0) to (eps_z + delta, f, f'),
-!> monotone and C1; above eps_z + delta it is the law itself. The strain
-!> energy is the exact integral of this tension from 0, so the energy ledger
-!> stays exact.
+!> With eps_z the strain where the law's tension is zero (strain_slack), the
+!> tension is exactly 0 at and below eps_z and the law itself above it: no band,
+!> no tension in slack. The strain energy is W(eps) = 0 at and below eps_z and
+!> W_base(eps) - W_base(eps_z) above, the exact integral of that tension, so the
+!> discrete gradient (W1 - W0) / (eps1 - eps0) of the rods is continuous across
+!> the kink and their ledger exact. The stiffness at eps_z itself is the tensile
+!> one (Newton's Jacobian takes the taut side at the kink).
+!>
+!> The rods' cell force of a step for such a law, with its Kelvin-Voigt damping
+!> acting only on the taut part and never pushing, is slack_cell_force
+!> (docs/theory/compression.md, "The tension-only law").
 module xcable_material_tension_only
    use xcable_kinds, only: dp
    use xcable_material_law, only: material_law
    implicit none
    private
-   public :: tension_only_law, new_tension_only
-
-   !> Half width of the blend, in strain, and as a fraction of the law's range.
-   real(dp), parameter, public :: blend_half_width = 1.0e-3_dp, blend_fraction = 3.0e-3_dp
+   public :: tension_only_law, new_tension_only, slack_cell_force, slack_dissipation, damped_tension
 
    !> The law without compression.
    type, extends(material_law) :: tension_only_law
       !> The law in tension.
       class(material_law), allocatable :: base
-      !> Blend from a to b; f and f' of the base at b; the energy integral from 0 to a and b.
-      real(dp) :: a = 0, b = 0, fb = 0, fpb = 0, g0 = 0, gb = 0
    contains
       procedure :: tension => to_tension
       procedure :: stiffness => to_stiffness
       procedure :: stiffness_slope => to_stiffness_slope
       procedure :: strain_energy => to_strain_energy
       procedure :: strain_energy_change => to_strain_energy_change
+      procedure :: strain_energy_change_tension => to_strain_energy_change_tension
+      procedure :: tension_stiffness => to_tension_stiffness
+      procedure :: tension_stiffness_slope => to_tension_stiffness_slope
       procedure :: name => to_name
    end type tension_only_law
 
 contains
 
-   !> Wrap a law.
+   !> Wrap a law: its strain of zero tension becomes the kink (strain_slack).
    function new_tension_only(base) result(law)
       !> The law in tension.
       class(material_law), intent(in) :: base
       type(tension_only_law) :: law
-      real(dp) :: eps_z, delta
       allocate (law%base, source=base)
       law%strain_max = base%strain_max
-      eps_z = base%strain_at(0.0_dp)
-      delta = min(blend_half_width, blend_fraction*base%strain_max)
-      law%a = eps_z - delta
-      law%b = eps_z + delta
-      law%fb = base%tension(law%b)
-      law%fpb = base%stiffness(law%b)
-      ! Antiderivative G with G = 0 below a; W(eps) = G(eps) - G(0).
-      law%gb = blend_integral(law, law%b)
-      law%g0 = antiderivative(law, 0.0_dp)
+      law%strain_slack = base%strain_at(0.0_dp)
    end function new_tension_only
-
-   !> Integral of the blend from a to eps (a <= eps <= b).
-   pure real(dp) function blend_integral(self, eps)
-      class(tension_only_law), intent(in) :: self
-      real(dp), intent(in) :: eps
-      real(dp) :: h, u
-      h = self%b - self%a
-      u = (eps - self%a)/h
-      blend_integral = h*(self%fb*(u**3 - 0.5_dp*u**4) + h*self%fpb*(0.25_dp*u**4 - u**3/3))
-   end function blend_integral
-
-   !> Antiderivative of the tension, zero below a.
-   elemental real(dp) function antiderivative(self, eps)
-      class(tension_only_law), intent(in) :: self
-      real(dp), intent(in) :: eps
-      if (eps <= self%a) then
-         antiderivative = 0
-      else if (eps < self%b) then
-         antiderivative = blend_integral(self, eps)
-      else
-         antiderivative = self%gb + self%base%strain_energy(eps) - self%base%strain_energy(self%b)
-      end if
-   end function antiderivative
 
    elemental function to_tension(self, eps) result(val)
       class(tension_only_law), intent(in) :: self
       real(dp), intent(in) :: eps
-      real(dp) :: val, h, u
-      if (eps <= self%a) then
+      real(dp) :: val
+      if (eps <= self%strain_slack) then
          val = 0
-      else if (eps < self%b) then
-         h = self%b - self%a
-         u = (eps - self%a)/h
-         val = self%fb*(3*u**2 - 2*u**3) + h*self%fpb*(u**3 - u**2)
       else
          val = self%base%tension(eps)
       end if
    end function to_tension
 
+   !> f', the tensile one at eps_z.
    elemental function to_stiffness(self, eps) result(val)
       class(tension_only_law), intent(in) :: self
       real(dp), intent(in) :: eps
-      real(dp) :: val, h, u
-      if (eps <= self%a) then
+      real(dp) :: val
+      if (eps < self%strain_slack) then
          val = 0
-      else if (eps < self%b) then
-         h = self%b - self%a
-         u = (eps - self%a)/h
-         val = (self%fb*(6*u - 6*u**2) + h*self%fpb*(3*u**2 - 2*u))/h
       else
          val = self%base%stiffness(eps)
       end if
    end function to_stiffness
 
+   !> f'', the tensile one at eps_z.
    elemental function to_stiffness_slope(self, eps) result(val)
       class(tension_only_law), intent(in) :: self
       real(dp), intent(in) :: eps
-      real(dp) :: val, h, u
-      if (eps <= self%a) then
+      real(dp) :: val
+      if (eps < self%strain_slack) then
          val = 0
-      else if (eps < self%b) then
-         h = self%b - self%a
-         u = (eps - self%a)/h
-         val = (self%fb*(6 - 12*u) + h*self%fpb*(6*u - 2))/h**2
       else
          val = self%base%stiffness_slope(eps)
       end if
    end function to_stiffness_slope
 
+   !> W(eps): 0 at and below eps_z, W_base(eps) - W_base(eps_z) above (the base law's change,
+   !> which keeps its digits).
    elemental function to_strain_energy(self, eps) result(val)
       class(tension_only_law), intent(in) :: self
       real(dp), intent(in) :: eps
       real(dp) :: val
-      val = antiderivative(self, eps) - self%g0
+      if (eps <= self%strain_slack) then
+         val = 0
+      else
+         val = self%base%strain_energy_change(self%strain_slack, eps)
+      end if
    end function to_strain_energy
 
-   !> W(eps1) - W(eps0): the base law's change where both strains are on the base law (it
-   !> keeps the digits the difference of two energies loses, material/law.f90), else the
-   !> difference of the energies.
+   !> W(eps1) - W(eps0): the base law's change between the taut parts max(eps, eps_z), so
+   !> that no difference of two energies loses digits (material/law.f90).
    elemental function to_strain_energy_change(self, eps0, eps1) result(val)
       class(tension_only_law), intent(in) :: self
       real(dp), intent(in) :: eps0, eps1
       real(dp) :: val
-      if (min(eps0, eps1) >= self%b) then
-         val = self%base%strain_energy_change(eps0, eps1)
+      if (max(eps0, eps1) <= self%strain_slack) then
+         val = 0
       else
-         val = to_strain_energy(self, eps1) - to_strain_energy(self, eps0)
+         val = self%base%strain_energy_change(max(eps0, self%strain_slack), max(eps1, self%strain_slack))
       end if
    end function to_strain_energy_change
+
+   !> W(eps1) - W(eps0) and f(eps1): the base law's (one evaluation) where both strains are taut.
+   pure subroutine to_strain_energy_change_tension(self, eps0, eps1, dw, f1)
+      class(tension_only_law), intent(in) :: self
+      real(dp), intent(in), value :: eps0, eps1
+      real(dp), intent(out) :: dw, f1
+      if (min(eps0, eps1) > self%strain_slack) then
+         call self%base%strain_energy_change_tension(eps0, eps1, dw, f1)
+      else
+         dw = to_strain_energy_change(self, eps0, eps1)
+         f1 = to_tension(self, eps1)
+      end if
+   end subroutine to_strain_energy_change_tension
+
+   !> f and f' (the base law's together above eps_z).
+   pure subroutine to_tension_stiffness(self, eps, f, fp)
+      class(tension_only_law), intent(in) :: self
+      real(dp), intent(in) :: eps
+      real(dp), intent(out) :: f, fp
+      if (eps > self%strain_slack) then
+         call self%base%tension_stiffness(eps, f, fp)
+      else
+         f = 0
+         fp = to_stiffness(self, eps)
+      end if
+   end subroutine to_tension_stiffness
+
+   !> f, f' and f'' (the base law's together above eps_z).
+   pure subroutine to_tension_stiffness_slope(self, eps, f, fp, fpp)
+      class(tension_only_law), intent(in) :: self
+      real(dp), intent(in), value :: eps
+      real(dp), intent(out) :: f, fp, fpp
+      if (eps > self%strain_slack) then
+         call self%base%tension_stiffness_slope(eps, f, fp, fpp)
+      else
+         f = 0
+         fp = to_stiffness(self, eps)
+         fpp = to_stiffness_slope(self, eps)
+      end if
+   end subroutine to_tension_stiffness_slope
 
    pure function to_name(self) result(name)
       class(tension_only_law), intent(in) :: self
       character(:), allocatable :: name
       name = self%base%name()//' without compression'
    end function to_name
+
+   !> The axial force of a cell in a step (per unit of the rods' strain direction) for a law
+   !> with a kink at eps_z = law%strain_slack, with Kelvin-Voigt damping c on the taut part:
+   !>   q = (W1 - W0) / h, h = eps1 - eps0 (the exact divided difference; where both strains are
+   !>       taut and |h| < small_step its Taylor form f(mid) + f'' h^2 / 24, as the rods take it;
+   !>       0 where both are slack),
+   !>   D = c (max(eps1, eps_z) - max(eps0, eps_z)) / dt (the rate of the taut strain),
+   !>   N = max(q + D, 0) (a damper on a rope cannot push either),
+   !> and dN / d(eps1), the taut side at a kink. The work of N in the step, ds N h, is the change
+   !> of strain energy ds q h plus the dissipation ds (N - q) h >= 0 (D h >= 0; where the clip
+   !> acts, D < 0, so h < 0 and -q h >= 0).
+   pure subroutine slack_cell_force(law, eps0, eps1, damping, dt, small_step, n, dn, q)
+      !> The law (strain_slack its kink).
+      class(material_law), intent(in) :: law
+      !> Old and new strain of the cell.
+      real(dp), intent(in) :: eps0, eps1
+      !> Damping c, N s; the step, s; the strain step below which the Taylor form is taken.
+      real(dp), intent(in) :: damping, dt, small_step
+      !> N and dN / d(eps1), N.
+      real(dp), intent(out) :: n, dn
+      !> The conservative part q, N (the ledger's: dissipation ds (N - q) h).
+      real(dp), intent(out), optional :: q
+      real(dp) :: ez, h, qc, dq, f, fp, fpp, mid, d, dd
+      ez = law%strain_slack
+      h = eps1 - eps0
+      if (min(eps0, eps1) >= ez .and. abs(h) < small_step) then
+         ! (Both at eps_z: q = 0 and the taut side's dq = f'(eps_z) / 2.)
+         mid = 0.5_dp*(eps0 + eps1)
+         call law%tension_stiffness_slope(mid, f, fp, fpp)
+         qc = f + fpp*h*h/24
+         dq = 0.5_dp*fp + fpp*h/12
+      else if (max(eps0, eps1) <= ez) then
+         qc = 0
+         dq = 0
+      else
+         ! Straddling the kink the Taylor form is not the divided difference (f'' jumps there):
+         ! the exact one, at any h.
+         call law%strain_energy_change_tension(eps0, eps1, qc, f)
+         qc = qc/h
+         dq = (f - qc)/h
+      end if
+      d = damping*(max(eps1, ez) - max(eps0, ez))/dt
+      dd = 0
+      if (eps1 >= ez) dd = damping/dt
+      if (qc + d >= 0) then
+         n = qc + d
+         dn = dq + dd
+      else
+         n = 0
+         dn = 0
+      end if
+      if (present(q)) q = qc
+   end subroutine slack_cell_force
+
+   !> The energy the damping of slack_cell_force takes from a cell in the step, per unstretched
+   !> length: (N - q) (eps1 - eps0) >= 0, J/m.
+   elemental real(dp) function slack_dissipation(law, eps0, eps1, damping, dt, small_step) result(val)
+      !> The law (strain_slack its kink).
+      class(material_law), intent(in) :: law
+      !> Old and new strain of the cell.
+      real(dp), intent(in) :: eps0, eps1
+      !> Damping c, N s; the step, s; the rods' strain step of the Taylor form.
+      real(dp), intent(in) :: damping, dt, small_step
+      real(dp) :: n, dn, q
+      call slack_cell_force(law, eps0, eps1, damping, dt, small_step, n, dn, q)
+      val = (n - q)*(eps1 - eps0)
+   end function slack_dissipation
+
+   !> The tension of a cell with its damping term d = c d(eps)/dt: f + d for a law continued into
+   !> compression; for a rope that cannot push the damping acts on the taut part only (eps >=
+   !> eps_z) and the sum never pushes, max(f + d, 0).
+   elemental real(dp) function damped_tension(law, eps, f, d) result(val)
+      !> The law.
+      class(material_law), intent(in) :: law
+      !> Strain, tension f(eps) (N) and damping term (N).
+      real(dp), intent(in) :: eps, f, d
+      if (law%strain_slack == -huge(1.0_dp)) then
+         val = f + d
+      else if (eps >= law%strain_slack) then
+         val = max(f + d, 0.0_dp)
+      else
+         val = 0
+      end if
+   end function damped_tension
 end module xcable_material_tension_only

@@ -46,6 +46,7 @@ module xcable_model_rod
    use xcable_error, only: error_type, fatal_error, stat_numerics
    use xcable_strings, only: str
    use xcable_material_law, only: material_law
+   use xcable_material_tension_only, only: slack_cell_force, damped_tension
    use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
    use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use xcable_solver_banded, only: band_matrix
@@ -60,7 +61,7 @@ module xcable_model_rod
    ! (suite_quiescent, jacobian_gathered_as_cell_by_cell), bend_nodes and small_rotation
    ! (suite_rod, bend_terms_in_pairs_same_bits). bend_nodes' kernels stay private, inlined
    ! into it (public, they cost 0.9e6 instructions on fast_180kN).
-   public :: cell_terms, add_jacobian, bend_nodes, small_rotation
+   public :: cell_terms, add_jacobian, bend_nodes, small_rotation, small_strain_step
 
    !> The unknowns of a node, in their order in Newton's vector (node after node).
    character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']
@@ -90,7 +91,8 @@ module xcable_model_rod
       real(dp), allocatable :: dual(:)
       !> Mass and weight per unstretched length, kg/m and N/m; bending stiffness EI, N m^2; gravity, m/s^2.
       real(dp) :: mass_per_length = 0, weight = 0, ei = 0, gravity = 0, mu2 = 0
-      !> Internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt, N s.
+      !> Internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt, N s (for a rope that cannot
+      !> push on the taut part only, and never pushing: slack_cell_force).
       real(dp) :: damping = 0
       !> Share of the averaged mass matrix (1: averaged, 0: lumped).
       real(dp) :: mu = 1
@@ -1254,7 +1256,7 @@ contains
 
    !> cell_terms on the cells first .. last (at most 32), the rotations dphi1 given. Per cell of
    !> the block (index p, cell first + p - 1), written out:
-   !>   q = (W1 - W0) / h (law) or its Taylor form, + c h / dt; N_c = q wsum / lsum + S_c / ds_c gvec,
+   !>   q = (W1 - W0) / h (law) or its Taylor form, + c h / dt (a law with a kink: slack_cell_force); N_c = q wsum / lsum + S_c / ds_c gvec,
    !>   gvec = perp(wsum / 2) g, g = rho(dphi) / (l0 l1), wsum = e0 + e1, lsum = l0 + l1;
    !>   ds_dq = dq e1 / l1, dstrain = outer(wsum / lsum, ds_dq)
    !>     + q (identity2() / lsum - outer(wsum, e1 / l1) / lsum**2),
@@ -1275,7 +1277,8 @@ contains
       integer :: m, p, c, pa, pb
       real(dp) :: f, fp, fpp, mid, lsum, qq, dqq, w1, w2, g, pem1, pem2, gv1, gv2, sd, l0, l1, e11, e12, &
                   dsdq1, dsdq2, wl1, wl2, e1l1, e1l2, dpd1, dpd2, rl, dg1, dg2, d01, d02, dm1, dm2, dp1, dp2, &
-                  il, zl, ls2, hg
+                  il, zl, ls2, hg, kv
+      logical :: slack
       real(dp) :: eps0(nb), eps1(nb), h(nb), qv(nb), dqv(nb), rhov(nb), drhov(nb)
       real(dp), parameter :: jm(2, 2) = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2]), &
                              id2(2, 2) = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
@@ -1289,10 +1292,17 @@ contains
          rhov(p) = 1 + dphi1(first + p - 1)**2/6
          drhov(p) = dphi1(first + p - 1)/3
       end do
+      ! A rope that cannot push (a law with a kink at strain_slack): q and dq with its damping
+      ! from slack_cell_force, the damping below kv = 0; else the damping below, c h / dt.
+      slack = law%strain_slack > -huge(1.0_dp)
+      kv = damping
+      if (slack) kv = 0
       ! Cell by cell, what calls a function.
       do p = 1, m
          ! Strain part: q (e0 + e1) / (l0 + l1), q the divided difference of W.
-         if (abs(h(p)) < small_strain_step) then
+         if (slack) then
+            call slack_cell_force(law, eps0(p), eps1(p), damping, dt, small_strain_step, qv(p), dqv(p))
+         else if (abs(h(p)) < small_strain_step) then
             mid = 0.5_dp*(eps0(p) + eps1(p))
             ! f, f', f'' in one call (the tanh law: one tanh and 1 / cosh^2 together).
             call law%tension_stiffness_slope(mid, f, fp, fpp)
@@ -1336,8 +1346,8 @@ contains
             lsum = l0 + l1
             ! Kelvin-Voigt damping: c (eps1 - eps0) / dt along the same direction; its
             ! work in the step, ds c (eps1 - eps0)^2 / dt, is the energy it dissipates.
-            qq = qv(p) + damping*h(p)/dt
-            dqq = dqv(p) + damping/dt
+            qq = qv(p) + kv*h(p)/dt
+            dqq = dqv(p) + kv/dt
             w1 = e0_(1, c) + e11
             w2 = e0_(2, c) + e12
             g = rhov(p)/(l0*l1)
@@ -1388,7 +1398,7 @@ contains
          do p = pa, pb
             c = first + p - 1
             lsum = l0_(c) + l1_(c)
-            qq = qv(p) + damping*h(p)/dt
+            qq = qv(p) + kv*h(p)/dt
             w1 = e0_(1, c) + e1_(1, c)
             w2 = e0_(2, c) + e1_(2, c)
             g = rhov(p)/(l0_(c)*l1_(c))
@@ -1400,10 +1410,10 @@ contains
          end do
       end if
       ! The end cells (as an inner cell, but with the couple and one neighbour).
-      if (first == 1) call end_cell_terms(n, 1, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_first, &
+      if (first == 1) call end_cell_terms(n, 1, e0_, e1_, l0_, l1_, ds, mom, dmom, kv, dt, couple_first, &
                                           with_jacobian, qv(1), dqv(1), rhov(1), drhov(1), h(1), force, block)
       if (last == n - 1 .and. n > 2) &
-         call end_cell_terms(n, n - 1, e0_, e1_, l0_, l1_, ds, mom, dmom, damping, dt, couple_last, with_jacobian, &
+         call end_cell_terms(n, n - 1, e0_, e1_, l0_, l1_, ds, mom, dmom, kv, dt, couple_last, with_jacobian, &
                              qv(m), dqv(m), rhov(m), drhov(m), h(m), force, block)
    end subroutine cell_block_terms
 
@@ -2009,8 +2019,8 @@ contains
       do c = 1, self%n - 1
          strain(c) = self%l1(c) - 1
          tension(c) = self%law%tension(strain(c))
-         if (present(v) .and. self%damping > 0) tension(c) = tension(c) + self%damping* &
-            dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c))
+         if (present(v) .and. self%damping > 0) tension(c) = damped_tension(self%law, strain(c), tension(c), &
+            self%damping*dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c)))
          ! Sn along the paper's normal n = -perp(t): EI Omega' + (1 + eps) Sn = 0.
          shear(c) = (moment_node(c + 1) - moment_node(c))/(self%ds(c)*self%l1(c))
       end do

@@ -70,6 +70,7 @@ module xcable_model_rod3d
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_material_law, only: material_law
+   use xcable_material_tension_only, only: slack_cell_force
    use xcable_numerics_tan, only: fast_tan
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end, only: end_condition
@@ -79,7 +80,7 @@ module xcable_model_rod3d
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
-   public :: paper_euler_parameters, couple_plane, bend_energy, bend_moment
+   public :: paper_euler_parameters, couple_plane, bend_energy, bend_moment, small_strain_step
 
    ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
    ! (the two cell vectors of a node; the statics' bending blocks). They live in this module so
@@ -676,7 +677,10 @@ contains
             eps0 = l0 - 1
             eps1 = l1 - 1
             h = eps1 - eps0
-            if (abs(h) < small_strain_step) then
+            if (self%law%strain_slack > -huge(1.0_dp)) then
+               ! A rope that cannot push: q and dq with the damping on the taut part.
+               call slack_cell_force(self%law, eps0, eps1, self%damping, dt, small_strain_step, q, dq)
+            else if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
                ! f, f', f'' at mid in one call (the tanh law: one tanh and one cosh, the same bits).
                call self%law%tension_stiffness_slope(mid, f, fp, fpp)
@@ -687,8 +691,10 @@ contains
                q = q/h
                dq = (f - q)/h
             end if
-            q = q + self%damping*h/dt
-            dq = dq + self%damping/dt
+            if (.not. self%law%strain_slack > -huge(1.0_dp)) then
+               q = q + self%damping*h/dt
+               dq = dq + self%damping/dt
+            end if
             lsum = l0 + l1
             wsum = e0 + e1
             self%force(:, c) = q*wsum/lsum

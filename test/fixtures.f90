@@ -9,7 +9,7 @@ module xcable_fixtures
    use xcable_box_dynamics, only: dynamics_options
    implicit none
    private
-   public :: paper_case, write_text
+   public :: paper_case, write_text, pushing_rope
 
 contains
 
@@ -48,4 +48,14 @@ contains
       write (unit) text
       close (unit)
    end subroutine write_text
+
+   !> Scenes written for the paper's rope, which pushes back along its law in compression (the
+   !> default before compression = 'none' became it): a case text that says nothing of the material
+   !> gets compression = 'law'.
+   function pushing_rope(text) result(case_text)
+      character(*), intent(in) :: text
+      character(:), allocatable :: case_text
+      case_text = text
+      if (index(text, '&material') == 0) case_text = "&material compression = 'law' /"//new_line('a')//text
+   end function pushing_rope
 end module xcable_fixtures

@@ -22,6 +22,7 @@ module suite_checkpoint
    use xcable_error, only: stat_input
    use xcable_io_config, only: case_config
    use xcable_io_input, only: config_text, read_config
+   use xcable_fixtures, only: pushing_rope
    use xcable_simulation, only: simulation
    use xcable_run_records, only: run_observer, static_info, run_history, run_summary, n_fields
    use xcable_io_checkpoint, only: checkpoint_file, remove_checkpoint
@@ -214,7 +215,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: unit
       open (newunit=unit, file=namelist_path, status='replace', action='write')
-      write (unit, '(a)') text
+      write (unit, '(a)') pushing_rope(text)
       close (unit)
       call read_config(namelist_path, c, error)
    end subroutine case_of

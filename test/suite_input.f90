@@ -520,7 +520,7 @@ contains
       expected = "&cable length = 20, diameter = 0.03, density = 1140, young = 2.3e8, gravity = 9.81,"//nl // &
          "   area = 0.0007068583470577034, bending_stiffness = 9.144979865059037, gip = 6.532128475042169 /"//nl // &
          "&material law = 'table', p = 270300, 10.2, -2.128, 262700, 135.5, ea = 0, table_strain = -0.01, 0,"//nl // &
-         "   0.05, 0.3, table_tension = -2000, 0, 120000, 450000, strain_max = 0.35, compression = 'law',"//nl // &
+         "   0.05, 0.3, table_tension = -2000, 0, 120000, 450000, strain_max = 0.35, compression = 'none',"//nl // &
          "   damping = 250 /"//nl // &
          "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
          "   current_z = 0 /"//nl // &
@@ -554,7 +554,7 @@ contains
       expected = "&cable length = 60, diameter = 0.05, density = 1140, young = 2.3e8, gravity = 9.81,"//nl // &
          "   area = 0.001963495408493621, bending_stiffness = 70.56311624273953, gip = 50.402225887671094 /"//nl // &
          "&material law = 'tanh', p = 270300, 10.2, -2.128, 262700, 135.5, ea = 0, strain_max = 0.35,"//nl // &
-         "   compression = 'law', damping = 0 /"//nl // &
+         "   compression = 'none', damping = 0 /"//nl // &
          "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
          "   current_z = 0 /"//nl // &
          "&static tension = 150000 /"//nl // &

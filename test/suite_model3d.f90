@@ -29,6 +29,7 @@ module suite_model3d
    use xcable_strings, only: str
    use xcable_io_input, only: read_config
    use xcable_io_config, only: case_config
+   use xcable_fixtures, only: pushing_rope
    use xcable_simulation, only: simulation
    use xcable_rod3d_run, only: rod3d_run
    use xcable_ends_end, only: end_condition
@@ -141,7 +142,7 @@ contains
       type(case_config) :: config
       integer :: unit
       open (newunit=unit, file=path, status='replace', action='write')
-      write (unit, '(a)') text
+      write (unit, '(a)') pushing_rope(text)
       close (unit)
       call read_config(path, config, error)
       if (allocated(error)) return
@@ -924,8 +925,8 @@ contains
       type(case_config) :: config
       integer :: unit, i
       open (newunit=unit, file=path, status='replace', action='write')
-      write (unit, '(a)') "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
-         "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
+      write (unit, '(a)') "&material compression = 'law' /"//new_line('a')//"&end_a kind = 'fixed', x = 0, z = 0 /"// &
+         new_line('a')//"&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
          "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
          "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"// &
          new_line('a')//"&rupture enabled = .false. /"//new_line('a')// &
@@ -1319,7 +1320,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       integer :: unit
       open (newunit=unit, file=path, status='replace', action='write')
-      write (unit, '(a)') text
+      write (unit, '(a)') pushing_rope(text)
       close (unit)
       call read_config(path, config, error)
    end subroutine read_text

@@ -45,6 +45,8 @@ contains
       type(case_config) :: c
       c%source = 'test'
       c%nodes = nodes
+      ! The paper's rope, which pushes back along its law in compression.
+      c%compression = 'law'
       c%break_enabled = .false.
       c%t_end = 0.01_dp
       c%newton_tol = 1.0e-10_dp

@@ -89,7 +89,7 @@ write_case() {
 ! test/test_checkpoint.sh: the paper's rupture at 180 kN in water, damped
 &static   tension = 180000 /
 &rupture  t_break = 0.005 /
-&material damping = 2000 /
+&material damping = 2000, compression = 'law' /
 &fluid    density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_x = 0.5 /
 &numerics nodes = 481, courant = 1.0, t_end = 0.25 /
 &output   file = '$1.h5', interval = 0.01, gnuplot = .true., energy = .true.$2 /
@@ -100,6 +100,7 @@ EOF
 write_case3() {
    cat >"$1.nml" <<EOF
 ! test/test_checkpoint.sh: a fairlead moving across the plane in water (3-D), its end let go
+&material compression = 'law' /
 &end_a    kind = 'fixed', x = 0, z = 0 /
 &end_b    kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1,
           direction_z = 0, ramp_time = 0.5 /

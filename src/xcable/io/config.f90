@@ -80,7 +80,7 @@ module xcable_io_config
       !> Largest strain the law is used for in statics.
       real(dp) :: strain_max = 0.35_dp
       !> Behaviour in compression: 'law' (the law continued below zero) or 'none' (no compressive tension).
-      character(len=16) :: compression = 'law'
+      character(len=16) :: compression = 'none'
       !> Rows of the 'table' law: strains and tensions (N), inline (&material table_strain, table_tension).
       real(dp) :: material_table_strain(max_table_points) = 0, material_table_tension(max_table_points) = 0
       !> Number of rows given inline or read from the file (0: none).

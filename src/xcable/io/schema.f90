@@ -133,8 +133,9 @@ contains
       call add(t, 'material', 'strain_max', 'real', '-', '0.35', &
                'largest static strain the law is used for (the tanh fit reaches about 504 kN there)', 0.0_dp, 1.0_dp, &
                lower_open=.true., note='a strain, not per cent: 35 % is 0.35')
-      call add(t, 'material', 'compression', 'string', '-', "'law'", &
-               "behaviour in compression: 'law' (the law continued below zero strain) or 'none' (no compressive tension)", &
+      call add(t, 'material', 'compression', 'string', '-', "'none'", &
+               "behaviour in compression: 'none' (a rope that cannot push: no tension at and below the strain of zero "// &
+               "tension, damping only while taut) or 'law' (the law continued below zero strain, as the paper's cases)", &
                length=16, choices='law none')
       call add(t, 'material', 'damping', 'real', 'N s', '0', &
                'internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt', 0.0_dp, 1.0e12_dp)

@@ -153,9 +153,8 @@ program xcable_main
       if (rod) call sim%enable_checkpoints(checkpoint, fingerprint, run_id, config%checkpoint_interval, &
                                            on_termination=.true.)
       info => sim%static()
-      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: static state: end tensions '// &
-         quantity(info%tension_a, 'N')//' (a), '//quantity(info%tension_b, 'N')//' (b), span '// &
-         quantity(info%span, 'm')//', sag '//quantity(info%sag, 'm')//'; dynamics with the '// &
+      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: statics solved (end tensions '// &
+         quantity(info%tension_a, 'N')//' and '//quantity(info%tension_b, 'N')//'); dynamics with the '// &
          trim(config%scheme)//' scheme, '//str(config%nodes)//' nodes, dt '//quantity(dt, 's')
    end if
 

@@ -1171,13 +1171,14 @@ contains
          return
       end if
       call derive_defaults(c)
-      if (c%dt > 0 .and. c%t_end/c%dt > max_time_steps) then
+      ! (Fortran does not short-circuit .and.: the division only where the divisor is positive.)
+      if (c%t_end > max_time_steps*max(c%dt, 0.0_dp) .and. c%dt > 0) then
          call fatal_error(error, c%source//': &numerics: dt = '//real_text(c%dt)//': gives more than '// &
                           str(max_time_steps)//' steps to t_end = '//real_text(c%t_end)//'; must be at least t_end / '// &
                           str(max_time_steps)//' = '//real_text(c%t_end/max_time_steps), stat_input)
          return
       end if
-      if (c%interval > 0 .and. c%t_end/c%interval > max_snapshots) then
+      if (c%t_end > max_snapshots*max(c%interval, 0.0_dp) .and. c%interval > 0) then
          call fatal_error(error, c%source//': &output: interval = '//real_text(c%interval)// &
                           ': gives more than 100000 snapshots; must be at least t_end / 100000 = '// &
                           real_text(c%t_end/max_snapshots), stat_input)

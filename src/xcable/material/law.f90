@@ -207,7 +207,12 @@ contains
          else
             df = self%stiffness(eps)
          end if
-         eps = eps - f/df
+         ! A flat stretch of the law (a rope without compression below its slack strain): bisect.
+         if (df > 0) then
+            eps = eps - f/df
+         else
+            eps = 0.5_dp*(lo + hi)
+         end if
          if (.not. (eps > lo .and. eps < hi)) eps = 0.5_dp*(lo + hi)
       end do
 

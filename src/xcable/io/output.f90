@@ -85,6 +85,11 @@ module xcable_io_output
       !> which the gnuplot text appends as columns 10-15; the planar fields wait in
       !> pending until they arrive.
       logical :: three_d = .false.
+      !> Which snapshot fields (field_names, field3_names, beta0, beta3) this process has given
+      !> their dimension scales: /time and /s on the top-level datasets, /static/s on the static
+      !> ones (lay_out attaches each once: asking HDF5 whether a scale is attached costs more than
+      !> the run's output).
+      logical :: scaled(n_fields + n_fields3 + 2) = .false., static_scaled(n_fields + n_fields3 + 2) = .false.
       real(dp), allocatable :: pending(:, :)
       !> The first path a write found missing from the output registry (for the error message).
       character(:), allocatable :: unregistered
@@ -846,9 +851,9 @@ contains
          call put_ints(self, group, '/history', 'rejected', history%rejected(0:n), ok)
          ! /history/time is the dimension scale of every history dataset.
          call open_scale(group, 'time', 'time', scale, ok)
-         call attach(scale, group, 'dt', 0, 'time', ok)
-         call attach(scale, group, 'newton_iterations', 0, 'time', ok)
-         call attach(scale, group, 'rejected', 0, 'time', ok)
+         call attach(scale, group, 'dt', 0, 'time', ok, fresh=.true.)
+         call attach(scale, group, 'newton_iterations', 0, 'time', ok, fresh=.true.)
+         call attach(scale, group, 'rejected', 0, 'time', ok, fresh=.true.)
          do j = 1, n_ends
             call h5gcreate_f(group, trim(history%end_labels(j)), egroup, hdferr)
             ok = ok .and. hdferr == 0
@@ -857,13 +862,13 @@ contains
             do q = 1, n_end_quantities
                call put_reals(self, egroup, '/history/'//trim(history%end_labels(j)), trim(end_quantity_names(q)), &
                              history%ends(q, j, 0:n), ok)
-               call attach(scale, egroup, trim(end_quantity_names(q)), 0, 'time', ok)
+               call attach(scale, egroup, trim(end_quantity_names(q)), 0, 'time', ok, fresh=.true.)
             end do
             if (allocated(history%ends_y)) then
                do q = 1, n_end_quantities_y
                   call put_reals(self, egroup, '/history/'//trim(history%end_labels(j)), &
                                 trim(end_quantity_names_y(q)), history%ends_y(q, j, 0:n), ok)
-                  call attach(scale, egroup, trim(end_quantity_names_y(q)), 0, 'time', ok)
+                  call attach(scale, egroup, trim(end_quantity_names_y(q)), 0, 'time', ok, fresh=.true.)
                end do
             end if
             call h5gclose_f(egroup, hdferr)
@@ -875,7 +880,7 @@ contains
                call describe_group(self, egroup, '/history/energy', ok)
                do i = 1, n_energy
                   call put_reals(self, egroup, '/history/energy', trim(energy_names(i)), history%energy(i, 0:n), ok)
-                  call attach(scale, egroup, trim(energy_names(i)), 0, 'time', ok)
+                  call attach(scale, egroup, trim(energy_names(i)), 0, 'time', ok, fresh=.true.)
                end do
                call h5gclose_f(egroup, hdferr)
             end if
@@ -1241,7 +1246,7 @@ contains
          return
       end if
       do k = 0, count - 1
-         call h5aget_name_by_idx_f(loc, '.', H5_INDEX_NAME_F, H5_ITER_INC_F, int(k, hsize_t), name, hdferr)
+         call h5aget_name_by_idx_f(loc, '.', H5_INDEX_NAME_F, H5_ITER_NATIVE_F, int(k, hsize_t), name, hdferr)
          if (hdferr /= 0) then
             ok = .false.
             cycle
@@ -1276,8 +1281,12 @@ contains
       call open_scale(self%file, 's', 'node', node_scale, ok)
       if (time_scale >= 0 .and. node_scale >= 0) then
          do q = 1, n_fields + n_fields3
-            call attach(time_scale, self%file, trim(names(q)), 0, 'time', ok)
-            call attach(node_scale, self%file, trim(names(q)), 1, 'node', ok)
+            if (self%scaled(q)) cycle
+            call h5lexists_f(self%file, trim(names(q)), exists, hdferr)
+            if (.not. exists) cycle
+            call attach(time_scale, self%file, trim(names(q)), 0, 'time', ok, fresh=.true.)
+            call attach(node_scale, self%file, trim(names(q)), 1, 'node', ok, fresh=.true.)
+            self%scaled(q) = .true.
          end do
       end if
       if (time_scale >= 0) call h5dclose_f(time_scale, hdferr)
@@ -1292,7 +1301,11 @@ contains
       call open_scale(group, 's', 'node', node_scale, ok)
       if (node_scale >= 0) then
          do q = 1, size(names)
-            call attach(node_scale, group, trim(names(q)), 0, 'node', ok)
+            if (self%static_scaled(q)) cycle
+            call h5lexists_f(group, trim(names(q)), exists, hdferr)
+            if (.not. exists) cycle
+            call attach(node_scale, group, trim(names(q)), 0, 'node', ok, fresh=.true.)
+            self%static_scaled(q) = .true.
          end do
          call h5dclose_f(node_scale, hdferr)
       end if
@@ -1327,11 +1340,13 @@ contains
    !> Attach the dimension scale `scale` to dimension `dimension` (0 the slowest, as h5py
    !> and C count) of the dataset name of loc, labelled `label`, unless it is attached
    !> already; nothing when the dataset does not exist.
-   subroutine attach(scale, loc, name, dimension, label, ok)
+   subroutine attach(scale, loc, name, dimension, label, ok, fresh)
       integer(hid_t), intent(in) :: scale, loc
       character(*), intent(in) :: name, label
       integer, intent(in) :: dimension
       logical, intent(inout) :: ok
+      !> The dataset is known to have no scale on this dimension yet (no check).
+      logical, intent(in), optional :: fresh
       integer(hid_t) :: dset
       integer :: hdferr, index
       logical :: exists, attached
@@ -1345,8 +1360,11 @@ contains
       ! HDF5 1.10's Fortran interface takes the dimension as C counts it, from 1 (checked with
       ! h5py: test/test_outputs.py).
       index = dimension + 1
-      call h5dsis_attached_f(dset, scale, index, attached, hdferr)
-      if (hdferr /= 0) attached = .false.
+      attached = .false.
+      if (.not. present(fresh)) then
+         call h5dsis_attached_f(dset, scale, index, attached, hdferr)
+         if (hdferr /= 0) attached = .false.
+      end if
       if (.not. attached) then
          call h5dsattach_scale_f(dset, scale, index, hdferr)
          ok = ok .and. hdferr == 0

@@ -69,6 +69,9 @@ module xcable_io_output_registry
       'shear force Sb along the material binormal b (material frame)', &
       'curvature Omega2 about the material normal n, per unstretched metre (material frame)']
 
+   !> The registry as find_output keeps it (built at its first call).
+   type(output_item), allocatable, save :: registry(:)
+
 contains
 
    !> Every entry of the registry, in the order of docs/user/output.md.
@@ -239,13 +242,14 @@ contains
       type(output_item), intent(out) :: item
       !> Whether the registry lists it.
       logical, intent(out) :: found
-      type(output_item), allocatable :: items(:)
       integer :: i
-      items = output_items()
+      ! The table once per process: every dataset and attribute written looks it up (building it
+      ! at each lookup was 60 % of a short run's instructions).
+      if (.not. allocated(registry)) registry = output_items()
       found = .false.
-      do i = 1, size(items)
-         if (matches(trim(items(i)%path), path)) then
-            item = items(i)
+      do i = 1, size(registry)
+         if (matches(trim(registry(i)%path), path)) then
+            item = registry(i)
             found = .true.
             return
          end if

@@ -90,7 +90,8 @@ contains
                new_unittest('table_y_model_and_file', test_table_y_input), &
                new_unittest('statics_strong_cross_current_unfolded', test_statics_strong_current), &
                new_unittest('statics_unsolvable_refused', test_statics_refused), &
-               new_unittest('statics_planar_fold_refused', test_statics_planar_fold)]
+               new_unittest('statics_planar_fold_refused', test_statics_planar_fold), &
+               new_unittest('chord_off_the_plane_equals_planar_twin', test_turned_twin)]
    end subroutine collect_model3d
 
    subroutine keeper_static(self, info, error)
@@ -862,8 +863,9 @@ contains
    end subroutine test_rejections_planar
 
    !> The off-plane slack release of end_b_off_plane_released on 121 nodes,
-   !> EI / 1000, at Courant 10 (dt 18 ms) to 2 s: at the requested step Newton
-   !> diverges at t = 0.128 s (the run stopped there before the step control).
+   !> EI / 1000, at Courant 14 to 2 s (Courant 10 on the scene's shadow on x-z before the 3-D
+   !> run was prepared from its own chord: the same stress on the step control): at the
+   !> requested step Newton diverges (the run stopped there before the step control).
    !> The run completes through rejected and halved steps, records them
    !> against the steps that followed, grows the step back to dt, warns of
    !> them, and its ledger closes (measured 6.2e-9 of the strain energy).
@@ -879,7 +881,7 @@ contains
                     "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
                     "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
                     "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
-                    "&numerics nodes = 121, courant = 10, t_end = 2.0 /"//new_line('a')// &
+                    "&numerics nodes = 121, courant = 14, t_end = 2.0 /"//new_line('a')// &
                     "&output interval = 0.1, energy = .true., quiet = .true. /", sim, obs, error)
       if (allocated(error)) return
       s => sim%summary()
@@ -887,7 +889,7 @@ contains
       call sim%time_step(dt, steps)
       ! The last step is shortened to land on t_end.
       smallest = minloc(h%step(1:h%n - 1), 1)
-      write (output_unit, '(4x,a,i0,a,i0,a,es9.2,a,es9.2)') 'off-plane slack release at Courant 10: ', &
+      write (output_unit, '(4x,a,i0,a,i0,a,es9.2,a,es9.2)') 'off-plane slack release at Courant 14: ', &
          s%rejected_steps, ' rejected attempts, ', h%n, ' steps, smallest dt / ', dt/h%step(smallest), &
          '; ledger drift ', s%energy_drift
       call check(error, sim%model == '3d' .and. s%time_reached >= 2.0_dp - 1.0e-12_dp, 'model '//sim%model// &
@@ -1324,4 +1326,62 @@ contains
       close (unit)
       call read_config(path, config, error)
    end subroutine read_text
+
+   !> The paper's fast 180 kN break between supports 70.658 m apart, with the chord along x (the
+   !> planar model) and turned about the vertical by 30, 135, 210 and -30 degrees (the 3-D model):
+   !> the 3-D run is prepared from its own chord, so it takes the planar twin's time step and
+   !> Courant number, and its tension and positions (turned back) are the twin's. Before, it was
+   !> prepared from the scene's shadow on x-z: a shorter span, a slack line, a 3.2 times longer
+   !> step.
+   subroutine test_turned_twin(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: span = 70.658_dp, angles(4) = [30.0_dp, 135.0_dp, 210.0_dp, -30.0_dp]
+      character(*), parameter :: rest = "&rupture t_break = 0.005 /"//new_line('a')// &
+                                        "&output interval = 0.005, quiet = .true. /"//new_line('a')
+      type(simulation) :: sim2, sim3
+      type(keeper) :: obs2, obs3
+      real(dp) :: a, ca, sa, dt2, dt3, tension_err, position_err, worst_t, worst_x
+      integer :: k, k_steps
+      character(len=40) :: xb, yb
+      call run_case("&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')//"&end_b kind = 'fixed', x = 70.658, z = 0 /"// &
+                    new_line('a')//"&numerics model = '2d', nodes = 61, courant = 1.0, t_end = 0.02, newton_tol = 1e-10 /"// &
+                    new_line('a')//rest, sim2, obs2, error)
+      if (allocated(error)) return
+      worst_t = 0
+      worst_x = 0
+      do k = 1, size(angles)
+         a = angles(k)*acos(-1.0_dp)/180
+         ca = cos(a)
+         sa = sin(a)
+         write (xb, '(es24.17)') span*ca
+         write (yb, '(es24.17)') span*sa
+         obs3 = keeper()
+         call run_case("&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')//"&end_b kind = 'fixed', x = "// &
+                       trim(adjustl(xb))//", y = "//trim(adjustl(yb))//", z = 0 /"//new_line('a')// &
+                       "&numerics model = '3d', nodes = 61, courant = 1.0, t_end = 0.02, newton_tol = 1e-10 /"// &
+                       new_line('a')//rest, sim3, obs3, error)
+         if (allocated(error)) return
+         call sim2%time_step(dt2, k_steps)
+         call sim3%time_step(dt3, k_steps)
+         call check(error, dt3 == dt2 .and. sim3%rod%summary%courant_requested == sim2%rod%summary%courant_requested, &
+                    'turned by '//str(angles(k))//' degrees: time step '//str(dt3)//' s, the planar twin '//str(dt2))
+         if (allocated(error)) return
+         call check(error, obs3%n == obs2%n, 'turned by '//str(angles(k))//' degrees: another number of snapshots')
+         if (allocated(error)) return
+         ! Fields 1: tension; 6, 7: x, z (planar); extra 1: y.
+         tension_err = maxval(abs(obs3%fields(:, 1, 1:obs3%n) - obs2%fields(:, 1, 1:obs2%n)))/ &
+                       maxval(abs(obs2%fields(:, 1, 1:obs2%n)))
+         position_err = max(maxval(abs(ca*obs3%fields(:, 6, 1:obs3%n) + sa*obs3%extra(:, 1, 1:obs3%n) - &
+                                       obs2%fields(:, 6, 1:obs2%n))), &
+                            maxval(abs(-sa*obs3%fields(:, 6, 1:obs3%n) + ca*obs3%extra(:, 1, 1:obs3%n))), &
+                            maxval(abs(obs3%fields(:, 7, 1:obs3%n) - obs2%fields(:, 7, 1:obs2%n))))
+         worst_t = max(worst_t, tension_err)
+         worst_x = max(worst_x, position_err)
+      end do
+      write (output_unit, '(4x,a,es10.3,a,es10.3,a)') 'chord turned by 30, 135, 210, -30 degrees: tension ', worst_t, &
+         ' of the largest, positions ', worst_x, ' m from the planar twin, the same time step'
+      ! Measured 4.5e-13 and 3.9e-13 m (Newton to 1e-10); the issue asks for 1e-8 and 1e-6 m.
+      call check(error, worst_t < 5.0e-12_dp .and. worst_x < 5.0e-12_dp, 'the turned runs differ from the planar twin: '// &
+                 'tension '//str(worst_t)//', positions '//str(worst_x)//' m')
+   end subroutine test_turned_twin
 end module suite_model3d

@@ -138,7 +138,11 @@ contains
          length = rod%s(n) - rod%s(1)
          pa = rod%static%r(:, 1)
          d2 = rod%static%r(1, n) - pa(1)
+         ! The chord's horizontal run in the 3-D scene (the planar run's scene is turned so that
+         ! its chord lies in x-z: simulation.f90).
          d3 = [rod%static%r(1, n) - pa(1), yb - ya]
+         if (scene%end_a%held() .and. scene%end_b%held()) &
+            d3(1) = component(scene%end_b%position3(0.0_dp), 1) - component(scene%end_a%position3(0.0_dp), 1)
          do k = 1, n
             if (scene%end_a%held() .and. scene%end_b%held() .and. abs(d2) > 1.0e-6_dp*length) then
                ! Both ends held: the planar shape turned (and stretched horizontally) onto the chord's vertical plane.

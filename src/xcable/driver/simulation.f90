@@ -22,7 +22,7 @@ module xcable_simulation
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
    use xcable_strings, only: str
-   use xcable_io_config, only: case_config
+   use xcable_io_config, only: case_config, end_config
    use xcable_scene, only: scene_type, scene_from_config
    use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination
    use xcable_box_run, only: box_run
@@ -150,17 +150,89 @@ contains
       case default
          call scene_from_config(config, scene, error)
          if (allocated(error)) return
-         call self%rod%prepare(scene, run_options_from_config(config), error)
-         if (allocated(error)) return
+         if (self%model == '3d') then
+            ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
+            ! the scene turned about the vertical so that its chord lies in the x-z plane: the
+            ! true span, static strains, wave speed, time step and Courant number (not those of
+            ! the scene's shadow on x-z). The 3-D run itself takes the scene as given.
+            block
+               type(scene_type) :: planar
+               real(dp) :: azimuth
+               azimuth = chord_azimuth(scene)
+               if (azimuth == 0) then
+                  ! (The planar run may place end b itself: the paper's symmetric case.)
+                  call self%rod%prepare(scene, run_options_from_config(config), error)
+               else
+                  call scene_from_config(turned_config(config, -azimuth), planar, error)
+                  if (allocated(error)) return
+                  call self%rod%prepare(planar, run_options_from_config(config), error)
+                  if (.not. allocated(error)) self%rod%scene = scene
+               end if
+               if (allocated(error)) return
+            end block
+         else
+            call self%rod%prepare(scene, run_options_from_config(config), error)
+            if (allocated(error)) return
+         end if
          self%terms = terms_of(scene)
          if (config%damping > 0) self%terms = self%terms//' damping'
          if (self%model == '3d') then
-            ! The 3-D statics start from the planar static state (driver/rod3d_drive.f90).
             call self%rod3%prepare(self%rod, error)
             self%terms = 'rod3d:'//self%terms(5:)//' twist'
          end if
       end select
    end subroutine sim_prepare
+
+   !> Azimuth of the chord from end a to end b in the horizontal plane, rad (from x towards y):
+   !> 0 unless both ends are held at distinct horizontal points.
+   real(dp) function chord_azimuth(scene) result(phi)
+      type(scene_type), intent(in) :: scene
+      real(dp) :: a(3), b(3)
+      phi = 0
+      if (.not. (scene%end_a%held() .and. scene%end_b%held())) return
+      a = scene%end_a%position3(0.0_dp)
+      b = scene%end_b%position3(0.0_dp)
+      if (hypot(b(1) - a(1), b(2) - a(2)) <= 1.0e-9_dp*max(scene%length, 1.0_dp)) return
+      if (abs(b(2) - a(2)) == 0) return
+      phi = atan2(b(2) - a(2), b(1) - a(1))
+   end function chord_azimuth
+
+   !> The case turned by angle (rad) about the vertical through end a: the ends' points, motion
+   !> directions, forces and table columns, and the current.
+   function turned_config(config, angle) result(c)
+      type(case_config), intent(in) :: config
+      real(dp), intent(in) :: angle
+      type(case_config) :: c
+      real(dp) :: ox, oy
+      c = config
+      if (angle == 0) return
+      ox = config%end_a%x
+      oy = config%end_a%y
+      call turn_end(c%end_a)
+      call turn_end(c%end_b)
+      call turn(c%current_x, c%current_y, 0.0_dp, 0.0_dp)
+   contains
+      subroutine turn_end(e)
+         type(end_config), intent(inout) :: e
+         integer :: k
+         call turn(e%x, e%y, ox, oy)
+         call turn(e%direction_x, e%direction_y, 0.0_dp, 0.0_dp)
+         call turn(e%force_x, e%force_y, 0.0_dp, 0.0_dp)
+         ! Table columns: displacements of a motion, or forces: vectors.
+         do k = 1, e%table_rows
+            call turn(e%table_x(k), e%table_y(k), 0.0_dp, 0.0_dp)
+         end do
+      end subroutine turn_end
+      subroutine turn(x, y, x0, y0)
+         real(dp), intent(inout) :: x, y
+         real(dp), intent(in) :: x0, y0
+         real(dp) :: u, v
+         u = x - x0
+         v = y - y0
+         x = x0 + cos(angle)*u - sin(angle)*v
+         y = y0 + sin(angle)*u + cos(angle)*v
+      end subroutine turn
+   end function turned_config
 
    !> What the rod model computes for a scene.
    function terms_of(scene) result(terms)

@@ -108,6 +108,8 @@ if (two_views) {
     unset title
     set xrange [v1_x0 : v1_x1]
     set yrange [v1_z0 * (_ex == 100 ? 1 : 1.0 / _ex) : v1_z1 * (_ex == 100 ? 1 : 1.0 / _ex)]
+    # The deflection view is short: half as many tics as gnuplot would put there.
+    set ytics 2 * _step((v1_z1 - v1_z0) * (_ex == 100 ? 1 : 1.0 / _ex))
     load plotdir."/motion_view.gp"
     unset multiplot
 }

@@ -36,6 +36,8 @@ contains
                new_unittest('newton_quadratic', test_newton), &
                new_unittest('tension_too_small_refused', test_too_small), &
                new_unittest('ends_too_far_apart_refused', test_too_far), &
+               new_unittest('vertical_taut_tether', test_vertical_tether), &
+               new_unittest('vertical_slack_line_refused', test_vertical_slack), &
                new_unittest('catenary_guess_one_panel', test_guess_one_panel)]
    end subroutine collect_rod_statics
 
@@ -532,4 +534,70 @@ contains
       call check(error, refused%stat == stat_input .and. index(refused%message, 'reaches at most') > 0, &
                  'unexpected message: '//refused%message)
    end subroutine test_too_far
+   !> A taut tether between two fixed ends one above the other (end a 30 m below end b, a
+   !> 30 m line of the linear law stretched to 30.6 m), planar and 3-D: it hangs straight, the
+   !> tension grows by w along s, and the stretched length L + (T_a L + w L^2 / 2) / EA is the
+   !> span: T_a = (span - L) EA / L - w L / 2, T_b = T_a + w L. The weight sits at the nodes and
+   !> the law is linear, so the grid is exact: measured 2.4e-14 relative (61 nodes, both models).
+   subroutine test_vertical_tether(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp) :: w, ea, span, ta, tb, off
+      integer :: n, m
+      character(len=2), parameter :: models(2) = ['2d', '3d']
+      do m = 1, 2
+         c = statics_config(61)
+         c%law = 'linear'
+         c%length = 30
+         c%end_a%x = 0
+         c%end_a%z = -30
+         c%end_b%x = 0
+         c%end_b%z = 0.6_dp
+         c%model = models(m)
+         c%given = 'end_a%x end_a%z end_b%x end_b%z'
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         n = c%nodes
+         w = sim%rod%scene%weight
+         ea = sim%rod%scene%law%tension(1.0_dp)
+         span = 30.6_dp
+         ta = (span - c%length)*ea/c%length - 0.5_dp*w*c%length
+         tb = ta + w*c%length
+         ! The end tensions the run reports (the 3-D statics' own in 3-D).
+         write (output_unit, '(4x,a,a,2es12.3)') models(m), ' vertical tether: relative errors of T_a and T_b', &
+            (sim%rod%info%tension_a - ta)/tb, (sim%rod%info%tension_b - tb)/tb
+         call check_close(error, sim%rod%info%tension_a, ta, models(m)//' tension at end a', rel_tol=1.0e-13_dp)
+         if (allocated(error)) return
+         call check_close(error, sim%rod%info%tension_b, tb, models(m)//' tension at end b', rel_tol=1.0e-13_dp)
+         if (allocated(error)) return
+         if (m == 1) then
+            off = maxval(abs(sim%rod%static%r(1, :)))
+         else
+            off = maxval(hypot(sim%rod3%pieces(1)%run%x(1::3), sim%rod3%pieces(1)%run%x(2::3)))
+         end if
+         call check(error, off < 1.0e-9_dp*c%length, models(m)//': the tether leaves the vertical by '//str(off)//' m')
+         if (allocated(error)) return
+      end do
+   end subroutine test_vertical_tether
+
+   !> A slack line between two ends one above the other would hang folded: refused with a
+   !> message that says so (not a Newton failure).
+   subroutine test_vertical_slack(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(error_type), allocatable :: refused
+      type(simulation) :: sim
+      type(case_config) :: c
+      c = statics_config(61)
+      c%end_a%x = 0
+      c%end_a%z = -20
+      c%end_b%x = 0
+      c%end_b%z = 0
+      c%given = 'end_a%x end_a%z end_b%x end_b%z'
+      call sim%prepare(c, refused)
+      call check(error, allocated(refused), 'a slack line between ends one above the other was accepted')
+      if (allocated(error)) return
+      call check(error, refused%stat == stat_input .and. index(refused%message, 'folded') > 0, &
+                 'unexpected message: '//refused%message)
+   end subroutine test_vertical_slack
 end module suite_rod_statics

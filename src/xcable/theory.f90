@@ -198,8 +198,13 @@ contains
       d = rb - ra
       dist = norm2(d)
       eps_zero = law%strain_at(0.0_dp)
-      if (abs(d(1)) < 1.0e-9_dp*max(length, 1.0_dp)) then
-         call fatal_error(error, 'the ends are vertically above each other: no catenary guess for this scene', stat_input)
+      if (abs(d(1)) < 1.0e-9_dp*max(length, 1.0_dp) .and. dist < length*(1 + eps_zero) .and. weight > 0) then
+         ! A slack line between two points one above the other hangs folded (two strands side by
+         ! side, a fold the planar statics do not find from any guess tried: a catenary to a point
+         ! 0.01 L or 0.1 L beside the end failed). A taut one is straight (below).
+         call fatal_error(error, 'the ends are one above the other, '//str(dist)//' m apart, closer than the '// &
+                          'cable''s length at zero tension ('//str(length*(1 + eps_zero))//' m): the slack line '// &
+                          'would hang folded on itself; give the ends a horizontal offset', stat_input)
          return
       end if
       if (dist >= length*(1 + eps_zero) .or. weight <= 0) then

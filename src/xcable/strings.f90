@@ -61,6 +61,14 @@ contains
       logical :: special
       call special_text(x, s, special)
       if (special) return
+      ! A whole number below 1e6 in magnitude is its integer text (what the probes below give it:
+      ! the digits, no point; most values of a case's echo are such): no formatted I/O.
+      if (abs(x) < 1.0e6_dp) then
+         if (x == aint(x)) then
+            s = str_int(nint(x))
+            return
+         end if
+      end if
       ! The fewest significant digits that read back exactly: 17 always do, and
       ! if d digits do, d + 1 do too, so bisect.
       ! The text of the last probe that read back (hi's, when hi was probed) is kept.

@@ -71,6 +71,9 @@ module xcable_io_output_registry
 
    !> The registry as find_output keeps it (built at its first call).
    type(output_item), allocatable, save :: registry(:)
+   !> Each entry's path length, and whether its path holds '<end>' (set with registry).
+   integer, allocatable, save :: pattern_length(:)
+   logical, allocatable, save :: has_end_token(:)
 
 contains
 
@@ -242,17 +245,30 @@ contains
       type(output_item), intent(out) :: item
       !> Whether the registry lists it.
       logical, intent(out) :: found
-      integer :: i
+      integer :: i, n
       ! The table once per process: every dataset and attribute written looks it up (building it
-      ! at each lookup was 60 % of a short run's instructions).
-      if (.not. allocated(registry)) registry = output_items()
+      ! at each lookup was 60 % of a short run's instructions). A pattern without '<end>' matches
+      ! only a path of its own length: its length is compared first (no trim, no index).
+      if (.not. allocated(registry)) then
+         registry = output_items()
+         allocate (pattern_length(size(registry)), has_end_token(size(registry)))
+         do i = 1, size(registry)
+            pattern_length(i) = len_trim(registry(i)%path)
+            has_end_token(i) = index(registry(i)%path, '<end>') > 0
+         end do
+      end if
       found = .false.
+      n = len(path)
       do i = 1, size(registry)
-         if (matches(trim(registry(i)%path), path)) then
-            item = registry(i)
-            found = .true.
-            return
+         if (has_end_token(i)) then
+            if (.not. matches(registry(i)%path(1:pattern_length(i)), path)) cycle
+         else
+            if (pattern_length(i) /= n) cycle
+            if (registry(i)%path(1:n) /= path) cycle
          end if
+         item = registry(i)
+         found = .true.
+         return
       end do
    end subroutine find_output
 

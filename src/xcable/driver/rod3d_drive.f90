@@ -96,15 +96,18 @@ module xcable_rod3d_drive
 contains
 
    !> Set up the 3-D piece on the prepared planar run's grid and solve its statics.
-   subroutine drive_prepare(self, rod, error)
+   subroutine drive_prepare(self, rod, error, azimuth, pivot)
       !> 3-D run.
       class(rod3d_drive), intent(inout) :: self
       !> Planar run, prepared (its scene, grid, time step; its static fields are replaced).
       type(rod_run), intent(inout) :: rod
       !> Error: stat_input for what the 3-D run cannot do, stat_numerics when the statics fails.
       type(error_type), allocatable, intent(out) :: error
+      !> The angle (rad) the planar run's scene was turned by about the vertical through pivot (x, y)
+      !> to lie in x-z (driver/simulation.f90; default 0: not turned). Its static state is turned back.
+      real(dp), intent(in), optional :: azimuth, pivot(2)
       integer :: n, k
-      real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2)
+      real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2), phi
       real(dp), allocatable :: guess(:)
       n = rod%options%nodes
       allocate (self%pieces(1))
@@ -143,8 +146,15 @@ contains
          d3 = [rod%static%r(1, n) - pa(1), yb - ya]
          if (scene%end_a%held() .and. scene%end_b%held()) &
             d3(1) = component(scene%end_b%position3(0.0_dp), 1) - component(scene%end_a%position3(0.0_dp), 1)
+         phi = 0
+         if (present(azimuth)) phi = azimuth
          do k = 1, n
-            if (scene%end_a%held() .and. scene%end_b%held() .and. abs(d2) > 1.0e-6_dp*length) then
+            if (phi /= 0 .and. .not. (scene%end_a%held() .and. scene%end_b%held())) then
+               ! A turned scene with an end that is not held (a spring, a loaded end): the planar
+               ! state turned back about the pivot by the azimuth.
+               run%x(3*k - 2:3*k) = [pivot(1) + cos(phi)*(rod%static%r(1, k) - pivot(1)), &
+                                          pivot(2) + sin(phi)*(rod%static%r(1, k) - pivot(1)), rod%static%r(2, k)]
+            else if (scene%end_a%held() .and. scene%end_b%held() .and. abs(d2) > 1.0e-6_dp*length) then
                ! Both ends held: the planar shape turned (and stretched horizontally) onto the chord's vertical plane.
                run%x(3*k - 2:3*k) = [pa(1) + (rod%static%r(1, k) - pa(1))/d2*d3(1), &
                                           ya + (rod%static%r(1, k) - pa(1))/d2*d3(2), rod%static%r(2, k)]

@@ -177,24 +177,39 @@ contains
          self%terms = terms_of(scene)
          if (config%damping > 0) self%terms = self%terms//' damping'
          if (self%model == '3d') then
-            call self%rod3%prepare(self%rod, error)
+            call self%rod3%prepare(self%rod, error, chord_azimuth(scene), [config%end_a%x, config%end_a%y])
             self%terms = 'rod3d:'//self%terms(5:)//' twist'
          end if
       end select
    end subroutine sim_prepare
 
-   !> Azimuth of the chord from end a to end b in the horizontal plane, rad (from x towards y):
-   !> 0 unless both ends are held at distinct horizontal points.
+   !> Azimuth, in the horizontal plane, of the vertical plane the scene's line starts in, rad (from
+   !> x towards y): that of the chord from end a's point to end b's point when both ends have one
+   !> (a held end's position, a spring's anchor) at distinct horizontal places; with one point, that
+   !> of the other end's horizontal force (its pull away from the point); else 0.
    real(dp) function chord_azimuth(scene) result(phi)
       type(scene_type), intent(in) :: scene
-      real(dp) :: a(3), b(3)
+      real(dp) :: a(3), b(3), f(3)
+      logical :: point_a, point_b
       phi = 0
-      if (.not. (scene%end_a%held() .and. scene%end_b%held())) return
-      a = scene%end_a%position3(0.0_dp)
-      b = scene%end_b%position3(0.0_dp)
-      if (hypot(b(1) - a(1), b(2) - a(2)) <= 1.0e-9_dp*max(scene%length, 1.0_dp)) return
-      if (abs(b(2) - a(2)) == 0) return
-      phi = atan2(b(2) - a(2), b(1) - a(1))
+      point_a = scene%end_a%held() .or. scene%end_a%state_dependent()
+      point_b = scene%end_b%held() .or. scene%end_b%state_dependent()
+      if (point_a .and. point_b) then
+         a = scene%end_a%position3(0.0_dp)
+         b = scene%end_b%position3(0.0_dp)
+         if (hypot(b(1) - a(1), b(2) - a(2)) <= 1.0e-9_dp*max(scene%length, 1.0_dp)) return
+         if (abs(b(2) - a(2)) == 0) return
+         phi = atan2(b(2) - a(2), b(1) - a(1))
+      else if (point_a .or. point_b) then
+         ! The loaded end's horizontal force; end a's pulls the line away from end b's point.
+         if (point_a) then
+            f = scene%end_b%applied_force3(0.0_dp)
+         else
+            f = -scene%end_a%applied_force3(0.0_dp)
+         end if
+         if (abs(f(2)) == 0) return
+         phi = atan2(f(2), f(1))
+      end if
    end function chord_azimuth
 
    !> The case turned by angle (rad) about the vertical through end a: the ends' points, motion

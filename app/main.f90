@@ -125,7 +125,7 @@ program xcable_main
       if (allocated(error)) call fail_input(error)
       call output%reopen(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
                          config%gnuplot, sim%piece_starts(), sim%snapshots_written(), run_id, error, &
-                         three_d=sim%model == '3d')
+                         three_d=sim%three_d_output())
       if (allocated(error)) then
          ! Not fail_run: summary is not associated before sim%run, and the checkpoint stays.
          call fail_input(error)
@@ -144,7 +144,7 @@ program xcable_main
       run_id = new_run_id()
       call output%create(trim(config%file), sim%output_s(), config%fields, config_text(config), trim(path), &
                          config%gnuplot, trim(config%scheme), sim%terms, sim%piece_starts(), error, run_id=run_id, &
-                         three_d=sim%model == '3d')
+                         three_d=sim%three_d_output())
       if (.not. allocated(error)) call output%mark('model', sim%model, error)
       if (allocated(error)) then
          call output%finish('failed', error%message)

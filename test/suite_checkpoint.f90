@@ -95,6 +95,15 @@ module suite_checkpoint
       "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
       "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
       "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
+      "&numerics model = '3d', nodes = 121, courant = 14, t_end = 0.5 /"//new_line('a')// &
+      "&output interval = 0.02, energy = .true., quiet = .true. /"
+   !> The same scene with model = 'auto': it lies in one vertical plane, so it runs in 2-D, turned
+   !> into x-z, its results turned back (driver/simulation.f90).
+   character(len=*), parameter :: release_turned = &
+      "&cable bending_stiffness = 0.07056 /"//new_line('a')// &
+      "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+      "&end_b kind = 'fixed', x = 40, y = 20, z = 0 /"//new_line('a')// &
+      "&rupture s_break = 60, t_break = 0 /"//new_line('a')// &
       "&numerics nodes = 121, courant = 14, t_end = 0.5 /"//new_line('a')// &
       "&output interval = 0.02, energy = .true., quiet = .true. /"
 
@@ -626,6 +635,10 @@ contains
       call case_of(release3d, c, error)
       if (allocated(error)) return
       call stopped_and_resumed('3-D release off the plane, step halved', c, 8, error, halved=.true., broken=.true.)
+      if (allocated(error)) return
+      call case_of(release_turned, c, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('release in a plane at an azimuth (2-D, turned back)', c, 8, error, broken=.true.)
    end subroutine test_sigterm_3d
 
    !> The 3-D fairlead with a checkpoint every 7 steps: the run is as without

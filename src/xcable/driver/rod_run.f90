@@ -45,7 +45,8 @@ module xcable_rod_run
    use xcable_solver_banded, only: band_matrix
    use xcable_rod_statics, only: rod_static_state, solve_rod_statics
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
-                                 n_end_quantities, static_figures, slack_tension_fraction, note_min_strain
+                                 n_end_quantities, static_figures, slack_tension_fraction, note_min_strain, &
+                                 n_fields3, field3_names, n_end_quantities_y
    use xcable_theory, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, &
                                 sync_logical
@@ -211,6 +212,12 @@ module xcable_rod_run
       !> their margin; windows that fell back to the whole piece after a failed Newton solve.
       integer(i8) :: node_solves = 0, skipped_node_solves = 0
       integer :: window_growths = 0, window_fallbacks = 0
+      !> A scene in a vertical plane at an azimuth, run turned into the x-z plane
+      !> (driver/simulation.f90): the angle (rad, from x towards y) and the point (x, y) about which
+      !> its results are turned back into the scene's frame (0: not turned). The observer then gets
+      !> the fields of a 3-D run (y, vy; the others zero in a plane) and the history the ends' y
+      !> components (turned back when the run finishes).
+      real(dp) :: plane_azimuth = 0, plane_pivot(2) = 0
    contains
       !> Statics, the time step and the pieces (before any output).
       procedure :: prepare => run_prepare
@@ -517,10 +524,25 @@ contains
       self%progress = run_progress(h=self%dt)
       call start_history(self)
       if (present(observer)) then
-         call observer%static(self%info, error)
-         if (allocated(error)) return
-         call observer%snapshot(0.0_dp, self%info%fields, error)
-         if (allocated(error)) return
+         if (self%plane_azimuth /= 0) then
+            block
+               type(static_info) :: turned
+               turned = self%info
+               allocate (turned%extra(self%n_out, n_fields3))
+               call turned_back(self, turned%fields, column_velocities(self), turned%extra)
+               call observer%static(turned, error)
+               if (allocated(error)) return
+               call observer%snapshot(0.0_dp, turned%fields, error)
+               if (allocated(error)) return
+               call observer%snapshot_extra(0.0_dp, field3_names, turned%extra, error)
+               if (allocated(error)) return
+            end block
+         else
+            call observer%static(self%info, error)
+            if (allocated(error)) return
+            call observer%snapshot(0.0_dp, self%info%fields, error)
+            if (allocated(error)) return
+         end if
       end if
       capacity = int(min(self%options%t_end/self%dt, real(max_steps, dp))) + 16
       call self%history%reserve(capacity, size(self%history%end_labels), self%options%energy)
@@ -659,7 +681,62 @@ contains
       self%summary%wall_time = self%wall_time()
       self%summary%time_reached = self%t
       call summarise(self)
+      if (self%plane_azimuth /= 0) call turn_back_history(self)
    end subroutine run_finish
+
+   !> The history of a run turned into x-z (plane_azimuth), turned back into the scene's frame:
+   !> x, vx and force_x of each end and record, and their y components (ends_y).
+   subroutine turn_back_history(self)
+      type(rod_run), intent(inout) :: self
+      real(dp) :: c, s
+      c = cos(self%plane_azimuth)
+      s = sin(self%plane_azimuth)
+      associate (h => self%history)
+         if (allocated(h%ends_y)) deallocate (h%ends_y)
+         allocate (h%ends_y(n_end_quantities_y, size(h%ends, 2), lbound(h%ends, 3):ubound(h%ends, 3)))
+         ! ends: x, z, vx, vz, tension, force_x, force_z; ends_y: y, vy, force_y.
+         h%ends_y(1, :, :) = self%plane_pivot(2) + s*(h%ends(1, :, :) - self%plane_pivot(1))
+         h%ends_y(2, :, :) = s*h%ends(3, :, :)
+         h%ends_y(3, :, :) = s*h%ends(6, :, :)
+         h%ends(1, :, :) = self%plane_pivot(1) + c*(h%ends(1, :, :) - self%plane_pivot(1))
+         h%ends(3, :, :) = c*h%ends(3, :, :)
+         h%ends(6, :, :) = c*h%ends(6, :, :)
+      end associate
+   end subroutine turn_back_history
+
+   !> The fields of a run turned into x-z (plane_azimuth) in the scene's frame: the x column
+   !> turned back (in place), and the fields of field3_names from it and the columns' velocities
+   !> v (2, n_out): y and vy; the plan-view curvature, twist, binormal shear and curvature about
+   !> n are zero in a vertical plane.
+   subroutine turned_back(self, fields, v, extra)
+      type(rod_run), intent(in) :: self
+      real(dp), intent(inout) :: fields(:, :)
+      real(dp), intent(in) :: v(:, :)
+      real(dp), intent(out) :: extra(:, :)
+      real(dp) :: c, s, u(size(fields, 1))
+      c = cos(self%plane_azimuth)
+      s = sin(self%plane_azimuth)
+      ! fields: tension shear strain u v x z curvature; extra: y vy curvature_z twist binormal_shear curvature_n.
+      u = fields(:, 6) - self%plane_pivot(1)
+      fields(:, 6) = self%plane_pivot(1) + c*u
+      extra = 0
+      extra(:, 1) = self%plane_pivot(2) + s*u
+      extra(:, 2) = s*v(1, :)
+   end subroutine turned_back
+
+   !> The velocities of the pieces' nodes on the output columns (2, n_out); before a break
+   !> inside the cable the break node fills both of its columns (as in run_fields).
+   function column_velocities(self) result(v)
+      type(rod_run), intent(in) :: self
+      real(dp), allocatable :: v(:, :)
+      integer :: p
+      allocate (v(2, self%n_out))
+      v = 0
+      do p = 1, size(self%pieces)
+         v(:, self%pieces(p)%column) = self%pieces(p)%v
+      end do
+      if (size(self%pieces) == 1 .and. self%break_node > 0) v(:, self%break_node + 1) = v(:, self%break_node)
+   end function column_velocities
 
    !> Wall time of the dynamics so far, s: this process's and, for a resumed
    !> run, that of the processes before.
@@ -905,24 +982,33 @@ contains
       type(error_type), allocatable, intent(inout) :: error
       type(error_type), allocatable :: output_error
       real(dp) :: ts
+      real(dp), allocatable :: v(:, :), extra(:, :)
       do
          ts = snapshot_time(self, self%progress%snapshot_index)
          if (ts > t_new*(1 + 1.0e-12_dp)) exit
          if (.not. allocated(self%buffer)) allocate (self%buffer(self%n_out, n_fields))
          if (static) then
             self%buffer = self%info%fields
+            if (self%plane_azimuth /= 0) v = column_velocities(self)
          else
-            call interpolated_fields(self, ts, self%buffer)
+            call interpolated_fields(self, ts, self%buffer, v)
+         end if
+         if (self%plane_azimuth /= 0) then
+            allocate (extra(self%n_out, n_fields3))
+            call turned_back(self, self%buffer, v, extra)
          end if
          self%progress%snapshot_index = self%progress%snapshot_index + 1
          if (present(observer)) then
             call observer%snapshot(ts, self%buffer, output_error)
+            if (.not. allocated(output_error) .and. allocated(extra)) &
+               call observer%snapshot_extra(ts, field3_names, extra, output_error)
             if (allocated(output_error)) then
                call prefix_error(output_error, 'output: ')
                call move_alloc(output_error, error)
                return
             end if
          end if
+         if (allocated(extra)) deallocate (extra)
       end do
    end subroutine emit_snapshots
 
@@ -1585,10 +1671,12 @@ contains
 
    !> Fields at time ts inside the step just accepted (from self%t to the new
    !> level): cubic Hermite in the positions and velocities of its two ends.
-   subroutine interpolated_fields(self, ts, fields)
+   subroutine interpolated_fields(self, ts, fields, velocities)
       type(rod_run), intent(inout) :: self
       real(dp), intent(in) :: ts
       real(dp), intent(out) :: fields(:, :)
+      !> The interpolated velocities on the output columns (2, n_out).
+      real(dp), allocatable, intent(out), optional :: velocities(:, :)
       real(dp), allocatable :: r(:, :), v(:, :)
       real(dp) :: h, u, h00, h10, h01, h11, d00, d10, d01, d11
       integer :: p
@@ -1612,6 +1700,10 @@ contains
          end associate
       end do
       call self%fields(fields, r, v)
+      if (present(velocities)) then
+         if (size(self%pieces) == 1 .and. self%break_node > 0) v(:, self%break_node + 1) = v(:, self%break_node)
+         call move_alloc(v, velocities)
+      end if
    end subroutine interpolated_fields
 
    !> The break: split the piece at the break node into two, or release a held

@@ -21,7 +21,7 @@
 module xcable_simulation
    use xcable_kinds, only: dp
    use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str
+   use xcable_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config
    use xcable_scene, only: scene_type, scene_from_config
    use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination
@@ -37,6 +37,10 @@ module xcable_simulation
    !> Inertia kept by the shortest wave (two cells) with the averaged mass
    !> matrix, as a fraction of the lumped one (model/rod.f90, docs/theory/numerics.md).
    real(dp), parameter, public :: averaged_sawtooth_mass = 0.1_dp
+
+   !> A y component that turning a scene into x-z leaves at most this fraction of its vector's
+   !> size is round-off, and set to 0 (plane_config): the scene lies in the vertical plane.
+   real(dp), parameter :: plane_tolerance = 1.0e-12_dp
 
    !> Where and when a run writes checkpoints.
    type :: checkpoint_settings
@@ -90,6 +94,9 @@ module xcable_simulation
       procedure :: history => sim_history
       procedure :: summary => sim_summary
       procedure :: static => sim_static
+      !> Whether the results have the 3-D layout (y fields and the ends' y components): a 3-D
+      !> run, or a 2-D run of a scene in a vertical plane at an azimuth, turned back.
+      procedure :: three_d_output => sim_three_d_output
    end type simulation
 
 contains
@@ -150,6 +157,34 @@ contains
       case default
          call scene_from_config(config, scene, error)
          if (allocated(error)) return
+         ! model = 'auto' and a scene in one vertical plane that is not x-z: the 2-D run of the scene
+         ! turned into x-z, its results turned back (driver/rod_run.f90, plane_azimuth).
+         if (self%model == '3d' .and. trim(config%model) == 'auto') then
+            block
+               type(scene_type) :: planar
+               type(case_config) :: flat
+               real(dp) :: azimuth
+               logical :: in_plane
+               azimuth = chord_azimuth(scene)
+               if (azimuth /= 0) then
+                  call plane_config(config, azimuth, flat, in_plane)
+                  if (in_plane) then
+                     call scene_from_config(flat, planar, error)
+                     if (allocated(error)) return
+                     call self%rod%prepare(planar, run_options_from_config(config), error)
+                     if (allocated(error)) return
+                     self%rod%plane_azimuth = azimuth
+                     self%rod%plane_pivot = [config%end_a%x, config%end_a%y]
+                     self%model = '2d'
+                     self%terms = terms_of(planar)
+                     if (config%damping > 0) self%terms = self%terms//' damping'
+                     self%terms = self%terms//'; in the vertical plane at azimuth '// &
+                                  real_text(azimuth*180/acos(-1.0_dp))//' deg, run in 2-D and turned back'
+                     return
+                  end if
+               end if
+            end block
+         end if
          if (self%model == '3d') then
             ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
             ! the scene turned about the vertical so that its chord lies in the x-z plane: the
@@ -248,6 +283,41 @@ contains
          y = y0 + sin(angle)*u + cos(angle)*v
       end subroutine turn
    end function turned_config
+
+   !> The case turned by -azimuth about the vertical through end a's point (x, y) and moved so
+   !> that this point has y = 0, with the y components that the turn leaves at round-off set to 0
+   !> (at most plane_tolerance of their vector's size); in_plane: the result lies in the x-z
+   !> plane (case_config%is_planar), so that the 2-D model runs it.
+   subroutine plane_config(config, azimuth, c, in_plane)
+      type(case_config), intent(in) :: config
+      real(dp), intent(in) :: azimuth
+      type(case_config), intent(out) :: c
+      logical, intent(out) :: in_plane
+      real(dp) :: scale
+      c = turned_config(config, -azimuth)
+      scale = max(config%length, hypot(config%end_b%x - config%end_a%x, config%end_b%y - config%end_a%y))
+      call flatten_end(c%end_a)
+      call flatten_end(c%end_b)
+      call flatten(c%current_y, hypot(c%current_x, c%current_y))
+      in_plane = c%is_planar()
+   contains
+      subroutine flatten_end(e)
+         type(end_config), intent(inout) :: e
+         integer :: k
+         e%y = e%y - config%end_a%y
+         call flatten(e%y, scale + abs(e%x - config%end_a%x))
+         call flatten(e%force_y, hypot(e%force_x, e%force_y))
+         call flatten(e%direction_y, hypot(e%direction_x, e%direction_y))
+         do k = 1, e%table_rows
+            call flatten(e%table_y(k), hypot(e%table_x(k), e%table_y(k)))
+         end do
+      end subroutine flatten_end
+      subroutine flatten(y, size)
+         real(dp), intent(inout) :: y
+         real(dp), intent(in) :: size
+         if (abs(y) <= plane_tolerance*size) y = 0
+      end subroutine flatten
+   end subroutine plane_config
 
    !> What the rod model computes for a scene.
    function terms_of(scene) result(terms)
@@ -465,6 +535,11 @@ contains
       text = 'the namelist differs in line '//str(line)//": '"//then(a0:a1)//"' (checkpoint), '"//now(b0:b1)// &
              "' (now); the variables that may differ are marked in docs/user/namelist.md"
    end function first_difference
+
+   logical function sim_three_d_output(self)
+      class(simulation), intent(in) :: self
+      sim_three_d_output = self%model == '3d' .or. self%rod%plane_azimuth /= 0
+   end function sim_three_d_output
 
    integer function sim_snapshots_written(self) result(n)
       class(simulation), intent(in) :: self

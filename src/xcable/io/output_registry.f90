@@ -98,7 +98,8 @@ contains
       call add('/@terms', 'attribute', '', '', '', 'the scheme and the terms of the model it computed')
       call add('/@run_id', 'attribute', '', '', '', 'the identifier of the run (its checkpoints carry it; a resumed run keeps it)')
       call add('/@resumes', 'attribute', '', '1', 'a resumed run', 'how often the run was resumed from a checkpoint')
-      call add('/@model', 'attribute', '', '', '', "the model that ran: '2d' or '3d'")
+      call add('/@model', 'attribute', '', '', '', "the model that ran: '2d' or '3d' (a scene in a vertical "// &
+               "plane at an azimuth runs in 2-D, turned, and writes the 3-D layout: y, vy, the ends' y components)")
       ! The snapshots.
       call add('/s', 'dataset', 'node', 'm', '', &
                'arc length of each output node in the unstretched cable, from end a (the dimension scale ''node'')')

@@ -256,7 +256,8 @@ contains
       call add(t, 'numerics', 'model', 'string', '-', "'auto'", &
                "'2d' (the cable in the x-z plane), '3d' (positions x, y, z and twist; the rod scheme) "// &
                "or 'auto': 2-D when every end, force, motion, current and torque "// &
-               'lies in the x-z plane, 3-D otherwise', length=16, choices='auto 2d 3d')
+               'lies in one vertical plane (another than x-z: turned into x-z and back), 3-D otherwise', &
+               length=16, choices='auto 2d 3d')
       call add(t, 'numerics', 'nodes', 'integer', '-', '121', 'number of nodes, uniform in unstretched arc length '// &
                '(uniform on each side of a break inside the cable, the break point a node)', &
                3.0_dp, 100001.0_dp)

@@ -1347,6 +1347,24 @@ contains
       call read_config(path, config, error)
    end subroutine read_text
 
+   !> How far a 3-D run (obs3) of a scene turned by angle (rad) about the vertical through the
+   !> origin is from its planar twin (obs2): the largest difference of the tension over the largest
+   !> tension, and of the positions (m) turned back into x-z (fields 1: tension; 6, 7: x, z; extra 1: y).
+   subroutine twin_difference(obs2, obs3, angle, tension_err, position_err)
+      type(keeper), intent(in) :: obs2, obs3
+      real(dp), intent(in) :: angle
+      real(dp), intent(out) :: tension_err, position_err
+      real(dp) :: ca, sa
+      ca = cos(angle)
+      sa = sin(angle)
+      tension_err = maxval(abs(obs3%fields(:, 1, 1:obs3%n) - obs2%fields(:, 1, 1:obs2%n)))/ &
+                    maxval(abs(obs2%fields(:, 1, 1:obs2%n)))
+      position_err = max(maxval(abs(ca*obs3%fields(:, 6, 1:obs3%n) + sa*obs3%extra(:, 1, 1:obs3%n) - &
+                                    obs2%fields(:, 6, 1:obs2%n))), &
+                         maxval(abs(-sa*obs3%fields(:, 6, 1:obs3%n) + ca*obs3%extra(:, 1, 1:obs3%n))), &
+                         maxval(abs(obs3%fields(:, 7, 1:obs3%n) - obs2%fields(:, 7, 1:obs2%n))))
+   end subroutine twin_difference
+
    !> The paper's fast 180 kN break between supports 70.658 m apart, with the chord along x (the
    !> planar model) and turned about the vertical by 30, 135, 210 and -30 degrees (the 3-D model):
    !> the 3-D run is prepared from its own chord, so it takes the planar twin's time step and
@@ -1388,13 +1406,7 @@ contains
          if (allocated(error)) return
          call check(error, obs3%n == obs2%n, 'turned by '//str(angles(k))//' degrees: another number of snapshots')
          if (allocated(error)) return
-         ! Fields 1: tension; 6, 7: x, z (planar); extra 1: y.
-         tension_err = maxval(abs(obs3%fields(:, 1, 1:obs3%n) - obs2%fields(:, 1, 1:obs2%n)))/ &
-                       maxval(abs(obs2%fields(:, 1, 1:obs2%n)))
-         position_err = max(maxval(abs(ca*obs3%fields(:, 6, 1:obs3%n) + sa*obs3%extra(:, 1, 1:obs3%n) - &
-                                       obs2%fields(:, 6, 1:obs2%n))), &
-                            maxval(abs(-sa*obs3%fields(:, 6, 1:obs3%n) + ca*obs3%extra(:, 1, 1:obs3%n))), &
-                            maxval(abs(obs3%fields(:, 7, 1:obs3%n) - obs2%fields(:, 7, 1:obs2%n))))
+         call twin_difference(obs2, obs3, a, tension_err, position_err)
          worst_t = max(worst_t, tension_err)
          worst_x = max(worst_x, position_err)
       end do
@@ -1442,15 +1454,7 @@ contains
          if (allocated(error)) return
          call check(error, obs3%n == obs2%n, trim(ends3(k))//': another number of snapshots')
          if (allocated(error)) return
-         a = angles(k)*acos(-1.0_dp)/180
-         ca = cos(a)
-         sa = sin(a)
-         tension_err = maxval(abs(obs3%fields(:, 1, 1:obs3%n) - obs2%fields(:, 1, 1:obs2%n)))/ &
-                       maxval(abs(obs2%fields(:, 1, 1:obs2%n)))
-         position_err = max(maxval(abs(ca*obs3%fields(:, 6, 1:obs3%n) + sa*obs3%extra(:, 1, 1:obs3%n) - &
-                                       obs2%fields(:, 6, 1:obs2%n))), &
-                            maxval(abs(-sa*obs3%fields(:, 6, 1:obs3%n) + ca*obs3%extra(:, 1, 1:obs3%n))), &
-                            maxval(abs(obs3%fields(:, 7, 1:obs3%n) - obs2%fields(:, 7, 1:obs2%n))))
+         call twin_difference(obs2, obs3, angles(k)*acos(-1.0_dp)/180, tension_err, position_err)
          worst_t = max(worst_t, tension_err)
          worst_x = max(worst_x, position_err)
       end do

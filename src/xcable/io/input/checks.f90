@@ -1,0 +1,493 @@
+!> The validation of a case: every variable against its schema entry (range or allowed
+!> words), then the conditions between variables (the ends, the tables, the rupture, the model);
+!> and the defaults derived from others.
+!> (Split from io/input.f90, which reads a case through these modules.)
+module xcable_io_input_checks
+   use xcable_kinds, only: dp
+   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_strings, only: str, real_text
+   use xcable_io_config, only: case_config, end_config
+   use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names, kinds_using
+   use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text
+   use xcable_io_input_access, only: access, config_value, get_value
+   use xcable_io_input_scanner, only: is_word, next_item, shown
+   use xcable_io_input_tables, only: check_column, check_material_table, load_material_table, load_table, &
+                                     time_order
+   use xcable_io_input_echo, only: value_text
+   implicit none
+   private
+   public :: derive_defaults, max_time_steps, validate
+
+   !> Most snapshots a run may ask for (t_end / interval).
+   real(dp), parameter :: max_snapshots = 1.0e5_dp
+
+   !> Most time steps a run may ask for (t_end / dt): the history is kept in
+   !> memory, and a step far below this is a typing error (dt = 1e-300 made
+   !> an integer overflow and a crash).
+   integer, parameter :: max_time_steps = 1000000
+
+   !> Poisson ratio of the default torsional stiffness GIp = EI / (1 + nu) (a solid isotropic rod; nylon).
+   real(dp), parameter :: default_poisson = 0.4_dp
+
+contains
+
+   !> The values whose 0 means "derived from others": the area from the
+   !> diameter, EI from young and the diameter, EA of the linear law from young
+   !> and the area; and a negative s_break, the end b (s = L). Called by
+   !> validate and by setup_case, so that a case built in code (tests,
+   !> examples) gets them as a namelist does.
+   pure subroutine derive_defaults(c)
+      !> Case; derived values replace zeros.
+      type(case_config), intent(inout) :: c
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
+      if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
+      if (c%gip == 0) c%gip = c%bending_stiffness/(1 + default_poisson)
+      if (c%law == 'linear' .and. c%ea == 0) c%ea = c%young*c%area
+      if (c%s_break < 0) c%s_break = c%length
+   end subroutine derive_defaults
+
+   !> The checks of a case read: the tables from files, every variable
+   !> against its schema entry, the law's table or coefficients, the derived values,
+   !> the conditions between variables, and the default output file.
+   subroutine validate(c, error)
+      !> The case; derived values and table files filled in.
+      type(case_config), intent(inout) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      type(schema_entry), allocatable :: t(:)
+      type(end_config) :: e
+      integer :: i, slash, dot
+
+      t = schema_table()
+      e = c%end_a
+      call load_table(c, 'end_a', e, error)
+      if (allocated(error)) return
+      c%end_a = e
+      e = c%end_b
+      call load_table(c, 'end_b', e, error)
+      if (allocated(error)) return
+      c%end_b = e
+      ! The law first: its table file is read only for law = 'table' (checked after the ranges).
+      call check_entry(c, t(find_entry(t, 'material', 'law')), error)
+      if (allocated(error)) return
+      if (c%law == 'table') then
+         call load_material_table(c, error)
+         if (allocated(error)) return
+      end if
+      do i = 1, size(t)
+         call check_entry(c, t(i), error)
+         if (allocated(error)) return
+      end do
+      call check_material_table(c, error)
+      if (allocated(error)) return
+      ! Lower bounds (issue 6, bad-input fuzzing): a value that is positive but
+      ! tiny (1e-300) passed "> 0" and gave a zero mass, an infinite wave
+      ! speed, a zero step or a singular Jacobian; the schema's ranges are
+      ! generous physical ones. The tanh law's coefficients have ranges of
+      ! their own.
+      if (c%law == 'tanh') then
+         call coefficient(1, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
+         call coefficient(2, 0.0_dp, 1.0e6_dp, .true.); if (allocated(error)) return
+         call coefficient(3, -1.0e3_dp, 1.0e3_dp, .false.); if (allocated(error)) return
+         call coefficient(5, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
+      end if
+      ! An EI given is in range (above); one derived from young and d may not be:
+      ! EI far below 1e-6 N m^2 leaves the moment balance empty at double precision.
+      if (c%bending_stiffness == 0 .and. c%young*pi*c%diameter**4/64 < 1.0e-6_dp) then
+         call fatal_error(error, c%source//': &cable: young = '//real_text(c%young)//', diameter = '// &
+                          real_text(c%diameter)//': give a bending stiffness E pi d^4 / 64 = '// &
+                          str(c%young*pi*c%diameter**4/64)//' N m^2, below 1e-6; set bending_stiffness', stat_input)
+         return
+      end if
+      call derive_defaults(c)
+      ! (Fortran does not short-circuit .and.: the division only where the divisor is positive.)
+      if (c%t_end > max_time_steps*max(c%dt, 0.0_dp) .and. c%dt > 0) then
+         call fatal_error(error, c%source//': &numerics: dt = '//real_text(c%dt)//': gives more than '// &
+                          str(max_time_steps)//' steps to t_end = '//real_text(c%t_end)//'; must be at least t_end / '// &
+                          str(max_time_steps)//' = '//real_text(c%t_end/max_time_steps), stat_input)
+         return
+      end if
+      if (c%t_end > max_snapshots*max(c%interval, 0.0_dp) .and. c%interval > 0) then
+         call fatal_error(error, c%source//': &output: interval = '//real_text(c%interval)// &
+                          ': gives more than 100000 snapshots; must be at least t_end / 100000 = '// &
+                          real_text(c%t_end/max_snapshots), stat_input)
+         return
+      end if
+      call check_scene(c, error)
+      if (allocated(error)) return
+      call check_model(c, error)
+      if (allocated(error)) return
+      if (trim(c%file) == c%source .or. './'//trim(c%file) == c%source .or. trim(c%file) == './'//c%source) then
+         call fatal_error(error, c%source//": &output: file = '"//trim(c%file)//"': is the input file itself", &
+                          stat_input)
+         return
+      end if
+      if (len_trim(c%file) == 0) then
+         slash = index(c%source, '/', back=.true.)
+         dot = index(c%source, '.', back=.true.)
+         if (dot <= slash) dot = len(c%source) + 1
+         c%file = 'results/'//c%source(slash + 1:dot - 1)//'.h5'
+      end if
+
+   contains
+
+      !> A coefficient of the tanh law in its range.
+      subroutine coefficient(k, lower, upper, open)
+         !> Which coefficient.
+         integer, intent(in) :: k
+         !> Its range.
+         real(dp), intent(in) :: lower, upper
+         !> Whether the lower bound is excluded.
+         logical, intent(in) :: open
+         if (open) then
+            if (c%p(k) > lower .and. c%p(k) <= upper) return
+            call fatal_error(error, c%source//': &material: p('//str(k)//') = '//real_text(c%p(k))// &
+                             ': must be > '//real_text(lower)//' and <= '//real_text(upper)//' for the tanh law', &
+                             stat_input)
+         else
+            if (c%p(k) >= lower .and. c%p(k) <= upper) return
+            call fatal_error(error, c%source//': &material: p('//str(k)//') = '//real_text(c%p(k))// &
+                             ': must be in ['//real_text(lower)//', '//real_text(upper)//'] for the tanh law', stat_input)
+         end if
+      end subroutine coefficient
+   end subroutine validate
+
+   !> Check one variable against its schema entry: a number against its
+   !> range (0 allowed where it stands for a derived value; an upper bound
+   !> may come from another variable), a string against its allowed words.
+   subroutine check_entry(c, e, error)
+      !> The case.
+      type(case_config), intent(inout) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      type(config_value) :: v, bound
+      type(schema_entry), allocatable :: t(:)
+      real(dp) :: upper, x
+      integer :: k, pos
+      character(:), allocatable :: item, name, prefix
+      logical :: ok
+
+      call access(c, e, v, .false.)
+      if (.not. v%found) then
+         call fatal_error(error, c%source//': &'//trim(e%group)//': '//trim(e%name)// &
+                          ': a variable of the schema that the reader does not know (io/input.f90 access)', stat_input)
+         return
+      end if
+      prefix = c%source//': &'//trim(e%group)//': '
+      select case (e%type)
+      case ('real', 'integer')
+         if (.not. e%bounded) return
+         if (len_trim(e%default_means) > 0 .and. .not. c%is_given(trim(e%group), trim(e%name))) return
+         upper = e%upper
+         if (len_trim(e%upper_from) > 0) then
+            t = schema_table()
+            k = index(e%upper_from, '%')
+            k = find_entry(t, e%upper_from(1:k - 1), trim(e%upper_from(k + 1:)))
+            bound = get_value(c, t(k))
+            upper = bound%reals(1)
+         end if
+         if (e%type == 'integer') v%reals = [real(v%int, dp)]
+         do k = 1, size(v%reals)
+            x = v%reals(k)
+            if (len_trim(e%zero_means) > 0 .and. x == 0) cycle
+            if (e%lower_open) then
+               ok = x > e%lower .and. x <= upper
+            else
+               ok = x >= e%lower .and. x <= upper
+            end if
+            if (ok) cycle
+            name = trim(e%name)
+            if (e%count > 1) name = name//'('//str(k)//')'
+            if (e%type == 'integer') then
+               item = str(v%int)
+            else
+               item = real_text(x)
+            end if
+            item = prefix//name//' = '//item//': must be '//allowed_text(e, upper)
+            if (len_trim(e%note) > 0) item = item//' ('//trim(e%note)//')'
+            call fatal_error(error, item, stat_input)
+            return
+         end do
+      case ('string')
+         if (len_trim(e%choices) == 0) return
+         if (.not. e%word_list) then
+            if (is_word(v%text, e%choices)) return
+            call fatal_error(error, prefix//trim(e%name)//" = '"//shown(v%text)//"': must be "//allowed_text(e), &
+                             stat_input)
+            return
+         end if
+         pos = 1
+         do
+            call next_item(v%text, pos, item)
+            if (len(item) == 0) exit
+            if (is_word(item, e%choices)) cycle
+            call fatal_error(error, prefix//trim(e%name)//" = '"//shown(v%text)//"': unknown word "//'"'//item// &
+                             '"; allowed: '//comma_words(e%choices), stat_input)
+            return
+         end do
+      end select
+   end subroutine check_entry
+
+   !> Blank-separated words as 'a, b, c'.
+   function comma_words(words) result(s)
+      !> Blank-separated words.
+      character(*), intent(in) :: words
+      character(:), allocatable :: s, item
+      integer :: pos
+      s = ''
+      pos = 1
+      do
+         call next_item(words, pos, item)
+         if (len(item) == 0) exit
+         if (len(s) > 0) s = s//', '
+         s = s//item
+      end do
+   end function comma_words
+
+   !> The conditions between variables: the tension or the end positions,
+   !> each end against its kind, a support, and a break where something holds.
+   subroutine check_scene(c, error)
+      !> The case (validated variables, derived values); motion directions normalised.
+      type(case_config), intent(inout) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: position, broken, held
+      type(end_config) :: e
+      logical :: held_a, held_b
+
+      e = c%end_a
+      call check_end(c, 'end_a', e, c%end_b, error)
+      if (allocated(error)) return
+      c%end_a = e
+      e = c%end_b
+      call check_end(c, 'end_b', e, c%end_a, error)
+      if (allocated(error)) return
+      c%end_b = e
+
+      if (c%is_given('static', 'tension') .and. (c%is_given('end_b', 'x') .or. c%is_given('end_b', 'y') .or. &
+                                                 c%is_given('end_b', 'z'))) then
+         if (c%is_given('end_b', 'x')) then
+            position = 'x = '//real_text(c%end_b%x)
+         else if (c%is_given('end_b', 'y')) then
+            position = 'y = '//real_text(c%end_b%y)
+         else
+            position = 'z = '//real_text(c%end_b%z)
+         end if
+         call fatal_error(error, c%source//': &static: tension = '//real_text(c%tension)//' and &end_b '//position// &
+                          ': both given; give one: the tension (the paper'//"'"//'s symmetric case: end b at the '// &
+                          'height of end a, the span from the tension) or the end positions', stat_input)
+         return
+      end if
+
+      if (c%fluid_density == 0 .and. (c%current_x /= 0 .or. c%current_y /= 0 .or. c%current_z /= 0)) then
+         if (c%current_x /= 0) then
+            position = 'current_x = '//real_text(c%current_x)
+         else if (c%current_y /= 0) then
+            position = 'current_y = '//real_text(c%current_y)
+         else
+            position = 'current_z = '//real_text(c%current_z)
+         end if
+         call fatal_error(error, c%source//': &fluid: '//position//': a current needs a fluid; give &fluid density '// &
+                          '(> 0: 1025 for sea water, 1.2 for air)', stat_input)
+         return
+      end if
+      if (c%fluid_density == 0 .and. (c%cd_normal /= 0 .or. c%cd_tangential /= 0 .or. c%ca_normal /= 0)) then
+         call fatal_error(error, c%source//': &fluid: drag or added-mass coefficients without a fluid (density = 0); '// &
+                          'give &fluid density (> 0: 1025 for sea water, 1.2 for air)', stat_input)
+         return
+      end if
+
+      held = quoted_words(end_kind_names(held=.true.), ' or ')
+      held_a = is_word(c%end_a%kind, end_kind_names(held=.true.))
+      held_b = is_word(c%end_b%kind, end_kind_names(held=.true.))
+      if (.not. (held_a .or. held_b)) then
+         if (c%end_a%kind == 'free' .and. c%end_b%kind == 'free') then
+            call fatal_error(error, c%source//": &end_a: kind = 'free' and &end_b: kind = 'free': a cable with no "// &
+                             'support has no static state; make one end '//held, stat_input)
+         else
+            call fatal_error(error, c%source//": &end_a: kind = '"//trim(c%end_a%kind)//"' and &end_b: kind = '"// &
+                             trim(c%end_b%kind)//"': nothing holds the cable (no "//held//' end), so it '// &
+                             'has no static state; make one end '//held, stat_input)
+         end if
+         return
+      end if
+
+      if (c%break_enabled .and. (c%s_break == 0 .or. c%s_break == c%length)) then
+         if (c%s_break == 0) then
+            broken = 'a'
+            if (held_a) return
+         else
+            broken = 'b'
+            if (held_b) return
+         end if
+         position = real_text(c%s_break)
+         if (.not. c%is_given('rupture', 's_break')) position = position//' (the default, L)'
+         if (broken == 'a') then
+            position = position//", at end a, whose kind = '"//trim(c%end_a%kind)//"'"
+         else
+            position = position//", at end b, whose kind = '"//trim(c%end_b%kind)//"'"
+         end if
+         call fatal_error(error, c%source//': &rupture: s_break = '//position//': nothing holds that end, so '// &
+                          'there is nothing to break; break at a '//held//' end, inside the cable '// &
+                          '(0 < s_break < L), or set enabled = .false.', stat_input)
+      end if
+   end subroutine check_scene
+
+   !> The model against the scene: 3-D data under model = '2d', and what the
+   !> 3-D model does not do (the box scheme).
+   subroutine check_model(c, error)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: what
+      if (trim(c%model) == '2d' .and. .not. c%is_planar()) then
+         what = out_of_plane(c)
+         call fatal_error(error, c%source//': &numerics: model = '//"'2d'"//' with '//what// &
+                          ': the 2-D model keeps the cable in the x-z plane; allowed: model = '//"'3d' or 'auto'"// &
+                          ', or y components and torques of 0', stat_input)
+         return
+      end if
+      if (c%model_to_run() /= '3d') return
+      what = "model = '"//trim(c%model)//"'"
+      if (trim(c%model) == 'auto') what = what//' (3-D: '//out_of_plane(c)//')'
+      if (trim(c%scheme) == 'box') &
+         call fatal_error(error, c%source//": &numerics: scheme = 'box' with "//what//': the box scheme is '// &
+                          "planar; allowed: scheme = 'rod' for the 3-D model", stat_input)
+   end subroutine check_model
+
+   !> The first datum of a case that leaves the x-z plane, as 'group: variable = value'.
+   function out_of_plane(c) result(text)
+      type(case_config), intent(in) :: c
+      character(:), allocatable :: text
+      text = ''
+      call end_datum(c%end_a, 'end_a')
+      call end_datum(c%end_b, 'end_b')
+      if (len(text) == 0 .and. c%current_y /= 0) text = '&fluid current_y = '//real_text(c%current_y)
+   contains
+      subroutine end_datum(e, group)
+         type(end_config), intent(in) :: e
+         character(*), intent(in) :: group
+         integer :: k
+         if (len(text) > 0) return
+         if (e%y /= 0) then
+            text = '&'//group//' y = '//real_text(e%y)
+         else if (e%force_y /= 0) then
+            text = '&'//group//' force_y = '//real_text(e%force_y)
+         else if (e%direction_y /= 0) then
+            text = '&'//group//' direction_y = '//real_text(e%direction_y)
+         else if (e%torque /= 0) then
+            text = '&'//group//' torque = '//real_text(e%torque)
+         else if (any(e%table_y(1:e%table_rows) /= 0)) then
+            k = findloc(e%table_y(1:e%table_rows) /= 0, .true., 1)
+            text = '&'//group//' table_y('//str(k)//') = '//real_text(e%table_y(k))
+         end if
+      end subroutine end_datum
+   end function out_of_plane
+
+   !> The conditions of one end: no variable its kind does not use (the kinds of
+   !> the registry, ends/registry.f90: a position x, y, z where the statics give
+   !> it is refused when given at all, another variable when it differs from its
+   !> default: the echo writes every variable), the conditions of its kind (its
+   !> registry line's check), and the motion direction normalised.
+   subroutine check_end(c, group, e, other, error)
+      !> The case (for its source and what was given).
+      type(case_config), intent(in) :: c
+      !> 'end_a' or 'end_b'.
+      character(*), intent(in) :: group
+      !> The end; its motion direction is normalised.
+      type(end_config), intent(inout) :: e
+      !> The other end.
+      type(end_config), intent(in) :: other
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      type(schema_entry), allocatable :: t(:)
+      integer, allocatable :: mine(:)
+      type(end_kind) :: line, other_line
+      character(:), allocatable :: prefix, kind, name, value
+      logical :: found, other_found
+      real(dp) :: norm
+      integer :: i
+
+      prefix = c%source//': &'//group//': '
+      kind = "kind = '"//trim(e%kind)//"'"
+      call find_end_kind(e%kind, line, found)
+      if (.not. found) then
+         call fatal_error(error, prefix//kind//': unknown kind; registered: '// &
+                          quoted_words(end_kind_names(), ', '), stat_input)
+         return
+      end if
+      t = schema_table()
+      mine = group_entries(t, group)
+      do i = 1, size(mine)
+         name = trim(t(mine(i))%name)
+         if (name == 'kind' .or. is_word(name, line%variables)) cycle
+         if (.not. c%is_given(group, name)) cycle
+         value = value_text(c, t(mine(i)))
+         if (is_word(name, 'x y z')) then
+            call fatal_error(error, prefix//name//' = '//value//': given for '//kind//": the position of a '"// &
+                             trim(e%kind)//"' end follows from the statics; leave "//name//' out', stat_input)
+            return
+         end if
+         if (value == trim(t(mine(i))%default)) cycle
+         call fatal_error(error, prefix//name//' = '//value//': given for '//kind//', which does not use it: '// &
+                          name//' is a variable of kind '//quoted_words(kinds_using(name), ' or ')//'; '// &
+                          kind//' takes '//variable_list(line%variables), stat_input)
+         return
+      end do
+      if (associated(line%check)) then
+         call find_end_kind(other%kind, other_line, other_found)
+         call line%check(prefix, e, other, other_found .and. other_line%held, error)
+         if (allocated(error)) return
+      end if
+      norm = norm2([e%direction_x, e%direction_y, e%direction_z])
+      if (norm > 0) then
+         e%direction_x = e%direction_x/norm
+         e%direction_y = e%direction_y/norm
+         e%direction_z = e%direction_z/norm
+      end if
+      call check_column(prefix, 'table_time', e%table_time(1:e%table_rows), time_order, error)
+
+   contains
+
+      !> A kind's variables as 'x, y, z' ('no other variable' when none).
+      function variable_list(words) result(text)
+         character(*), intent(in) :: words
+         character(:), allocatable :: text
+         text = comma_words(words)
+         if (len(text) == 0) text = 'no other variable'
+      end function variable_list
+   end subroutine check_end
+
+   !> Blank-separated words as "'a', 'b' and 'c'" with the given last separator (' or ').
+   function quoted_words(words, last) result(text)
+      !> The words.
+      character(*), intent(in) :: words
+      !> Separator before the last word (', ' for all commas).
+      character(*), intent(in) :: last
+      character(:), allocatable :: text, item
+      integer :: pos, n, k
+      n = 0
+      pos = 1
+      do
+         call next_item(words, pos, item)
+         if (len(item) == 0) exit
+         n = n + 1
+      end do
+      text = ''
+      pos = 1
+      do k = 1, n
+         call next_item(words, pos, item)
+         if (k > 1 .and. k == n) then
+            text = text//last
+         else if (k > 1) then
+            text = text//', '
+         end if
+         text = text//"'"//item//"'"
+      end do
+   end function quoted_words
+end module xcable_io_input_checks

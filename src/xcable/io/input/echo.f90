@@ -1,0 +1,215 @@
+!> The resolved case as namelist text (its echo into the result file, and the fingerprint a
+!> checkpoint is checked against).
+!> (Split from io/input.f90, which reads a case through these modules.)
+module xcable_io_input_echo
+   use xcable_strings, only: str, real_text
+   use xcable_io_config, only: case_config, end_config
+   use xcable_ends_registry, only: end_kind, find_end_kind
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries
+   use xcable_io_input_access, only: access, config_value, get_value
+   use xcable_io_input_scanner, only: is_word
+   implicit none
+   private
+   public :: config_text, value_text
+
+contains
+
+   !> The resolved case as namelist text (for provenance in the output): every
+   !> variable of the schema, group by group, except those that may not be
+   !> given together with others (the tension or the position of end b, the
+   !> positions of free, force and mass ends) and tables without rows; a
+   !> table read from a file is written inline, the file named in a comment.
+   !> Read back, it gives the same case (with the table inline, not from the file).
+   !> With fingerprint, the variables that may differ between a run and its
+   !> resume (schema: resume_may_differ) are left out: the text a checkpoint
+   !> is checked against.
+   function config_text(c, fingerprint) result(text)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> Leave out what may differ on --resume (default: .false.).
+      logical, intent(in), optional :: fingerprint
+      character(:), allocatable :: text
+      integer, parameter :: width = 100
+      character(len=*), parameter :: nl = new_line('a')
+      type(schema_entry), allocatable :: t(:)
+      character(len=16), allocatable :: groups(:)
+      integer, allocatable :: mine(:)
+      type(config_value) :: v
+      type(case_config) :: copy
+      character(:), allocatable :: block, comment, line, sep, token
+      integer :: ig, i, k, n
+      logical :: skip_steering, position_b
+      skip_steering = .false.
+      if (present(fingerprint)) skip_steering = fingerprint
+      ! One copy of the case for `access` (which takes it intent(inout) and only
+      ! reads it here), not one per variable as get_value makes: those copies (the
+      ! end tables) were 45 % of the instructions of config_text.
+      copy = c
+      position_b = given_position_b(c)
+      t = schema_table()
+      groups = schema_groups(t)
+      text = ''
+      do ig = 1, size(groups)
+         mine = group_entries(t, groups(ig))
+         block = ''
+         comment = ''
+         line = '&'//trim(groups(ig))
+         sep = ' '
+         do i = 1, size(mine)
+            associate (e => t(mine(i)))
+               if (.not. echoed(c, e, position_b)) cycle
+               if (skip_steering .and. e%resume_may_differ) cycle
+               call access(copy, e, v, .false.)
+               if (e%name == 'table_file') then
+                  comment = comment//"! &"//trim(e%group)//": the table was read from table_file = '"// &
+                            v%text//"'"//nl
+                  cycle
+               end if
+               n = 1
+               if (e%type == 'real') n = size(v%reals)
+               do k = 1, n
+                  token = item_text(e, v, k)
+                  if (k == 1) token = trim(e%name)//' = '//token
+                  if (len(line) + len(sep) + len(token) > width) then
+                     block = block//line//trim(sep)//nl
+                     line = '   '//token
+                  else
+                     line = line//sep//token
+                  end if
+                  sep = ', '
+               end do
+            end associate
+         end do
+         ! A group with nothing to write (&static beside the end positions) is left out.
+         if (sep == ' ') cycle
+         text = text//comment//block//line//' /'//nl
+      end do
+   end function config_text
+
+   !> The value of a variable in a case as the echo writes it ('' for a table without rows).
+   function value_text(c, e) result(text)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      character(:), allocatable :: text
+      type(config_value) :: v
+      integer :: k
+      v = get_value(c, e)
+      text = ''
+      if (.not. v%found) return
+      if (e%type /= 'real') then
+         text = item_text(e, v, 1)
+         return
+      end if
+      do k = 1, size(v%reals)
+         if (k > 1) text = text//', '
+         text = text//item_text(e, v, k)
+      end do
+   end function value_text
+
+   !> Element k of a value as namelist text.
+   function item_text(e, v, k) result(text)
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      !> Its value.
+      type(config_value), intent(in) :: v
+      !> Element (reals).
+      integer, intent(in) :: k
+      character(:), allocatable :: text
+      integer :: i
+      select case (e%type)
+      case ('real')
+         text = real_text(v%reals(k))
+      case ('integer')
+         text = str(v%int)
+      case ('logical')
+         text = merge('.true. ', '.false.', v%flag)
+         text = trim(text)
+      case default
+         ! Quoted, a quote inside doubled.
+         text = "'"
+         do i = 1, len(v%text)
+            text = text//v%text(i:i)
+            if (v%text(i:i) == "'") text = text//"'"
+         end do
+         text = text//"'"
+      end select
+   end function item_text
+
+   !> Whether a position of end b was given (then the tension is not echoed).
+   logical function given_position_b(c)
+      !> The case.
+      type(case_config), intent(in) :: c
+      given_position_b = c%is_given('end_b', 'x') .or. c%is_given('end_b', 'y') .or. c%is_given('end_b', 'z')
+   end function given_position_b
+
+   !> Whether the echo writes a variable: the tension only for the paper's
+   !> symmetric case (both ends fixed, no position given for end b), end b's
+   !> position only when given; not the position of an end whose kind does not use it (free,
+   !> force, mass), nor a variable of own_kinds_only for another kind;
+   !> no table without rows, and no table_file unless given.
+   logical function echoed(c, e, position_b)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      !> Whether a position of end b was given (given_position_b).
+      logical, intent(in) :: position_b
+      echoed = .true.
+      if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
+         is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
+      if (e%group == 'material') then
+         select case (e%name)
+         case ('table_strain', 'table_tension')
+            echoed = c%material_table_rows > 0
+         case ('table_file')
+            echoed = len_trim(c%material_table_file) > 0
+         end select
+         return
+      end if
+      ! The end itself, not a copy (a copy of its tables cost more than the rest of the echo).
+      if (e%group == 'end_a') then
+         echoed = end_echoed(c%end_a, e)
+      else if (e%group == 'end_b') then
+         echoed = end_echoed(c%end_b, e)
+         if (is_word(e%name, 'x y z')) echoed = echoed .and. position_b
+      end if
+   end function echoed
+
+   !> `echoed` for a variable of &end_a or &end_b, but for the condition on end b's position.
+   logical function end_echoed(side, e)
+      !> The end.
+      type(end_config), intent(in) :: side
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      end_echoed = .true.
+      if (e%own_kinds_only) then
+         end_echoed = is_word(e%name, kind_variables(side%kind))
+         return
+      end if
+      select case (e%name)
+      case ('x', 'y', 'z')
+         ! Not for the kinds whose position follows from the statics.
+         end_echoed = is_word(e%name, kind_variables(side%kind))
+      case ('table_time', 'table_x', 'table_z')
+         end_echoed = side%table_rows > 0
+      case ('table_y')
+         end_echoed = any(side%table_y(1:side%table_rows) /= 0)
+      case ('table_file')
+         end_echoed = len_trim(side%table_file) > 0
+      end select
+   end function end_echoed
+
+   !> The variables a kind uses, blank-separated ('' for a word that is not a kind).
+   function kind_variables(kind) result(words)
+      !> The kind's word.
+      character(*), intent(in) :: kind
+      character(:), allocatable :: words
+      type(end_kind) :: line
+      logical :: found
+      call find_end_kind(kind, line, found)
+      words = ''
+      if (found) words = trim(line%variables)
+   end function kind_variables
+end module xcable_io_input_echo

@@ -13,10 +13,12 @@
 module xcable_io_hdf5
    use xcable_kinds, only: dp
    use hdf5
+   use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f, h5dsis_attached_f, h5dsset_label_f
    use, intrinsic :: iso_c_binding, only: c_ptr, c_char, c_loc, c_f_pointer, c_size_t, c_null_char, c_associated, c_int
    implicit none
    private
    public :: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, put_text_attr
+   public :: open_scale, attach, append
    public :: get_text_attr, get_real_attr, get_int_attr, delete_attr
 
 contains
@@ -417,4 +419,141 @@ contains
          ok = ok .and. hdferr == 0
       end if
    end subroutine drop_attr
+   !> Open the dataset name of loc as a dimension scale called scale_name (made one if it is
+   !> not yet); scale is -1 when the dataset does not exist.
+   subroutine open_scale(loc, name, scale_name, scale, ok)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name, scale_name
+      integer(hid_t), intent(out) :: scale
+      logical, intent(inout) :: ok
+      integer :: hdferr
+      logical :: exists
+      scale = -1
+      call h5lexists_f(loc, name, exists, hdferr)
+      if (.not. exists) return
+      call h5dopen_f(loc, name, scale, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         scale = -1
+         return
+      end if
+      call h5aexists_f(scale, 'CLASS', exists, hdferr)
+      if (.not. exists) then
+         call h5dsset_scale_f(scale, hdferr, scale_name)
+         ok = ok .and. hdferr == 0
+      end if
+   end subroutine open_scale
+
+   !> Attach the dimension scale `scale` to dimension `dimension` (0 the slowest, as h5py
+   !> and C count) of the dataset name of loc, labelled `label`, unless it is attached
+   !> already; nothing when the dataset does not exist.
+   subroutine attach(scale, loc, name, dimension, label, ok, fresh)
+      integer(hid_t), intent(in) :: scale, loc
+      character(*), intent(in) :: name, label
+      integer, intent(in) :: dimension
+      logical, intent(inout) :: ok
+      !> The dataset is known to have no scale on this dimension yet (no check).
+      logical, intent(in), optional :: fresh
+      integer(hid_t) :: dset
+      integer :: hdferr, index
+      logical :: exists, attached
+      call h5lexists_f(loc, name, exists, hdferr)
+      if (.not. exists) return
+      call h5dopen_f(loc, name, dset, hdferr)
+      if (hdferr /= 0) then
+         ok = .false.
+         return
+      end if
+      ! HDF5 1.10's Fortran interface takes the dimension as C counts it, from 1 (checked with
+      ! h5py: test/test_outputs.py).
+      index = dimension + 1
+      attached = .false.
+      if (.not. present(fresh)) then
+         call h5dsis_attached_f(dset, scale, index, attached, hdferr)
+         if (hdferr /= 0) attached = .false.
+      end if
+      if (.not. attached) then
+         call h5dsattach_scale_f(dset, scale, index, hdferr)
+         ok = ok .and. hdferr == 0
+         call h5dsset_label_f(dset, index, label, hdferr)
+         ok = ok .and. hdferr == 0
+      end if
+      call h5dclose_f(dset, hdferr)
+   end subroutine attach
+
+   !> Append a value (rank 1) or a row of node values (rank 2) to the
+   !> extendible dataset name, created on first use.
+   !> ok is cleared when the dataset cannot be created or opened, extended or
+   !> written.
+   subroutine append(loc, name, values, rank, ok, kept)
+      integer(hid_t), intent(in) :: loc
+      character(*), intent(in) :: name
+      real(dp), intent(in) :: values(:)
+      integer, intent(in) :: rank
+      logical, intent(inout) :: ok
+      !> The dataset kept open: used when >= 0, else set to the dataset opened
+      !> (which then stays open); absent: the dataset is closed again.
+      integer(hid_t), intent(inout), optional :: kept
+      integer :: hdferr, err
+      integer(hid_t) :: dset, space, memspace, plist
+      integer(hsize_t) :: dims(2), maxdims(2), offset(2), count(2)
+      logical :: exists, open_already
+      count = [int(size(values), hsize_t), 1_hsize_t]
+      err = 0
+      open_already = .false.
+      if (present(kept)) open_already = kept >= 0
+      if (open_already) then
+         dset = kept
+      else
+         call h5lexists_f(loc, name, exists, hdferr)
+         if (.not. exists) then
+            call create_dataset()
+         else
+            call h5dopen_f(loc, name, dset, err)
+         end if
+         if (err /= 0) then
+            ok = .false.
+            return
+         end if
+         if (present(kept)) kept = dset
+      end if
+      call h5dget_space_f(dset, space, hdferr)
+      call h5sget_simple_extent_dims_f(space, dims(1:rank), maxdims(1:rank), hdferr)
+      call h5sclose_f(space, hdferr)
+      if (rank == 1) then
+         offset(1) = dims(1)
+         dims(1) = dims(1) + 1
+         count(1) = 1
+      else
+         offset = [0_hsize_t, dims(2)]
+         dims(2) = dims(2) + 1
+      end if
+      call h5dset_extent_f(dset, dims(1:rank), hdferr)
+      ok = ok .and. hdferr == 0
+      call h5dget_space_f(dset, space, hdferr)
+      call h5sselect_hyperslab_f(space, H5S_SELECT_SET_F, offset(1:rank), count(1:rank), hdferr)
+      call h5screate_simple_f(rank, count(1:rank), memspace, hdferr)
+      call h5dwrite_f(dset, H5T_NATIVE_DOUBLE, values, count(1:rank), hdferr, memspace, space)
+      ok = ok .and. hdferr == 0
+      call h5sclose_f(memspace, hdferr)
+      call h5sclose_f(space, hdferr)
+      if (.not. present(kept)) call h5dclose_f(dset, hdferr)
+   contains
+      subroutine create_dataset()
+         call h5pcreate_f(H5P_DATASET_CREATE_F, plist, hdferr)
+         if (rank == 1) then
+            dims(1) = 0
+            maxdims(1) = H5S_UNLIMITED_F
+            call h5pset_chunk_f(plist, 1, [64_hsize_t], hdferr)
+         else
+            dims = [count(1), 0_hsize_t]
+            maxdims = [count(1), H5S_UNLIMITED_F]
+            call h5pset_chunk_f(plist, 2, count, hdferr)
+         end if
+         call h5screate_simple_f(rank, dims(1:rank), space, hdferr, maxdims(1:rank))
+         call h5dcreate_f(loc, name, H5T_NATIVE_DOUBLE, space, dset, err, plist)
+         call h5sclose_f(space, hdferr)
+         call h5pclose_f(plist, hdferr)
+      end subroutine create_dataset
+   end subroutine append
 end module xcable_io_hdf5

@@ -71,6 +71,9 @@ module xcable_io_schema
       character(len=320) :: doc = ''
    end type schema_entry
 
+   !> Entries of the table being built that hold an entry (build_table, add).
+   integer :: filled = 0
+
 contains
 
    !> The table: every group and variable, in the order of the file and the echo.
@@ -91,7 +94,10 @@ contains
       type(end_kind), allocatable :: kinds(:)
       character(:), allocatable :: kind_doc
       integer :: k
-      allocate (t(0))
+      ! Room for the entries (add doubles it when they do not fit), cut to those added at the end:
+      ! t = [t, e] per entry copied the table each time (3.1e6 instructions of a run's start).
+      allocate (t(128))
+      filled = 0
       ! &cable
       call add(t, 'cable', 'length', 'real', 'm', '60', 'unstretched length L', 1.0e-2_dp, 1.0e5_dp)
       call add(t, 'cable', 'diameter', 'real', 'm', '0.05', 'diameter d', 1.0e-4_dp, 1.0_dp, &
@@ -319,6 +325,7 @@ contains
                'wall-clock time between checkpoints of a rod run (the file &output file + .ckpt, for xcable '// &
                '--resume); a rod run also writes one when it gets SIGTERM, whatever this says', 0.0_dp, 1.0e7_dp, &
                lower_open=.true., zero_means='none', resume_may_differ=.true.)
+      t = t(1:filled)
    end subroutine build_table
 
    !> Append an entry. A number is bounded when lower and upper are given.
@@ -367,7 +374,16 @@ contains
       if (present(note)) e%note = note
       if (present(resume_may_differ)) e%resume_may_differ = resume_may_differ
       if (present(own_kinds_only)) e%own_kinds_only = own_kinds_only
-      t = [t, e]
+      if (filled == size(t)) then
+         block
+            type(schema_entry), allocatable :: bigger(:)
+            allocate (bigger(2*size(t)))
+            bigger(1:filled) = t
+            call move_alloc(bigger, t)
+         end block
+      end if
+      filled = filled + 1
+      t(filled) = e
    end subroutine add
 
    !> Blank-separated words as 'a, b or c'.

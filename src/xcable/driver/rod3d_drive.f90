@@ -668,6 +668,10 @@ contains
          s%newton_iterations = sum([(self%pieces(p)%run%iterations, p=1, size(self%pieces))])
          ! Full Newton: one factorisation per iteration.
          s%factorisations = s%newton_iterations
+         ! The dissipation booked in the ledger (the pieces' damping, springs' dampers, theta > 1/2;
+         ! the first piece carries what the whole cable booked before a break), as the planar run
+         ! reports it: only with the ledger on.
+         if (rod%options%energy) s%dissipated = sum([(self%pieces(p)%run%dissipated, p=1, size(self%pieces))])
       end associate
    end subroutine finish
 

@@ -94,7 +94,8 @@ contains
                new_unittest('chord_off_the_plane_equals_planar_twin', test_turned_twin), &
                new_unittest('spring_and_loaded_ends_off_the_plane_equal_planar_twin', test_turned_state_ends), &
                new_unittest('auto_plane_at_an_azimuth_runs_in_2d', test_auto_turned), &
-               new_unittest('damped_dissipation_in_summary', test_dissipated_summary)]
+               new_unittest('damped_dissipation_in_summary', test_dissipated_summary), &
+               new_unittest('step_from_the_3d_static_state', test_step_from_static3)]
    end subroutine collect_model3d
 
    subroutine keeper_static(self, info, error)
@@ -1579,4 +1580,42 @@ contains
                  'the turned 2-D runs differ from the x-z twin: tension '//str(worst_t)//', positions '// &
                  str(worst_x)//' m, other 3-D fields '//str(others))
    end subroutine test_auto_turned
+   !> The time step of a 3-D run comes from its own static state: a 60 m line between two fixed
+   !> points 55 m apart in a current of 2 m/s across its plane (tanh law, 61 nodes, Courant 1).
+   !> The current strains it to 0.022 (0.001 without): its axial waves are 1.23 times faster than
+   !> the planar preparation's, whose step was taken before (Courant 1.23, reported as 1). Here
+   !> dt c_max / ds, with c_max from the 3-D static cells' strains computed anew, is the Courant
+   !> number asked for and reported: measured 1 exactly. (Mutation: the step of the planar
+   !> preparation kept, caught: 1.228.)
+   subroutine test_step_from_static3(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(keeper) :: obs
+      real(dp) :: dt, c_max, courant, l
+      integer :: k, steps, n
+      call run_case("&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1, current_y = 2 /"// &
+                    new_line('a')//"&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                    "&end_b kind = 'fixed', x = 55, z = 0 /"//new_line('a')//"&rupture enabled = .false. /"// &
+                    new_line('a')//"&material compression = 'none' /"//new_line('a')// &
+                    "&numerics model = '3d', nodes = 61, t_end = 0.01 /"//new_line('a')// &
+                    "&output interval = 0.01, quiet = .true. /", sim, obs, error)
+      if (allocated(error)) return
+      call sim%time_step(dt, steps)
+      n = 61
+      c_max = 0
+      associate (piece => sim%rod3%pieces(1)%run%problem%piece)
+         ! The static state: the snapshot at t = 0.
+         do k = 1, n - 1
+            l = hypot(hypot(obs%fields(k + 1, 6, 1) - obs%fields(k, 6, 1), obs%extra(k + 1, 1, 1) - obs%extra(k, 1, 1)), &
+                      obs%fields(k + 1, 7, 1) - obs%fields(k, 7, 1))/piece%ds(k)
+            c_max = max(c_max, sqrt(piece%law%stiffness(l - 1)/piece%mass_per_length))
+         end do
+         courant = dt*c_max/maxval(piece%ds)
+      end associate
+      write (output_unit, '(4x,a,es10.3,a,es22.15,a,es22.15)') '3-D line in a cross current: dt ', dt, ' s, Courant of the '// &
+         '3-D static state ', courant, ', reported ', sim%rod%summary%courant_requested
+      call check(error, abs(courant - 1) < 1.0e-12_dp .and. abs(sim%rod%summary%courant_requested - 1) < 1.0e-12_dp, &
+                 'the step '//str(dt)//' s has Courant '//str(courant)//' on the 3-D static state, reported '// &
+                 str(sim%rod%summary%courant_requested))
+   end subroutine test_step_from_static3
 end module suite_model3d

@@ -41,7 +41,8 @@ module xcable_rod3d_drive
    use xcable_strings, only: str
    use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
                              advance_time, jacobian_kept, check_range, check_folds, checkpoint_pause, pause_none, &
-                             exchange_progress, exchange_records
+                             exchange_progress, exchange_records, max_steps
+   use xcable_theory, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece, bend_moment3 => bend_moment, bend_energy3 => bend_energy
@@ -211,8 +212,39 @@ contains
          k = minloc(piece%law%tension(piece%l1(1:n - 1) - 1), 1)
          rod%static_min_tension_s = 0.5_dp*(rod%s(k) + rod%s(k + 1))
          rod%static_max_tension = maxval(abs(piece%law%tension(piece%l1(1:n - 1) - 1)))
+         ! The step from the 3-D static state's strains (the planar preparation's strains are
+         ! those of the scene without what leaves its plane: a current across it strains the line
+         ! more, its waves are faster, and a step from the planar strains has a larger Courant
+         ! number than the one reported).
+         call step_from_static3(rod, maxval(wave_speed(piece%law, piece%mass_per_length, piece%l1(1:n - 1) - 1)), &
+                                maxval(piece%ds), error)
       end associate
    end subroutine drive_prepare
+
+   !> The time step of a 3-D run from its static state's largest wave speed c_max (m/s) and its
+   !> longest cell ds_max (m): dt = courant ds_max / c_max unless dt was given; the Courant number
+   !> reported and the cells across the break's front follow. A c_max within same_wave_speed of the
+   !> planar preparation's is that state's, solved to another tolerance: its step is kept (a scene
+   !> in a plane then takes its planar twin's step to the bit). Error (stat_input) when it would
+   !> take more than max_steps steps.
+   subroutine step_from_static3(rod, c_max, ds_max, error)
+      type(rod_run), intent(inout) :: rod
+      real(dp), intent(in) :: c_max, ds_max
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: same_wave_speed = 1.0e-9_dp
+      real(dp) :: c_planar
+      c_planar = rod%summary%courant_requested*ds_max/rod%dt
+      if (abs(c_max - c_planar) <= same_wave_speed*c_planar) return
+      if (rod%options%dt <= 0) rod%dt = rod%options%courant*ds_max/c_max
+      rod%summary%dt_requested = rod%dt
+      rod%summary%courant_requested = rod%dt*c_max/ds_max
+      if (rod%scene%breaks .and. rod%scene%t_break > 0) rod%front_cells = c_max*rod%scene%t_break/ds_max
+      if (.not. (rod%options%t_end/rod%dt <= max_steps)) &
+         call fatal_error(error, rod%scene%source//': &numerics: the time step '//str(rod%dt)//' s (courant = '// &
+                          str(rod%options%courant)//', ds = '//str(ds_max)//' m, largest wave speed '//str(c_max)// &
+                          ' m/s of the 3-D static state) gives more than '//str(max_steps)//' steps to t_end = '// &
+                          str(rod%options%t_end)//' s; give a longer step (courant or dt)', stat_input)
+   end subroutine step_from_static3
 
    !> The 3-D statics by continuation in the distributed loads, after the
    !> direct solve from the planar guess failed or gave a state check_static3

@@ -20,11 +20,11 @@
 !> checkpoint resumes only with the model that wrote it.
 module xcable_simulation
    use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str
+   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
+   use xcable_strings, only: str, real_text, quantity
    use xcable_io_config, only: case_config, end_config
-   use xcable_scene, only: scene_type, scene_from_config
-   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination
+   use xcable_scene, only: scene_type, scene_from_config, set_break
+   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch
    use xcable_box_run, only: box_run
    use xcable_rod3d_drive, only: rod3d_drive
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
@@ -150,38 +150,157 @@ contains
       case default
          call scene_from_config(config, scene, error)
          if (allocated(error)) return
-         if (self%model == '3d') then
-            ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
-            ! the scene turned about the vertical so that its chord lies in the x-z plane: the
-            ! true span, static strains, wave speed, time step and Courant number (not those of
-            ! the scene's shadow on x-z). The 3-D run itself takes the scene as given.
-            block
-               type(scene_type) :: planar
-               real(dp) :: azimuth
-               azimuth = chord_azimuth(scene)
-               if (azimuth == 0) then
-                  ! (The planar run may place end b itself: the paper's symmetric case.)
-                  call self%rod%prepare(scene, run_options_from_config(config), error)
-               else
-                  call scene_from_config(turned_config(config, -azimuth), planar, error)
-                  if (allocated(error)) return
-                  call self%rod%prepare(planar, run_options_from_config(config), error)
-                  if (.not. allocated(error)) self%rod%scene = scene
-               end if
-               if (allocated(error)) return
-            end block
-         else
-            call self%rod%prepare(scene, run_options_from_config(config), error)
-            if (allocated(error)) return
-         end if
-         self%terms = terms_of(scene)
-         if (config%damping > 0) self%terms = self%terms//' damping'
-         if (self%model == '3d') then
-            call self%rod3%prepare(self%rod, error)
-            self%terms = 'rod3d:'//self%terms(5:)//' twist'
-         end if
+         call prepare_rod(self, config, scene, error)
+         if (allocated(error)) return
+         if (scene%by_tension) call find_break(self, config, scene, error)
       end select
    end subroutine sim_prepare
+
+   !> The rod run of a scene (either model): its grid, statics and time step, from fresh runs.
+   subroutine prepare_rod(self, config, scene, error)
+      type(simulation), intent(inout) :: self
+      type(case_config), intent(in) :: config
+      type(scene_type), intent(in) :: scene
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_run) :: fresh_rod
+      type(rod3d_drive) :: fresh_rod3
+      self%rod = fresh_rod
+      self%rod3 = fresh_rod3
+      if (self%model == '3d') then
+         ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
+         ! the scene turned about the vertical so that its chord lies in the x-z plane: the
+         ! true span, static strains, wave speed, time step and Courant number (not those of
+         ! the scene's shadow on x-z). The 3-D run itself takes the scene as given.
+         block
+            type(scene_type) :: planar
+            real(dp) :: azimuth
+            azimuth = chord_azimuth(scene)
+            if (azimuth == 0) then
+               ! (The planar run may place end b itself: the paper's symmetric case.)
+               call self%rod%prepare(scene, run_options_from_config(config), error)
+            else
+               call scene_from_config(turned_config(config, -azimuth), planar, error)
+               if (allocated(error)) return
+               ! A break by tension, once found, is where and when the scene has it.
+               planar%breaks = scene%breaks
+               planar%s_break = scene%s_break
+               planar%break_time = scene%break_time
+               planar%break_at_a = scene%break_at_a
+               planar%break_at_b = scene%break_at_b
+               call self%rod%prepare(planar, run_options_from_config(config), error)
+               if (.not. allocated(error)) self%rod%scene = scene
+            end if
+            if (allocated(error)) return
+         end block
+      else
+         call self%rod%prepare(scene, run_options_from_config(config), error)
+         if (allocated(error)) return
+      end if
+      self%terms = terms_of(scene)
+      if (config%damping > 0) self%terms = self%terms//' damping'
+      if (self%model == '3d') then
+         call self%rod3%prepare(self%rod, error)
+         self%terms = 'rod3d:'//self%terms(5:)//' twist'
+      end if
+   end subroutine prepare_rod
+
+   !> The break by tension (&rupture criterion = 'tension'), found by a first pass: the run
+   !> without the break (no output), whose step loop watches the cell tensions (rod_run's
+   !> watch_step: the step that passes mbl is taken again, shorter, until its largest cell
+   !> tension is within rupture_tolerance of mbl) and stops there. The run is then prepared
+   !> again with a break at that time, at the node nearest that cell (break_node_of): the
+   !> run with the break is a break at a time and place, as criterion 'time' does it. Without a
+   !> crossing it is prepared again without a break. What the pass found goes to the summary.
+   !> Errors: stat_input when the static state already reaches mbl (nothing has been written);
+   !> the first pass's errors.
+   subroutine find_break(self, config, scene, error)
+      type(simulation), intent(inout) :: self
+      type(case_config), intent(in) :: config
+      !> The scene: its break is set here.
+      type(scene_type), intent(inout) :: scene
+      type(error_type), allocatable, intent(out) :: error
+      type(tension_watch) :: found
+      real(dp) :: static_max
+      integer :: kb, n
+      static_max = max(self%rod%static_max_tension, self%rod%info%max_tension)
+      if (static_max >= scene%mbl) then
+         call fatal_error(error, config%source//': &rupture: mbl = '//real_text(scene%mbl)//': at or below the '// &
+                          'largest static tension, '//quantity(static_max, 'N')//': the line would part in statics; '// &
+                          'give an mbl above it', stat_input)
+         return
+      end if
+      self%rod%watch%mbl = scene%mbl
+      if (self%model == '3d') then
+         call self%rod3%run_dynamics(self%rod, error=error)
+      else
+         call self%rod%run(error=error)
+      end if
+      if (allocated(error)) then
+         call prefix_error(error, 'the first pass of the break by tension (the run without the break, to find '// &
+                           'where and when the tension reaches mbl): ')
+         return
+      end if
+      found = self%rod%watch
+      found%mbl = 0
+      found%h_aim = 0
+      if (found%found) then
+         n = size(self%rod%s)
+         kb = break_node_of(found%cells, found%cell, scene%end_a%held(), scene%end_b%held())
+         if (kb == 1) then
+            call set_break(scene, 0.0_dp, found%time, error)
+         else if (kb == n) then
+            call set_break(scene, scene%length, found%time, error)
+         else
+            call set_break(scene, self%rod%s(kb), found%time, error)
+         end if
+         if (allocated(error)) return
+      end if
+      call prepare_rod(self, config, scene, error)
+      if (allocated(error)) return
+      self%rod%rupture = found
+   end subroutine find_break
+
+   !> The break node of a break by tension: of the two nodes of the first cell to reach the MBL
+   !> (cell c), the one with the larger node tension (the mean of its two cells; an end node, its
+   !> cell's). A break stays at a node (the cable is cut in two pieces there, or a held end lets
+   !> go): an end node only at a held end, an inner node with two cells at least on either side
+   !> (scene_grid); else the nearest such node (of two, the one with the larger node tension).
+   pure integer function break_node_of(cells, c, held_a, held_b) result(kb)
+      !> Cell tensions when the first cell reached the MBL, N.
+      real(dp), intent(in) :: cells(:)
+      !> That cell.
+      integer, intent(in) :: c
+      !> Whether end a and end b are held.
+      logical, intent(in) :: held_a, held_b
+      real(dp) :: node(size(cells) + 1)
+      integer :: n, k, d
+      n = size(cells) + 1
+      node(1) = cells(1)
+      node(n) = cells(n - 1)
+      do k = 2, n - 1
+         node(k) = 0.5_dp*(cells(k - 1) + cells(k))
+      end do
+      kb = c
+      if (node(c + 1) > node(c)) kb = c + 1
+      if (allowed(kb)) return
+      do d = 1, n
+         if (allowed(kb - d) .and. allowed(kb + d)) then
+            kb = merge(kb + d, kb - d, node(kb + d) > node(kb - d))
+            return
+         else if (allowed(kb - d)) then
+            kb = kb - d
+            return
+         else if (allowed(kb + d)) then
+            kb = kb + d
+            return
+         end if
+      end do
+   contains
+      pure logical function allowed(k)
+         integer, intent(in) :: k
+         allowed = (k == 1 .and. held_a) .or. (k == n .and. held_b) .or. (k >= 3 .and. k <= n - 2)
+      end function allowed
+   end function break_node_of
 
    !> Azimuth of the chord from end a to end b in the horizontal plane, rad (from x towards y):
    !> 0 unless both ends are held at distinct horizontal points.

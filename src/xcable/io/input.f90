@@ -722,9 +722,9 @@ contains
       !> Error naming the group.
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: length, diameter, density, young, gravity, area, bending_stiffness, gip
-      character(len=16) :: law, compression, scheme, mass_matrix, model
+      character(len=16) :: law, compression, scheme, mass_matrix, model, criterion
       real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
-      real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval
+      real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval, mbl
       real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
       integer :: nodes, newton_max_iter
       logical :: enabled, reuse_jacobian, extrapolate, skip_quiescent, quiet, energy, gnuplot, xdmf
@@ -733,7 +733,7 @@ contains
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness, gip
       namelist /material/ law, p, ea, table_strain, table_tension, table_file, strain_max, compression, damping
       namelist /static/ tension
-      namelist /rupture/ enabled, s_break, t_break, time
+      namelist /rupture/ enabled, s_break, t_break, time, criterion, mbl
       namelist /numerics/ scheme, model, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
          reuse_jacobian, extrapolate, min_step_fraction, max_wall_time, skip_quiescent
       namelist /output/ file, interval, fields, quiet, energy, gnuplot, xdmf, checkpoint_interval
@@ -747,6 +747,7 @@ contains
       table_file = c%material_table_file; damping = c%damping
       tension = c%tension
       enabled = c%break_enabled; s_break = c%s_break; t_break = c%t_break; time = c%break_time
+      criterion = c%break_criterion; mbl = c%mbl
       scheme = c%scheme; model = c%model; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
       mass_matrix = c%mass_matrix; newton_tol = c%newton_tol; newton_max_iter = c%newton_max_iter
       reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
@@ -800,6 +801,7 @@ contains
       c%material_table_file = table_file; c%damping = damping
       c%tension = tension
       c%break_enabled = enabled; c%s_break = s_break; c%t_break = t_break; c%break_time = time
+      c%break_criterion = criterion; c%mbl = mbl
       c%scheme = scheme; c%model = model; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
       c%mass_matrix = mass_matrix; c%newton_tol = newton_tol; c%newton_max_iter = newton_max_iter
       c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction
@@ -926,6 +928,8 @@ contains
       case ('rupture%s_break'); call move(c%s_break, v, store)
       case ('rupture%t_break'); call move(c%t_break, v, store)
       case ('rupture%time'); call move(c%break_time, v, store)
+      case ('rupture%criterion'); call move(c%break_criterion, v, store)
+      case ('rupture%mbl'); call move(c%mbl, v, store)
       case ('numerics%scheme'); call move(c%scheme, v, store)
       case ('numerics%model'); call move(c%model, v, store)
       case ('numerics%nodes'); call move(c%nodes, v, store)
@@ -1390,6 +1394,34 @@ contains
             call fatal_error(error, c%source//": &end_a: kind = '"//trim(c%end_a%kind)//"' and &end_b: kind = '"// &
                              trim(c%end_b%kind)//"': nothing holds the cable (no "//held//' end), so it '// &
                              'has no static state; make one end '//held, stat_input)
+         end if
+         return
+      end if
+
+      ! A break by tension: where and when follow from mbl, not from s_break and time.
+      if (c%break_enabled .and. trim(c%break_criterion) == 'tension') then
+         if (trim(c%scheme) == 'box') then
+            call fatal_error(error, c%source//": &rupture: criterion = 'tension': the box scheme breaks at a time "// &
+                             "only; give &numerics scheme = 'rod', or criterion = 'time'", stat_input)
+            return
+         end if
+         if (c%is_given('rupture', 's_break') .or. c%is_given('rupture', 'time')) then
+            position = ''
+            if (c%is_given('rupture', 's_break')) position = ' s_break = '//real_text(c%s_break)
+            if (c%is_given('rupture', 's_break') .and. c%is_given('rupture', 'time')) position = position//' and'
+            if (c%is_given('rupture', 'time')) position = position//' time = '//real_text(c%break_time)
+            call fatal_error(error, c%source//": &rupture: criterion = 'tension' with"//position// &
+                             ': the line parts where and when its tension first reaches mbl, so s_break and '// &
+                             "time are not used; leave them out, or give criterion = 'time'", stat_input)
+            return
+         end if
+         if (.not. c%is_given('rupture', 'mbl') .or. c%mbl <= 0) then
+            position = 'not given'
+            if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
+            call fatal_error(error, c%source//": &rupture: mbl = "//position//": criterion = 'tension' needs the "// &
+                             'minimum breaking load of the line, a tension above 0 N (and above the largest '// &
+                             'static tension)', stat_input)
+            return
          end if
          return
       end if

@@ -105,6 +105,10 @@ module xcable_rod_run
       !> Step aimed at the crossing (s; 0: none) and the aims at this crossing so far.
       real(dp) :: h_aim = 0
       integer :: aims = 0
+      !> The bracket of the search: steps (s) below and past the crossing and their largest cell
+      !> tensions (N); which end moved last (-1: below, 1: past, 0: none yet).
+      real(dp) :: h_lo = 0, f_lo = 0, h_hi = 0, f_hi = 0
+      integer :: side = 0
       !> Largest cell tension of the accepted steps (N), the middle of its cell (m) and its time (s).
       real(dp) :: max_tension = 0, max_s = 0, max_time = 0
    end type tension_watch
@@ -1060,12 +1064,13 @@ contains
 
    !> The search for a break by tension on a step of h from self%t just solved (either model):
    !> the cell tensions of the law at the old level r_old and the new level r_new (positions,
-   !> (2 or 3, n)). A step whose largest cell tension passes watch%mbl by more than
-   !> rupture_tolerance mbl is to be taken again (retry) with watch%h_aim: the earliest time at
-   !> which a cell's tension, linear between the two levels, reaches mbl. A step whose largest
-   !> tension is within rupture_tolerance mbl of it (or the last of max_rupture_aims aims) ends
-   !> the search: watch%found, its time, cell and tension. Otherwise the step is kept and the
-   !> largest tension so far updated.
+   !> (2 or 3, n)). A step whose largest cell tension F passes watch%mbl by more than
+   !> rupture_tolerance mbl starts a search on the step from self%t: it is taken again (retry)
+   !> with watch%h_aim, first the earliest time at which a cell's tension, linear between the
+   !> two levels, reaches mbl, then by false position (Illinois) on F of the step's length
+   !> within the bracket of the steps tried, until F is within rupture_tolerance mbl of mbl
+   !> (or max_rupture_aims steps were tried): watch%found, its time, cell and tension. A step
+   !> that does not pass mbl is kept, and the largest tension so far updated.
    subroutine watch_step(self, h, r_old, r_new, ds, law, retry)
       !> Run (its watch).
       type(rod_run), intent(inout) :: self
@@ -1079,7 +1084,7 @@ contains
       class(material_law), intent(in) :: law
       !> Whether the step is to be taken again with watch%h_aim.
       logical, intent(out) :: retry
-      real(dp) :: t_old(size(ds)), t_new(size(ds)), frac
+      real(dp) :: t_old(size(ds)), t_new(size(ds)), frac, f
       integer :: c, m
       m = size(ds)
       do c = 1, m
@@ -1089,29 +1094,55 @@ contains
       retry = .false.
       associate (w => self%watch)
          c = maxloc(t_new, 1)
-         if (t_new(c) > w%mbl*(1 + rupture_tolerance) .and. w%aims < max_rupture_aims) then
-            ! Aim at the earliest crossing among the cells past mbl.
-            frac = 1
-            do c = 1, m
-               if (t_new(c) >= w%mbl .and. t_new(c) > t_old(c)) &
-                  frac = min(frac, max(w%mbl - t_old(c), 0.0_dp)/(t_new(c) - t_old(c)))
-            end do
-            w%h_aim = max(frac, 1.0e-3_dp)*h
+         f = t_new(c)
+         if (w%h_aim == 0) then
+            ! A step of the run: it passes mbl, reaches it, or stays below.
+            if (f > w%mbl*(1 + rupture_tolerance)) then
+               frac = 1
+               do c = 1, m
+                  if (t_new(c) >= w%mbl .and. t_new(c) > t_old(c)) &
+                     frac = min(frac, max(w%mbl - t_old(c), 0.0_dp)/(t_new(c) - t_old(c)))
+               end do
+               w%h_lo = 0
+               w%f_lo = maxval(t_old)
+               w%h_hi = h
+               w%f_hi = f
+               w%side = 0
+               w%h_aim = min(max(frac, 1.0e-3_dp), 1 - 1.0e-3_dp)*h
+               w%aims = 1
+               retry = .true.
+               return
+            end if
+         else if (abs(f - w%mbl) > rupture_tolerance*w%mbl .and. w%aims < max_rupture_aims) then
+            ! An aimed step that missed: narrow the bracket, aim again (false position, Illinois).
+            if (f > w%mbl) then
+               w%h_hi = h
+               w%f_hi = f
+               if (w%side == 1) w%f_lo = w%mbl - 0.5_dp*(w%mbl - w%f_lo)
+               w%side = 1
+            else
+               w%h_lo = h
+               w%f_lo = f
+               if (w%side == -1) w%f_hi = w%mbl + 0.5_dp*(w%f_hi - w%mbl)
+               w%side = -1
+            end if
+            w%h_aim = w%h_lo + (w%mbl - w%f_lo)/(w%f_hi - w%f_lo)*(w%h_hi - w%h_lo)
+            if (.not. (w%h_aim > w%h_lo .and. w%h_aim < w%h_hi)) w%h_aim = 0.5_dp*(w%h_lo + w%h_hi)
             w%aims = w%aims + 1
             retry = .true.
             return
          end if
          w%h_aim = 0
-         if (t_new(c) > w%max_tension) then
-            w%max_tension = t_new(c)
+         if (f > w%max_tension) then
+            w%max_tension = f
             w%max_s = 0.5_dp*(self%s(c) + self%s(c + 1))
             w%max_time = self%t + h
          end if
-         if (t_new(c) >= w%mbl*(1 - rupture_tolerance)) then
+         if (f >= w%mbl*(1 - rupture_tolerance)) then
             w%found = .true.
             w%time = self%t + h
             w%cell = c
-            w%tension = t_new(c)
+            w%tension = f
             w%s = 0.5_dp*(self%s(c) + self%s(c + 1))
             w%cells = t_new
          end if

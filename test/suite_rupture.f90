@@ -270,7 +270,8 @@ contains
    end subroutine test_equals_time_break
 
    !> Both scenes with model = '3d' against the planar runs: the same break node and first
-   !> cell, the break time within 1e-12 s (measured 8e-14 s), the tension within rupture_tolerance of the MBL.
+   !> cell, the break time within 1e-12 s (measured 8e-14 s), the tension within
+   !> rupture_tolerance of the MBL.
    subroutine test_model3d(error)
       type(error_type), allocatable, intent(out) :: error
       character(len=5), parameter :: names(2) = ['force', 'pull ']

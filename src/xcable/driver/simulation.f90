@@ -24,7 +24,8 @@ module xcable_simulation
    use xcable_strings, only: str, real_text, quantity
    use xcable_io_config, only: case_config, end_config
    use xcable_scene, only: scene_type, scene_from_config, set_break
-   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch
+   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch, &
+                             rupture_tolerance
    use xcable_box_run, only: box_run
    use xcable_rod3d_drive, only: rod3d_drive
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
@@ -211,7 +212,8 @@ contains
    !> again with a break at that time, at the node nearest that cell (break_node_of): the
    !> run with the break is a break at a time and place, as criterion 'time' does it. Without a
    !> crossing it is prepared again without a break. What the pass found goes to the summary.
-   !> Errors: stat_input when the static state already reaches mbl (nothing has been written);
+   !> Errors: stat_input when the static state already reaches mbl (within rupture_tolerance;
+   !> nothing has been written);
    !> the first pass's errors.
    subroutine find_break(self, config, scene, error)
       type(simulation), intent(inout) :: self
@@ -223,7 +225,8 @@ contains
       real(dp) :: static_max
       integer :: kb, n
       static_max = max(self%rod%static_max_tension, self%rod%info%max_tension)
-      if (static_max >= scene%mbl) then
+      ! Within the search's tolerance of mbl counts as reaching it (rod_run, watch_step).
+      if (static_max >= (1 - rupture_tolerance)*scene%mbl) then
          call fatal_error(error, config%source//': &rupture: mbl = '//real_text(scene%mbl)//': at or below the '// &
                           'largest static tension, '//quantity(static_max, 'N')//': the line would part in statics; '// &
                           'give an mbl above it', stat_input)

@@ -211,6 +211,8 @@ contains
             write (output_unit, '(4x,a,f6.2,a,f6.2,a,f6.2,a,es9.2,a,f8.2,a)') '  cell at s =', s%break_cell_s, &
                ' m (reference', s_ref, ' m), break node s =', s%break_s, ' m, tension/MBL - 1 =', &
                s%break_tension/mbl - 1, ', peak end speed', s%peak_end_speed, ' m/s'
+            write (output_unit, '(4x,a,i0,a)') '  steps tried in the search: ', sim%rod%rupture%aims, &
+               ' (the step past the MBL and its replacements but the last)'
             call check(error, s%broke .and. s%by_tension, trim(names(i))//': no break')
             if (allocated(error)) return
             call check(error, abs(s%break_time - t_bis) <= 3.0e-7_dp, trim(names(i))//': break at '// &

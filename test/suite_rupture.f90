@@ -271,17 +271,34 @@ contains
                  ', '//str(d_snap))
    end subroutine test_equals_time_break
 
-   !> Both scenes with model = '3d' against the planar runs: the same break node and first
-   !> cell, the break time within 1e-12 s (measured 8e-14 s), the tension within
-   !> rupture_tolerance of the MBL.
+   !> Both scenes with model = '3d' against the planar runs, and the pull scene turned 30
+   !> degrees about the vertical through end a (its chord off the x-z plane, its motion along
+   !> the chord) in 3-D against the planar pull: the same break node and first cell, the break
+   !> time within 1e-12 s in the plane (measured 8e-14 s) and 3e-9 s turned (measured 6.2e-10 s:
+   !> the turned scene's coordinates are rounded, its state differs at round-off and the search
+   !> lands at another time within its tolerance), the tension within rupture_tolerance of
+   !> the MBL.
    subroutine test_model3d(error)
       type(error_type), allocatable, intent(out) :: error
-      character(len=5), parameter :: names(2) = ['force', 'pull ']
+      character(len=6), parameter :: names(3) = ['force ', 'pull  ', 'turned']
       type(simulation) :: planar, three
       character(:), allocatable :: text
       real(dp) :: mbl
       integer :: i
-      do i = 1, 2
+      do i = 1, 3
+         if (i == 3) then
+            ! The planar pull of i = 2 stays.
+            call run_text("&cable length = 60 /"//nl//"&end_a kind = 'fixed', x = 0, z = 0 /"//nl// &
+                          "&end_b kind = 'motion', x = 50.22947341949744, y = 29.0, z = 0, motion = 'harmonic', "// &
+                          "amplitude = 1.0, period = 2.0, direction_x = 0.8660254037844387, direction_y = 0.5, "// &
+                          "direction_z = 0 /"//nl//"&output interval = 0.005, quiet = .true. /"//nl// &
+                          "&rupture criterion = 'tension', mbl = "//str(mbl)//", t_break = 0.005 /"//nl// &
+                          "&numerics model = '3d', nodes = 61, courant = 1.0, t_end = 0.45 /", three, error)
+            if (allocated(error)) return
+            call compare()
+            if (allocated(error)) return
+            cycle
+         end if
          if (i == 1) then
             mbl = force_mbl
             text = force_scene//"&rupture criterion = 'tension', mbl = "//str(mbl)//", t_break = 0.005 /"//nl
@@ -296,6 +313,13 @@ contains
             call run_text(text//"&numerics model = '3d', nodes = 61, courant = 1.0, t_end = 0.45 /", three, error)
          end if
          if (allocated(error)) return
+         call compare()
+         if (allocated(error)) return
+      end do
+   contains
+
+      !> The 3-D run's break against the planar one's.
+      subroutine compare()
          associate (p => planar%rod%summary, q => three%rod%summary)
             write (output_unit, '(4x,a,2f11.7,a,es9.2,a,2f7.2,a,2f7.2,a,es9.2)') trim(names(i))// &
                ': break time planar, 3-D', p%break_time, q%break_time, ' s (', q%break_time - p%break_time, &
@@ -303,7 +327,8 @@ contains
                ' m; 3-D tension/MBL - 1', q%break_tension/mbl - 1
             call check(error, q%broke .and. q%by_tension, trim(names(i))//': the 3-D run does not break')
             if (allocated(error)) return
-            call check(error, abs(q%break_time - p%break_time) <= 1.0e-12_dp, trim(names(i))//': 3-D break at '// &
+            call check(error, abs(q%break_time - p%break_time) <= merge(3.0e-9_dp, 1.0e-12_dp, i == 3), &
+                       trim(names(i))//': 3-D break at '// &
                        str(q%break_time)//' s, planar at '//str(p%break_time)//' s')
             if (allocated(error)) return
             call check(error, q%break_s == p%break_s .and. q%break_cell_s == p%break_cell_s, trim(names(i))// &
@@ -314,7 +339,7 @@ contains
                        ': 3-D tension at the break '//str(q%break_tension)//' N')
             if (allocated(error)) return
          end associate
-      end do
+      end subroutine compare
    end subroutine test_model3d
 
    !> The pull scene with an MBL above anything it reaches by t_end (7 kN; its largest cell

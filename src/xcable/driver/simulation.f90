@@ -123,13 +123,17 @@ contains
    end function run_options_from_config
 
    !> Scene, grid, statics and time step of a validated case.
-   subroutine sim_prepare(self, config, error)
+   subroutine sim_prepare(self, config, error, statics_only)
       !> Simulation.
       class(simulation), intent(inout) :: self
       !> Validated case.
       type(case_config), intent(in) :: config
       !> Error: stat_input for an inconsistent case, stat_numerics when the statics fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Only the checks and the statics (xcable --check): a break by tension is not looked
+      !> for (its first pass is a run), the MBL is checked against the static tension
+      !> (default .false.).
+      logical, intent(in), optional :: statics_only
       type(scene_type) :: scene
       type(rod_run) :: fresh_rod
       type(box_run) :: fresh_box
@@ -153,7 +157,7 @@ contains
          if (allocated(error)) return
          call prepare_rod(self, config, scene, error)
          if (allocated(error)) return
-         if (scene%by_tension) call find_break(self, config, scene, error)
+         if (scene%by_tension) call find_break(self, config, scene, error, statics_only)
       end select
    end subroutine sim_prepare
 
@@ -215,12 +219,14 @@ contains
    !> Errors: stat_input when the static state already reaches mbl (within rupture_tolerance;
    !> nothing has been written);
    !> the first pass's errors.
-   subroutine find_break(self, config, scene, error)
+   subroutine find_break(self, config, scene, error, statics_only)
       type(simulation), intent(inout) :: self
       type(case_config), intent(in) :: config
       !> The scene: its break is set here.
       type(scene_type), intent(inout) :: scene
       type(error_type), allocatable, intent(out) :: error
+      !> Stop after the check against the static tension.
+      logical, intent(in), optional :: statics_only
       type(tension_watch) :: found
       real(dp) :: static_max
       integer :: kb, n
@@ -231,6 +237,9 @@ contains
                           'largest static tension, '//quantity(static_max, 'N')//': the line would part in statics; '// &
                           'give an mbl above it', stat_input)
          return
+      end if
+      if (present(statics_only)) then
+         if (statics_only) return
       end if
       self%rod%watch%mbl = scene%mbl
       if (self%model == '3d') then

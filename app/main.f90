@@ -84,7 +84,7 @@ program xcable_main
    if (allocated(error)) call fail_input(error)
    if (len(unoptimised_note()) > 0 .and. .not. config%quiet) write (error_unit, '(a)') 'xcable: note: '// &
       unoptimised_note()
-   call sim%prepare(config, error)
+   call sim%prepare(config, error, statics_only=check_only)
    if (allocated(error)) then
       if (error%stat == stat_input .or. error%stat == stat_io) call fail_input(error)
       write (error_unit, '(a)') 'xcable: failed before the dynamics (no result file): '//error%message

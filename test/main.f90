@@ -25,6 +25,7 @@ program xcable_tests
    use suite_atan2, only: collect_atan2
    use suite_tan, only: collect_tan
    use suite_slack, only: collect_slack
+   use suite_rupture, only: collect_rupture
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -54,7 +55,8 @@ program xcable_tests
              new_testsuite('quiescent', collect_quiescent), &
              new_testsuite('atan2', collect_atan2), &
              new_testsuite('tan', collect_tan), &
-             new_testsuite('slack', collect_slack)]
+             new_testsuite('slack', collect_slack), &
+             new_testsuite('rupture', collect_rupture)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -117,7 +117,8 @@ contains
                new_unittest('sigterm_then_resume_is_bitwise_3d', test_sigterm_3d), &
                new_unittest('periodic_checkpoints_change_nothing_3d', test_periodic_3d), &
                new_unittest('refuses_the_other_model', test_other_model), &
-               new_unittest('sigterm_then_resume_is_bitwise_skip', test_sigterm_skip)]
+               new_unittest('sigterm_then_resume_is_bitwise_skip', test_sigterm_skip), &
+               new_unittest('sigterm_then_resume_is_bitwise_tension', test_sigterm_tension)]
    end subroutine collect_checkpoint
 
    subroutine recorder_static(self, info, error)
@@ -337,6 +338,36 @@ contains
          ' rejected in the run), resumed: snapshots, history and summary bitwise equal'
       call remove_checkpoint(path)
    end subroutine stopped_and_resumed
+
+   !> A break by tension (&rupture criterion = 'tension'; end b pulled by a force rising from
+   !> 20 to 40 kN in 0.05 s, MBL 30 kN: the line parts inside, at s = 58 m, at 0.026 s), planar
+   !> and 3-D, SIGTERM before the break (snapshot 3, t = 0.01 s) and after it (snapshot 10):
+   !> the resumed run, whose preparation finds the break again by its first pass, equals the
+   !> uninterrupted one to the bit.
+   subroutine test_sigterm_tension(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: scene = &
+         "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+         "&end_b kind = 'force', history = 'table', table_time = 0, 0.05, 1, table_x = 20000, 40000, 40000, "// &
+         "table_z = 0, 0, 0 /"//new_line('a')// &
+         "&rupture criterion = 'tension', mbl = 30000, t_break = 0.005 /"//new_line('a')// &
+         "&output interval = 0.005, quiet = .true. /"//new_line('a')
+      character(:), allocatable :: problem
+      character(len=2), parameter :: models(2) = ['2d', '3d']
+      type(case_config) :: c
+      integer :: i
+      problem = install_termination_handler()
+      call check(error, len(problem) == 0, problem)
+      if (allocated(error)) return
+      do i = 1, 2
+         call case_of(scene//"&numerics model = '"//models(i)//"', nodes = 61, courant = 1.0, t_end = 0.08 /", c, error)
+         if (allocated(error)) return
+         call stopped_and_resumed(models(i)//' break by tension, SIGTERM before it', c, 3, error, broken=.false.)
+         if (allocated(error)) return
+         call stopped_and_resumed(models(i)//' break by tension, SIGTERM after it', c, 10, error, broken=.true.)
+         if (allocated(error)) return
+      end do
+   end subroutine test_sigterm_tension
 
    !> The same with the skip of the quiescent cable (&numerics skip_quiescent): the
    !> window of a step follows from the state a checkpoint holds (the velocities, the

@@ -74,6 +74,7 @@ contains
                new_unittest('table_file_missing', test_table_file_missing), &
                new_unittest('table_file_malformed', test_table_file_malformed), &
                new_unittest('rupture_at_loose_end', test_rupture_at_loose_end), &
+               new_unittest('rupture_by_tension', test_rupture_by_tension), &
                new_unittest('material_table_read', test_material_table_read), &
                new_unittest('material_table_missing', test_material_table_missing), &
                new_unittest('material_table_too_short', test_material_table_too_short), &
@@ -895,6 +896,44 @@ contains
                         [character(40) :: path, '&rupture', 's_break = 0, at end a', "kind = 'force'", &
                          'nothing to break'])
    end subroutine test_rupture_at_loose_end
+
+   !> &rupture criterion = 'tension': criterion and mbl are read; bad input names the file,
+   !> the group, the variable and its value and what is allowed: a criterion other than 'time'
+   !> and 'tension'; mbl not given, 0 or negative; s_break or time given with it (both named
+   !> when both are); the box scheme. (An MBL at or below the static tension: suite rupture.)
+   subroutine test_rupture_by_tension(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(path, "&rupture criterion = 'tension', mbl = 4.5e5, t_break = 0.01 /"//nl)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call check(error, trim(config%break_criterion) == 'tension' .and. config%mbl == 4.5e5_dp .and. &
+                 config%break_enabled, 'criterion and mbl not read')
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'force' /"//nl, &
+                        [character(40) :: path, '&rupture', "criterion = 'force'", "'time', 'tension'"])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension' /"//nl, &
+                        [character(40) :: path, '&rupture', 'mbl = not given', "criterion = 'tension'", 'above 0 N'])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension', mbl = 0 /"//nl, &
+                        [character(40) :: path, '&rupture', 'mbl = 0', 'above 0 N'])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension', mbl = -5 /"//nl, &
+                        [character(40) :: path, '&rupture', 'mbl = -5', '> 0'])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension', mbl = 1e6, s_break = 30 /"//nl, &
+                        [character(40) :: path, '&rupture', "criterion = 'tension'", 's_break = 30', 'not used'])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension', mbl = 1e6, time = 0.1 /"//nl, &
+                        [character(40) :: path, '&rupture', "criterion = 'tension'", 'time = 0.1', 'not used'])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension', mbl = 1e6, s_break = 30, time = 0.1 /"//nl, &
+                        [character(40) :: path, '&rupture', 's_break = 30 and time = 0.1', 'not used'])
+      if (allocated(error)) return
+      call expect_error(error, "&rupture criterion = 'tension', mbl = 1e6 /"//nl//"&numerics scheme = 'box' /"//nl, &
+                        [character(40) :: path, '&rupture', "criterion = 'tension'", 'box scheme'])
+   end subroutine test_rupture_by_tension
 
    !> The rows of the table law, inline or from a file (comments and blank
    !> lines skipped), and the damping coefficient are read into the case.

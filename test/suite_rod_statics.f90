@@ -574,7 +574,7 @@ contains
          if (m == 1) then
             off = maxval(abs(sim%rod%static%r(1, :)))
          else
-            off = maxval(hypot(sim%rod3%pieces(1)%run%x(1::3), sim%rod3%pieces(1)%run%x(2::3)))
+            off = maxval(hypot(sim%rod3%pieces(1)%run%x(1:3*n:3), sim%rod3%pieces(1)%run%x(2:3*n:3)))
          end if
          call check(error, off < 1.0e-9_dp*c%length, models(m)//': the tether leaves the vertical by '//str(off)//' m')
          if (allocated(error)) return

@@ -358,6 +358,27 @@ begin 'break at a negative position' 's_break = -5' 'in [0, 60'
 from slow_315kN; set_in rupture 's_break = -5'; check
 begin 'break beyond a shorter cable' 's_break = 50' 'in [0, 40 (&cable length)]'
 from slow_315kN; set_in rupture 's_break = 50'; add '&cable length = 40 /'; check
+# the break at the breaking load (&rupture criterion = 'tension', mbl)
+begin 'rupture criterion not a word' '&rupture' "criterion = 'force'" "'time', 'tension'"
+from slow_315kN; set_in rupture "criterion = 'force'"; check
+begin 'tension break without mbl' '&rupture' 'mbl = not given' "criterion = 'tension'" 'above 0 N'
+from slow_315kN; set_in rupture "criterion = 'tension'"; check
+begin 'tension break with mbl = 0' '&rupture' 'mbl = 0' 'above 0 N'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 0"; check
+begin 'tension break with mbl = -5' '&rupture' 'mbl = -5' '> 0'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = -5"; check
+begin 'tension break with s_break' '&rupture' "criterion = 'tension'" 's_break = 30' 'not used'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 1e6, s_break = 30"; check
+begin 'tension break with time' '&rupture' "criterion = 'tension'" 'time = 0.1' 'not used'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 1e6, time = 0.1"; check
+begin 'tension break with s_break and time' '&rupture' 's_break = 30 and time = 0.1' 'not used'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 1e6, time = 0.1, s_break = 30"; check
+begin 'MBL below the static tension' '&rupture' 'mbl = 300000' 'would part in statics' '315 kN'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 3e5"; check
+begin 'MBL at the static tension' '&rupture' 'mbl = 315000' 'would part in statics'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 315000"; check
+begin 'tension break with the box scheme' '&rupture' "criterion = 'tension'" 'box scheme'
+from slow_315kN; set_in rupture "criterion = 'tension', mbl = 1e6"; set_in numerics "scheme = 'box'"; check
 begin 'two free ends' "kind = 'free'" 'no support' 'no static state'
 from slow_315kN; add "&end_a kind = 'free' /"; add "&end_b kind = 'free' /"; check
 begin 'a free end and a force end' "&end_b: kind = 'force'" 'nothing holds the cable'

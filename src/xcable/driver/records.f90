@@ -104,6 +104,13 @@ module xcable_run_records
       !> duration of its force ramp (s).
       logical :: broke = .false.
       real(dp) :: break_time = 0, break_s = 0, break_ramp = 0
+      !> The break by tension (&rupture criterion = 'tension'): whether it was asked for, the
+      !> minimum breaking load (N); of a break, the tension the first cell reached (N) and the
+      !> middle of that cell (m); without one, the largest cell tension reached (N), where (the
+      !> cell's middle, m) and when (s).
+      logical :: by_tension = .false.
+      real(dp) :: mbl = 0, break_tension = 0, break_cell_s = 0
+      real(dp) :: largest_tension = 0, largest_tension_s = 0, largest_tension_time = 0
       !> max |ledger - ledger(0)| / strain energy at t = 0 (-1: ledger not kept), and the
       !> numerical dissipation booked in the ledger (J).
       real(dp) :: energy_drift = -1, dissipated = 0
@@ -347,6 +354,13 @@ contains
          else
             text = text//', at once'
          end if
+         if (summary%by_tension) text = text//new_line('a')//'the tension reached the MBL ('// &
+                                       quantity(summary%mbl, 'N')//'): '//quantity(summary%break_tension, 'N')// &
+                                       ' in the cell at s = '//quantity(summary%break_cell_s, 'm')
+      else if (summary%by_tension) then
+         text = text//new_line('a')//'no break: the tension never reached the MBL ('//quantity(summary%mbl, 'N')// &
+                '): largest '//quantity(summary%largest_tension, 'N')//' at s = '// &
+                quantity(summary%largest_tension_s, 'm')//', t = '//quantity(summary%largest_tension_time, 's')
       end if
       if (allocated(summary%ends)) then
          do j = 1, size(summary%ends)

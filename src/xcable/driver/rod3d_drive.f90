@@ -41,7 +41,7 @@ module xcable_rod3d_drive
    use xcable_strings, only: str
    use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
                              advance_time, jacobian_kept, check_range, check_folds, checkpoint_pause, pause_none, &
-                             exchange_progress, exchange_records, max_steps
+                             exchange_progress, exchange_records, max_steps, watch_step
    use xcable_theory, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_rod3d_run, only: rod3d_run
@@ -459,7 +459,7 @@ contains
       real(dp) :: t_stop, h_try, wall
       integer(i8) :: now
       integer :: p, tried, iterations
-      logical :: landing, kept, newton_failed
+      logical :: landing, kept, newton_failed, retry
       type(error_type), allocatable :: step_error
       pause = pause_none
       associate (scene => rod%scene)
@@ -498,6 +498,17 @@ contains
                if (allocated(error)) exit
                cycle
             end if
+            ! The search for a break by tension: a step past the crossing is taken again, shorter.
+            if (rod%watch%mbl > 0) then
+               associate (run => self%pieces(1)%run, n => self%pieces(1)%run%problem%piece%n)
+                  call watch_step(rod, h_try, reshape(run%x_old(1:3*n), [3, n]), reshape(run%x(1:3*n), [3, n]), &
+                                  run%problem%piece%ds, run%problem%piece%law, retry)
+               end associate
+               if (retry) then
+                  call self%pieces(1)%run%reject()
+                  cycle
+               end if
+            end if
             iterations = 0
             do p = 1, size(self%pieces)
                associate (run => self%pieces(p)%run)
@@ -514,6 +525,7 @@ contains
             call record(self, rod, iterations, h_try)
             rod%history%rejected(rod%history%n) = rod%progress%rejected_here
             rod%progress%rejected_here = 0
+            if (rod%watch%found) exit
             if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) then
                call split(self, rod, error)
                if (allocated(error)) exit

@@ -56,7 +56,7 @@ module xcable_rod_run
    private
    public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
    public :: wall_limit, plan_step, reject_attempt, advance_time, jacobian_kept, check_range, check_folds
-   public :: checkpoint_pause, exchange_progress, exchange_records
+   public :: checkpoint_pause, exchange_progress, exchange_records, watch_step
 
    !> Why advance returned: the run ended (t_end or an error), a checkpoint is
    !> due, or SIGTERM arrived.
@@ -82,6 +82,37 @@ module xcable_rod_run
    !> A compression (a negative tension of the law) beyond this fraction of the largest static
    !> tension is warned, with where and when.
    real(dp), parameter, public :: warn_dynamic_compression = 0.01_dp
+
+   !> The break by tension (&rupture criterion = 'tension'): a step whose largest cell tension
+   !> passes mbl by more than rupture_tolerance mbl is taken again, shorter, aimed at the time
+   !> where that cell's tension, linear between the step's two levels, reaches mbl; a step that
+   !> ends within rupture_tolerance mbl of it ends the search (docs/theory/numerics.md, "The
+   !> break by tension"). At most max_rupture_aims aims at one crossing.
+   real(dp), parameter, public :: rupture_tolerance = 1.0e-4_dp
+   integer, parameter, public :: max_rupture_aims = 40
+
+   !> The search for a break by tension (the first pass of such a run, driver/simulation.f90),
+   !> and what it found, for the summary of the run with the break.
+   type, public :: tension_watch
+      !> Minimum breaking load, N (0: no search).
+      real(dp) :: mbl = 0
+      !> Whether a cell reached mbl; when (s), which cell, the tension it reached (N) and the
+      !> middle of that cell (m).
+      logical :: found = .false.
+      real(dp) :: time = 0, tension = 0, s = 0
+      integer :: cell = 0
+      !> The cell tensions at that time (N).
+      real(dp), allocatable :: cells(:)
+      !> Step aimed at the crossing (s; 0: none) and the aims at this crossing so far.
+      real(dp) :: h_aim = 0
+      integer :: aims = 0
+      !> The bracket of the search: steps (s) below and past the crossing and their largest cell
+      !> tensions (N); which end moved last (-1: below, 1: past, 0: none yet).
+      real(dp) :: h_lo = 0, f_lo = 0, h_hi = 0, f_hi = 0
+      integer :: side = 0
+      !> Largest cell tension of the accepted steps (N), the middle of its cell (m) and its time (s).
+      real(dp) :: max_tension = 0, max_s = 0, max_time = 0
+   end type tension_watch
 
    !> Controls of a rod run.
    type :: rod_run_options
@@ -189,6 +220,9 @@ module xcable_rod_run
       real(dp) :: work = 0, load_work = 0, dissipation = 0
       !> Whether the break has happened.
       logical :: broken = .false.
+      !> The search for a break by tension (watch%mbl > 0: this run is the search), and what the
+      !> search of a run's first pass found (its summary reports it).
+      type(tension_watch) :: watch, rupture
       !> Force (N; x, z of each) and couple (N m) the break's new ends start from (cut a, cut b).
       real(dp) :: cut_force(2, 2) = 0, cut_couple(2) = 0
       !> Lowest tension of the static state's cells (N), the arc length of that cell's middle (m)
@@ -583,7 +617,7 @@ contains
       integer(i8) :: clock_now
       real(dp) :: h_try, wall, t_stop
       integer :: p, iterations
-      logical :: newton_failed, kept, any_kept, landing
+      logical :: newton_failed, kept, any_kept, landing, retry
 
       pause = pause_none
       associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
@@ -619,6 +653,17 @@ contains
                if (allocated(error)) exit
                cycle
             end if
+            ! The search for a break by tension: a step past the crossing is taken again, shorter.
+            if (self%watch%mbl > 0) then
+               associate (piece => self%pieces(1)%problem%piece)
+                  call watch_step(self, h_try, self%pieces(1)%r, reshape(self%pieces(1)%x, [2, piece%n]), &
+                                  piece%ds, piece%law, retry)
+               end associate
+               if (retry) then
+                  self%pieces(1)%work%usable = .false.
+                  cycle
+               end if
+            end if
             ! Accept: snapshots inside the step, then the new level.
             call accept(self, h_try)
             call emit_snapshots(self, observer, self%t + h_try, .false., error)
@@ -626,6 +671,7 @@ contains
             call advance_time(self, h_try, t_stop, landing)
             call record(self, iterations, rejected_here, h_try)
             rejected_here = 0
+            if (self%watch%found) exit
             if (self%scene%breaks .and. .not. self%broken .and. self%t >= self%scene%break_time*(1 - 1.0e-12_dp)) then
                call split(self, error)
                if (allocated(error)) exit
@@ -1055,6 +1101,12 @@ contains
       h_try = self%progress%h
       landing = self%t + h_try >= t_stop*(1 - 1.0e-12_dp) .or. t_stop - (self%t + h_try) < 1.0e-6_dp*self%progress%h
       if (landing) h_try = t_stop - self%t
+      ! A step aimed at the crossing of a break by tension (watch_step).
+      if (self%watch%h_aim > 0 .and. self%watch%h_aim < h_try) then
+         h_try = self%watch%h_aim
+         t_stop = self%t + h_try
+         landing = .true.
+      end if
       if (.not. (self%t + h_try > self%t)) &
          call fatal_error(error, 'step control: the step '//str(h_try)//' s no longer advances the time at t = '// &
                           str(self%t)//' s', stat_numerics)
@@ -1075,6 +1127,8 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: max_rejections
       max_rejections = 1000 + self%options%t_end/self%dt
+      ! An aim at a crossing (watch_step) is made anew from the next step that passes it.
+      self%watch%h_aim = 0
       associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
          self%summary%rejected_steps = self%summary%rejected_steps + 1
          rejected_here = rejected_here + 1
@@ -1093,6 +1147,93 @@ contains
                              reason//'; try a smaller dt or courant, more nodes, or theta = 0.55', stat_numerics)
       end associate
    end subroutine reject_attempt
+
+   !> The search for a break by tension on a step of h from self%t just solved (either model):
+   !> the cell tensions of the law at the old level r_old and the new level r_new (positions,
+   !> (2 or 3, n)). A step whose largest cell tension F passes watch%mbl by more than
+   !> rupture_tolerance mbl starts a search on the step from self%t: it is taken again (retry)
+   !> with watch%h_aim, first the earliest time at which a cell's tension, linear between the
+   !> two levels, reaches mbl, then by false position (Illinois) on F of the step's length
+   !> within the bracket of the steps tried, until F is within rupture_tolerance mbl of mbl
+   !> (or max_rupture_aims steps were tried): watch%found, its time, cell and tension. A step
+   !> that does not pass mbl is kept, and the largest tension so far updated.
+   subroutine watch_step(self, h, r_old, r_new, ds, law, retry)
+      !> Run (its watch).
+      type(rod_run), intent(inout) :: self
+      !> The step, s.
+      real(dp), intent(in) :: h
+      !> Node positions at the old and the new level, m.
+      real(dp), intent(in) :: r_old(:, :), r_new(:, :)
+      !> Unstretched cell lengths, m.
+      real(dp), intent(in) :: ds(:)
+      !> Tension-strain law.
+      class(material_law), intent(in) :: law
+      !> Whether the step is to be taken again with watch%h_aim.
+      logical, intent(out) :: retry
+      real(dp) :: t_old(size(ds)), t_new(size(ds)), frac, f
+      integer :: c, m
+      m = size(ds)
+      do c = 1, m
+         t_old(c) = law%tension(norm2(r_old(:, c + 1) - r_old(:, c))/ds(c) - 1)
+         t_new(c) = law%tension(norm2(r_new(:, c + 1) - r_new(:, c))/ds(c) - 1)
+      end do
+      retry = .false.
+      associate (w => self%watch)
+         c = maxloc(t_new, 1)
+         f = t_new(c)
+         if (w%h_aim == 0) then
+            ! A step of the run: it passes mbl, reaches it, or stays below.
+            if (f > w%mbl*(1 + rupture_tolerance)) then
+               frac = 1
+               do c = 1, m
+                  if (t_new(c) >= w%mbl .and. t_new(c) > t_old(c)) &
+                     frac = min(frac, max(w%mbl - t_old(c), 0.0_dp)/(t_new(c) - t_old(c)))
+               end do
+               w%h_lo = 0
+               w%f_lo = maxval(t_old)
+               w%h_hi = h
+               w%f_hi = f
+               w%side = 0
+               w%h_aim = min(max(frac, 1.0e-3_dp), 1 - 1.0e-3_dp)*h
+               w%aims = 1
+               retry = .true.
+               return
+            end if
+         else if (abs(f - w%mbl) > rupture_tolerance*w%mbl .and. w%aims < max_rupture_aims) then
+            ! An aimed step that missed: narrow the bracket, aim again (false position, Illinois).
+            if (f > w%mbl) then
+               w%h_hi = h
+               w%f_hi = f
+               if (w%side == 1) w%f_lo = w%mbl - 0.5_dp*(w%mbl - w%f_lo)
+               w%side = 1
+            else
+               w%h_lo = h
+               w%f_lo = f
+               if (w%side == -1) w%f_hi = w%mbl + 0.5_dp*(w%f_hi - w%mbl)
+               w%side = -1
+            end if
+            w%h_aim = w%h_lo + (w%mbl - w%f_lo)/(w%f_hi - w%f_lo)*(w%h_hi - w%h_lo)
+            if (.not. (w%h_aim > w%h_lo .and. w%h_aim < w%h_hi)) w%h_aim = 0.5_dp*(w%h_lo + w%h_hi)
+            w%aims = w%aims + 1
+            retry = .true.
+            return
+         end if
+         w%h_aim = 0
+         if (f > w%max_tension) then
+            w%max_tension = f
+            w%max_s = 0.5_dp*(self%s(c) + self%s(c + 1))
+            w%max_time = self%t + h
+         end if
+         if (f >= w%mbl*(1 - rupture_tolerance)) then
+            w%found = .true.
+            w%time = self%t + h
+            w%cell = c
+            w%tension = f
+            w%s = 0.5_dp*(self%s(c) + self%s(c + 1))
+            w%cells = t_new
+         end if
+      end associate
+   end subroutine watch_step
 
    !> Step control after an accepted step of h_try: the time moves on (onto
    !> t_stop when it lands there), the step taken is recorded, and after four
@@ -1853,6 +1994,16 @@ contains
          self%summary%break_time = self%scene%break_time
          self%summary%break_s = self%scene%s_break
          self%summary%break_ramp = self%scene%t_break
+      end if
+      ! The break by tension: what the first pass found (driver/simulation.f90).
+      self%summary%by_tension = self%scene%by_tension
+      if (self%scene%by_tension) then
+         self%summary%mbl = self%scene%mbl
+         self%summary%break_tension = self%rupture%tension
+         self%summary%break_cell_s = self%rupture%s
+         self%summary%largest_tension = self%rupture%max_tension
+         self%summary%largest_tension_s = self%rupture%max_s
+         self%summary%largest_tension_time = self%rupture%max_time
       end if
       slack_level = slack_tension_fraction*max(self%info%max_tension, self%info%tension_a, self%info%tension_b)
       do j = 1, n_ends

@@ -20,11 +20,12 @@
 !> checkpoint resumes only with the model that wrote it.
 module xcable_simulation
    use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str, real_text
+   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
+   use xcable_strings, only: str, real_text, quantity
    use xcable_io_config, only: case_config, end_config
-   use xcable_scene, only: scene_type, scene_from_config
-   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination
+   use xcable_scene, only: scene_type, scene_from_config, set_break
+   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch, &
+                             rupture_tolerance
    use xcable_box_run, only: box_run
    use xcable_rod3d_drive, only: rod3d_drive
    use xcable_run_records, only: run_history, run_summary, static_info, run_observer
@@ -129,13 +130,17 @@ contains
    end function run_options_from_config
 
    !> Scene, grid, statics and time step of a validated case.
-   subroutine sim_prepare(self, config, error)
+   subroutine sim_prepare(self, config, error, statics_only)
       !> Simulation.
       class(simulation), intent(inout) :: self
       !> Validated case.
       type(case_config), intent(in) :: config
       !> Error: stat_input for an inconsistent case, stat_numerics when the statics fails.
       type(error_type), allocatable, intent(out) :: error
+      !> Only the checks and the statics (xcable --check): a break by tension is not looked
+      !> for (its first pass is a run), the MBL is checked against the static tension
+      !> (default .false.).
+      logical, intent(in), optional :: statics_only
       type(scene_type) :: scene
       type(rod_run) :: fresh_rod
       type(box_run) :: fresh_box
@@ -157,66 +162,200 @@ contains
       case default
          call scene_from_config(config, scene, error)
          if (allocated(error)) return
-         ! model = 'auto' and a scene in one vertical plane that is not x-z: the 2-D run of the scene
-         ! turned into x-z, its results turned back (driver/rod_run.f90, plane_azimuth).
-         if (self%model == '3d' .and. trim(config%model) == 'auto') then
-            block
-               type(scene_type) :: planar
-               type(case_config) :: flat
-               real(dp) :: azimuth
-               logical :: in_plane
-               azimuth = chord_azimuth(scene)
-               if (azimuth /= 0) then
-                  call plane_config(config, azimuth, flat, in_plane)
-                  if (in_plane) then
-                     call scene_from_config(flat, planar, error)
-                     if (allocated(error)) return
-                     call self%rod%prepare(planar, run_options_from_config(config), error)
-                     if (allocated(error)) return
-                     self%rod%plane_azimuth = azimuth
-                     self%rod%plane_pivot = [config%end_a%x, config%end_a%y]
-                     self%model = '2d'
-                     self%terms = terms_of(planar)
-                     if (config%damping > 0) self%terms = self%terms//' damping'
-                     self%terms = self%terms//'; in the vertical plane at azimuth '// &
-                                  real_text(azimuth*180/acos(-1.0_dp))//' deg, run in 2-D and turned back'
-                     return
-                  end if
-               end if
-            end block
-         end if
-         if (self%model == '3d') then
-            ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
-            ! the scene turned about the vertical so that its chord lies in the x-z plane: the
-            ! true span, static strains, wave speed, time step and Courant number (not those of
-            ! the scene's shadow on x-z). The 3-D run itself takes the scene as given.
-            block
-               type(scene_type) :: planar
-               real(dp) :: azimuth
-               azimuth = chord_azimuth(scene)
-               if (azimuth == 0) then
-                  ! (The planar run may place end b itself: the paper's symmetric case.)
-                  call self%rod%prepare(scene, run_options_from_config(config), error)
-               else
-                  call scene_from_config(turned_config(config, -azimuth), planar, error)
-                  if (allocated(error)) return
-                  call self%rod%prepare(planar, run_options_from_config(config), error)
-                  if (.not. allocated(error)) self%rod%scene = scene
-               end if
-               if (allocated(error)) return
-            end block
-         else
-            call self%rod%prepare(scene, run_options_from_config(config), error)
-            if (allocated(error)) return
-         end if
-         self%terms = terms_of(scene)
-         if (config%damping > 0) self%terms = self%terms//' damping'
-         if (self%model == '3d') then
-            call self%rod3%prepare(self%rod, error, chord_azimuth(scene), [config%end_a%x, config%end_a%y])
-            self%terms = 'rod3d:'//self%terms(5:)//' twist'
-         end if
+         call prepare_rod(self, config, scene, error)
+         if (allocated(error)) return
+         if (scene%by_tension) call find_break(self, config, scene, error, statics_only)
       end select
    end subroutine sim_prepare
+
+   !> The rod run of a scene (either model): its grid, statics and time step, from fresh runs.
+   subroutine prepare_rod(self, config, scene, error)
+      type(simulation), intent(inout) :: self
+      type(case_config), intent(in) :: config
+      type(scene_type), intent(in) :: scene
+      type(error_type), allocatable, intent(out) :: error
+      type(rod_run) :: fresh_rod
+      type(rod3d_drive) :: fresh_rod3
+      self%rod = fresh_rod
+      self%rod3 = fresh_rod3
+      ! (Again on the second call of a break by tension: the first may have turned to 2-D.)
+      self%model = config%model_to_run()
+      ! model = 'auto' and a scene in one vertical plane that is not x-z: the 2-D run of the scene
+      ! turned into x-z, its results turned back (driver/rod_run.f90, plane_azimuth).
+      if (self%model == '3d' .and. trim(config%model) == 'auto') then
+         block
+            type(scene_type) :: planar
+            type(case_config) :: flat
+            real(dp) :: azimuth
+            logical :: in_plane
+            azimuth = chord_azimuth(scene)
+            if (azimuth /= 0) then
+               call plane_config(config, azimuth, flat, in_plane)
+               if (in_plane) then
+                  call scene_from_config(flat, planar, error)
+                  if (allocated(error)) return
+                  ! A break by tension, once found, is where and when the scene has it.
+                  planar%breaks = scene%breaks
+                  planar%s_break = scene%s_break
+                  planar%break_time = scene%break_time
+                  planar%break_at_a = scene%break_at_a
+                  planar%break_at_b = scene%break_at_b
+                  call self%rod%prepare(planar, run_options_from_config(config), error)
+                  if (allocated(error)) return
+                  self%rod%plane_azimuth = azimuth
+                  self%rod%plane_pivot = [config%end_a%x, config%end_a%y]
+                  self%model = '2d'
+                  self%terms = terms_of(planar)
+                  if (config%damping > 0) self%terms = self%terms//' damping'
+                  self%terms = self%terms//'; in the vertical plane at azimuth '// &
+                               real_text(azimuth*180/acos(-1.0_dp))//' deg, run in 2-D and turned back'
+                  return
+               end if
+            end if
+         end block
+      end if
+      if (self%model == '3d') then
+         ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
+         ! the scene turned about the vertical so that its chord lies in the x-z plane: the
+         ! true span, static strains, wave speed, time step and Courant number (not those of
+         ! the scene's shadow on x-z). The 3-D run itself takes the scene as given.
+         block
+            type(scene_type) :: planar
+            real(dp) :: azimuth
+            azimuth = chord_azimuth(scene)
+            if (azimuth == 0) then
+               ! (The planar run may place end b itself: the paper's symmetric case.)
+               call self%rod%prepare(scene, run_options_from_config(config), error)
+            else
+               call scene_from_config(turned_config(config, -azimuth), planar, error)
+               if (allocated(error)) return
+               ! A break by tension, once found, is where and when the scene has it.
+               planar%breaks = scene%breaks
+               planar%s_break = scene%s_break
+               planar%break_time = scene%break_time
+               planar%break_at_a = scene%break_at_a
+               planar%break_at_b = scene%break_at_b
+               call self%rod%prepare(planar, run_options_from_config(config), error)
+               if (.not. allocated(error)) self%rod%scene = scene
+            end if
+            if (allocated(error)) return
+         end block
+      else
+         call self%rod%prepare(scene, run_options_from_config(config), error)
+         if (allocated(error)) return
+      end if
+      self%terms = terms_of(scene)
+      if (config%damping > 0) self%terms = self%terms//' damping'
+      if (self%model == '3d') then
+         call self%rod3%prepare(self%rod, error, chord_azimuth(scene), [config%end_a%x, config%end_a%y])
+         self%terms = 'rod3d:'//self%terms(5:)//' twist'
+      end if
+   end subroutine prepare_rod
+
+   !> The break by tension (&rupture criterion = 'tension'), found by a first pass: the run
+   !> without the break (no output), whose step loop watches the cell tensions (rod_run's
+   !> watch_step: the step that passes mbl is taken again, shorter, until its largest cell
+   !> tension is within rupture_tolerance of mbl) and stops there. The run is then prepared
+   !> again with a break at that time, at the node nearest that cell (break_node_of): the
+   !> run with the break is a break at a time and place, as criterion 'time' does it. Without a
+   !> crossing it is prepared again without a break. What the pass found goes to the summary.
+   !> Errors: stat_input when the static state already reaches mbl (within rupture_tolerance;
+   !> nothing has been written);
+   !> the first pass's errors.
+   subroutine find_break(self, config, scene, error, statics_only)
+      type(simulation), intent(inout) :: self
+      type(case_config), intent(in) :: config
+      !> The scene: its break is set here.
+      type(scene_type), intent(inout) :: scene
+      type(error_type), allocatable, intent(out) :: error
+      !> Stop after the check against the static tension.
+      logical, intent(in), optional :: statics_only
+      type(tension_watch) :: found
+      real(dp) :: static_max
+      integer :: kb, n
+      static_max = max(self%rod%static_max_tension, self%rod%info%max_tension)
+      ! Within the search's tolerance of mbl counts as reaching it (rod_run, watch_step).
+      if (static_max >= (1 - rupture_tolerance)*scene%mbl) then
+         call fatal_error(error, config%source//': &rupture: mbl = '//real_text(scene%mbl)//': at or below the '// &
+                          'largest static tension, '//quantity(static_max, 'N')//': the line would part in statics; '// &
+                          'give an mbl above it', stat_input)
+         return
+      end if
+      if (present(statics_only)) then
+         if (statics_only) return
+      end if
+      self%rod%watch%mbl = scene%mbl
+      if (self%model == '3d') then
+         call self%rod3%run_dynamics(self%rod, error=error)
+      else
+         call self%rod%run(error=error)
+      end if
+      if (allocated(error)) then
+         call prefix_error(error, 'the first pass of the break by tension (the run without the break, to find '// &
+                           'where and when the tension reaches mbl): ')
+         return
+      end if
+      found = self%rod%watch
+      found%mbl = 0
+      found%h_aim = 0
+      if (found%found) then
+         n = size(self%rod%s)
+         kb = break_node_of(found%cells, found%cell, scene%end_a%held(), scene%end_b%held())
+         if (kb == 1) then
+            call set_break(scene, 0.0_dp, found%time, error)
+         else if (kb == n) then
+            call set_break(scene, scene%length, found%time, error)
+         else
+            call set_break(scene, self%rod%s(kb), found%time, error)
+         end if
+         if (allocated(error)) return
+      end if
+      call prepare_rod(self, config, scene, error)
+      if (allocated(error)) return
+      self%rod%rupture = found
+   end subroutine find_break
+
+   !> The break node of a break by tension: of the two nodes of the first cell to reach the MBL
+   !> (cell c), the one with the larger node tension (the mean of its two cells; an end node, its
+   !> cell's). A break stays at a node (the cable is cut in two pieces there, or a held end lets
+   !> go): an end node only at a held end, an inner node with two cells at least on either side
+   !> (scene_grid); else the nearest such node (of two, the one with the larger node tension).
+   pure integer function break_node_of(cells, c, held_a, held_b) result(kb)
+      !> Cell tensions when the first cell reached the MBL, N.
+      real(dp), intent(in) :: cells(:)
+      !> That cell.
+      integer, intent(in) :: c
+      !> Whether end a and end b are held.
+      logical, intent(in) :: held_a, held_b
+      real(dp) :: node(size(cells) + 1)
+      integer :: n, k, d
+      n = size(cells) + 1
+      node(1) = cells(1)
+      node(n) = cells(n - 1)
+      do k = 2, n - 1
+         node(k) = 0.5_dp*(cells(k - 1) + cells(k))
+      end do
+      kb = c
+      if (node(c + 1) > node(c)) kb = c + 1
+      if (allowed(kb)) return
+      do d = 1, n
+         if (allowed(kb - d) .and. allowed(kb + d)) then
+            kb = merge(kb + d, kb - d, node(kb + d) > node(kb - d))
+            return
+         else if (allowed(kb - d)) then
+            kb = kb - d
+            return
+         else if (allowed(kb + d)) then
+            kb = kb + d
+            return
+         end if
+      end do
+   contains
+      pure logical function allowed(k)
+         integer, intent(in) :: k
+         allowed = (k == 1 .and. held_a) .or. (k == n .and. held_b) .or. (k >= 3 .and. k <= n - 2)
+      end function allowed
+   end function break_node_of
 
    !> Azimuth, in the horizontal plane, of the vertical plane the scene's line starts in, rad (from
    !> x towards y): that of the chord from end a's point to end b's point when both ends have one

@@ -109,6 +109,12 @@ module xcable_io_config
       real(dp) :: t_break = 0.05_dp
       !> Time at which the break starts, s (&rupture time).
       real(dp) :: break_time = 0
+      !> What sets the break: 'time' (at s_break, at break_time) or 'tension' (where and when the
+      !> tension first reaches mbl).
+      character(len=16) :: break_criterion = 'time'
+      !> Minimum breaking load, N (&rupture mbl; criterion 'tension'; 0: not given). One value for
+      !> the line: a per-segment value comes with the segments.
+      real(dp) :: mbl = 0
       ! &numerics
       !> Discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme).
       character(len=16) :: scheme = 'rod'

@@ -193,6 +193,17 @@ contains
       call add('/summary@break_time', 'attribute', '', 's', 'a break', 'when the break started')
       call add('/summary@break_s', 'attribute', '', 'm', 'a break', 'arc length of the break from end a')
       call add('/summary@break_ramp', 'attribute', '', 's', 'a break', 'duration of the break''s force ramp')
+      call add('/summary@mbl', 'attribute', '', 'N', '&rupture criterion = ''tension''', 'minimum breaking load')
+      call add('/summary@break_tension', 'attribute', '', 'N', 'a break by tension', &
+               'tension of the first cell to reach the MBL, at break_time (within the rupture tolerance of mbl)')
+      call add('/summary@break_cell_s', 'attribute', '', 'm', 'a break by tension', &
+               'arc length from end a of the middle of the first cell to reach the MBL (break_s: its break node)')
+      call add('/summary@largest_tension', 'attribute', '', 'N', 'a break by tension that did not happen', &
+               'largest cell tension reached (below the MBL)')
+      call add('/summary@largest_tension_s', 'attribute', '', 'm', 'a break by tension that did not happen', &
+               'arc length from end a of the middle of that cell')
+      call add('/summary@largest_tension_time', 'attribute', '', 's', 'a break by tension that did not happen', &
+               'when it was reached')
       call add('/summary@energy_drift', 'attribute', '', '-', '&output energy', &
                'largest change of the ledger over the strain energy at t = 0')
       call add('/summary@dissipated', 'attribute', '', 'J', '', 'energy dissipated (booked in the ledger)')

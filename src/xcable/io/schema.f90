@@ -254,7 +254,14 @@ contains
       call add(t, 'rupture', 't_break', 'real', 's', '0.05', &
                'breaking time: the force across the break goes as cos^2(pi t / (2 t_break)) to zero (0: instantaneous)', &
                0.0_dp, 1.0e4_dp)
-      call add(t, 'rupture', 'time', 'real', 's', '0', 'time at which the break starts', 0.0_dp, 1.0e4_dp)
+      call add(t, 'rupture', 'time', 'real', 's', '0', 'time at which the break starts (criterion ''time'')', &
+               0.0_dp, 1.0e4_dp)
+      call add(t, 'rupture', 'criterion', 'string', '-', "'time'", &
+               "what sets the break: 'time' (at s_break, at time) or 'tension' (where and when the tension first "// &
+               "reaches mbl; s_break and time are then not given)", length=16, choices='time tension')
+      call add(t, 'rupture', 'mbl', 'real', 'N', '0', &
+               "minimum breaking load of the line (criterion 'tension'): the line parts where and when a cell's "// &
+               'tension first reaches it', 0.0_dp, 1.0e12_dp, lower_open=.true., zero_means='not given')
       ! &numerics
       call add(t, 'numerics', 'scheme', 'string', '-', "'rod'", &
                "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &

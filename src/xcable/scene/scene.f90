@@ -20,7 +20,7 @@ module xcable_scene
    use xcable_loads_fluid, only: fluid_load
    implicit none
    private
-   public :: scene_type, scene_from_config, scene_grid
+   public :: scene_type, scene_from_config, scene_grid, set_break
 
    !> A scene.
    type :: scene_type
@@ -44,6 +44,11 @@ module xcable_scene
       !> starts (s) and the duration of the force ramp (s).
       logical :: breaks = .false.
       real(dp) :: s_break = 0, break_time = 0, t_break = 0
+      !> The break by tension (&rupture criterion = 'tension'): the line parts where and when a
+      !> cell's tension first reaches mbl (N). breaks, s_break and break_time are then set by the
+      !> driver once it has found the crossing (driver/simulation.f90).
+      logical :: by_tension = .false.
+      real(dp) :: mbl = 0
       !> Whether the break is at end a, at end b, or inside the cable.
       logical :: break_at_a = .false., break_at_b = .false.
       !> Distributed loads (none: not allocated). The weight above is net of their lift.
@@ -85,7 +90,7 @@ contains
       !> Error (stat_input) naming what is inconsistent.
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: area, ei, ea, rel
+      real(dp) :: area, ei, ea
       integer :: k
       scene%source = config%source
       area = config%area
@@ -148,27 +153,44 @@ contains
          return
       end if
 
-      scene%breaks = config%break_enabled
-      if (scene%breaks) then
-         scene%s_break = config%s_break
-         if (scene%s_break < 0) scene%s_break = config%length
-         scene%break_time = config%break_time
-         scene%t_break = config%t_break
-         rel = scene%s_break/config%length
-         scene%break_at_a = rel <= 1.0e-12_dp
-         scene%break_at_b = rel >= 1 - 1.0e-12_dp
-         if (scene%break_at_a .and. .not. scene%end_a%held()) then
-            call fatal_error(error, config%source//': &rupture: s_break = '//str(scene%s_break)//': end a is '// &
-                             scene%end_a%kind()//', not held, so nothing breaks there', stat_input)
-            return
-         end if
-         if (scene%break_at_b .and. .not. scene%end_b%held()) then
-            call fatal_error(error, config%source//': &rupture: s_break = '//str(scene%s_break)//': end b is '// &
-                             scene%end_b%kind()//', not held, so nothing breaks there', stat_input)
-            return
-         end if
+      scene%t_break = config%t_break
+      scene%by_tension = config%break_enabled .and. trim(config%break_criterion) == 'tension'
+      if (scene%by_tension) then
+         scene%mbl = config%mbl
+      else if (config%break_enabled) then
+         call set_break(scene, config%s_break, config%break_time, error)
       end if
    end subroutine scene_from_config
+
+   !> The break of a scene: at arc length s_break (m; negative: L, the end b) from end a, starting
+   !> at time (s), with the scene's ramp t_break. Error (stat_input) for a break at an end that is
+   !> not held.
+   subroutine set_break(scene, s_break, time, error)
+      !> Scene.
+      type(scene_type), intent(inout) :: scene
+      !> Where (m) and when (s) the break starts.
+      real(dp), intent(in) :: s_break, time
+      !> Error naming the end.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: rel
+      scene%breaks = .true.
+      scene%s_break = s_break
+      if (scene%s_break < 0) scene%s_break = scene%length
+      scene%break_time = time
+      rel = scene%s_break/scene%length
+      scene%break_at_a = rel <= 1.0e-12_dp
+      scene%break_at_b = rel >= 1 - 1.0e-12_dp
+      if (scene%break_at_a .and. .not. scene%end_a%held()) then
+         call fatal_error(error, scene%source//': &rupture: s_break = '//str(scene%s_break)//': end a is '// &
+                          scene%end_a%kind()//', not held, so nothing breaks there', stat_input)
+         return
+      end if
+      if (scene%break_at_b .and. .not. scene%end_b%held()) then
+         call fatal_error(error, scene%source//': &rupture: s_break = '//str(scene%s_break)//': end b is '// &
+                          scene%end_b%kind()//', not held, so nothing breaks there', stat_input)
+         return
+      end if
+   end subroutine set_break
 
    !> Node arc lengths: uniform on [0, L], or, with a break inside the cable,
    !> uniform on each side of it with the break point a node (the nodes split

@@ -81,6 +81,8 @@ contains
       case ('rupture%s_break'); call move(c%s_break, v, store)
       case ('rupture%t_break'); call move(c%t_break, v, store)
       case ('rupture%time'); call move(c%break_time, v, store)
+      case ('rupture%criterion'); call move(c%break_criterion, v, store)
+      case ('rupture%mbl'); call move(c%mbl, v, store)
       case ('numerics%scheme'); call move(c%scheme, v, store)
       case ('numerics%model'); call move(c%model, v, store)
       case ('numerics%nodes'); call move(c%nodes, v, store)

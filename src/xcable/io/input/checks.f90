@@ -316,6 +316,34 @@ contains
          return
       end if
 
+      ! A break by tension: where and when follow from mbl, not from s_break and time.
+      if (c%break_enabled .and. trim(c%break_criterion) == 'tension') then
+         if (trim(c%scheme) == 'box') then
+            call fatal_error(error, c%source//": &rupture: criterion = 'tension': the box scheme breaks at a time "// &
+                             "only; give &numerics scheme = 'rod', or criterion = 'time'", stat_input)
+            return
+         end if
+         if (c%is_given('rupture', 's_break') .or. c%is_given('rupture', 'time')) then
+            position = ''
+            if (c%is_given('rupture', 's_break')) position = ' s_break = '//real_text(c%s_break)
+            if (c%is_given('rupture', 's_break') .and. c%is_given('rupture', 'time')) position = position//' and'
+            if (c%is_given('rupture', 'time')) position = position//' time = '//real_text(c%break_time)
+            call fatal_error(error, c%source//": &rupture: criterion = 'tension' with"//position// &
+                             ': the line parts where and when its tension first reaches mbl, so s_break and '// &
+                             "time are not used; leave them out, or give criterion = 'time'", stat_input)
+            return
+         end if
+         if (.not. c%is_given('rupture', 'mbl') .or. c%mbl <= 0) then
+            position = 'not given'
+            if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
+            call fatal_error(error, c%source//": &rupture: mbl = "//position//": criterion = 'tension' needs the "// &
+                             'minimum breaking load of the line, a tension above 0 N (and above the largest '// &
+                             'static tension)', stat_input)
+            return
+         end if
+         return
+      end if
+
       if (c%break_enabled .and. (c%s_break == 0 .or. c%s_break == c%length)) then
          if (c%s_break == 0) then
             broken = 'a'

@@ -159,6 +159,17 @@ contains
       echoed = .true.
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
+      ! &rupture: criterion and mbl for a break by tension, s_break and time for one by time
+      ! (the echo of a case by time is that of the cases before the criterion).
+      if (e%group == 'rupture') then
+         select case (e%name)
+         case ('criterion', 'mbl')
+            echoed = trim(c%break_criterion) == 'tension'
+         case ('s_break', 'time')
+            echoed = trim(c%break_criterion) /= 'tension'
+         end select
+         return
+      end if
       if (e%group == 'material') then
          select case (e%name)
          case ('table_strain', 'table_tension')

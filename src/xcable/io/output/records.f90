@@ -210,6 +210,17 @@ contains
             call put_real_attr(group, 'break_s', summary%break_s, ok)
             call put_real_attr(group, 'break_ramp', summary%break_ramp, ok)
          end if
+         if (summary%by_tension) then
+            call put_real_attr(group, 'mbl', summary%mbl, ok)
+            if (summary%broke) then
+               call put_real_attr(group, 'break_tension', summary%break_tension, ok)
+               call put_real_attr(group, 'break_cell_s', summary%break_cell_s, ok)
+            else
+               call put_real_attr(group, 'largest_tension', summary%largest_tension, ok)
+               call put_real_attr(group, 'largest_tension_s', summary%largest_tension_s, ok)
+               call put_real_attr(group, 'largest_tension_time', summary%largest_tension_time, ok)
+            end if
+         end if
          if (summary%energy_drift >= 0) call put_real_attr(group, 'energy_drift', summary%energy_drift, ok)
          call put_real_attr(group, 'dissipated', summary%dissipated, ok)
          call put_real_attr(group, 'time_reached', summary%time_reached, ok)

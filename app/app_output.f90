@@ -1,7 +1,7 @@
 !> The program's result file: the library's result_file, with progress lines
 !> on stderr (the library itself never prints).
 module xcable_app_output
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_io_output, only: result_file
    use, intrinsic :: iso_fortran_env, only: error_unit
    implicit none

@@ -19,16 +19,16 @@
 !> removed when the run completes or fails. A new run (without --resume)
 !> removes a checkpoint left by an earlier one of the same result file.
 program xcable_main
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, stat_input, stat_io
-   use xcable_strings, only: str, quantity
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, stat_input, stat_io
+   use xcable_core_strings, only: str, quantity
    use xcable_io_input, only: case_config, read_config, config_text
    use xcable_io_schema, only: write_schema
    use xcable_io_output_registry, only: write_outputs
-   use xcable_simulation, only: simulation
-   use xcable_run_records, only: run_summary, run_history, static_info, summary_text
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_records, only: run_summary, run_history, static_info, summary_text
    use xcable_app_output, only: app_output
-   use xcable_version, only: version_lines, unoptimised_note
+   use xcable_core_version, only: version_lines, unoptimised_note
    use xcable_io_checkpoint, only: checkpoint_path, remove_checkpoint
    use xcable_io_xdmf, only: write_xdmf, remove_xdmf, probe_xdmf
    use xcable_system_posix, only: install_termination_handler, new_run_id

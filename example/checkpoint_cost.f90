@@ -19,13 +19,13 @@
 !> after making the namelist fingerprint that off makes, to tell the
 !> one-time cost of the fingerprint from the per-step cost of the checks).
 program checkpoint_cost
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type
+   use xcable_core_strings, only: str
    use xcable_io_input, only: case_config, read_config, config_text
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use xcable_io_checkpoint, only: checkpoint_file, remove_checkpoint
-   use xcable_version, only: code_version
+   use xcable_core_version, only: code_version
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    character(len=*), parameter :: path = 'build/checkpoint_cost.ckpt'

@@ -22,9 +22,9 @@
 !> Exit codes: 0 written (whatever the statuses); 1 a summary file cannot be
 !> written; 2 not a sweep directory or a malformed manifest.
 program sweep_collect
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use hdf5
-   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_int_attr, put_text_attr, &
+   use xcable_io_hdf5_put, only: put_real_vector, put_int_vector, put_text_vector, put_int_attr, put_text_attr, &
                              get_text_attr
    use, intrinsic :: iso_fortran_env, only: error_unit, output_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan

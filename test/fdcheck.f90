@@ -2,9 +2,9 @@
 !> extends newton_problem (the rod's statics and steps, the box scheme, any
 !> new model) is checked entry by entry against central differences.
 module xcable_fdcheck
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error
+   use xcable_core_strings, only: str
    use xcable_solver_banded, only: band_matrix
    use xcable_solver_newton, only: newton_problem
    implicit none

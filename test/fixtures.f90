@@ -1,7 +1,7 @@
 !> Shared set-ups of the tests: the paper's cable, grids and cases.
 module xcable_fixtures
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type
    use xcable_io_input, only: case_config
    use xcable_box_case, only: setup_case
    use xcable_box_equations, only: cable_model

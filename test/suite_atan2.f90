@@ -15,10 +15,10 @@
 !> ones (11 units), the sign of the result from y < 0 instead of the sign bit
 !> of y (atan2(-0, 2) = +0).
 module suite_atan2
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
    use, intrinsic :: iso_fortran_env, only: int64, real128
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, ieee_is_nan

@@ -6,12 +6,12 @@
 !> operations in dgbtrs's order; measured difference 0, tolerance 1e-15 of
 !> max |x|).
 module suite_banded
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_solver_banded, only: band_matrix, solve_banded
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use xcable_io_config, only: case_config
    use xcable_model_rod, only: rod_kl, rod_ku
    use xcable_fixtures, only: paper_case
@@ -20,7 +20,7 @@ module suite_banded
    use xcable_box_dynamics, only: dynamics_options
    use xcable_box_discrete, only: box_system
    use xcable_box_statics, only: catenary_guess
-   use xcable_theory, only: wave_speed
+   use xcable_theory_closed_forms, only: wave_speed
    use suite_rod_dynamics, only: rupture_config, run_config
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none

@@ -16,17 +16,17 @@
 !> Damaged, truncated, foreign (another version, another namelist, the
 !> other model) and missing checkpoints are refused.
 module suite_checkpoint
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_strings, only: str
-   use xcable_error, only: stat_input
+   use xcable_core_strings, only: str
+   use xcable_core_error, only: stat_input
    use xcable_io_config, only: case_config
    use xcable_io_input, only: config_text, read_config
    use xcable_fixtures, only: pushing_rope
-   use xcable_simulation, only: simulation
-   use xcable_run_records, only: run_observer, static_info, run_history, run_summary, n_fields
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_records, only: run_observer, static_info, run_history, run_summary, n_fields
    use xcable_io_checkpoint, only: checkpoint_file, remove_checkpoint
-   use xcable_io_hdf5, only: put_text_attr
+   use xcable_io_hdf5_put, only: put_text_attr
    use xcable_system_posix, only: install_termination_handler, raise_termination, clear_termination
    use suite_rod_dynamics, only: rupture_config
    use hdf5

@@ -4,16 +4,16 @@
 !> convergence in space and time together, the energy ledger, and the
 !> quasi-static limit of a slow break.
 module suite_dynamics
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_fixtures, only: paper_case
    use xcable_box_equations, only: cable_model, n_eq, i_eps, i_u
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture, rupture_factor
    use xcable_box_statics, only: static_state, solve_statics
-   use xcable_theory, only: wall_drop_time, riemann_speed
+   use xcable_theory_closed_forms, only: wall_drop_time, riemann_speed
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private

@@ -6,9 +6,9 @@
 !> with the wet weight over the dry plus added mass. (The ledger with fluid
 !> loads and the step Jacobian are in suite registry.)
 module suite_fluid
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_loads_fluid, only: fluid_load
    use xcable_loads_load, only: load_slot
@@ -16,7 +16,7 @@ module suite_fluid
    use xcable_ends_free, only: free_end
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use suite_rod_statics, only: statics_config
    use suite_scenes, only: free_end_period
    use, intrinsic :: iso_fortran_env, only: output_unit

@@ -9,13 +9,13 @@
 !> must reproduce them to 1e-12 relative (the arithmetic is the same).
 !> test/golden/reference_rod.txt pins the rod discretisation in the same way.
 module suite_golden
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_io_input, only: case_config, read_config
-   use xcable_simulation, only: simulation
-   use xcable_run_records, only: run_observer, static_info, run_summary, field_names, n_fields
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_records, only: run_observer, static_info, run_summary, field_names, n_fields
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private

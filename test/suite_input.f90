@@ -3,12 +3,12 @@
 !> table), and one test per class of bad input, each checking that the
 !> message names the file, the group, the variable and what is allowed.
 module suite_input
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: fatal_error, stat_input
+   use xcable_core_error, only: fatal_error, stat_input
    use xcable_io_input, only: case_config, read_config, read_values, config_text, value_text
    use xcable_io_schema, only: schema_entry, schema_table, schema_text, is_table
-   use xcable_strings, only: real_text, to_lower, str
+   use xcable_core_strings, only: real_text, to_lower, str
    use xcable_box_case, only: setup_case
    use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options

@@ -2,17 +2,17 @@
 !> finite-difference Jacobian, entry by entry, for statics and for a time step
 !> at a state with non-zero velocities, shear and curvature.
 module suite_jacobian
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_fixtures, only: paper_case
    use xcable_box_equations, only: cable_model, n_eq, equation_terms, equation_derivatives, mass_times
    use xcable_solver_newton, only: newton_options, newton_workspace
    use xcable_box_dynamics, only: dynamics_options
    use xcable_box_discrete, only: box_system
    use xcable_box_statics, only: catenary_guess
-   use xcable_theory, only: wave_speed
+   use xcable_theory_closed_forms, only: wave_speed
    implicit none
    private
    public :: collect_jacobian

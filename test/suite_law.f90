@@ -1,9 +1,9 @@
 !> Tension-strain laws: f', f'' and the strain energy against central
 !> differences, and the inverse strain_at.
 module suite_law
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_material_law, only: material_law, tanh_law, linear_law
    use xcable_material_factory, only: new_law
    use xcable_material_elementary, only: law_tanh, law_atanh, law_tanh_sech2

@@ -5,15 +5,15 @@
 !> closed forms (the decay of the first axial mode of a taut line, the speed
 !> of a released end) and its dissipation against the integral of c eps_t^2.
 module suite_laws
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: stat_input
-   use xcable_strings, only: str
+   use xcable_core_error, only: stat_input
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
    use xcable_material_law, only: tanh_law
    use xcable_material_table, only: table_law, new_table_law
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use suite_rod_statics, only: statics_config
    use suite_rod_dynamics, only: rupture_config, run_config
    use suite_golden, only: snapshot_store

@@ -23,19 +23,19 @@
 !> found is refused (stat_numerics, no snapshots); so is a folded planar
 !> static state.
 module suite_model3d
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_error, only: stat_numerics
-   use xcable_strings, only: str
+   use xcable_core_error, only: stat_numerics
+   use xcable_core_strings, only: str
    use xcable_io_input, only: read_config
    use xcable_io_config, only: case_config
    use xcable_fixtures, only: pushing_rope
-   use xcable_simulation, only: simulation
-   use xcable_rod3d_run, only: rod3d_run
-   use xcable_ends_end, only: end_condition
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_rod3d_run, only: rod3d_run
+   use xcable_ends_end_condition, only: end_condition
    use xcable_ends_factory, only: new_end
    use xcable_solver_banded, only: band_matrix
-   use xcable_run_records, only: run_observer, static_info, run_history, run_summary, n_fields, field_names
+   use xcable_driver_records, only: run_observer, static_info, run_history, run_summary, n_fields, field_names
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private

@@ -1,16 +1,16 @@
 !> The result file: write errors are reported, not swallowed, and the status
 !> attribute reads 'complete' only after finish('complete').
 module suite_output
-   use xcable_kinds, only: dp, i8
-   use xcable_strings, only: str, quantity
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_strings, only: str, quantity
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_run_records, only: run_history, run_summary
-   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
+   use xcable_driver_records, only: run_history, run_summary
+   use xcable_io_hdf5_put, only: put_real_vector, put_int_vector, put_text_vector, put_real_attr, put_int_attr, &
                              put_text_attr, get_text_attr
    use xcable_io_output_registry, only: output_item, find_output, outputs_text
    use xcable_io_output, only: result_file
-   use xcable_version, only: code_version
-   use xcable_error, only: stat_input
+   use xcable_core_version, only: code_version
+   use xcable_core_error, only: stat_input
    use xcable_io_number_text, only: put_es, put_int
    use hdf5
    implicit none
@@ -273,7 +273,7 @@ contains
       call delete_file(path)
    end subroutine test_large_echo
 
-   !> The version the program reports (src/xcable/version.f90) is the package
+   !> The version the program reports (src/xcable/core/version.f90) is the package
    !> version of fpm.toml: the first line `version = "..."` of the manifest.
    subroutine test_version(error)
       type(error_type), allocatable, intent(out) :: error
@@ -297,7 +297,7 @@ contains
       end do
       close (unit)
       call check(error, manifest_version == code_version, 'fpm.toml says version "'//manifest_version// &
-                 '", src/xcable/version.f90 says "'//code_version//'": change both (and CHANGELOG.md)')
+                 '", src/xcable/core/version.f90 says "'//code_version//'": change both (and CHANGELOG.md)')
       if (allocated(error)) return
       ! The newest entry of the changelog (above it, an "## Unreleased" entry may collect what is
       ! not released yet) and the README follow it.

@@ -3,11 +3,11 @@
 !> system; a rupture solved on windows gives the whole-cable solve's results to
 !> round-off; the window follows the front and grows when the motion outruns it.
 module suite_quiescent
-   use xcable_kinds, only: dp, i8
+   use xcable_core_kinds, only: dp, i8
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use xcable_model_rod, only: rod_problem
    use xcable_solver_banded, only: band_matrix
    use xcable_loads_fluid, only: fluid_load

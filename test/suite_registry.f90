@@ -9,15 +9,15 @@
 !> central differences. A new end kind or law registered in the factory or the
 !> schema is covered here without a new test.
 module suite_registry
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_io_schema, only: schema_entry, schema_table, find_entry
    use xcable_ends_factory, only: end_kinds
    use xcable_material_law, only: tanh_law
    use xcable_model_rod, only: rod_kl, rod_ku
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use xcable_fdcheck, only: check_jacobian
    use suite_rod_statics, only: statics_config
    use, intrinsic :: iso_fortran_env, only: output_unit

@@ -3,9 +3,9 @@
 !> check every model shares; and the discrete gradient, which must give the
 !> exact change of the stored energy for any two states.
 module suite_rod
-   use xcable_kinds, only: dp, i8
+   use xcable_core_kinds, only: dp, i8
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_material_law, only: material_law, tanh_law, linear_law
    use xcable_numerics_atan2, only: fast_atan2
    use xcable_material_tension_only, only: new_tension_only

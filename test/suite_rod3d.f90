@@ -4,25 +4,25 @@
 !> torque gives the uniform twist rate M_t / GIp) and the unit norm of the
 !> frame's Euler parameters along a run.
 module suite_rod3d
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_material_law, only: tanh_law, linear_law
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_ends_force, only: force_end
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_motion, only: motion_end
-   use xcable_ends_end, only: smooth_ramp
+   use xcable_ends_end_condition, only: smooth_ramp
    use xcable_loads_fluid, only: fluid_load
    use xcable_loads_load, only: load_slot
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, turning_angle, paper_euler_parameters
-   use xcable_rod3d_run, only: rod3d_run
+   use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use xcable_fdcheck, only: check_jacobian
    use xcable_io_config, only: case_config
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use suite_registry, only: scene_config, variants
    use xcable_io_config, only: end_config
    use xcable_ends_factory, only: new_end, end_kinds

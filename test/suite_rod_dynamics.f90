@@ -6,13 +6,13 @@
 !> buckled, without compression, with numerical dissipation, with a moving
 !> end and a point mass.
 module suite_rod_dynamics
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
-   use xcable_simulation, only: simulation
-   use xcable_theory, only: wall_drop_time, riemann_speed
-   use xcable_ends_end, only: smooth_ramp
+   use xcable_driver_simulation, only: simulation
+   use xcable_theory_closed_forms, only: wall_drop_time, riemann_speed
+   use xcable_ends_end_condition, only: smooth_ramp
    use suite_rod_statics, only: statics_config
    use suite_golden, only: snapshot_store
    use, intrinsic :: iso_fortran_env, only: output_unit

@@ -5,13 +5,13 @@
 !> of convergence; Newton's quadratic convergence; a line hanging from one
 !> end; and the inconsistent scenes that must be refused.
 module suite_rod_statics
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: stat_input
-   use xcable_strings, only: str
+   use xcable_core_error, only: stat_input
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
-   use xcable_simulation, only: simulation
-   use xcable_theory, only: catenary_from_force, catenary_between, catenary_summary
+   use xcable_driver_simulation, only: simulation
+   use xcable_theory_closed_forms, only: catenary_from_force, catenary_between, catenary_summary
    use xcable_material_law, only: material_law
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -262,7 +262,7 @@ contains
    !> 5 m apart, 60 m long: two nearly vertical legs joined by a bottom of
    !> radius 0.6 m. Newton from the catenary guess diverges at every grid (the
    !> squeezed cells of a rope that cannot push have no stiffness); the
-   !> relaxation (rod_statics.f90) finds the state. The lowest point and the
+   !> relaxation (model/rod_statics.f90) finds the state. The lowest point and the
    !> stretched length converge to the exact catenary at second order on 121,
    !> 241, 481 nodes (orders 2.13 and 1.90; with the rope's exact cut at zero
    !> tension, version 0.6, the stretched length's error is 5.0e-9 at 481 nodes and
@@ -450,7 +450,7 @@ contains
    end subroutine test_hanging
 
    !> The statics' first guess integrates the catenary with one Gauss-Legendre panel per
-   !> cell (rod_statics.f90, guess_panels); the reference takes 8. On the paper's cable
+   !> cell (model/rod_statics.f90, guess_panels); the reference takes 8. On the paper's cable
    !> between its ends (31, 61 and 241 nodes, 180 kN and 2 kN at the ends), the positions
    !> of the two agree to round-off of the length.
    subroutine test_guess_one_panel(error)

@@ -11,15 +11,15 @@
 !>  - 'pull': end b moved harmonically along x (1 m, period 2 s) from 58 m: the first
 !>    cell to reach 5 kN is the one at the fixed end a, which lets go (s = 0).
 module suite_rupture
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: stat_input
-   use xcable_strings, only: str
+   use xcable_core_error, only: stat_input
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
-   use xcable_simulation, only: simulation
-   use xcable_rod_run, only: pause_none, rupture_tolerance
-   use xcable_run_records, only: summary_text
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_rod_run, only: pause_none, rupture_tolerance
+   use xcable_driver_records, only: summary_text
    use suite_golden, only: snapshot_store
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none

@@ -4,12 +4,12 @@
 !> line), and a taut line whose end is moved harmonically (linear string
 !> theory, d'Alembert with the reflections).
 module suite_scenes
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
-   use xcable_simulation, only: simulation
-   use xcable_theory, only: wall_drop_time
+   use xcable_driver_simulation, only: simulation
+   use xcable_theory_closed_forms, only: wall_drop_time
    use xcable_io_input, only: read_config
    use xcable_fixtures, only: write_text
    use suite_rod_statics, only: statics_config

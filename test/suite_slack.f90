@@ -7,9 +7,9 @@
 !> a slack catenary equal to the rope that can push; the ledger of a line that goes
 !> slack and taut again, with and without damping.
 module suite_slack
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_material_law, only: material_law, tanh_law, linear_law
    use xcable_material_table, only: table_law, new_table_law
    use xcable_material_tension_only, only: tension_only_law, new_tension_only, slack_cell_force, slack_dissipation
@@ -20,7 +20,7 @@ module suite_slack
    use xcable_fdcheck, only: check_jacobian
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
-   use xcable_simulation, only: simulation
+   use xcable_driver_simulation, only: simulation
    use suite_golden, only: snapshot_store
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none

@@ -4,7 +4,7 @@
 !>   the linear law, in 2-D and out of the plane in 3-D (the tanh law, the
 !>   scalar equation solved by bisection);
 !> - a sagging line on a spring (statics): the extensible catenary from the
-!>   fixed end whose end force the spring balances (theory.f90's
+!>   fixed end whose end force the spring balances (theory/closed_forms.f90's
 !>   catenary_from_force), on two grids (second order);
 !> - a point mass on a spring at the end of a light line: the period of the
 !>   axial oscillation, from the exact frequency equation of the line (wave
@@ -19,16 +19,16 @@
 !>   spring's energy closes it to the Newton tolerance, where the midpoint
 !>   rule would not (its error grows with the spring's rotation per step).
 module suite_spring
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_strings, only: str
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config, end_config
-   use xcable_simulation, only: simulation
-   use xcable_theory, only: catenary_from_force
+   use xcable_driver_simulation, only: simulation
+   use xcable_theory_closed_forms, only: catenary_from_force
    use xcable_material_law, only: material_law, tanh_law, linear_law
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_ends_factory, only: new_end
-   use xcable_rod3d_run, only: rod3d_run
+   use xcable_driver_rod3d_run, only: rod3d_run
    use suite_rod_statics, only: statics_config
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none

@@ -2,10 +2,10 @@
 !> weight theta, and what the model does once the fixed end is in compression.
 !> Every run is small (61 to 241 nodes) and calls the library directly.
 module suite_stability
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_io_input, only: case_config
    use xcable_box_case, only: setup_case
    use xcable_box_equations, only: cable_model, i_eps, i_om
@@ -13,7 +13,7 @@ module suite_stability
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options, run_history, run_summary, run_observer, run_rupture
    use xcable_box_statics, only: static_state, solve_statics
-   use xcable_theory, only: riemann_speed
+   use xcable_theory_closed_forms, only: riemann_speed
    implicit none
    private
    public :: collect_stability

@@ -4,20 +4,20 @@
 !> refinement study that shows second-order convergence; and the quadratic
 !> convergence of Newton's iteration.
 module suite_statics
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check, check_close
-   use xcable_strings, only: str
-   use xcable_error, only: stat_input
+   use xcable_core_strings, only: str
+   use xcable_core_error, only: stat_input
    use xcable_fixtures, only: paper_case
    use xcable_box_equations, only: cable_model, i_eps, i_sn
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options
    use xcable_box_statics, only: static_state, solve_statics
-   use xcable_theory, only: catenary_summary, catenary_shape, horizontal_force, wave_speed
+   use xcable_theory_closed_forms, only: catenary_summary, catenary_shape, horizontal_force, wave_speed
    use xcable_material_law, only: material_law, tanh_law, linear_law, strain_kept
    use xcable_material_table, only: table_law, new_table_law
    use xcable_material_tension_only, only: new_tension_only
-   use xcable_kinds, only: i8
+   use xcable_core_kinds, only: i8
    use xcable_box_statics, only: catenary_guess
    use xcable_box_discrete, only: box_system
    use xcable_solver_newton, only: newton_workspace, newton_report, newton_solve

@@ -15,10 +15,10 @@
 !> (1.59), 1 + T^2 taken as 1 (7e13). Not errors, and not caught: the table index
 !> truncated instead of rounded (|u| up to 1/64, still within 0.8).
 module suite_tan
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
-   use xcable_error, only: fatal_error
-   use xcable_strings, only: str
+   use xcable_core_error, only: fatal_error
+   use xcable_core_strings, only: str
    use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use, intrinsic :: iso_fortran_env, only: int64, real128
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf, ieee_quiet_nan, ieee_is_nan

@@ -2,9 +2,9 @@
 !> subroutine that allocates `error` when a check fails; the driver runs all
 !> suites or one `suite [test]` and exits non-zero if anything failed.
 module xcable_testing
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error
+   use xcable_core_strings, only: str
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private

@@ -2,10 +2,10 @@
 !> against atan2 in quad precision (libquadmath) rounded to double, which is taken as
 !> the correctly rounded value. Build and run (docs/measurements/data/speed_rounds.md, "An own atan2"):
 !>
-!>     gfortran -O3 -funroll-loops src/xcable/kinds.f90 src/xcable/numerics/atan2.f90 \
+!>     gfortran -O3 -funroll-loops src/xcable/core/kinds.f90 src/xcable/numerics/atan2.f90 \
 !>        bench/atan2/accuracy.f90 -o /tmp/atan2_accuracy && /tmp/atan2_accuracy [millions]
 program atan2_accuracy
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_numerics_atan2, only: fast_atan2
    use, intrinsic :: iso_fortran_env, only: int64, real128
    implicit none

@@ -1,6 +1,6 @@
 !> Instructions per call of fast_atan2 and of the intrinsic (glibc) atan2, for callgrind:
 !>
-!>     gfortran -O3 -funroll-loops src/xcable/kinds.f90 src/xcable/numerics/atan2.f90 \
+!>     gfortran -O3 -funroll-loops src/xcable/core/kinds.f90 src/xcable/numerics/atan2.f90 \
 !>        bench/atan2/cost.f90 -o /tmp/atan2_cost
 !>     valgrind --tool=callgrind /tmp/atan2_cost <family> <which>
 !>
@@ -9,7 +9,7 @@
 !> which: fast or libm. The inclusive cost of fast_atan2 (or of atan2 with its wrapper)
 !> over its 10^6 calls is the figure (callgrind_annotate --inclusive=yes).
 program atan2_cost
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_numerics_atan2, only: fast_atan2
    implicit none
    integer, parameter :: n = 1000000

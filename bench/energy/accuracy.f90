@@ -5,12 +5,12 @@
 !> law_tanh and law_atanh), in units in the last place of max(|W|, |f(0) eps|) (W
 !> crosses zero at eps = 5.5e-4, where f(0) eps, the linear term, is its scale):
 !>
-!>     gfortran -O2 src/xcable/kinds.f90 src/xcable/error.f90 src/xcable/material/elementary.f90 \
+!>     gfortran -O2 src/xcable/core/kinds.f90 src/xcable/core/error.f90 src/xcable/material/elementary.f90 \
 !>        src/xcable/material/law.f90 bench/energy/accuracy.f90 -o /tmp/energy_accuracy
 !>     /tmp/energy_accuracy [arguments per family, default 1000000]
 program energy_accuracy
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type
    use xcable_material_law, only: material_law, new_law, paper_tanh_coefficients
    use xcable_material_elementary, only: law_tanh, law_atanh
    use, intrinsic :: iso_fortran_env, only: int64, real128

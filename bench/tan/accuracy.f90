@@ -1,7 +1,7 @@
 !> Accuracy of fast_tan (src/xcable/numerics/tan.f90) and of the intrinsic (glibc) tan
 !> against tan in quad precision (libquadmath), in units in the last place:
 !>
-!>     gfortran -O2 src/xcable/kinds.f90 src/xcable/numerics/tan.f90 bench/tan/accuracy.f90 \
+!>     gfortran -O2 src/xcable/core/kinds.f90 src/xcable/numerics/tan.f90 bench/tan/accuracy.f90 \
 !>        -o /tmp/tan_accuracy && /tmp/tan_accuracy [arguments per family, default 2000000]
 !>
 !> (docs/measurements/data/speed_rounds.md quotes a run with 1500000: 1.2e7 arguments.)
@@ -11,7 +11,7 @@
 !> the exact value in units of the last place of the correctly rounded value, for
 !> fast_tan and for tan. Each argument gets a random sign.
 program tan_accuracy
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_numerics_tan, only: fast_tan
    use, intrinsic :: iso_fortran_env, only: int64, real128
    implicit none

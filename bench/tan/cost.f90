@@ -1,6 +1,6 @@
 !> Instructions per call of fast_tan and of the intrinsic (glibc) tan, for callgrind:
 !>
-!>     gfortran -O3 -funroll-loops -fno-tree-vectorize src/xcable/kinds.f90 \
+!>     gfortran -O3 -funroll-loops -fno-tree-vectorize src/xcable/core/kinds.f90 \
 !>        src/xcable/numerics/tan.f90 bench/tan/cost.f90 -o /tmp/tan_cost
 !>     valgrind --tool=callgrind /tmp/tan_cost <family> <which>
 !>
@@ -10,7 +10,7 @@
 !> calls is the figure (callgrind_annotate --inclusive=yes). -fno-tree-vectorize:
 !> gfortran otherwise calls libmvec's vector tan in the loop over the intrinsic.
 program tan_cost
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_numerics_tan, only: fast_tan
    implicit none
    integer, parameter :: n = 1000000

@@ -40,8 +40,8 @@
 !> output costs (for before/after timings, no instruction counts) and reuses
 !> the reference fields that the last full run saved in <work>.
 program bench
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type
    use xcable_io_input, only: case_config, read_config
    use xcable_box_case, only: setup_case
    use xcable_box_equations, only: cable_model

@@ -3,7 +3,7 @@
 !> the tension field against a reference field built from the scheme's own
 !> fine runs (Richardson-extrapolated when the observed order allows).
 module bench_measure
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use bench_runs, only: run_result
    use bench_theory, only: wave_reference
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan, ieee_is_nan

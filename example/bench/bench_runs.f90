@@ -3,7 +3,7 @@
 !> read back what the result file holds (summary, end histories, tension
 !> snapshots).
 module bench_runs
-   use xcable_kinds, only: dp, i8
+   use xcable_core_kinds, only: dp, i8
    use hdf5
    implicit none
    private

@@ -28,9 +28,9 @@
 !> slowed near the wall by the waves already reflected; a bound on that delay
 !> is reported with the reference.
 module bench_theory
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_material_law, only: material_law
-   use xcable_theory, only: wave_speed, riemann_speed, wall_incoming_strain
+   use xcable_theory_closed_forms, only: wave_speed, riemann_speed, wall_incoming_strain
    implicit none
    private
    public :: wave_reference, simple_wave_reference

@@ -10,13 +10,13 @@
 !> process); it prints the medians over the rounds of the time per node-step,
 !> of the paired ratio 3-D / planar, and the Newton iterations per step.
 program cost3d
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type
    use xcable_material_law, only: tanh_law
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
-   use xcable_rod3d_run, only: rod3d_run
+   use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none

@@ -44,7 +44,7 @@
 !> the slack positions are compared with the peer runs in <peer> (default
 !> bench/peer/runs) when their files are there.
 program stress
-   use xcable_kinds, only: dp, i8
+   use xcable_core_kinds, only: dp, i8
    use stress_runs, only: run_spec, run_outcome, stress_run, compression_probe, paper_bending_stiffness, &
                           wall_reflection, release_times, outcome_tag
    use stress_reference, only: peer_grids, peer_position

@@ -3,7 +3,7 @@
 !> case and grid, a row every 0.01 s with columns t, end_x, end_z, ...).
 !> Their grid N counts segments (N + 1 nodes).
 module stress_reference
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
    private

@@ -20,7 +20,7 @@
 !>   slack cable with a sag of metres). Version 0.1 of this study took the
 !>   tangential speed |u| of the box scheme; |V| is what both schemes record.
 !> - drop error: time of the 1 % drop of the fixed-end tension minus
-!>   simple-wave theory with the ramp (xcable_theory%wall_drop_time; without
+!>   simple-wave theory with the ramp (xcable_theory_closed_forms%wall_drop_time; without
 !>   the weak shock of the concave law above eps = 0.2086, so approximate at
 !>   315 and 400 kN), s.
 !> - energy drift: max |ledger - ledger(0)| / strain energy(0) over the run
@@ -28,15 +28,15 @@
 !> - released end: its position at the times release_times, linear in time
 !>   between the two accepted steps around each (steps of at most 0.2 ms).
 module stress_runs
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, stat_input
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, stat_input
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
    use xcable_material_law, only: material_law
    use xcable_material_factory, only: new_law
-   use xcable_simulation, only: simulation
-   use xcable_run_records, only: run_history, run_summary, static_info, run_observer
-   use xcable_theory, only: riemann_speed, wave_speed, wall_drop_time
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer
+   use xcable_theory_closed_forms, only: riemann_speed, wave_speed, wall_drop_time
    use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_quiet_nan
    implicit none
    private

@@ -3,15 +3,15 @@
 !> that need the material law (the static strain within the law's documented
 !> range, a tension that can hold the cable) are made here, before any solve.
 module xcable_box_case
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input
+   use xcable_core_strings, only: str
    use xcable_io_input, only: case_config, max_time_steps, derive_defaults
    use xcable_material_factory, only: new_law
    use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options
-   use xcable_theory, only: wave_speed
+   use xcable_theory_closed_forms, only: wave_speed
    implicit none
    private
    public :: setup_case

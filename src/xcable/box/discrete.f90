@@ -33,7 +33,7 @@
 !>   breaking end: T t + Sn n = F_v i + F_h j (two rows), Omega3 = static value,
 !>   b0^2 + b3^2 = 1.
 module xcable_box_discrete
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om, &
                                      equation_terms, equation_derivatives, forcing_from_law, mass_times_from_law
    use xcable_solver_banded, only: band_matrix

@@ -21,14 +21,14 @@
 !> rejected before accepted step i; summary%rejected_steps counts them all
 !> (with those of a final failing step).
 module xcable_box_dynamics
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics
+   use xcable_core_strings, only: str
    use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
    use xcable_box_geometry, only: positions, fixed_frame_velocity
    use xcable_box_discrete, only: box_system
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
-   use xcable_theory, only: wave_speed
+   use xcable_theory_closed_forms, only: wave_speed
    use, intrinsic :: iso_fortran_env, only: error_unit
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none

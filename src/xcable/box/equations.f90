@@ -10,7 +10,7 @@
 !> Besides M and P this module gives the exact derivatives d(M(Y) z)/dY and
 !> dP/dY that the Jacobian of the discrete equations is built from.
 module xcable_box_equations
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_material_law, only: material_law
    implicit none
    private

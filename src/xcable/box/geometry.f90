@@ -2,7 +2,7 @@
 !> velocity in the fixed frame (x horizontal = j component, z vertical = i
 !> component, i points up).
 module xcable_box_geometry
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_box_equations, only: n_eq, i_eps, i_u, i_v, i_b0, i_b3
    implicit none
    private

@@ -5,9 +5,9 @@
 !> The box scheme describes the paper's scene only: end a fixed, end b fixed
 !> and released by the break (s_break = L), the end tension given.
 module xcable_box_run
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str, real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config
    use xcable_box_case, only: setup_case
    use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
@@ -16,7 +16,7 @@ module xcable_box_run
    use xcable_box_statics, only: static_state, solve_statics
    use xcable_box_dynamics, only: dynamics_options, box_history => run_history, box_summary => run_summary, &
                               box_observer => run_observer, run_rupture, rupture_factor
-   use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_fields, n_energy
+   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer, n_fields, n_energy
    implicit none
    private
    public :: box_run, box_supports

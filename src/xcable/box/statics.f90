@@ -1,13 +1,13 @@
 !> The initial static state (eq. 18 without time derivatives, boundary
 !> conditions 28-29): Newton's method from the extensible-catenary guess.
 module xcable_box_statics
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, prefix_error
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, prefix_error
    use xcable_box_equations, only: cable_model, n_eq, i_eps, i_sn, i_u, i_v, i_b0, i_b3, i_om
    use xcable_box_geometry, only: positions
    use xcable_box_discrete, only: box_system
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
-   use xcable_theory, only: horizontal_force, wave_speed
+   use xcable_theory_closed_forms, only: horizontal_force, wave_speed
    implicit none
    private
    public :: static_state, solve_statics, catenary_guess

@@ -8,10 +8,10 @@
 !> velocity, the tension of its cell and the external force on it (the
 !> support's reaction for a held end, the applied force for a loaded one).
 !> A 3-D run also keeps the y components (ends_y: y, vy, force_y).
-module xcable_run_records
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type
-   use xcable_strings, only: str, quantity
+module xcable_driver_records
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type
+   use xcable_core_strings, only: str, quantity
    implicit none
    private
    public :: run_history, run_summary, static_info, run_observer, end_summary, static_figures, summary_text
@@ -387,4 +387,4 @@ contains
          t = trim(t)
       end function angle_text
    end function summary_text
-end module xcable_run_records
+end module xcable_driver_records

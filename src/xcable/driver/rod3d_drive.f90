@@ -35,23 +35,23 @@
 !> With distributed loads (fluid) each new end's force is that of its own
 !> piece's end node at rest, so that both pieces start in the balance the
 !> whole cable had (their forces add up to none).
-module xcable_rod3d_drive
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
-   use xcable_strings, only: str
-   use xcable_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
+module xcable_driver_rod3d_drive
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
+   use xcable_core_strings, only: str
+   use xcable_driver_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
                              advance_time, jacobian_kept, check_range, check_folds, checkpoint_pause, pause_none, &
                              exchange_progress, exchange_records, max_steps, watch_step
-   use xcable_theory, only: wave_speed
+   use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
-   use xcable_rod3d_run, only: rod3d_run
+   use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece, bend_moment3 => bend_moment, bend_energy3 => bend_energy
-   use xcable_vector3, only: cross3
+   use xcable_numerics_vector3, only: cross3
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
-   use xcable_ends_end, only: end_condition
-   use xcable_run_records, only: run_observer, n_fields, static_figures, note_min_strain
-   use xcable_rod3d_fields, only: fields3, n_fields3, field3_names
+   use xcable_ends_end_condition, only: end_condition
+   use xcable_driver_records, only: run_observer, n_fields, static_figures, note_min_strain
+   use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
    public :: rod3d_drive, n_fields3, field3_names
@@ -1101,4 +1101,4 @@ contains
          extra(rod%break_node + 1, :) = extra(rod%break_node, :)
       end if
    end subroutine double_break_node
-end module xcable_rod3d_drive
+end module xcable_driver_rod3d_drive

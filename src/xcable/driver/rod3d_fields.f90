@@ -25,13 +25,13 @@
 !> them); shear, tension and strain are cell values averaged (ends
 !> extrapolated, as in the planar run); u and v are the velocity along the
 !> node tangent and along the mean of its cells' n made normal to it.
-module xcable_rod3d_fields
-   use xcable_kinds, only: dp
-   use xcable_vector3, only: cross3
+module xcable_driver_rod3d_fields
+   use xcable_core_kinds, only: dp
+   use xcable_numerics_vector3, only: cross3
    use xcable_material_tension_only, only: damped_tension
-   use xcable_rod_run, only: end_value
+   use xcable_driver_rod_run, only: end_value
    use xcable_model_rod3d, only: rod3d_piece
-   use xcable_run_records, only: n_fields3, field3_names
+   use xcable_driver_records, only: n_fields3, field3_names
    implicit none
    private
    public :: fields3, frame_axes, n_fields3, field3_names
@@ -151,4 +151,4 @@ contains
       c = cross3(q(2:4), u)
       w = u + 2*q(1)*c + 2*cross3(q(2:4), c)
    end function rotated
-end module xcable_rod3d_fields
+end module xcable_driver_rod3d_fields

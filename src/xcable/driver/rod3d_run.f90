@@ -5,12 +5,12 @@
 !> velocities, the ledger) or reject (back to the old level), so that a
 !> driver can check the attempt first (driver/rod3d_drive.f90 runs the
 !> planar driver's step control on it); step does both without a check.
-module xcable_rod3d_run
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, prefix_error
-   use xcable_strings, only: str
+module xcable_driver_rod3d_run
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, prefix_error
+   use xcable_core_strings, only: str
    use xcable_model_rod3d, only: rod3d_problem, rod3d_kl, rod3d_ku, couple_plane, small_strain_step
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_material_tension_only, only: slack_dissipation
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    implicit none
@@ -286,4 +286,4 @@ contains
       class(rod3d_run), intent(in) :: self
       run_imbalance = sum(self%energies()) - self%energy0 - self%end_work - self%load_work + self%dissipated
    end function run_imbalance
-end module xcable_rod3d_run
+end module xcable_driver_rod3d_run

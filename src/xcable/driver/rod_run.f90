@@ -29,25 +29,25 @@
 !> step, and refresh it at the start of a step once the last step contracted
 !> by more than 0.05 per iteration, or when the step size changed (the mass
 !> term of the Jacobian goes as 1/dt^2).
-module xcable_rod_run
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
-   use xcable_strings, only: str, quantity
-   use xcable_scene, only: scene_type, scene_grid
+module xcable_driver_rod_run
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
+   use xcable_core_strings, only: str, quantity
+   use xcable_scene_scene, only: scene_type, scene_grid
    use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
                                bend_curvature, cell_rotations, small_strain_step
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_material_law, only: material_law
    use xcable_material_tension_only, only: slack_dissipation
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_force, only: force_end
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve, largest_magnitude
    use xcable_solver_banded, only: band_matrix
-   use xcable_rod_statics, only: rod_static_state, solve_rod_statics
-   use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
+   use xcable_model_rod_statics, only: rod_static_state, solve_rod_statics
+   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
                                  n_end_quantities, static_figures, slack_tension_fraction, note_min_strain, &
                                  n_fields3, field3_names, n_end_quantities_y
-   use xcable_theory, only: wave_speed
+   use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, &
                                 sync_logical
    use xcable_system_posix, only: termination_requested
@@ -2205,4 +2205,4 @@ contains
          if (self%pieces(p)%end_slot(2) == j) end_is_held = self%pieces(p)%problem%piece%end_b%held()
       end do
    end function end_is_held
-end module xcable_rod_run
+end module xcable_driver_rod_run

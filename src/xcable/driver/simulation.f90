@@ -18,19 +18,19 @@
 !> build (the state saved is listed in driver/rod_run.f90, exchange_state,
 !> and for the 3-D model in driver/rod3d_drive.f90, exchange3). A
 !> checkpoint resumes only with the model that wrote it.
-module xcable_simulation
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
-   use xcable_strings, only: str, real_text, quantity
+module xcable_driver_simulation
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input
+   use xcable_core_strings, only: str, real_text, quantity
    use xcable_io_config, only: case_config, end_config
-   use xcable_scene, only: scene_type, scene_from_config, set_break
-   use xcable_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch, &
+   use xcable_scene_scene, only: scene_type, scene_from_config, set_break
+   use xcable_driver_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch, &
                              rupture_tolerance
    use xcable_box_run, only: box_run
-   use xcable_rod3d_drive, only: rod3d_drive
-   use xcable_run_records, only: run_history, run_summary, static_info, run_observer
+   use xcable_driver_rod3d_drive, only: rod3d_drive
+   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer
    use xcable_io_checkpoint, only: checkpoint_file
-   use xcable_version, only: code_version
+   use xcable_core_version, only: code_version
    implicit none
    private
    public :: simulation, run_options_from_config, checkpoint_settings
@@ -746,4 +746,4 @@ contains
          p => self%rod%info
       end if
    end function sim_static
-end module xcable_simulation
+end module xcable_driver_simulation

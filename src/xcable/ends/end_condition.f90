@@ -19,8 +19,8 @@
 !> 3-D vectors (x, y, z), z up; the planar rod passes (x, 0, z).
 !>
 !> Frame: x horizontal, z vertical (up); forces in N, positions in m.
-module xcable_ends_end
-   use xcable_kinds, only: dp
+module xcable_ends_end_condition
+   use xcable_core_kinds, only: dp
    implicit none
    private
    public :: end_condition, smooth_ramp, smooth_ramp_rate
@@ -231,4 +231,4 @@ contains
          r = -0.5_dp*pi/duration*sin(pi*(t - t0)/duration)
       end if
    end function smooth_ramp_rate
-end module xcable_ends_end
+end module xcable_ends_end_condition

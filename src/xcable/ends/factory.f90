@@ -1,9 +1,9 @@
 !> Builds an end condition from its namelist group (&end_a or &end_b), by the
 !> builder its kind's line in the registry (ends/registry.f90) names.
 module xcable_ends_factory
-   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names
    implicit none
    private

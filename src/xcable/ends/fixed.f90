@@ -1,8 +1,8 @@
 !> A fixed end: the end node stays at a given point (a pin: no moment).
 module xcable_ends_fixed
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    implicit none
    private
    public :: fixed_end, new_fixed_end

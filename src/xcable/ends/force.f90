@@ -7,11 +7,11 @@
 !> history, starting at the break time, from the static internal force and
 !> moment at the break point (kind 'break').
 module xcable_ends_force
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: real_text
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition, smooth_ramp
+   use xcable_ends_end_condition, only: end_condition, smooth_ramp
    use xcable_ends_table, only: time_table, group_table
    implicit none
    private

@@ -1,7 +1,7 @@
 !> A free end: no force, no couple, no mass (the internal force vanishes there).
 module xcable_ends_free
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    implicit none
    private
    public :: free_end, new_free_end

@@ -1,11 +1,11 @@
 !> An end carrying a point mass M: the mass adds M to the end node's inertia
 !> and its weight M g to the node's load (the gravity energy books it).
 module xcable_ends_mass
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: real_text
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    implicit none
    private
    public :: mass_end, new_mass_end, check_mass_end

@@ -6,11 +6,11 @@
 !> X0, and with t_r > 0 the motion starts from rest. 'table': X(t) = X0 + the
 !> tabulated displacement (x, y, z; cubic Hermite, continuous velocity).
 module xcable_ends_motion
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: real_text
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition, smooth_ramp, smooth_ramp_rate
+   use xcable_ends_end_condition, only: end_condition, smooth_ramp, smooth_ramp_rate
    use xcable_ends_table, only: time_table, group_table
    implicit none
    private

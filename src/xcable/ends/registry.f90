@@ -13,9 +13,9 @@
 !> `end_kind_list`, and its new variables (if any) in io/config.f90,
 !> io/schema.f90 and io/input.f90 (docs/dev/adding-an-end.md).
 module xcable_ends_registry
-   use xcable_error, only: error_type
+   use xcable_core_error, only: error_type
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_ends_fixed, only: new_fixed_end
    use xcable_ends_free, only: new_free_end
    use xcable_ends_force, only: new_force_end, check_force_end

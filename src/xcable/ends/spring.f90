@@ -24,12 +24,12 @@
 !> The end may also carry a point mass (mass, kg: its inertia and weight, as
 !> a 'mass' end's).
 module xcable_ends_spring
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: real_text
    use xcable_io_config, only: end_config
-   use xcable_ends_end, only: end_condition
-   use xcable_vector3, only: outer3, identity3
+   use xcable_ends_end_condition, only: end_condition
+   use xcable_numerics_vector3, only: outer3, identity3
    implicit none
    private
    public :: spring_end, new_spring_end, check_spring_end

@@ -7,7 +7,7 @@
 !> straight segments instead (a force table). Before the first time the first
 !> row holds, after the last the last row.
 module xcable_ends_table
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_io_config, only: end_config
    implicit none
    private

@@ -12,7 +12,7 @@
 !> kept) so that a reader can read everything and check once; a failed get
 !> leaves zeros.
 module xcable_io_archive
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    implicit none
    private
    public :: state_archive

@@ -9,7 +9,7 @@
 !>
 !> Layout: root attributes
 !>   format            'xcable checkpoint', format_version 1
-!>   code_version      the version that wrote it (src/xcable/version.f90)
+!>   code_version      the version that wrote it (src/xcable/core/version.f90)
 !>   compiler_version  for the reader's information
 !>   namelist          the fingerprint of the case: the resolved namelist
 !>                     without the variables that may differ on --resume
@@ -27,10 +27,10 @@
 !> (HDF5 checks the file's length against its superblock); a damaged one
 !> fails a read or a checksum.
 module xcable_io_checkpoint
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input, stat_io
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input, stat_io
    use xcable_io_archive, only: state_archive
-   use xcable_io_hdf5, only: put_text_attr, put_int_attr, put_real_attr, get_text_attr, get_int_attr
+   use xcable_io_hdf5_put, only: put_text_attr, put_int_attr, put_real_attr, get_text_attr, get_int_attr
    use xcable_system_posix, only: replace_file, checksum_start, checksum_update, checksum_text
    use hdf5
    use, intrinsic :: iso_c_binding, only: c_int64_t

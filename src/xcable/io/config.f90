@@ -4,7 +4,7 @@
 !> its group, type, unit, range and meaning; the reader, the validation, the
 !> echo into the result file and docs/user/namelist.md all follow the schema.
 module xcable_io_config
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_material_law, only: paper_tanh_coefficients
    implicit none
    private

@@ -10,8 +10,8 @@
 !> Text attributes are fixed-length strings, or with `utf8` variable-length
 !> UTF-8 strings (the result file's: h5py reads those as str, fixed-length ones
 !> as bytes); get_text_attr reads both.
-module xcable_io_hdf5
-   use xcable_kinds, only: dp
+module xcable_io_hdf5_put
+   use xcable_core_kinds, only: dp
    use hdf5
    use h5ds, only: h5dsset_scale_f, h5dsattach_scale_f, h5dsis_attached_f, h5dsset_label_f
    use, intrinsic :: iso_c_binding, only: c_ptr, c_char, c_loc, c_f_pointer, c_size_t, c_null_char, c_associated, c_int
@@ -556,4 +556,4 @@ contains
          call h5pclose_f(plist, hdferr)
       end subroutine create_dataset
    end subroutine append
-end module xcable_io_hdf5
+end module xcable_io_hdf5_put

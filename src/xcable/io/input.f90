@@ -21,8 +21,8 @@
 !> (checks.f90) and the echo (echo.f90). This module holds the order of it all and the namelist
 !> reads, and gives the names the rest of the code uses.
 module xcable_io_input
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_io_config, only: case_config, end_config, max_table_points
    use xcable_io_schema, only: schema_entry, schema_table, schema_groups, known_fields
    use xcable_io_input_scanner, only: count_table_rows, line_len, load_lines, lower_words, scan_groups

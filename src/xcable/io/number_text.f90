@@ -23,7 +23,7 @@
 !> every magnitude, ties, powers of ten and their neighbours, and values
 !> within ulps of the fast path's rounding boundaries.
 module xcable_io_number_text
-   use xcable_kinds, only: dp, i8
+   use xcable_core_kinds, only: dp, i8
    implicit none
    private
    public :: put_es, put_int

@@ -33,17 +33,17 @@
 !> cut, as is the gnuplot text; /summary, /history and the failure and
 !> warning attributes of an earlier stop are removed; status 'running'.
 module xcable_io_output
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_io, stat_input
-   use xcable_strings, only: str
-   use xcable_run_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_io, stat_input
+   use xcable_core_strings, only: str
+   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer, n_energy, energy_names, &
                                  field_names, n_fields, n_end_quantities, end_quantity_names, n_end_quantities_y, &
                                  end_quantity_names_y, n_fields3, field3_names
-   use xcable_io_hdf5, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr, &
+   use xcable_io_hdf5_put, only: put_real_vector, put_int_vector, put_real_attr, put_int_attr, put_text_attr, &
                              get_text_attr, get_int_attr, get_real_attr, open_scale, attach, append
    use xcable_io_output_registry, only: output_item, find_output, output_items
    use xcable_system_posix, only: replace_file
-   use xcable_version, only: code_version
+   use xcable_core_version, only: code_version
    use xcable_io_number_text, only: put_es, put_int
    use hdf5
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options

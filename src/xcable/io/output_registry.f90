@@ -21,8 +21,8 @@
 !> the cable from end a to end b, n the paper's normal (t turned by -90
 !> degrees in the x-z plane), b = t x n.
 module xcable_io_output_registry
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_run_records, only: field_names, n_fields, field3_names, n_fields3
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_driver_records, only: field_names, n_fields, field3_names, n_fields3
    implicit none
    private
    public :: output_item, output_items, find_output, write_outputs, outputs_text

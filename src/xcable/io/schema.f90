@@ -15,9 +15,9 @@
 !> time, checkpoints) is marked resume_may_differ: a checkpoint is accepted
 !> by `xcable --resume` when every other variable is as it was.
 module xcable_io_schema
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: real_text
    use xcable_io_config, only: max_table_points
    use xcable_material_factory, only: law_names
    use xcable_ends_registry, only: end_kind, end_kind_list, end_kind_names, kinds_using

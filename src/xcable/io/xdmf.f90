@@ -14,10 +14,10 @@
 !> file renamed into place, so an interrupted write leaves no partial sidecar.
 !> The sidecar's own path is the result's with the extension .xmf.
 module xcable_io_xdmf
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_io
-   use xcable_strings, only: str
-   use xcable_run_records, only: field_names, field3_names
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_io
+   use xcable_core_strings, only: str
+   use xcable_driver_records, only: field_names, field3_names
    use xcable_system_posix, only: replace_file
    use hdf5
    implicit none

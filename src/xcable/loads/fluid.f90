@@ -19,9 +19,9 @@
 !> Ca on the displaced volume. The derivatives of |V| V are |V| I + V V^T / |V|,
 !> continuous and zero at V = 0.
 module xcable_loads_fluid
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_loads_load, only: cable_load
-   use xcable_vector3, only: outer3, identity3
+   use xcable_numerics_vector3, only: outer3, identity3
    implicit none
    private
    public :: fluid_load

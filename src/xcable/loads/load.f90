@@ -16,7 +16,7 @@
 !>
 !> Frame: x horizontal, z vertical (up); forces in N.
 module xcable_loads_load
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    implicit none
    private
    public :: cable_load, load_slot, cell_kinematics

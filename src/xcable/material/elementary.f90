@@ -16,7 +16,7 @@
 !>   1 / cosh^2 x = 4 q / (1 + q)^2, which keeps it too (1 - tanh^2 would lose digits
 !>   where tanh is near 1).
 module xcable_material_elementary
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    implicit none
    private
    public :: law_tanh, law_atanh, law_tanh_sech2

@@ -7,8 +7,8 @@
 !> option (`compression = 'none'`) wraps whichever law was built
 !> (material/tension_only.f90), so a new law gets it without further code.
 module xcable_material_factory
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_io_config, only: case_config
    use xcable_material_law, only: material_law, tanh_law_of, linear_law
    use xcable_material_table, only: table_law, new_table_law

@@ -6,8 +6,8 @@
 !> `tanh_law` (the nylon double-braid fit of Tjavaras et al. 1998) and
 !> `linear_law` (T = EA eps, for closed-form checks).
 module xcable_material_law
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_material_elementary, only: law_tanh, law_atanh, law_tanh_sech2
    use, intrinsic :: iso_c_binding, only: c_double
    implicit none

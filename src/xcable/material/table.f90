@@ -16,9 +16,9 @@
 !> The interval of a strain is found in O(1): a uniform index of the strain
 !> range maps each of its buckets to the first row interval it meets.
 module xcable_material_table
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str
    use xcable_material_law, only: material_law
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none

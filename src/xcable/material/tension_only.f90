@@ -13,7 +13,7 @@
 !> acting only on the taut part and never pushing, is slack_cell_force
 !> (docs/theory/compression.md, "The tension-only law").
 module xcable_material_tension_only
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_material_law, only: material_law
    implicit none
    private

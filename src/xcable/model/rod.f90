@@ -42,15 +42,15 @@
 !> after node; the momentum balance of node k involves nodes k-2 .. k+2, so
 !> the Jacobian has kl = ku = 5. A held end's rows are R = X(t).
 module xcable_model_rod
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type, fatal_error, stat_numerics
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type, fatal_error, stat_numerics
+   use xcable_core_strings, only: str
    use xcable_material_law, only: material_law
    use xcable_material_tension_only, only: slack_cell_force, damped_tension
    use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
    use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use xcable_solver_banded, only: band_matrix
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem
    use xcable_loads_load, only: load_slot, cell_kinematics
    implicit none

@@ -67,16 +67,16 @@
 !> otherwise: the new ends of a break inside the cable), on the angle of the
 !> end cell's projection on the plane normal to the axis.
 module xcable_model_rod3d
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_material_law, only: material_law
    use xcable_material_tension_only, only: slack_cell_force
    use xcable_numerics_tan, only: fast_tan
    use xcable_solver_banded, only: band_matrix
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem
    use xcable_loads_load, only: load_slot, cell_kinematics
-   use xcable_vector3, only: outer3, identity3, cross3
+   use xcable_numerics_vector3, only: outer3, identity3, cross3
    implicit none
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle

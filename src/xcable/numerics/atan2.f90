@@ -38,7 +38,7 @@
 !> (a weighted Remez exchange with mpmath at 60 digits); none is taken from a
 !> library.
 module xcable_numerics_atan2
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private

@@ -29,7 +29,7 @@
 !> tools/tan_coefficients.py (weighted Remez exchanges with mpmath at 60 digits);
 !> none is taken from a library. Tests: test/suite_tan.f90.
 module xcable_numerics_tan
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use, intrinsic :: iso_fortran_env, only: int64
    implicit none
    private

@@ -7,14 +7,14 @@
 !> paper's symmetric case (&static tension, both ends fixed and no position
 !> given for end b), by the end tension: end b then lies at the height of
 !> end a, at the span the tension gives.
-module xcable_scene
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input
-   use xcable_strings, only: str
+module xcable_scene_scene
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_material_law, only: material_law
    use xcable_material_factory, only: new_case_law
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_ends_factory, only: new_end
    use xcable_loads_load, only: load_slot, cable_load
    use xcable_loads_fluid, only: fluid_load
@@ -223,4 +223,4 @@ contains
          end do
       end if
    end subroutine scene_grid
-end module xcable_scene
+end module xcable_scene_scene

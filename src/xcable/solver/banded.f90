@@ -44,9 +44,9 @@
 !> (what a checkpoint keeps); no other copy of the factors exists.
 !> `solve_banded` is dgbsv.
 module xcable_solver_banded
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_numerics
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_numerics
+   use xcable_core_strings, only: str
    implicit none
    private
    public :: band_matrix, solve_banded

@@ -23,9 +23,9 @@
 !> iteration; run_rupture sets the time-stepping values (estimate_error,
 !> max_contraction 0.5, refresh_contraction 0.05, no final residual).
 module xcable_solver_newton
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_numerics
-   use xcable_strings, only: str
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_numerics
+   use xcable_core_strings, only: str
    use xcable_solver_banded, only: band_matrix
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none

@@ -7,7 +7,7 @@
 !> signal never interrupts a computation half-way. The flag is process state
 !> held by the C file, not a Fortran module variable.
 module xcable_system_posix
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use, intrinsic :: iso_c_binding, only: c_int, c_int64_t, c_size_t, c_char, c_null_char
    implicit none
    private

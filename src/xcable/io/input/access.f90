@@ -2,7 +2,7 @@
 !> way to read, check and echo any variable by its table row.
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_access
-   use xcable_kinds, only: dp
+   use xcable_core_kinds, only: dp
    use xcable_io_config, only: case_config, end_config
    use xcable_io_schema, only: schema_entry
    implicit none

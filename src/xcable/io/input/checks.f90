@@ -3,9 +3,9 @@
 !> and the defaults derived from others.
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_checks
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str, real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names, kinds_using
    use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text

@@ -2,7 +2,7 @@
 !> checkpoint is checked against).
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_echo
-   use xcable_strings, only: str, real_text
+   use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind
    use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries

@@ -3,9 +3,9 @@
 !> schema), before gfortran's namelist input reads the group.
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_scanner
-   use xcable_kinds, only: dp, i8
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str, to_lower
+   use xcable_core_kinds, only: dp, i8
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str, to_lower
    use xcable_io_config, only: case_config
    use xcable_io_schema, only: schema_entry, find_entry, group_entries
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite

@@ -2,9 +2,9 @@
 !> read from a text file, and their checks (order, counts, finite values).
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_tables
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str, real_text
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config, max_table_points
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use xcable_io_input_scanner, only: inline_rows, line_len, load_lines, next_item, shown, shown_length

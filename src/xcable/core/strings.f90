@@ -1,6 +1,6 @@
 !> Small string helpers for messages.
-module xcable_strings
-   use xcable_kinds, only: dp
+module xcable_core_strings
+   use xcable_core_kinds, only: dp
    implicit none
    private
    public :: str, to_lower, real_text, quantity
@@ -237,4 +237,4 @@ contains
          is_special = .false.
       end if
    end subroutine special_text
-end module xcable_strings
+end module xcable_core_strings

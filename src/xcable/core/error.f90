@@ -1,6 +1,6 @@
 !> Error handling: library routines return an allocatable error_type to their
 !> caller instead of stopping; only app/ prints and stops.
-module xcable_error
+module xcable_core_error
    implicit none
    private
    public :: error_type, fatal_error, prefix_error
@@ -40,4 +40,4 @@ contains
       character(*), intent(in) :: prefix
       error%message = prefix//error%message
    end subroutine prefix_error
-end module xcable_error
+end module xcable_core_error

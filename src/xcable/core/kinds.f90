@@ -1,5 +1,5 @@
 !> Working precision of the whole code.
-module xcable_kinds
+module xcable_core_kinds
    use, intrinsic :: iso_fortran_env, only: real64, int64
    implicit none
    private
@@ -9,4 +9,4 @@ module xcable_kinds
    integer, parameter :: dp = real64
    !> 64-bit integer (clock counts).
    integer, parameter :: i8 = int64
-end module xcable_kinds
+end module xcable_core_kinds

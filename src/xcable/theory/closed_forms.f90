@@ -1,11 +1,11 @@
 !> Closed-form and quadrature references the numerical solution is checked
 !> against: the exact extensible catenary for a general law (no bending), the
 !> axial wave speed (eq. 33) and the simple-wave velocity of a released string.
-module xcable_theory
-   use xcable_kinds, only: dp
+module xcable_theory_closed_forms
+   use xcable_core_kinds, only: dp
    use xcable_material_law, only: material_law, strain_kept
-   use xcable_error, only: error_type, fatal_error, stat_input
-   use xcable_strings, only: str
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str
    implicit none
    private
    public :: catenary_shape, catenary_summary, horizontal_force
@@ -142,7 +142,7 @@ contains
       !> Strain and tension (N) at the points.
       real(dp), intent(out) :: eps(:), tension(:)
       !> Gauss-Legendre panels between two points: 8 when absent (the exact reference of the
-      !> tests and of catenary_between); the rod statics' first guess takes 1 (rod_statics.f90).
+      !> tests and of catenary_between); the rod statics' first guess takes 1 (model/rod_statics.f90).
       integer, intent(in), optional :: panels
       real(dp) :: xg(n_gauss), wg(n_gauss), a, b, sq, nv(2), t, e
       integer :: k, p, q, np
@@ -418,4 +418,4 @@ contains
          wg(i) = 2/((1 - x*x)*dp_dx**2)
       end do
    end subroutine gauss_legendre
-end module xcable_theory
+end module xcable_theory_closed_forms

@@ -1,6 +1,6 @@
 !> The static state of the whole cable in the rod discretisation: Newton's
 !> method on the equilibrium of every node (model/rod.f90) from the
-!> extensible catenary (theory.f90) as the first guess.
+!> extensible catenary (theory/closed_forms.f90) as the first guess.
 !>
 !> - Both ends held: the catenary between the two points.
 !> - One end held, the other loaded (free, force, point mass): the load fixes
@@ -20,19 +20,19 @@
 !> sequence of anchored equilibria (anchored_problem), an overdamped path to
 !> the state, then Newton with the fold check from there (docs/theory/numerics.md,
 !> Statics when Newton fails). A state the direct path finds is unchanged.
-module xcable_rod_statics
-   use xcable_kinds, only: dp
-   use xcable_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
-   use xcable_strings, only: str
-   use xcable_scene, only: scene_type
+module xcable_model_rod_statics
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
+   use xcable_core_strings, only: str
+   use xcable_scene_scene, only: scene_type
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_ends_fixed, only: fixed_end
-   use xcable_ends_end, only: end_condition
+   use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
    use xcable_solver_banded, only: band_matrix
    use xcable_material_law, only: material_law
    use xcable_material_tension_only, only: tension_only_law
-   use xcable_theory, only: catenary_from_force, catenary_between, catenary_summary
+   use xcable_theory_closed_forms, only: catenary_from_force, catenary_between, catenary_summary
    implicit none
    private
    public :: rod_static_state, solve_rod_statics, static_tolerance, sag_below_chord
@@ -633,4 +633,4 @@ contains
       end do
    end function sag_below_chord
 
-end module xcable_rod_statics
+end module xcable_model_rod_statics

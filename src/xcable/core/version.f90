@@ -3,7 +3,7 @@
 !> number (the package version fpm builds and installs); the test
 !> output/version_matches_fpm_toml fails when the two differ, so a release
 !> changes this line and fpm.toml together (and CHANGELOG.md).
-module xcable_version
+module xcable_core_version
    use, intrinsic :: iso_fortran_env, only: compiler_version, compiler_options
    implicit none
    private
@@ -34,4 +34,4 @@ contains
              'times slower than the release build; `fpm run --profile release -- <case.nml>` or `make build` '// &
              '(then bin/xcable <case.nml>) give the fast one'
    end function unoptimised_note
-end module xcable_version
+end module xcable_core_version

@@ -1,7 +1,7 @@
 !> Small 3-D vector algebra shared by the 3-D rod, its driver and the fluid
 !> loads: the outer product, the identity and the cross product.
-module xcable_vector3
-   use xcable_kinds, only: dp
+module xcable_numerics_vector3
+   use xcable_core_kinds, only: dp
    implicit none
    private
    public :: outer3, identity3, cross3
@@ -33,4 +33,4 @@ contains
       real(dp) :: c(3)
       c = [a(2)*b(3) - a(3)*b(2), a(3)*b(1) - a(1)*b(3), a(1)*b(2) - a(2)*b(1)]
    end function cross3
-end module xcable_vector3
+end module xcable_numerics_vector3

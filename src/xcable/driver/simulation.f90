@@ -194,12 +194,7 @@ contains
                if (in_plane) then
                   call scene_from_config(flat, planar, error)
                   if (allocated(error)) return
-                  ! A break by tension, once found, is where and when the scene has it.
-                  planar%breaks = scene%breaks
-                  planar%s_break = scene%s_break
-                  planar%break_time = scene%break_time
-                  planar%break_at_a = scene%break_at_a
-                  planar%break_at_b = scene%break_at_b
+                  call carry_break(scene, planar)
                   call self%rod%prepare(planar, run_options_from_config(config), error)
                   if (allocated(error)) return
                   self%rod%plane_azimuth = azimuth
@@ -229,12 +224,7 @@ contains
             else
                call scene_from_config(turned_config(config, -azimuth), planar, error)
                if (allocated(error)) return
-               ! A break by tension, once found, is where and when the scene has it.
-               planar%breaks = scene%breaks
-               planar%s_break = scene%s_break
-               planar%break_time = scene%break_time
-               planar%break_at_a = scene%break_at_a
-               planar%break_at_b = scene%break_at_b
+               call carry_break(scene, planar)
                call self%rod%prepare(planar, run_options_from_config(config), error)
                if (.not. allocated(error)) self%rod%scene = scene
             end if
@@ -251,6 +241,18 @@ contains
          self%terms = 'rod3d:'//self%terms(5:)//' twist'
       end if
    end subroutine prepare_rod
+
+   !> A break by tension, once found, is where and when the scene has it: its break copied into the
+   !> planar scene its run is prepared from (the scene turned).
+   subroutine carry_break(scene, planar)
+      type(scene_type), intent(in) :: scene
+      type(scene_type), intent(inout) :: planar
+      planar%breaks = scene%breaks
+      planar%s_break = scene%s_break
+      planar%break_time = scene%break_time
+      planar%break_at_a = scene%break_at_a
+      planar%break_at_b = scene%break_at_b
+   end subroutine carry_break
 
    !> The break by tension (&rupture criterion = 'tension'), found by a first pass: the run
    !> without the break (no output), whose step loop watches the cell tensions (rod_run's

@@ -1,0 +1,507 @@
+!> The records of a rod run: the history (one record per accepted step), the snapshots (interpolated
+!> within the step), a turned run's results turned back, and the summary with its warnings.
+!> (A submodule of driver/rod_run.f90.)
+submodule (xcable_driver_rod_run) xcable_driver_rod_run_records
+   implicit none
+
+contains
+
+   !> The history of a run turned into x-z (plane_azimuth), turned back into the scene's frame:
+   !> x, vx and force_x of each end and record, and their y components (ends_y).
+   module subroutine turn_back_history(self)
+      type(rod_run), intent(inout) :: self
+      real(dp) :: c, s
+      c = cos(self%plane_azimuth)
+      s = sin(self%plane_azimuth)
+      associate (h => self%history)
+         if (allocated(h%ends_y)) deallocate (h%ends_y)
+         allocate (h%ends_y(n_end_quantities_y, size(h%ends, 2), lbound(h%ends, 3):ubound(h%ends, 3)))
+         ! ends: x, z, vx, vz, tension, force_x, force_z; ends_y: y, vy, force_y.
+         h%ends_y(1, :, :) = self%plane_pivot(2) + s*(h%ends(1, :, :) - self%plane_pivot(1))
+         h%ends_y(2, :, :) = s*h%ends(3, :, :)
+         h%ends_y(3, :, :) = s*h%ends(6, :, :)
+         h%ends(1, :, :) = self%plane_pivot(1) + c*(h%ends(1, :, :) - self%plane_pivot(1))
+         h%ends(3, :, :) = c*h%ends(3, :, :)
+         h%ends(6, :, :) = c*h%ends(6, :, :)
+      end associate
+   end subroutine turn_back_history
+
+   !> The fields of a run turned into x-z (plane_azimuth) in the scene's frame: the x column
+   !> turned back (in place), and the fields of field3_names from it and the columns' velocities
+   !> v (2, n_out): y and vy; the plan-view curvature, twist, binormal shear and curvature about
+   !> n are zero in a vertical plane.
+   module subroutine turned_back(self, fields, v, extra)
+      type(rod_run), intent(in) :: self
+      real(dp), intent(inout) :: fields(:, :)
+      real(dp), intent(in) :: v(:, :)
+      real(dp), intent(out) :: extra(:, :)
+      real(dp) :: c, s, u(size(fields, 1))
+      c = cos(self%plane_azimuth)
+      s = sin(self%plane_azimuth)
+      ! fields: tension shear strain u v x z curvature; extra: y vy curvature_z twist binormal_shear curvature_n.
+      u = fields(:, 6) - self%plane_pivot(1)
+      fields(:, 6) = self%plane_pivot(1) + c*u
+      extra = 0
+      extra(:, 1) = self%plane_pivot(2) + s*u
+      extra(:, 2) = s*v(1, :)
+   end subroutine turned_back
+
+   !> The velocities of the pieces' nodes on the output columns (2, n_out); before a break
+   !> inside the cable the break node fills both of its columns (as in run_fields).
+   module function column_velocities(self) result(v)
+      type(rod_run), intent(in) :: self
+      real(dp), allocatable :: v(:, :)
+      integer :: p
+      allocate (v(2, self%n_out))
+      v = 0
+      do p = 1, size(self%pieces)
+         v(:, self%pieces(p)%column) = self%pieces(p)%v
+      end do
+      if (size(self%pieces) == 1 .and. self%break_node > 0) v(:, self%break_node + 1) = v(:, self%break_node)
+   end function column_velocities
+
+   !> Snapshots due up to time t_new: inside the step just accepted
+   !> (interpolated), or of the static state (static = .true.).
+   module subroutine emit_snapshots(self, observer, t_new, static, error)
+      type(rod_run), intent(inout) :: self
+      class(run_observer), intent(inout), optional :: observer
+      real(dp), intent(in) :: t_new
+      logical, intent(in) :: static
+      type(error_type), allocatable, intent(inout) :: error
+      type(error_type), allocatable :: output_error
+      real(dp) :: ts
+      real(dp), allocatable :: v(:, :), extra(:, :)
+      do
+         ts = snapshot_time(self, self%progress%snapshot_index)
+         if (ts > t_new*(1 + 1.0e-12_dp)) exit
+         if (.not. allocated(self%buffer)) allocate (self%buffer(self%n_out, n_fields))
+         if (static) then
+            self%buffer = self%info%fields
+            if (self%plane_azimuth /= 0) v = column_velocities(self)
+         else
+            call interpolated_fields(self, ts, self%buffer, v)
+         end if
+         if (self%plane_azimuth /= 0) then
+            allocate (extra(self%n_out, n_fields3))
+            call turned_back(self, self%buffer, v, extra)
+         end if
+         self%progress%snapshot_index = self%progress%snapshot_index + 1
+         if (present(observer)) then
+            call observer%snapshot(ts, self%buffer, output_error)
+            if (.not. allocated(output_error) .and. allocated(extra)) &
+               call observer%snapshot_extra(ts, field3_names, extra, output_error)
+            if (allocated(output_error)) then
+               call prefix_error(output_error, 'output: ')
+               call move_alloc(output_error, error)
+               return
+            end if
+         end if
+         if (allocated(extra)) deallocate (extra)
+      end do
+   end subroutine emit_snapshots
+
+   !> Time of snapshot i (i >= 1); huge when there is none.
+   pure real(dp) module function snapshot_time(self, i)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: i
+      if (self%options%interval > 0) then
+         snapshot_time = i*self%options%interval
+         if (snapshot_time > self%options%t_end*(1 + 1.0e-9_dp)) snapshot_time = huge(1.0_dp)
+      else
+         snapshot_time = merge(self%options%t_end, huge(1.0_dp), i == 1)
+      end if
+   end function snapshot_time
+
+   !> End labels and the record of the static state (index 0).
+   module subroutine start_history(self)
+      type(rod_run), intent(inout) :: self
+      integer :: n_ends
+      n_ends = merge(4, 2, self%break_node > 0)
+      allocate (self%history%end_labels(n_ends))
+      self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
+      if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      self%pieces(1)%end_slot = [1, 2]
+      self%pieces(1)%reaction(:, 1) = self%static%reaction_a
+      self%pieces(1)%reaction(:, 2) = self%static%reaction_b
+      call self%history%reserve(16, n_ends, self%options%energy)
+      self%history%n = -1
+      call record(self, 0, 0, 0.0_dp)
+   end subroutine start_history
+
+   !> Append a history record at the current time.
+   module subroutine record(self, iterations, rejected, step)
+      type(rod_run), intent(inout) :: self
+      integer, intent(in) :: iterations, rejected
+      real(dp), intent(in) :: step
+      integer :: i, p, side, node, slot
+      real(dp) :: en(4), e(2), f(2), ten
+      if (self%history%n + 1 > ubound(self%history%time, 1)) &
+         call self%history%reserve(2*ubound(self%history%time, 1), size(self%history%end_labels), self%options%energy)
+      i = self%history%n + 1
+      self%history%n = i
+      self%history%time(i) = self%t
+      self%history%step(i) = step
+      self%history%newton_iterations(i) = iterations
+      self%history%rejected(i) = rejected
+      if (i > 0) self%summary%max_newton_iterations = max(self%summary%max_newton_iterations, iterations)
+      en = 0
+      do p = 1, size(self%pieces)
+         associate (run_piece => self%pieces(p), piece => self%pieces(p)%problem%piece)
+            do side = 1, 2
+               slot = run_piece%end_slot(side)
+               if (slot == 0) cycle
+               node = merge(1, piece%n, side == 1)
+               ten = end_tension(piece, run_piece%r, side)
+               if (side == 1) then
+                  if (piece%end_a%held()) then
+                     f = run_piece%reaction(:, 1)
+                  else
+                     f = piece%end_a%applied_force(self%t)
+                     if (piece%end_a%state_dependent()) f = f + state_force(piece%end_a, node)
+                  end if
+               else
+                  if (piece%end_b%held()) then
+                     f = run_piece%reaction(:, 2)
+                  else
+                     f = piece%end_b%applied_force(self%t)
+                     if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, node)
+                  end if
+               end if
+               self%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
+            end do
+            if (self%options%energy) then
+               call piece%complete_memo()
+               call piece%geometry(run_piece%r, piece%e1, piece%l1, piece%th1)
+               en = en + piece%energies(run_piece%r, run_piece%v, piece%l1, piece%th1)
+            end if
+         end associate
+      end do
+      ! Before a break inside the cable, its two ends are the break node: the
+      ! pull of the cable on either side (mean tension of the node's two cells).
+      if (size(self%pieces) == 1 .and. self%break_node > 0) then
+         associate (r => self%pieces(1)%r, v => self%pieces(1)%v, k => self%break_node, &
+                    piece => self%pieces(1)%problem%piece)
+            e = r(:, k + 1) - r(:, k)
+            f = piece%law%tension(norm2(e)/piece%ds(k) - 1)*e/norm2(e)
+            ten = 0.5_dp*(norm2(f) + piece%law%tension(norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
+            self%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
+            e = r(:, k) - r(:, k - 1)
+            f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
+            self%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
+         end associate
+      end if
+      if (self%options%energy) then
+         self%history%energy(1:4, i) = en
+         self%history%energy(5, i) = self%work
+         self%history%energy(6, i) = self%dissipation
+         self%history%energy(7, i) = sum(en) - self%work - self%load_work + self%dissipation
+         self%history%energy(8, i) = self%load_work
+      end if
+
+   contains
+
+      !> The force of a state-dependent end's own state at its node (x, z), N.
+      function state_force(end, node) result(force)
+         class(end_condition), intent(in) :: end
+         integer, intent(in) :: node
+         real(dp) :: force(2), f3(3), dx(3, 3), dv(3, 3), damp(3)
+         associate (run_piece => self%pieces(p))
+            call end%state_force(self%t, [run_piece%r(1, node), 0.0_dp, run_piece%r(2, node)], &
+                                 [run_piece%v(1, node), 0.0_dp, run_piece%v(2, node)], f3, dx, dv, damp)
+         end associate
+         force = f3([1, 3])
+      end function state_force
+   end subroutine record
+
+   !> Tension at an end of a piece (side 1: node 1, side 2: node n), from its
+   !> end cells by end_value, and not below the law's tension at the strain
+   !> -0.99 (a steep, buckled end would extrapolate past what the law can give).
+   function end_tension(piece, r, side) result(t_end)
+      type(rod_piece), intent(in) :: piece
+      real(dp), intent(in) :: r(:, :)
+      integer, intent(in) :: side
+      real(dp) :: t_end, cells(3)
+      integer :: n, j, c
+      n = piece%n
+      do j = 1, min(3, n - 1)
+         c = merge(j, n - j, side == 1)
+         cells(j) = piece%law%tension(norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1)
+      end do
+      t_end = max(end_value(cells(1:min(3, n - 1)), 1), piece%law%tension(-0.99_dp))
+   end function end_tension
+
+   !> Fields at time ts inside the step just accepted (from self%t to the new
+   !> level): cubic Hermite in the positions and velocities of its two ends.
+   subroutine interpolated_fields(self, ts, fields, velocities)
+      type(rod_run), intent(inout) :: self
+      real(dp), intent(in) :: ts
+      real(dp), intent(out) :: fields(:, :)
+      !> The interpolated velocities on the output columns (2, n_out).
+      real(dp), allocatable, intent(out), optional :: velocities(:, :)
+      real(dp), allocatable :: r(:, :), v(:, :)
+      real(dp) :: h, u, h00, h10, h01, h11, d00, d10, d01, d11
+      integer :: p
+      allocate (r(2, self%n_out), v(2, self%n_out))
+      do p = 1, size(self%pieces)
+         associate (rp => self%pieces(p))
+            h = self%history%time(self%history%n) ! placeholder, replaced below
+            h = rp%problem%dt
+            u = (ts - self%t)/h
+            u = min(max(u, 0.0_dp), 1.0_dp)
+            h00 = (1 + 2*u)*(1 - u)**2
+            h10 = u*(1 - u)**2
+            h01 = u*u*(3 - 2*u)
+            h11 = u*u*(u - 1)
+            d00 = 6*u*u - 6*u
+            d10 = 3*u*u - 4*u + 1
+            d01 = 6*u - 6*u*u
+            d11 = 3*u*u - 2*u
+            r(:, rp%column) = h00*rp%r_prev + h10*h*rp%v_prev + h01*rp%r + h11*h*rp%v
+            v(:, rp%column) = (d00*rp%r_prev + d01*rp%r)/h + d10*rp%v_prev + d11*rp%v
+         end associate
+      end do
+      call self%fields(fields, r, v)
+      if (present(velocities)) then
+         if (size(self%pieces) == 1 .and. self%break_node > 0) v(:, self%break_node + 1) = v(:, self%break_node)
+         call move_alloc(v, velocities)
+      end if
+   end subroutine interpolated_fields
+
+   !> Summary figures and warnings from the history.
+   module subroutine summarise(self)
+      type(rod_run), intent(inout) :: self
+      integer :: i, j, n, n_ends
+      real(dp) :: speed, f0, f1, fi, reference, slack_level
+      logical :: held_end
+      n = self%history%n
+      n_ends = size(self%history%end_labels)
+      ! Derived from the history afresh (also for a run summarised when it was interrupted).
+      if (allocated(self%summary%ends)) deallocate (self%summary%ends)
+      allocate (self%summary%ends(n_ends))
+      self%summary%steps = n
+      self%summary%peak_end_speed = 0
+      self%summary%peak_end_speed_time = 0
+      self%summary%min_fixed_end_tension = huge(1.0_dp)
+      self%summary%min_fixed_end_tension_time = 0
+      self%summary%front_arrival_time = -1
+      self%summary%peak_end_speed_end = ''
+      self%summary%has_fixed_end = .false.
+      ! A front is the 1 % drop of a held end's tension after a break; other scenes have none.
+      self%summary%has_front = self%broken
+      self%summary%broke = self%broken
+      if (self%broken) then
+         self%summary%break_time = self%scene%break_time
+         self%summary%break_s = self%scene%s_break
+         self%summary%break_ramp = self%scene%t_break
+      end if
+      ! The break by tension: what the first pass found (driver/simulation.f90).
+      self%summary%by_tension = self%scene%by_tension
+      if (self%scene%by_tension) then
+         self%summary%mbl = self%scene%mbl
+         self%summary%break_tension = self%rupture%tension
+         self%summary%break_cell_s = self%rupture%s
+         self%summary%largest_tension = self%rupture%max_tension
+         self%summary%largest_tension_s = self%rupture%max_s
+         self%summary%largest_tension_time = self%rupture%max_time
+      end if
+      slack_level = slack_tension_fraction*max(self%info%max_tension, self%info%tension_a, self%info%tension_b)
+      do j = 1, n_ends
+         associate (e => self%summary%ends(j))
+            e%kind = end_kind(self, j)
+            e%min_tension = self%history%ends(5, j, 0)
+            e%max_tension = self%history%ends(5, j, 0)
+            e%max_tension_time = self%history%time(0)
+            do i = 0, n
+               speed = norm2(self%history%ends(3:4, j, i))
+               ! A 3-D run (driver/rod3d_drive.f90): with the y velocity.
+               if (allocated(self%history%ends_y)) speed = hypot(speed, self%history%ends_y(2, j, i))
+               if (speed > e%peak_speed) then
+                  e%peak_speed = speed
+                  e%peak_speed_time = self%history%time(i)
+               end if
+               if (self%history%ends(5, j, i) < e%min_tension) then
+                  e%min_tension = self%history%ends(5, j, i)
+                  e%min_tension_time = self%history%time(i)
+               end if
+               if (self%history%ends(5, j, i) > e%max_tension) then
+                  e%max_tension = self%history%ends(5, j, i)
+                  e%max_tension_time = self%history%time(i)
+               end if
+            end do
+            call slack_intervals(self%history, j, slack_level, e%slack_intervals, e%slack_time)
+            ! The peak end speed: the fastest end, whatever its kind (a released end after a break,
+            ! a moving fairlead, a mass).
+            if (e%peak_speed > self%summary%peak_end_speed) then
+               self%summary%peak_end_speed = e%peak_speed
+               self%summary%peak_end_speed_time = e%peak_speed_time
+               self%summary%peak_end_speed_end = self%history%end_labels(j)
+            end if
+            if (trim(e%kind) == 'fixed') then
+               self%summary%has_fixed_end = .true.
+               if (e%min_tension < self%summary%min_fixed_end_tension) then
+                  self%summary%min_fixed_end_tension = e%min_tension
+                  self%summary%min_fixed_end_tension_time = e%min_tension_time
+               end if
+            end if
+            held_end = end_is_held(self, j)
+            if (held_end .and. self%summary%has_front) then
+               ! The 1 % drop of the tension at the end.
+               f0 = self%history%ends(5, j, 0)
+               do i = 1, n
+                  fi = self%history%ends(5, j, i)
+                  if (fi <= 0.99_dp*f0) then
+                     f1 = self%history%ends(5, j, i - 1)
+                     e%front_arrival_time = self%history%time(i - 1) + (self%history%time(i) - self%history%time(i - 1)) &
+                                            *(0.99_dp*f0 - f1)/(fi - f1)
+                     exit
+                  end if
+               end do
+               if (e%front_arrival_time >= 0 .and. (self%summary%front_arrival_time < 0 .or. &
+                                                    e%front_arrival_time < self%summary%front_arrival_time)) &
+                  self%summary%front_arrival_time = e%front_arrival_time
+            end if
+         end associate
+      end do
+      if (self%summary%min_fixed_end_tension == huge(1.0_dp)) self%summary%min_fixed_end_tension = 0
+      if (self%summary%dt_used == 0) self%summary%dt_used = self%dt
+      self%summary%courant_used = self%summary%courant_requested*self%summary%dt_used/self%dt
+      self%summary%dissipated = self%dissipation
+      if (self%options%energy) then
+         reference = self%history%energy(1, 0)
+         if (reference <= 0) reference = max(maxval(abs(self%history%energy(1:4, 0))), 1.0_dp)
+         self%summary%energy_drift = maxval(abs(self%history%energy(7, 0:n) - self%history%energy(7, 0)))/reference
+      end if
+      self%summary%warnings = ''
+      if (self%summary%energy_drift > warn_energy_drift) call warn('the energy ledger drifted by '// &
+         str(100*self%summary%energy_drift)//' % of the initial strain energy (more than '// &
+         str(100*warn_energy_drift)//' %)')
+      if (self%summary%max_turning_angle > warn_turning_angle) call warn('neighbouring cells turned by up to '// &
+         str(self%summary%max_turning_angle)//' rad (more than '//str(warn_turning_angle)// &
+         ' rad): a kink at the grid scale, the buckled zone is not resolved; more nodes resolve it')
+      associate (law => self%pieces(1)%problem%piece%law)
+         if (self%summary%max_strain > law%strain_max) call warn('cells were stretched to strain '// &
+            str(self%summary%max_strain)//', beyond the range of the '//law%name()//' law (strain '// &
+            str(law%strain_max)//'): the law was extrapolated there')
+         if (self%summary%min_strain < law%strain_min) call warn('cells were compressed to strain '// &
+            str(self%summary%min_strain)//', below the range of the '//law%name()//' law (strain '// &
+            str(law%strain_min)//'): it was continued there along its first tangent, as stiff in compression '// &
+            'as at the first row (give rows for compression, or compression = ''none'')')
+      end associate
+      if (self%static_min_tension < -warn_static_compression*self%static_max_tension) call warn( &
+         'the static state is in compression: tension down to '//str(self%static_min_tension)//' N at s = '// &
+         str(self%static_min_tension_s)//' m (largest tension '//str(self%static_max_tension)//' N); a rope '// &
+         'cannot push: this state is held by the bending stiffness and the law''s compression branch, and may '// &
+         'be a loop or a buckle (compare with compression = ''none'' and with more nodes)')
+      ! A rope that pushes: the law's compressive branch reached in the dynamics.
+      associate (law => self%pieces(1)%problem%piece%law)
+         if (law%tension(self%summary%min_strain) < -warn_dynamic_compression*self%static_max_tension) &
+            call warn('the line was compressed to '//quantity(law%tension(self%summary%min_strain), 'N')// &
+                      ' (strain '//str(self%summary%min_strain)//') at s = '//quantity(self%summary%min_strain_s, 'm')// &
+                      ', t = '//quantity(self%summary%min_strain_time, 's')//': with compression = ''law'' the rope '// &
+                      'pushes back along its law below zero strain; a rope cannot push: compression = ''none''')
+      end associate
+      ! The grid against the scene: the static shape and the break's front.
+      if (self%static_max_turn > warn_static_turn) call warn('the static shape turns by up to '// &
+         str(self%static_max_turn)//' rad between neighbouring cells (more than '//str(warn_static_turn)// &
+         ' rad): the grid is too coarse for the shape; about '//str(nodes_for(self%static_max_turn/warn_static_turn))// &
+         ' nodes resolve it')
+      if (self%front_cells > 0 .and. self%front_cells < min_front_cells) call warn('the break''s front (t_break = '// &
+         str(self%scene%t_break)//' s at wave speed '//str(self%front_cells*maxval(self%pieces(1)%problem%piece%ds)/ &
+         self%scene%t_break)//' m/s) spans '//str(self%front_cells)//' cells, fewer than '//str(min_front_cells)// &
+         ': about '//str(nodes_for(min_front_cells/self%front_cells))//' nodes resolve it')
+      if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
+         str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &
+         ' accepted): the step control struggled; a smaller dt or courant may be more economical')
+      if (abs(self%summary%courant_used/max(self%summary%courant_requested, tiny(1.0_dp)) - 1) > warn_courant_change) &
+         call warn('the Courant number taken, '//str(self%summary%courant_used)//', differs from the one asked for, '// &
+                   str(self%summary%courant_requested))
+
+   contains
+
+      subroutine warn(line)
+         character(*), intent(in) :: line
+         if (len(self%summary%warnings) > 0) self%summary%warnings = self%summary%warnings//new_line('a')
+         self%summary%warnings = self%summary%warnings//line
+      end subroutine warn
+
+      !> The node count that refines the grid by factor (its cells factor times shorter).
+      integer function nodes_for(factor)
+         real(dp), intent(in) :: factor
+         nodes_for = ceiling(factor*(self%options%nodes - 1)) + 1
+      end function nodes_for
+   end subroutine summarise
+
+   !> The intervals in which end j of the history was slack (its tension at most level), with the
+   !> crossings interpolated linearly between records, and their total length, s.
+   subroutine slack_intervals(history, j, level, intervals, total)
+      !> History of the run.
+      type(run_history), intent(in) :: history
+      !> The end's slot.
+      integer, intent(in) :: j
+      !> Tension at and below which the end counts as slack, N.
+      real(dp), intent(in) :: level
+      !> Start and end of each interval (2, k), s.
+      real(dp), allocatable, intent(out) :: intervals(:, :)
+      !> Their total, s.
+      real(dp), intent(out) :: total
+      real(dp), allocatable :: grown(:, :)
+      real(dp) :: start, f0, f1, tc
+      integer :: i, k
+      logical :: slack
+      allocate (intervals(2, 8))
+      k = 0
+      slack = history%ends(5, j, 0) <= level
+      start = history%time(0)
+      do i = 1, history%n
+         f0 = history%ends(5, j, i - 1)
+         f1 = history%ends(5, j, i)
+         if ((f1 <= level) .eqv. slack) cycle
+         tc = history%time(i - 1) + (history%time(i) - history%time(i - 1))*(level - f0)/(f1 - f0)
+         if (slack) then
+            call push(start, tc)
+         else
+            start = tc
+         end if
+         slack = .not. slack
+      end do
+      if (slack) call push(start, history%time(history%n))
+      intervals = intervals(:, 1:k)
+      total = sum(intervals(2, :) - intervals(1, :))
+   contains
+      subroutine push(a, b)
+         real(dp), intent(in) :: a, b
+         if (k == size(intervals, 2)) then
+            allocate (grown(2, 2*k))
+            grown(:, 1:k) = intervals
+            call move_alloc(grown, intervals)
+         end if
+         k = k + 1
+         intervals(:, k) = [a, b]
+      end subroutine push
+   end subroutine slack_intervals
+
+   !> Kind of the end in history slot j at the end of the run ('fixed', 'motion', ..., 'break').
+   function end_kind(self, j) result(kind)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: j
+      character(:), allocatable :: kind
+      integer :: p
+      kind = ''
+      do p = 1, size(self%pieces)
+         if (self%pieces(p)%end_slot(1) == j) kind = self%pieces(p)%problem%piece%end_a%kind()
+         if (self%pieces(p)%end_slot(2) == j) kind = self%pieces(p)%problem%piece%end_b%kind()
+      end do
+   end function end_kind
+
+   !> Whether history slot j belongs to an end held at the end of the run.
+   logical function end_is_held(self, j)
+      type(rod_run), intent(in) :: self
+      integer, intent(in) :: j
+      integer :: p
+      end_is_held = .false.
+      do p = 1, size(self%pieces)
+         if (self%pieces(p)%end_slot(1) == j) end_is_held = self%pieces(p)%problem%piece%end_a%held()
+         if (self%pieces(p)%end_slot(2) == j) end_is_held = self%pieces(p)%problem%piece%end_b%held()
+      end do
+   end function end_is_held
+end submodule xcable_driver_rod_run_records

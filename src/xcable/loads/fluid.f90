@@ -63,12 +63,15 @@ contains
    end function fluid_lift
 
    !> Drag and added mass per unstretched length on a cell, and their derivatives.
-   pure subroutine fluid_cell_force(self, e, w, a, f, df_de, df_dw, df_da)
+   pure subroutine fluid_cell_force(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
       class(fluid_load), intent(in) :: self
+      !> Mid position and unstretched length of the cell (unused: the fluid is the same everywhere).
+      real(dp), intent(in) :: x(2), ds
       real(dp), intent(in) :: e(2), w(2), a(2)
-      real(dp), intent(out) :: f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
+      real(dp), intent(out) :: f(2), df_dx(2, 2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
       real(dp) :: l, t(2), tt(2, 2), pn(2, 2), v(2), vt(2), vn(2), k, root, ma, drag(2), dd_dt(2, 2), dd_dv(2, 2)
       real(dp) :: turn(2, 2)
+      df_dx = 0
       l = norm2(e)
       t = e/l
       tt = outer(t, t)
@@ -100,13 +103,16 @@ contains
 
    !> The 3-D form of fluid_cell_force: the same formulas with vectors (x, y, z), the
    !> current (current(1), current_y, current(2)).
-   pure subroutine fluid_cell_force3(self, e, w, a, f, df_de, df_dw, df_da)
+   pure subroutine fluid_cell_force3(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
       class(fluid_load), intent(in) :: self
+      !> Mid position and unstretched length of the cell (unused: the fluid is the same everywhere).
+      real(dp), intent(in) :: x(3), ds
       real(dp), intent(in) :: e(3), w(3), a(3)
-      real(dp), intent(out) :: f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
+      real(dp), intent(out) :: f(3), df_dx(3, 3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
       real(dp) :: l, t(3), tt(3, 3), pn(3, 3), v(3), vt(3), vn(3), k, root, ma, drag(3), dd_dt(3, 3), dd_dv(3, 3)
       real(dp) :: turn(3, 3), eye(3, 3)
       eye = identity3()
+      df_dx = 0
       l = norm2(e)
       t = e/l
       tt = outer3(t, t)

@@ -2,10 +2,11 @@
 !> extends (fluid drag and added mass today).
 !>
 !> The rod (model/rod.f90) asks a load for the force per unstretched length on
-!> one cell, given the cell's kinematics at the time the step is centred on:
-!> its stretch vector e (the cell vector over its unstretched length, so
-!> |e| = 1 + eps), its velocity w and its acceleration a (the means of its two
-!> nodes'). It also asks for the derivatives of that force with respect to e,
+!> one cell, given the cell's state at the time the step is centred on: its mid
+!> position x and unstretched length ds, its stretch vector e (the cell vector
+!> over its unstretched length, so |e| = 1 + eps; the cell's ends are
+!> x -+ e ds / 2), its velocity w and its acceleration a (the means of its two
+!> nodes'). It also asks for the derivatives of that force with respect to x, e,
 !> w and a, from which it builds the Jacobian; the generic finite-difference
 !> tests check them. A load's work is booked by the driver from the forces the
 !> rod applied, so the energy ledger closes with any load. A load that is
@@ -48,13 +49,14 @@ module xcable_loads_load
          character(:), allocatable :: name
       end function name_interface
 
-      !> Force per unstretched length f on a cell with stretch vector e, velocity w and
-      !> acceleration a, and df/de, df/dw, df/da (2x2, row i = component i of f).
-      pure subroutine cell_force_interface(self, e, w, a, f, df_de, df_dw, df_da)
+      !> Force per unstretched length f on a cell with mid position x, unstretched length ds,
+      !> stretch vector e (so that its ends are x -+ e ds / 2), velocity w and acceleration a,
+      !> and df/dx, df/de, df/dw, df/da (2x2, row i = component i of f).
+      pure subroutine cell_force_interface(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
          import :: cable_load, dp
          class(cable_load), intent(in) :: self
-         real(dp), intent(in) :: e(2), w(2), a(2)
-         real(dp), intent(out) :: f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
+         real(dp), intent(in) :: x(2), ds, e(2), w(2), a(2)
+         real(dp), intent(out) :: f(2), df_dx(2, 2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
       end subroutine cell_force_interface
    end interface
 
@@ -64,8 +66,10 @@ contains
    !> step (dt > 0) they are centred on the step: stretch vector (e0 + e1) / 2, velocity
    !> (R1 - R0) / dt and acceleration (V1 - V0) / dt, with V1 from the theta rule, each the
    !> mean of the cell's two nodes; in statics (dt = 0) the stretch vector e1 at rest.
-   !> de_coef is de/de1 (1/2 in a step, 1 in statics).
-   pure subroutine cell_kinematics(e0, e1, r0, v0, r1, dt, theta, e, w, a, de_coef)
+   !> de_coef is de/de1 (1/2 in a step, 1 in statics). The cell's mid position xm is centred
+   !> as e is: the mean of the old and new mid positions in a step, the new one in statics;
+   !> dx_coef is dxm/dR1 of each of its two nodes (1/4 in a step, 1/2 in statics).
+   pure subroutine cell_kinematics(e0, e1, r0, v0, r1, dt, theta, e, w, a, de_coef, xm, dx_coef)
       !> Stretch vectors of the cell at the old and new level.
       real(dp), intent(in) :: e0(:), e1(:)
       !> Old positions and velocities of the cell's two nodes (dimension, 2).
@@ -78,7 +82,16 @@ contains
       real(dp), intent(out) :: e(:), w(:), a(:)
       !> de/de1.
       real(dp), intent(out) :: de_coef
+      !> Mid position of the cell and dxm/dR1 of each node.
+      real(dp), intent(out) :: xm(:), dx_coef
       real(dp) :: v1(size(e), 2)
+      if (dt > 0) then
+         xm = 0.25_dp*(r0(:, 1) + r0(:, 2) + r1(:, 1) + r1(:, 2))
+         dx_coef = 0.25_dp
+      else
+         xm = 0.5_dp*(r1(:, 1) + r1(:, 2))
+         dx_coef = 0.5_dp
+      end if
       if (dt > 0) then
          e = 0.5_dp*(e0 + e1)
          w = 0.5_dp*((r1(:, 1) - r0(:, 1)) + (r1(:, 2) - r0(:, 2)))/dt
@@ -99,11 +112,12 @@ contains
    end function load_has_3d
 
    !> No 3-D form: zero force (the 3-D rod refuses such a load, see has_3d).
-   pure subroutine load_cell_force3(self, e, w, a, f, df_de, df_dw, df_da)
+   pure subroutine load_cell_force3(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
       class(cable_load), intent(in) :: self
-      real(dp), intent(in) :: e(3), w(3), a(3)
-      real(dp), intent(out) :: f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
+      real(dp), intent(in) :: x(3), ds, e(3), w(3), a(3)
+      real(dp), intent(out) :: f(3), df_dx(3, 3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
       f = 0
+      df_dx = 0
       df_de = 0
       df_dw = 0
       df_da = 0

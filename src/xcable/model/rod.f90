@@ -1543,7 +1543,8 @@ contains
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
       integer :: c, i, n
-      real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), de_coef, kin(2, 2)
+      real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), de_coef, kin(2, 2), &
+                  xm(2), dx_coef, df_dx(2, 2)
       ! Without loads load_node stays the zeros init set: only this routine writes other
       ! values, and a piece's loads are set once, before its first evaluation. (Clearing it
       ! at every evaluation, a memset per node, took 0.8 % of fast_180kN's instructions.)
@@ -1555,19 +1556,21 @@ contains
       do c = 1, n - 1
          r1 = reshape(x(2*c - 1:2*c + 2), [2, 2])
          call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
-                              e, w, a, de_coef)
+                              e, w, a, de_coef, xm, dx_coef)
          do i = 1, size(self%loads)
-            call self%loads(i)%load%cell_force(e, w, a, f, df_de, df_dw, df_da)
+            call self%loads(i)%load%cell_force(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
             f = self%load_factor*f
+            df_dx = self%load_factor*df_dx
             df_de = self%load_factor*df_de
             df_dw = self%load_factor*df_dw
             df_da = self%load_factor*df_da
             self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
             self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
             if (.not. with_jacobian) cycle
-            ! dF_c/dR_b = ds [df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b], de/dR_b = +-de_coef / ds.
-            kin = 0
-            if (dt > 0) kin = self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            ! dF_c/dR_b = ds [df/dx dx/dR_b + df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b],
+            ! dx/dR_b = dx_coef, de/dR_b = +-de_coef / ds.
+            kin = self%ds(c)*dx_coef*df_dx
+            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
             self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) - de_coef*df_de + kin
             self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + de_coef*df_de + kin
          end do

@@ -1427,7 +1427,8 @@ contains
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
       integer :: c, i, n
-      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3)
+      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3), &
+                  xm(3), dx_coef, df_dx(3, 3)
       self%load_node = 0
       if (.not. allocated(self%loads)) return
       if (size(self%loads) == 0) return
@@ -1436,16 +1437,17 @@ contains
       do c = 1, n - 1
          r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
          call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
-                              e, w, a, de_coef)
+                              e, w, a, de_coef, xm, dx_coef)
          do i = 1, size(self%loads)
-            call self%loads(i)%load%cell_force3(e, w, a, f, df_de, df_dw, df_da)
+            call self%loads(i)%load%cell_force3(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
             f = self%load_factor*f
             self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
             self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
             if (.not. with_jacobian) cycle
-            ! dF_c/dR_b = ds [df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b], de/dR_b = +-de_coef / ds.
-            kin = 0
-            if (dt > 0) kin = self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            ! dF_c/dR_b = ds [df/dx dx/dR_b + df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b],
+            ! dx/dR_b = dx_coef, de/dR_b = +-de_coef / ds.
+            kin = self%ds(c)*dx_coef*df_dx
+            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
             self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
             self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
          end do

@@ -152,6 +152,7 @@ contains
       c%given = ''
       c%break_enabled = .false.
       c%fluid_density = 1025
+      c%surface_z = 100 ! the end held 100 m under water
       c%cd_normal = 1.2_dp
       c%current_x = 0.5_dp
       c%t_end = 1.0e-3_dp

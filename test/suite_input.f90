@@ -524,7 +524,7 @@ contains
          "   0.05, 0.3, table_tension = -2000, 0, 120000, 450000, strain_max = 0.35, compression = 'none',"//nl // &
          "   damping = 250 /"//nl // &
          "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
-         "   current_z = 0 /"//nl // &
+         "   current_z = 0, surface_z = 0, air_density = 0 /"//nl // &
          "! &end_a: the table was read from table_file = '"//table_path//"'"//nl // &
          "&end_a kind = 'motion', x = 0, y = 0, z = 0, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
          "   history = 'constant', ramp_time = 0, motion = 'table', amplitude = 0, period = 1, phase = 0,"//nl // &
@@ -557,7 +557,7 @@ contains
          "&material law = 'tanh', p = 270300, 10.2, -2.128, 262700, 135.5, ea = 0, strain_max = 0.35,"//nl // &
          "   compression = 'none', damping = 0 /"//nl // &
          "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
-         "   current_z = 0 /"//nl // &
+         "   current_z = 0, surface_z = 0, air_density = 0 /"//nl // &
          "&static tension = 150000 /"//nl // &
          "&end_a kind = 'fixed', x = 0, y = 0, z = 0, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
          "   history = 'constant', ramp_time = 0, motion = 'harmonic', amplitude = 0, period = 1, phase = 0,"//nl // &

@@ -1190,8 +1190,8 @@ contains
       character(:), allocatable :: text
       text = "&cable length = 60, diameter = 0.05, density = 1140 /"//new_line('a')// &
              "&material law = 'linear', ea = 451603.943953533, compression = '"//compression//"' /"//new_line('a')// &
-             "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1, current_y = "//str(u)// &
-             " /"//new_line('a')//"&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+             "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1, surface_z = 100, "// &
+             "current_y = "//str(u)//" /"//new_line('a')//"&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
              "&end_b kind = 'fixed', x = 48, z = 24 /"//new_line('a')//"&rupture enabled = .false. /"//new_line('a')// &
              "&output interval = 0, quiet = .true. /"//new_line('a')
    end function sway_scene

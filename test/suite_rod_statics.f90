@@ -69,6 +69,7 @@ contains
       c%cd_tangential = 0.008_dp
       c%ca_normal = 1
       c%current_x = current_x
+      c%surface_z = 100 ! all of the line under water
       c%end_b%x = 48
       c%end_b%z = 24
       c%model = '2d'

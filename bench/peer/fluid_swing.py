@@ -139,7 +139,7 @@ def xcable_run(n, dt, work, scene="pendulum", u=0.0, t_end=T_END):
     txt = (f"&cable length = {LENGTH}, diameter = {DIAM}, density = {RHO_C}, gravity = {G} /\n"
            f"&material law = 'linear', ea = {EA * EA_SCALE:.15g}, compression = '{X_COMPRESSION}' /\n"
            f"&fluid density = {RHO_F}, cd_normal = {CDN}, cd_tangential = {CDT}, "
-           f"ca_normal = {CAN}{cur} /\n" + end_a +
+           f"ca_normal = {CAN}{cur}, surface_z = {-Z0:.15g} /\n" + end_a +
            f"&end_b kind = 'mass', mass = {M_END} /\n"
            f"&rupture enabled = .false. /\n"
            f"&numerics nodes = {n}, dt = {dt:.12g}, t_end = {t_end:.12g} /\n"

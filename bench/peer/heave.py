@@ -104,7 +104,7 @@ def xcable_run(n, dt, work, t_end):
     txt = (f"&cable length = {fs.LENGTH}, diameter = {fs.DIAM}, density = {fs.RHO_C}, gravity = {fs.G} /\n"
            f"&material law = 'linear', ea = {fs.EA * fs.EA_SCALE:.15g}, compression = '{comp}' /\n"
            f"&fluid density = {fs.RHO_F}, cd_normal = {fs.CDN}, cd_tangential = {fs.CDT}, "
-           f"ca_normal = {fs.CAN} /\n"
+           f"ca_normal = {fs.CAN}, surface_z = {-fs.Z0:.15g} /\n"
            f"&end_a kind = 'motion', x = 0, z = 0, motion = 'harmonic', amplitude = {AMP}, "
            f"period = {PERIOD}, direction_x = {DIR[0]}, direction_z = {DIR[1]}, ramp_time = {RAMP} /\n"
            f"&end_b kind = 'mass', mass = {fs.M_END} /\n"

@@ -126,7 +126,7 @@ def xcable_namelist(n, dt, t_end, h5, interval):
     return (f"&cable length = {fs.LENGTH}, diameter = {fs.DIAM}, density = {fs.RHO_C}, gravity = {fs.G} /\n"
             f"&material law = 'linear', ea = {fs.EA:.15g}, compression = 'law' /\n"
             f"&fluid density = {fs.RHO_F}, cd_normal = {fs.CDN}, cd_tangential = {fs.CDT}, "
-            f"ca_normal = {fs.CAN}, current_y = {U} /\n"
+            f"ca_normal = {fs.CAN}, current_y = {U}, surface_z = {-Z0:.15g} /\n"
             f"&end_a kind = 'fixed', x = 0, z = 0 /\n"
             f"&end_b kind = 'motion', x = {XB}, z = {ZB}, motion = 'harmonic', amplitude = {AMP}, "
             f"period = {PERIOD}, ramp_time = {RAMP}, direction_x = 0, direction_y = 1, direction_z = 0 /\n"

@@ -25,8 +25,8 @@ CASES = [("fast_180kN", 180e3, 0.005, 0.14), ("slow_180kN", 180e3, 0.05, 0.17),
          ("fast_315kN", 315e3, 0.005, 0.13), ("slow_315kN", 315e3, 0.05, 0.16)]
 # Media: name, &fluid group ('' for vacuum). Coefficients: docs/theory/fluid.md says where they come from.
 MEDIA = [("vacuum", ""),
-         ("air", "&fluid density = 1.2, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0 /\n"),
-         ("water", "&fluid density = 1025, cd_normal = 1.979, cd_tangential = 0.008, ca_normal = 1.1 /\n")]
+         ("air", "&fluid air_density = 1.2, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0 /\n"),
+         ("water", "&fluid density = 1025, cd_normal = 1.979, cd_tangential = 0.008, ca_normal = 1.1, surface_z = 100 /\n")]
 
 
 def run(exe, work, name, medium, fluid, tension, t_break, t_end, nodes, window_end=None):

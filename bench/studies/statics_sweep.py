@@ -45,7 +45,7 @@ def namelist(n, u, comp, kind, h5):
             else "kind = 'fixed', x = 48.0, z = 24.0")
     return (f"&cable length = {LENGTH}, diameter = 0.05, density = 1140.0, gravity = 9.81 /\n"
             f"&material law = 'linear', ea = {EA}, compression = '{comp}' /\n"
-            f"&fluid density = 1025.0, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0, {cur} /\n"
+            f"&fluid density = 1025.0, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0, {cur}, surface_z = 1000 /\n"
             f"&end_a kind = 'fixed', x = 0, z = 0 /\n&end_b {endb} /\n&rupture enabled = .false. /\n"
             f"&numerics model = '{model}', nodes = {n}, dt = 0.01, t_end = 0.01 /\n"
             f"&output file = '{h5}', interval = 0, quiet = .true., fields = 'x z tension' /\n")

@@ -93,6 +93,9 @@ module xcable_io_config
       real(dp) :: fluid_density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_z = 0
       !> &fluid current_y: the current's y component (3-D model), m/s.
       real(dp) :: current_y = 0
+      !> &fluid surface_z: height of the still-water level, m; air_density: the air above it, kg/m^3;
+      !> surface_band: height over which a cross-section goes from dry to wet, m (negative: the diameter).
+      real(dp) :: surface_z = 0, air_density = 0, surface_band = -1
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp

@@ -249,13 +249,17 @@ contains
       integer, intent(out) :: ios
       !> iomsg of the read.
       character(len=*), intent(inout) :: msg
-      real(dp) :: density, cd_normal, cd_tangential, ca_normal, current_x, current_y, current_z
-      namelist /fluid/ density, cd_normal, cd_tangential, ca_normal, current_x, current_y, current_z
+      real(dp) :: density, cd_normal, cd_tangential, ca_normal, current_x, current_y, current_z, surface_z, &
+                  air_density, surface_band
+      namelist /fluid/ density, cd_normal, cd_tangential, ca_normal, current_x, current_y, current_z, surface_z, &
+         air_density, surface_band
       density = c%fluid_density; cd_normal = c%cd_normal; cd_tangential = c%cd_tangential
       ca_normal = c%ca_normal; current_x = c%current_x; current_z = c%current_z; current_y = c%current_y
+      surface_z = c%surface_z; air_density = c%air_density; surface_band = c%surface_band
       read (unit, nml=fluid, iostat=ios, iomsg=msg)
       if (ios /= 0) return
       c%fluid_density = density; c%cd_normal = cd_normal; c%cd_tangential = cd_tangential
       c%ca_normal = ca_normal; c%current_x = current_x; c%current_z = current_z; c%current_y = current_y
+      c%surface_z = surface_z; c%air_density = air_density; c%surface_band = surface_band
    end subroutine read_fluid
 end module xcable_io_input

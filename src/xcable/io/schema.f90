@@ -147,8 +147,8 @@ contains
                'internal (Kelvin-Voigt) damping c of T = f(eps) + c d(eps)/dt', 0.0_dp, 1.0e12_dp)
       ! &fluid
       call add(t, 'fluid', 'density', 'real', 'kg/m^3', '0', &
-               'density of the fluid around the cable (1025 sea water, 1.2 air): buoyancy, drag, added mass; '// &
-               '0: no fluid', 0.0_dp, 1.0e5_dp)
+               'density of the water around the cable (1025 sea water) below surface_z: buoyancy, drag, added mass; '// &
+               '0: no water', 0.0_dp, 1.0e5_dp)
       call add(t, 'fluid', 'cd_normal', 'real', '-', '0', &
                'normal drag coefficient, on the stretched diameter (MoorDyn Cdn, OrcaFlex normal Cd)', 0.0_dp, 1.0e3_dp)
       call add(t, 'fluid', 'cd_tangential', 'real', '-', '0', &
@@ -161,6 +161,16 @@ contains
                'uniform current, horizontal across the x-z plane (3-D model), as current_x', -1.0e3_dp, 1.0e3_dp)
       call add(t, 'fluid', 'current_z', 'real', 'm/s', '0', 'uniform current, vertical (up), as current_x', &
                -1.0e3_dp, 1.0e3_dp)
+      call add(t, 'fluid', 'surface_z', 'real', 'm', '0', &
+               'height of the still-water level: the water (density, the current) acts on the part of the cable '// &
+               'below it, the air (air_density) on the part above', -1.0e6_dp, 1.0e6_dp)
+      call add(t, 'fluid', 'air_density', 'real', 'kg/m^3', '0', &
+               'density of the air above the surface (1.225): its drag and added mass with the same coefficients, '// &
+               'still air; with density = 0, the air all around the cable', 0.0_dp, 1.0e2_dp)
+      call add(t, 'fluid', 'surface_band', 'real', 'm', '-1', &
+               'height over which a cross-section goes from dry to wet at the surface (0: a step, exact for a '// &
+               'straight cell but not differentiable for one lying in the surface)', 0.0_dp, 1.0e3_dp, &
+               default_means='the diameter')
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &

@@ -1,8 +1,9 @@
-!> Fluid loads on the cable (&fluid): buoyancy, Morison drag and added mass.
+!> Fluid loads on the cable (&fluid): buoyancy, Morison drag and added mass, on the
+!> part of the cable under the water's surface, and the air's above it.
 !>
 !> Per unstretched length, on a cell with stretch vector e (|e| = 1 + eps,
 !> tangent t = e / |e|), velocity w and acceleration a, in a fluid of density
-!> rho moving with the uniform current U:
+!> rho moving with the current U:
 !>
 !>     buoyancy   rho A g upward (A the unstretched cross-section: the volume of
 !>                a piece of rope does not change as it stretches)
@@ -18,10 +19,19 @@
 !> diameter (projected area d per length), Cdt on the surface (pi d per length),
 !> Ca on the displaced volume. The derivatives of |V| V are |V| I + V V^T / |V|,
 !> continuous and zero at V = 0.
+!>
+!> The surface (loads/surface.f90): a cell whose wetted fraction is phi takes
+!> phi of the water's loads (density rho_w, the current) and 1 - phi of the
+!> air's (density rho_a, still air). The water's buoyancy rho_w A g is given as
+!> the load's lift (the scene takes it off the weight, as for a cable all under
+!> water), so the force of a cell adds the buoyancy it lacks above the surface,
+!> -(1 - phi) (rho_w - rho_a) A g upward. phi depends on the heights of the
+!> cell's two ends, z -+ e_z ds / 2: the force's derivatives with respect to the
+!> mid position and the stretch vector carry it.
 module xcable_loads_fluid
    use xcable_core_kinds, only: dp
    use xcable_loads_load, only: cable_load
-   use xcable_numerics_vector3, only: outer3, identity3
+   use xcable_loads_surface, only: water_surface
    implicit none
    private
    public :: fluid_load
@@ -40,12 +50,18 @@ module xcable_loads_fluid
       real(dp) :: current_y = 0
       !> Unstretched diameter (m) and cross-section (m^2) of the cable; gravity, m/s^2.
       real(dp) :: diameter = 0, area = 0, gravity = 0
+      !> The water's surface (its level huge: all of the cable in the fluid).
+      type(water_surface) :: surface = water_surface(level=huge(1.0_dp), band=0)
+      !> Density of the air above the surface, kg/m^3 (same coefficients as in the water).
+      real(dp) :: air_density = 0
    contains
       procedure :: name => fluid_name
       procedure :: cell_force => fluid_cell_force
       procedure :: lift => fluid_lift
       procedure :: has_3d => fluid_has_3d
       procedure :: cell_force3 => fluid_cell_force3
+      !> Wetted fraction of a cell with mid height z and vertical stretch e_z.
+      procedure :: wetted => fluid_wetted
    end type fluid_load
 
 contains
@@ -56,116 +72,157 @@ contains
       name = 'fluid'
    end function fluid_name
 
-   !> Buoyancy per unstretched length, N/m.
+   !> Buoyancy per unstretched length all under water, N/m.
    pure real(dp) function fluid_lift(self)
       class(fluid_load), intent(in) :: self
       fluid_lift = self%density*self%area*self%gravity
    end function fluid_lift
-
-   !> Drag and added mass per unstretched length on a cell, and their derivatives.
-   pure subroutine fluid_cell_force(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
-      class(fluid_load), intent(in) :: self
-      !> Mid position and unstretched length of the cell (unused: the fluid is the same everywhere).
-      real(dp), intent(in) :: x(2), ds
-      real(dp), intent(in) :: e(2), w(2), a(2)
-      real(dp), intent(out) :: f(2), df_dx(2, 2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
-      real(dp) :: l, t(2), tt(2, 2), pn(2, 2), v(2), vt(2), vn(2), k, root, ma, drag(2), dd_dt(2, 2), dd_dv(2, 2)
-      real(dp) :: turn(2, 2)
-      df_dx = 0
-      l = norm2(e)
-      t = e/l
-      tt = outer(t, t)
-      pn = identity() - tt
-      v = self%current - w
-      vt = matmul(tt, v)
-      vn = v - vt
-      k = 0.5_dp*self%density*self%diameter
-      root = sqrt(l)
-      ! Drag: k root D, D = Cdn g(V_n) + pi Cdt g(V_t), g(V) = |V| V.
-      drag = self%cd_normal*norm2(vn)*vn + pi*self%cd_tangential*norm2(vt)*vt
-      dd_dv = self%cd_normal*matmul(dg(vn), pn) + pi*self%cd_tangential*matmul(dg(vt), tt)
-      ! d(T V)/dt = (t . V) I + t V^T, d(P V)/dt = -that.
-      turn = dot_product(t, v)*identity() + outer(t, v)
-      dd_dt = matmul(pi*self%cd_tangential*dg(vt) - self%cd_normal*dg(vn), turn)
-      ma = self%ca_normal*self%density*self%area
-      f = k*root*drag - ma*matmul(pn, a)
-      df_dw = -k*root*dd_dv
-      df_da = -ma*pn
-      ! Through t = e / l (dt/de = P / l) and sqrt(l) (d sqrt(l)/de = t^T / (2 sqrt(l))).
-      df_de = k*(outer(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
-              + ma*matmul(dot_product(t, a)*identity() + outer(t, a), pn)/l
-   end subroutine fluid_cell_force
 
    pure logical function fluid_has_3d(self)
       class(fluid_load), intent(in) :: self
       fluid_has_3d = .true.
    end function fluid_has_3d
 
+   !> Wetted fraction phi of a cell with mid height z, unstretched length ds and vertical
+   !> stretch ez (its ends at z -+ ez ds / 2), and dphi/dz, dphi/dez.
+   pure subroutine fluid_wetted(self, z, ds, ez, phi, dphi_dz, dphi_de)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: z, ds, ez
+      real(dp), intent(out) :: phi, dphi_dz, dphi_de
+      real(dp) :: d1, d2
+      call self%surface%wetted_fraction(z - 0.5_dp*ez*ds, z + 0.5_dp*ez*ds, phi, d1, d2)
+      dphi_dz = d1 + d2
+      dphi_de = 0.5_dp*ds*(d2 - d1)
+   end subroutine fluid_wetted
+
+   !> Force per unstretched length on a cell and its derivatives, planar (x, z).
+   pure subroutine fluid_cell_force(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
+      class(fluid_load), intent(in) :: self
+      !> Mid position and unstretched length of the cell (for its wetted fraction).
+      real(dp), intent(in) :: x(2), ds
+      real(dp), intent(in) :: e(2), w(2), a(2)
+      real(dp), intent(out) :: f(2), df_dx(2, 2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
+      call surface_force(self, x, ds, e, w, a, self%current, f, df_dx, df_de, df_dw, df_da)
+   end subroutine fluid_cell_force
+
    !> The 3-D form of fluid_cell_force: the same formulas with vectors (x, y, z), the
    !> current (current(1), current_y, current(2)).
    pure subroutine fluid_cell_force3(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
       class(fluid_load), intent(in) :: self
-      !> Mid position and unstretched length of the cell (unused: the fluid is the same everywhere).
+      !> Mid position and unstretched length of the cell (for its wetted fraction).
       real(dp), intent(in) :: x(3), ds
       real(dp), intent(in) :: e(3), w(3), a(3)
       real(dp), intent(out) :: f(3), df_dx(3, 3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
-      real(dp) :: l, t(3), tt(3, 3), pn(3, 3), v(3), vt(3), vn(3), k, root, ma, drag(3), dd_dt(3, 3), dd_dv(3, 3)
-      real(dp) :: turn(3, 3), eye(3, 3)
-      eye = identity3()
+      call surface_force(self, x, ds, e, w, a, [self%current(1), self%current_y, self%current(2)], &
+                         f, df_dx, df_de, df_dw, df_da)
+   end subroutine fluid_cell_force3
+
+   !> The fluid's force in any dimension (the last component vertical): the water's on the
+   !> wetted fraction, the air's and the missing buoyancy on the rest.
+   pure subroutine surface_force(self, x, ds, e, w, a, current, f, df_dx, df_de, df_dw, df_da)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: x(:), ds, e(:), w(:), a(:), current(:)
+      real(dp), intent(out) :: f(:), df_dx(:, :), df_de(:, :), df_dw(:, :), df_da(:, :)
+      real(dp), dimension(size(e)) :: fa, jump
+      real(dp), dimension(size(e), size(e)) :: fa_de, fa_dw, fa_da
+      real(dp) :: phi, dphi_dz, dphi_de, still(size(e))
+      integer :: nd
+      nd = size(e)
       df_dx = 0
+      call self%wetted(x(nd), ds, e(nd), phi, dphi_dz, dphi_de)
+      if (phi == 1) then
+         ! All under water (the common case, and the same numbers as without a surface).
+         call morison(self, self%density, current, e, w, a, f, df_de, df_dw, df_da)
+         return
+      end if
+      still = 0
+      if (phi > 0) then
+         call morison(self, self%density, current, e, w, a, f, df_de, df_dw, df_da)
+      else
+         f = 0
+         df_de = 0
+         df_dw = 0
+         df_da = 0
+      end if
+      if (self%air_density > 0) then
+         call morison(self, self%air_density, still, e, w, a, fa, fa_de, fa_dw, fa_da)
+      else
+         fa = 0
+         fa_de = 0
+         fa_dw = 0
+         fa_da = 0
+      end if
+      ! f = phi F_w + (1 - phi) F_a - (1 - phi) (rho_w - rho_a) A g z^.
+      jump = f - fa
+      jump(nd) = jump(nd) + (self%density - self%air_density)*self%area*self%gravity
+      f = phi*f + (1 - phi)*fa
+      f(nd) = f(nd) - (1 - phi)*(self%density - self%air_density)*self%area*self%gravity
+      df_de = phi*df_de + (1 - phi)*fa_de
+      df_dw = phi*df_dw + (1 - phi)*fa_dw
+      df_da = phi*df_da + (1 - phi)*fa_da
+      df_dx(:, nd) = jump*dphi_dz
+      df_de(:, nd) = df_de(:, nd) + jump*dphi_de
+   end subroutine surface_force
+
+   !> Drag and added mass per unstretched length in a fluid of density rho moving with the
+   !> current, and their derivatives with respect to e, w and a (any dimension).
+   pure subroutine morison(self, rho, current, e, w, a, f, df_de, df_dw, df_da)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: rho, current(:), e(:), w(:), a(:)
+      real(dp), intent(out) :: f(:), df_de(:, :), df_dw(:, :), df_da(:, :)
+      real(dp), dimension(size(e), size(e)) :: tt, pn, dd_dt, dd_dv, turn, eye
+      real(dp), dimension(size(e)) :: t, v, vt, vn, drag
+      real(dp) :: l, k, root, ma
+      integer :: i
+      eye = 0
+      do i = 1, size(e)
+         eye(i, i) = 1
+      end do
       l = norm2(e)
       t = e/l
-      tt = outer3(t, t)
+      tt = outer(t, t)
       pn = eye - tt
-      v = [self%current(1), self%current_y, self%current(2)] - w
+      v = current - w
       vt = matmul(tt, v)
       vn = v - vt
-      k = 0.5_dp*self%density*self%diameter
+      k = 0.5_dp*rho*self%diameter
       root = sqrt(l)
+      ! Drag: k root D, D = Cdn g(V_n) + pi Cdt g(V_t), g(V) = |V| V.
       drag = self%cd_normal*norm2(vn)*vn + pi*self%cd_tangential*norm2(vt)*vt
-      dd_dv = self%cd_normal*matmul(dg3(vn), pn) + pi*self%cd_tangential*matmul(dg3(vt), tt)
-      turn = dot_product(t, v)*eye + outer3(t, v)
-      dd_dt = matmul(pi*self%cd_tangential*dg3(vt) - self%cd_normal*dg3(vn), turn)
-      ma = self%ca_normal*self%density*self%area
+      dd_dv = self%cd_normal*matmul(dg(vn), pn) + pi*self%cd_tangential*matmul(dg(vt), tt)
+      ! d(T V)/dt = (t . V) I + t V^T, d(P V)/dt = -that.
+      turn = dot_product(t, v)*eye + outer(t, v)
+      dd_dt = matmul(pi*self%cd_tangential*dg(vt) - self%cd_normal*dg(vn), turn)
+      ma = self%ca_normal*rho*self%area
       f = k*root*drag - ma*matmul(pn, a)
       df_dw = -k*root*dd_dv
       df_da = -ma*pn
-      df_de = k*(outer3(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
-              + ma*matmul(dot_product(t, a)*eye + outer3(t, a), pn)/l
-   end subroutine fluid_cell_force3
-
-   pure function dg3(v) result(m)
-      real(dp), intent(in) :: v(3)
-      real(dp) :: m(3, 3), s
-      s = norm2(v)
-      if (s > 0) then
-         m = s*identity3() + outer3(v, v)/s
-      else
-         m = 0
-      end if
-   end function dg3
+      ! Through t = e / l (dt/de = P / l) and sqrt(l) (d sqrt(l)/de = t^T / (2 sqrt(l))).
+      df_de = k*(outer(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
+              + ma*matmul(dot_product(t, a)*eye + outer(t, a), pn)/l
+   end subroutine morison
 
    !> d(|V| V)/dV = |V| I + V V^T / |V| (0 at V = 0).
    pure function dg(v) result(m)
-      real(dp), intent(in) :: v(2)
-      real(dp) :: m(2, 2), s
+      real(dp), intent(in) :: v(:)
+      real(dp) :: m(size(v), size(v)), s
+      integer :: i
       s = norm2(v)
+      m = 0
       if (s > 0) then
-         m = s*identity() + outer(v, v)/s
-      else
-         m = 0
+         m = outer(v, v)/s
+         do i = 1, size(v)
+            m(i, i) = m(i, i) + s
+         end do
       end if
    end function dg
 
    pure function outer(a, b) result(m)
-      real(dp), intent(in) :: a(2), b(2)
-      real(dp) :: m(2, 2)
-      m(:, 1) = a*b(1)
-      m(:, 2) = a*b(2)
+      real(dp), intent(in) :: a(:), b(:)
+      real(dp) :: m(size(a), size(b))
+      integer :: j
+      do j = 1, size(b)
+         m(:, j) = a*b(j)
+      end do
    end function outer
-
-   pure function identity() result(m)
-      real(dp) :: m(2, 2)
-      m = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
-   end function identity
 end module xcable_loads_fluid

@@ -295,9 +295,11 @@ contains
                           '(> 0: 1025 for sea water, 1.2 for air)', stat_input)
          return
       end if
-      if (c%fluid_density == 0 .and. (c%cd_normal /= 0 .or. c%cd_tangential /= 0 .or. c%ca_normal /= 0)) then
-         call fatal_error(error, c%source//': &fluid: drag or added-mass coefficients without a fluid (density = 0); '// &
-                          'give &fluid density (> 0: 1025 for sea water, 1.2 for air)', stat_input)
+      if (c%fluid_density == 0 .and. c%air_density == 0 .and. &
+          (c%cd_normal /= 0 .or. c%cd_tangential /= 0 .or. c%ca_normal /= 0)) then
+         call fatal_error(error, c%source//': &fluid: drag or added-mass coefficients without a fluid (density = 0 '// &
+                          'and air_density = 0); give &fluid density (> 0: 1025 for sea water) or air_density '// &
+                          '(1.225)', stat_input)
          return
       end if
 

@@ -170,6 +170,11 @@ contains
          end select
          return
       end if
+      ! &fluid surface_band: its default (the diameter) is not a value of its range.
+      if (e%group == 'fluid' .and. e%name == 'surface_band') then
+         echoed = c%surface_band >= 0
+         return
+      end if
       if (e%group == 'material') then
          select case (e%name)
          case ('table_strain', 'table_tension')

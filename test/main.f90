@@ -18,6 +18,7 @@ program xcable_tests
    use suite_registry, only: collect_registry
    use suite_spring, only: collect_spring
    use suite_fluid, only: collect_fluid
+   use suite_surface, only: collect_surface
    use suite_checkpoint, only: collect_checkpoint
    use suite_rod3d, only: collect_rod3d
    use suite_model3d, only: collect_model3d
@@ -49,6 +50,7 @@ program xcable_tests
             new_testsuite('spring', collect_spring), &
              new_testsuite('registry', collect_registry), &
              new_testsuite('fluid', collect_fluid), &
+             new_testsuite('surface', collect_surface), &
              new_testsuite('checkpoint', collect_checkpoint), &
              new_testsuite('rod3d', collect_rod3d), &
              new_testsuite('model3d', collect_model3d), &

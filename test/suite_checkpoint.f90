@@ -63,7 +63,8 @@ module suite_checkpoint
       "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
       "&end_b kind = 'motion', x = 50, z = 0, amplitude = 1, period = 2, direction_x = 0, direction_y = 1, "// &
       "direction_z = 0, ramp_time = 0.5 /"//new_line('a')// &
-      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3 /"//new_line('a')
+      "&fluid density = 1025, cd_normal = 1.2, cd_tangential = 0.01, ca_normal = 1, current_y = 0.3, "// &
+      "surface_z = -1 /"//new_line('a')
    character(len=*), parameter :: fairlead_run = "&numerics nodes = 31, dt = 0.01, t_end = 1.2 /"//new_line('a')// &
                                                  "&output interval = 0.1, energy = .true., quiet = .true. /"
    character(len=*), parameter :: fairlead3d = fairlead_line//"&rupture s_break = 60, t_break = 0.5, time = 0.6 /"// &
@@ -207,6 +208,8 @@ contains
       c%cd_tangential = 0.01_dp
       c%ca_normal = 1
       c%current_x = 0.5_dp
+      ! The surface across the line near its supports: the wetted length in the history.
+      c%surface_z = -2
    end function fluid_scene
 
    !> The paper's rupture at Courant number 2 with at most 2 Newton
@@ -479,6 +482,11 @@ contains
       if (allocated(error)) return
       if (allocated(ha%energy)) call check(error, all(ha%energy(:, 0:n) == hb%energy(:, 0:n)), &
                                            what//': the energy ledger differs')
+      if (allocated(error)) return
+      call check(error, allocated(ha%measures) .eqv. allocated(hb%measures), what//': measures in one history only')
+      if (allocated(error)) return
+      if (allocated(ha%measures)) call check(error, all(ha%measures(:, 0:n) == hb%measures(:, 0:n)), &
+                                             what//': the loads'' measures (wetted length) differ')
       if (allocated(error)) return
       ! A 3-D run: the ends' y components and the snapshots' 3-D fields.
       call check(error, allocated(ha%ends_y) .eqv. allocated(hb%ends_y), what//': y components in one history only')

@@ -64,6 +64,9 @@ contains
          c%ca_normal = 1
          c%current_x = 0.4_dp
          c%current_z = 0.1_dp
+         ! The surface across the line (end b at -1.5 m), the air above it.
+         c%surface_z = -0.7_dp
+         c%air_density = 1.225_dp
       end if
       c%end_b%kind = kind
       c%given = ''

@@ -557,10 +557,20 @@ begin 'ca_normal = Inf' 'ca_normal = Inf' 'not a finite real number'
 from slow_315kN; add '&fluid density = 1025, ca_normal = Inf /'; check
 begin 'a current without a fluid' 'current_x = 0.5' 'a current needs a fluid'
 from slow_315kN; add '&fluid current_x = 0.5 /'; check
-begin 'drag coefficients without a fluid' '&fluid' 'without a fluid (density = 0)'
+begin 'drag coefficients without a fluid' '&fluid' 'without a fluid (density = 0 and air_density = 0)'
 from slow_315kN; add '&fluid cd_normal = 1.2 /'; check
+begin 'a negative air density' 'air_density = -1.2' 'in [0, 100]'
+from slow_315kN; add '&fluid density = 1025, air_density = -1.2 /'; check
+begin 'a negative surface band' 'surface_band = -0.1' 'in [0, 1000]'
+from slow_315kN; add '&fluid density = 1025, surface_band = -0.1 /'; check
+begin 'a surface level that is not a number' 'surface_z' 'NaN'
+from slow_315kN; add '&fluid density = 1025, surface_z = NaN /'; check
+begin 'a current in the air alone' 'current_x = 0.5' 'a current needs a fluid'
+from slow_315kN; add '&fluid air_density = 1.2, current_x = 0.5 /'; check
 begin 'fluid with the box scheme' 'box' 'no fluid loads'
 from slow_315kN; add '&fluid density = 1025 /'; edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
+begin 'air with the box scheme' 'box' 'no fluid loads'
+from slow_315kN; add '&fluid air_density = 1.2 /'; edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
 
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'

@@ -76,7 +76,7 @@ contains
          why = 'the box scheme has the tanh and linear laws only'
       else if (config%damping /= 0) then
          why = 'the box scheme has no internal damping'
-      else if (config%fluid_density /= 0) then
+      else if (config%fluid_density /= 0 .or. config%air_density /= 0) then
          why = 'the box scheme has no fluid loads'
       else if (trim(config%compression) /= 'law') then
          why = 'the box scheme has the law''s compression only (compression = ''law'')'

@@ -64,9 +64,15 @@ module xcable_driver_records
       real(dp), allocatable :: ends_y(:, :, :)
       !> Energy ledger (n_energy, 0:n), J, when asked for.
       real(dp), allocatable :: energy(:, :)
+      !> Lengths the loads measure along the cable (the wetted length, ...): their names and
+      !> values (names, 0:n), m; not allocated when no load measures one.
+      character(len=32), allocatable :: measure_names(:)
+      real(dp), allocatable :: measures(:, :)
    contains
       !> Make room for at least n records (keeps the content).
       procedure :: reserve => history_reserve
+      !> Keep the loads' measures of these names (none: nothing kept).
+      procedure :: keep_measures => history_keep_measures
    end type run_history
 
    !> Figures of one end.
@@ -128,6 +134,12 @@ module xcable_driver_records
       real(dp) :: min_strain_s = 0, min_strain_time = 0
       !> Warnings: one line each ('' : none).
       character(:), allocatable :: warnings
+      !> What the log says about the scene besides (a line partly out of the water, ...): one
+      !> line each ('' : nothing).
+      character(:), allocatable :: notes
+      !> The loads' measures of the static state (run_history%measures at record 0), m, and their names.
+      real(dp), allocatable :: static_measures(:)
+      character(len=32), allocatable :: measure_names(:)
    end type run_summary
 
    !> The static state, with its fields on the output nodes.
@@ -265,7 +277,26 @@ contains
       if (energy) then
          allocate (e(n_energy, 0:n)); e(:, 0:m) = self%energy(:, 0:m); call move_alloc(e, self%energy)
       end if
+      if (allocated(self%measures)) then
+         allocate (e(size(self%measures, 1), 0:n)); e = 0; e(:, 0:m) = self%measures(:, 0:m)
+         call move_alloc(e, self%measures)
+      end if
    end subroutine history_reserve
+
+   !> Keep the loads' measures of these names, from the next record on (after reserve).
+   subroutine history_keep_measures(self, names)
+      !> History.
+      class(run_history), intent(inout) :: self
+      !> Names of the measures.
+      character(*), intent(in) :: names(:)
+      if (allocated(self%measures)) deallocate (self%measures)
+      if (allocated(self%measure_names)) deallocate (self%measure_names)
+      if (size(names) == 0) return
+      allocate (self%measure_names(size(names)))
+      self%measure_names = names
+      allocate (self%measures(size(names), 0:ubound(self%time, 1)))
+      self%measures = 0
+   end subroutine history_keep_measures
 
    !> The figures of the static state that follow from its fields: the angles at the ends (of
    !> the end cells below the horizontal, looking into the cable), the lowest point and the largest tension (y of a 3-D state from extra, horizontal distances
@@ -330,6 +361,9 @@ contains
       text = 'static state: end a '//quantity(info%tension_a, 'N')//angle_text(info%end_angle)//', end b '// &
              quantity(info%tension_b, 'N')//angle_text(info%end_angle_b)//'; span '//quantity(info%span, 'm')// &
              ', lowest point z = '//quantity(info%lowest_z, 'm')//' at s = '//quantity(info%lowest_s, 'm')
+      if (allocated(summary%notes)) then
+         if (len(summary%notes) > 0) text = text//new_line('a')//summary%notes
+      end if
       if (allocated(summary%ends)) then
          do j = 1, size(summary%ends)
             associate (e => summary%ends(j))

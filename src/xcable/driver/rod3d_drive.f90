@@ -50,6 +50,7 @@ module xcable_driver_rod3d_drive
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
    use xcable_ends_end_condition, only: end_condition
+   use xcable_loads_load, only: measure_names, load_measures
    use xcable_driver_records, only: run_observer, n_fields, static_figures, note_min_strain
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
@@ -476,6 +477,7 @@ contains
       rod%pieces(1)%end_slot = [1, 2]
       self%pieces(1)%end_slot = [1, 2]
       call rod%history%reserve(16, n_ends, rod%options%energy, with_y=.true.)
+      call rod%history%keep_measures(measure_names(rod%scene%loads))
       rod%history%n = -1
       call record(self, rod, 0, 0.0_dp)
    end subroutine start_records
@@ -524,6 +526,10 @@ contains
                                         f(1), f(3)]
                   h%ends_y(:, slot, i) = [x(3*k - 1), run%v(2, k), f(2)]
                end do
+               if (allocated(h%measures)) then
+                  if (p == 1) h%measures(:, i) = 0
+                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, h%measures(:, i))
+               end if
                rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
                call note_min_strain(rod%summary, piece%l1, self%pieces(p)%column, rod%s_out, rod%t)
                rod%summary%max_strain = max(rod%summary%max_strain, maxval(piece%l1) - 1)

@@ -158,6 +158,8 @@ contains
       call add('/history/<end>/vy', 'dataset', 'record', 'm/s', '3-D runs', 'velocity of the end along the global y axis')
       call add('/history/<end>/force_y', 'dataset', 'record', 'N', '3-D runs', &
                'external force on the end along the global y axis')
+      call add('/history/wetted_length', 'dataset', 'record', 'm', '&fluid with water', &
+               'unstretched length of the cable under the water''s surface (its cells'' wetted fractions)')
       call add('/history/energy', 'group', '', '', '&output energy', &
                'the energy ledger: ledger = strain + kinetic + bending + gravity - work - loads + dissipation stays constant')
       call add('/history/energy/strain', 'dataset', 'record', 'J', '&output energy', 'strain energy of the cable')
@@ -183,6 +185,10 @@ contains
       call add('/summary@static_lowest_z', 'attribute', '', 'm', '', 'static height of the lowest point')
       call add('/summary@static_lowest_s', 'attribute', '', 'm', '', 'static arc length of the lowest point from end a')
       call add('/summary@static_max_tension', 'attribute', '', 'N', '', 'largest static tension')
+      call add('/summary@static_wetted_length', 'attribute', '', 'm', '&fluid with water', &
+               'unstretched length under the water''s surface in the static state')
+      call add('/summary@notes', 'attribute', '', '', 'something to say', &
+               'what the log says about the scene, one line each (a line partly out of the water, ...)')
       call add('/summary@peak_end_speed', 'attribute', '', 'm/s', '', 'largest speed of a released or loaded end')
       call add('/summary@peak_end_speed_time', 'attribute', '', 's', '', 'when the largest end speed happened')
       call add('/summary@peak_end_speed_end', 'attribute', '', '', 'an end moved', 'which end had the largest speed')

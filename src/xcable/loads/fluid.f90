@@ -30,6 +30,7 @@
 !> mid position and the stretch vector carry it.
 module xcable_loads_fluid
    use xcable_core_kinds, only: dp
+   use xcable_core_strings, only: quantity
    use xcable_loads_load, only: cable_load
    use xcable_loads_surface, only: water_surface
    implicit none
@@ -62,6 +63,9 @@ module xcable_loads_fluid
       procedure :: cell_force3 => fluid_cell_force3
       !> Wetted fraction of a cell with mid height z and vertical stretch e_z.
       procedure :: wetted => fluid_wetted
+      procedure :: measure_name => fluid_measure_name
+      procedure :: cell_measure => fluid_cell_measure
+      procedure :: measure_note => fluid_measure_note
    end type fluid_load
 
 contains
@@ -94,6 +98,39 @@ contains
       dphi_dz = d1 + d2
       dphi_de = 0.5_dp*ds*(d2 - d1)
    end subroutine fluid_wetted
+
+   !> The wetted length, when there is water with a surface.
+   pure function fluid_measure_name(self) result(name)
+      class(fluid_load), intent(in) :: self
+      character(:), allocatable :: name
+      name = ''
+      if (self%density > 0 .and. self%surface%level < huge(1.0_dp)) name = 'wetted_length'
+   end function fluid_measure_name
+
+   !> The unstretched length of a cell under water, ds phi, m.
+   pure real(dp) function fluid_cell_measure(self, r1, r2, ds)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: r1(:), r2(:), ds
+      real(dp) :: phi, d1, d2
+      call self%surface%wetted_fraction(r1(size(r1)), r2(size(r2)), phi, d1, d2)
+      fluid_cell_measure = ds*phi
+   end function fluid_cell_measure
+
+   !> Says when part of the cable is out of the water.
+   function fluid_measure_note(self, value, length) result(text)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: value, length
+      character(:), allocatable :: text
+      text = ''
+      if (value >= length*(1 - 1.0e-12_dp)) return
+      if (value <= 0) then
+         text = 'the line is out of the water at the start (all of it above surface_z = '// &
+                quantity(self%surface%level, 'm')//')'
+      else
+         text = 'part of the line is out of the water at the start: wetted length '//quantity(value, 'm')// &
+                ' of '//quantity(length, 'm')//' (surface_z = '//quantity(self%surface%level, 'm')//')'
+      end if
+   end function fluid_measure_note
 
    !> Force per unstretched length on a cell and its derivatives, planar (x, z).
    pure subroutine fluid_cell_force(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)

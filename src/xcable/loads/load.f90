@@ -20,7 +20,7 @@ module xcable_loads_load
    use xcable_core_kinds, only: dp
    implicit none
    private
-   public :: cable_load, load_slot, cell_kinematics
+   public :: cable_load, load_slot, cell_kinematics, measure_names, load_measures, note_measures
 
    !> A distributed load.
    type, abstract :: cable_load
@@ -35,6 +35,15 @@ module xcable_loads_load
       procedure :: has_3d => load_has_3d
       !> The same in 3-D: vectors (x, y, z), z up; derivatives 3x3.
       procedure :: cell_force3 => load_cell_force3
+      !> Name of a length the load measures along the cable for the history (a dataset
+      !> /history/<name> and the summary's static_<name>; '' : none, the default).
+      procedure :: measure_name => load_measure_name
+      !> That length on one cell with its ends at r1 and r2 (any dimension, the last component
+      !> vertical) and unstretched length ds, m.
+      procedure :: cell_measure => load_cell_measure
+      !> A line for the run's log about the measure at the start, of a cable of unstretched
+      !> length (m) ('' : nothing to say, the default).
+      procedure :: measure_note => load_measure_note
    end type cable_load
 
    !> A slot of an array of loads.
@@ -122,6 +131,79 @@ contains
       df_dw = 0
       df_da = 0
    end subroutine load_cell_force3
+
+   pure function load_measure_name(self) result(name)
+      class(cable_load), intent(in) :: self
+      character(:), allocatable :: name
+      name = ''
+   end function load_measure_name
+
+   pure real(dp) function load_cell_measure(self, r1, r2, ds)
+      class(cable_load), intent(in) :: self
+      real(dp), intent(in) :: r1(:), r2(:), ds
+      load_cell_measure = 0
+   end function load_cell_measure
+
+   function load_measure_note(self, value, length) result(text)
+      class(cable_load), intent(in) :: self
+      real(dp), intent(in) :: value, length
+      character(:), allocatable :: text
+      text = ''
+   end function load_measure_note
+
+   !> The names of the lengths the loads measure (one per load that measures one).
+   function measure_names(loads) result(names)
+      !> The loads.
+      type(load_slot), intent(in) :: loads(:)
+      character(len=32), allocatable :: names(:)
+      integer :: i
+      allocate (names(0))
+      do i = 1, size(loads)
+         if (len(loads(i)%load%measure_name()) > 0) names = [names, loads(i)%load%measure_name()]
+      end do
+   end function measure_names
+
+   !> The loads' measures (in the order of measure_names) on a cable with nodes r (dimension,
+   !> n) and cells of unstretched lengths ds, added to values.
+   subroutine load_measures(loads, r, ds, values)
+      !> The loads.
+      type(load_slot), intent(in) :: loads(:)
+      !> Node positions (dimension, n), m, and unstretched cell lengths (n - 1), m.
+      real(dp), intent(in) :: r(:, :), ds(:)
+      !> The measures, m (added to).
+      real(dp), intent(inout) :: values(:)
+      integer :: i, j, c
+      j = 0
+      do i = 1, size(loads)
+         if (len(loads(i)%load%measure_name()) == 0) cycle
+         j = j + 1
+         do c = 1, size(ds)
+            values(j) = values(j) + loads(i)%load%cell_measure(r(:, c), r(:, c + 1), ds(c))
+         end do
+      end do
+   end subroutine load_measures
+
+   !> What the loads say about their measures at the start (values in the order of
+   !> measure_names) of a cable of unstretched length (m): one line each, appended to notes.
+   subroutine note_measures(loads, values, length, notes)
+      !> The loads.
+      type(load_slot), intent(in) :: loads(:)
+      !> The measures at the start, m; the cable's unstretched length, m.
+      real(dp), intent(in) :: values(:), length
+      !> Lines so far ('' : none).
+      character(:), allocatable, intent(inout) :: notes
+      character(:), allocatable :: line
+      integer :: i, j
+      j = 0
+      do i = 1, size(loads)
+         if (len(loads(i)%load%measure_name()) == 0) cycle
+         j = j + 1
+         line = loads(i)%load%measure_note(values(j), length)
+         if (len(line) == 0) cycle
+         if (len(notes) > 0) notes = notes//new_line('a')
+         notes = notes//line
+      end do
+   end subroutine note_measures
 
    pure real(dp) function load_lift(self)
       class(cable_load), intent(in) :: self

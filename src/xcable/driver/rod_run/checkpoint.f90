@@ -199,6 +199,7 @@ contains
          if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
          call self%history%reserve(max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, &
                                    n_ends, self%options%energy, with_y=y_kept)
+         call self%history%keep_measures(measure_names(self%scene%loads))
          self%history%n = n_records
       end if
       associate (h => self%history, m => n_records)
@@ -209,6 +210,7 @@ contains
          call sync_cube(a, 'history/ends', h%ends(:, :, 0:m), saving)
          if (self%options%energy) call sync_matrix(a, 'history/energy', h%energy(:, 0:m), saving)
          if (y_kept) call sync_cube(a, 'history/ends_y', h%ends_y(:, :, 0:m), saving)
+         if (allocated(h%measures)) call sync_matrix(a, 'history/measures', h%measures(:, 0:m), saving)
       end associate
 
       ! The summary's counters and extremes so far (summarise derives the rest at the end).

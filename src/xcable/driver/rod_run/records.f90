@@ -124,6 +124,7 @@ contains
       self%pieces(1)%reaction(:, 1) = self%static%reaction_a
       self%pieces(1)%reaction(:, 2) = self%static%reaction_b
       call self%history%reserve(16, n_ends, self%options%energy)
+      call self%history%keep_measures(measure_names(self%scene%loads))
       self%history%n = -1
       call record(self, 0, 0, 0.0_dp)
    end subroutine start_history
@@ -189,6 +190,14 @@ contains
             f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
             self%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
          end associate
+      end if
+      if (allocated(self%history%measures)) then
+         self%history%measures(:, i) = 0
+         do p = 1, size(self%pieces)
+            associate (piece => self%pieces(p)%problem%piece)
+               call load_measures(self%scene%loads, self%pieces(p)%r, piece%ds, self%history%measures(:, i))
+            end associate
+         end do
       end if
       if (self%options%energy) then
          self%history%energy(1:4, i) = en
@@ -293,6 +302,15 @@ contains
          self%summary%break_time = self%scene%break_time
          self%summary%break_s = self%scene%s_break
          self%summary%break_ramp = self%scene%t_break
+      end if
+      ! The loads' measures of the static state, and what the loads say about them.
+      self%summary%notes = ''
+      if (allocated(self%summary%static_measures)) deallocate (self%summary%static_measures)
+      if (allocated(self%summary%measure_names)) deallocate (self%summary%measure_names)
+      if (allocated(self%history%measures)) then
+         self%summary%static_measures = self%history%measures(:, 0)
+         self%summary%measure_names = self%history%measure_names
+         call note_measures(self%scene%loads, self%summary%static_measures, self%scene%length, self%summary%notes)
       end if
       ! The break by tension: what the first pass found (driver/simulation.f90).
       self%summary%by_tension = self%scene%by_tension

@@ -63,6 +63,12 @@ contains
                call h5gclose_f(egroup, hdferr)
             end if
          end if
+         if (allocated(history%measures)) then
+            do i = 1, size(history%measures, 1)
+               call put_reals(self, group, '/history', trim(history%measure_names(i)), history%measures(i, 0:n), ok)
+               call attach(scale, group, trim(history%measure_names(i)), 0, 'time', ok, fresh=.true.)
+            end do
+         end if
          if (scale >= 0) call h5dclose_f(scale, hdferr)
          call h5gclose_f(group, hdferr)
       end if
@@ -194,6 +200,14 @@ contains
             call put_real_attr(group, 'static_lowest_z', info%lowest_z, ok)
             call put_real_attr(group, 'static_lowest_s', info%lowest_s, ok)
             call put_real_attr(group, 'static_max_tension', info%max_tension, ok)
+         end if
+         if (allocated(summary%static_measures)) then
+            do j = 1, size(summary%static_measures)
+               call put_real_attr(group, 'static_'//trim(summary%measure_names(j)), summary%static_measures(j), ok)
+            end do
+         end if
+         if (allocated(summary%notes)) then
+            if (len(summary%notes) > 0) call put_text(group, 'notes', summary%notes, ok)
          end if
          call put_real_attr(group, 'peak_end_speed', summary%peak_end_speed, ok)
          call put_real_attr(group, 'peak_end_speed_time', summary%peak_end_speed_time, ok)

@@ -142,11 +142,109 @@ def xcable_run(exe, height, segments):
         return top, crossing(z, LENGTH), ""
 
 
+# The catenary through the surface: the same line, 90 m, from a fairlead 5 m above the water to an
+# anchor 70 m away and 40 m under it (no seabed: MoorDyn's depth 200 m).
+CAT_LENGTH = 90.0
+FAIRLEAD = (0.0, 5.0)
+ANCHOR = (70.0, -40.0)
+
+
+def moordyn_catenary(segments):
+    """MoorDyn's static catenary: the force of the line on the fairlead (x, z, N) and the arc
+    length from the fairlead to the waterline (m)."""
+    txt = f"""MoorDyn v2 input: a catenary through the water surface (bench/peer/surface.py)
+---------------------- LINE TYPES -----------------------------------
+TypeName   Diam    Mass/m     EA      BA/-zeta     EI    Cd     Ca    CdAx    CaAx
+(name)     (m)     (kg/m)     (N)     (N-s/-)    (N-m^2) (-)   (-)   (-)     (-)
+rope       {DIAMETER:.10g}  {MASS:.12g}  {EA:.12g}  -1.0  0.0  1.2  1.0  0.008  0.0
+---------------------------- POINTS -------------------------------------------
+ID  Attachment  X       Y     Z      Mass   Volume  CdA    CA
+(#)   (-)       (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
+1     Fixed     {ANCHOR[0]:.12g}     0.0   {ANCHOR[1]:.12g}    0.0    0.0     0.0    0.0
+2     Fixed     {FAIRLEAD[0]:.12g}     0.0   {FAIRLEAD[1]:.12g}    0.0    0.0     0.0    0.0
+---------------------- LINES ----------------------------------------
+ID   LineType AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
+(#)  (name)   (#)      (#)      (m)       (-)      (-)
+1    rope      1        2       {CAT_LENGTH:.12g}      {segments}      -
+---------------------- OPTIONS -----------------------------------------
+0        writeLog
+5.0e-5   dtM
+RK4      tScheme
+{G}      g
+{RHO}    rho
+200.0    WtrDpth
+10000.0  TmaxIC
+4.0      CdScaleIC
+1.0e-9   threshIC
+------------------------- need this line -------------------------------------
+"""
+    with tempfile.TemporaryDirectory() as work:
+        path = os.path.join(work, "catenary.txt")
+        with open(path, "w") as f:
+            f.write(txt)
+        system = moordyn.Create(path)
+        moordyn.SetVerbosity(system, moordyn.LEVEL_ERR)
+        moordyn.Init(system, [], [])
+        line = moordyn.GetLine(system, 1)
+        # The top segment's tension along the line (node N, towards the fairlead) and the top
+        # node's half-segment net weight: the force the line puts on the fairlead.
+        ten = np.array(moordyn.GetLineNodeTen(line, segments))
+        weight = np.array(moordyn.GetLineNodeWeight(line, segments))
+        nodes = np.array([moordyn.GetLineNodePos(line, i) for i in range(segments + 1)])
+        moordyn.Close(system)
+    top = nodes[-1] - nodes[-2]
+    pull = np.linalg.norm(ten) * top / np.linalg.norm(top)
+    force = pull + weight
+    return (float(force[0]), float(force[2])), crossing(nodes[::-1, 2], CAT_LENGTH)
+
+
+def xcable_catenary(exe, segments):
+    with tempfile.TemporaryDirectory() as work:
+        nml = os.path.join(work, "catenary.nml")
+        out = os.path.join(work, "catenary.h5")
+        with open(nml, "w") as f:
+            f.write(f"""&cable length = {CAT_LENGTH}, diameter = {DIAMETER}, density = {DENSITY}, bending_stiffness = 1e-3 /
+&material law = 'linear', ea = {EA:.12g} /
+&fluid density = {RHO}, surface_z = 0 /
+&end_a kind = 'fixed', x = {FAIRLEAD[0]}, z = {FAIRLEAD[1]} /
+&end_b kind = 'fixed', x = {ANCHOR[0]}, z = {ANCHOR[1]} /
+&rupture enabled = .false. /
+&numerics nodes = {segments + 1}, t_end = 1e-3, newton_tol = 1e-12 /
+&output file = '{out}', interval = 0, quiet = .true. /
+""")
+        run = subprocess.run([exe, nml], capture_output=True, text=True)
+        if run.returncode != 0:
+            return None, None, run.stderr.strip().splitlines()[-1]
+        with h5py.File(out) as f:
+            # The support's reaction at end a, the fairlead: minus the line's force on it.
+            fx = -float(f["history/end_a/force_x"][0])
+            fz = -float(f["history/end_a/force_z"][0])
+            z = f["static/z"][:]
+        return (fx, fz), crossing(z, CAT_LENGTH), ""
+
+
+def catenary_table(exe, segment_counts):
+    print("\nCatenary from a fairlead 5 m above the water to an anchor 70 m away, 40 m down (90 m line):")
+    print("| segments | MoorDyn F_x N | MoorDyn F_z N | MoorDyn waterline m | xcable F_x N | xcable F_z N "
+          "| xcable waterline m |")
+    print("|---|---|---|---|---|---|---|")
+    for n in segment_counts:
+        (mx, mz), mwl = moordyn_catenary(n)
+        row = f"| {n} | {mx:.4f} | {mz:.4f} | {mwl:.4f} |"
+        if exe:
+            xf, xwl, why = xcable_catenary(exe, n)
+            row += f" failed: {why} | | |" if xf is None else f" {xf[0]:.4f} | {xf[1]:.4f} | {xwl:.4f} |"
+        else:
+            row += " | | |"
+        print(row, flush=True)
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
     ap.add_argument("--heights", type=float, nargs="+", default=[10.0, -5.0])
     ap.add_argument("--segments", type=int, nargs="+", default=[20, 40, 80])
     ap.add_argument("--exe", default="")
+    ap.add_argument("--catenary", action="store_true", help="also the inclined catenary through the surface")
     args = ap.parse_args()
     print("| tip height m | segments | closed form T_top N | MoorDyn T_top N | rel. error | waterline from tip m "
           "(exact) | MoorDyn | xcable T_top N | rel. error | xcable waterline m |")
@@ -165,6 +263,8 @@ def main():
             else:
                 row += " | | |"
             print(row, flush=True)
+    if args.catenary:
+        catenary_table(args.exe, args.segments)
 
 
 if __name__ == "__main__":

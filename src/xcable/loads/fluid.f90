@@ -33,9 +33,10 @@ module xcable_loads_fluid
    use xcable_core_strings, only: quantity
    use xcable_loads_load, only: cable_load
    use xcable_loads_surface, only: water_surface
+   use xcable_io_config, only: case_config
    implicit none
    private
-   public :: fluid_load
+   public :: fluid_load, fluid_from_case
 
    real(dp), parameter :: pi = acos(-1.0_dp)
 
@@ -69,6 +70,32 @@ module xcable_loads_fluid
    end type fluid_load
 
 contains
+
+   !> The fluid of a case (&fluid): the water below its surface and the air above it; with no
+   !> water (density 0), the air all around the cable; none without either.
+   subroutine fluid_from_case(config, area, load)
+      !> Validated case.
+      type(case_config), intent(in) :: config
+      !> Unstretched cross-section of the cable, m^2.
+      real(dp), intent(in) :: area
+      !> The fluid, or unallocated.
+      class(cable_load), allocatable, intent(out) :: load
+      type(fluid_load) :: fluid
+      real(dp) :: band
+      if (config%fluid_density <= 0 .and. config%air_density <= 0) return
+      fluid = fluid_load(density=config%fluid_density, cd_normal=config%cd_normal, cd_tangential=config%cd_tangential, &
+                         ca_normal=config%ca_normal, current=[config%current_x, config%current_z], &
+                         current_y=config%current_y, diameter=config%diameter, area=area, gravity=config%gravity)
+      if (config%fluid_density > 0) then
+         band = config%surface_band
+         if (band < 0) band = config%diameter
+         fluid%surface = water_surface(level=config%surface_z, band=band)
+         fluid%air_density = config%air_density
+      else
+         fluid%density = config%air_density
+      end if
+      allocate (load, source=fluid)
+   end subroutine fluid_from_case
 
    pure function fluid_name(self) result(name)
       class(fluid_load), intent(in) :: self

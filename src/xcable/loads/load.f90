@@ -13,7 +13,7 @@
 !> conservative and constant (buoyancy) is given as a lift per unstretched
 !> length instead, which the rod adds to the weight (and so to the gravity
 !> energy). A new load is one module extending `cable_load` and one line in
-!> scene/scene.f90 where the loads of a case are built.
+!> loads/factory.f90 where the loads of a case are built.
 !>
 !> Frame: x horizontal, z vertical (up); forces in N.
 module xcable_loads_load

@@ -16,9 +16,8 @@ module xcable_scene_scene
    use xcable_material_factory, only: new_case_law
    use xcable_ends_end_condition, only: end_condition
    use xcable_ends_factory, only: new_end
-   use xcable_loads_load, only: load_slot, cable_load
-   use xcable_loads_fluid, only: fluid_load
-   use xcable_loads_surface, only: water_surface
+   use xcable_loads_load, only: load_slot
+   use xcable_loads_factory, only: case_loads
    implicit none
    private
    public :: scene_type, scene_from_config, scene_grid, set_break
@@ -61,42 +60,6 @@ module xcable_scene_scene
 
 contains
 
-   !> Append a load to a list of loads.
-   subroutine add_load(loads, load)
-      type(load_slot), allocatable, intent(inout) :: loads(:)
-      class(cable_load), intent(in) :: load
-      type(load_slot), allocatable :: longer(:)
-      integer :: k
-      allocate (longer(size(loads) + 1))
-      do k = 1, size(loads)
-         call move_alloc(loads(k)%load, longer(k)%load)
-      end do
-      allocate (longer(size(longer))%load, source=load)
-      call move_alloc(longer, loads)
-   end subroutine add_load
-
-   !> The fluid of a case: the water below its surface and the air above it; with no water
-   !> (density 0), the air all around the cable.
-   pure function fluid_of(config, area) result(fluid)
-      !> Validated case.
-      type(case_config), intent(in) :: config
-      !> Unstretched cross-section, m^2.
-      real(dp), intent(in) :: area
-      type(fluid_load) :: fluid
-      real(dp) :: band
-      fluid = fluid_load(density=config%fluid_density, cd_normal=config%cd_normal, cd_tangential=config%cd_tangential, &
-                         ca_normal=config%ca_normal, current=[config%current_x, config%current_z], &
-                         current_y=config%current_y, diameter=config%diameter, area=area, gravity=config%gravity)
-      if (config%fluid_density > 0) then
-         band = config%surface_band
-         if (band < 0) band = config%diameter
-         fluid%surface = water_surface(level=config%surface_z, band=band)
-         fluid%air_density = config%air_density
-      else
-         fluid%density = config%air_density
-      end if
-   end function fluid_of
-
    !> Whether the break is inside the cable (two pieces).
    pure logical function interior_break(self)
       !> Scene.
@@ -135,8 +98,7 @@ contains
       scene%gip = config%gip
       if (scene%gip == 0) scene%gip = ei/1.4_dp
       ! Distributed loads, one line each; their lift (buoyancy) comes off the weight.
-      allocate (scene%loads(0))
-      if (config%fluid_density > 0 .or. config%air_density > 0) call add_load(scene%loads, fluid_of(config, area))
+      call case_loads(config, area, scene%loads)
       do k = 1, size(scene%loads)
          scene%weight = scene%weight - scene%loads(k)%load%lift()
       end do

@@ -19,6 +19,7 @@ program xcable_tests
    use suite_spring, only: collect_spring
    use suite_fluid, only: collect_fluid
    use suite_surface, only: collect_surface
+   use suite_seabed, only: collect_seabed
    use suite_checkpoint, only: collect_checkpoint
    use suite_rod3d, only: collect_rod3d
    use suite_model3d, only: collect_model3d
@@ -51,6 +52,7 @@ program xcable_tests
              new_testsuite('registry', collect_registry), &
              new_testsuite('fluid', collect_fluid), &
              new_testsuite('surface', collect_surface), &
+             new_testsuite('seabed', collect_seabed), &
              new_testsuite('checkpoint', collect_checkpoint), &
              new_testsuite('rod3d', collect_rod3d), &
              new_testsuite('model3d', collect_model3d), &

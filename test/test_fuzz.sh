@@ -569,6 +569,19 @@ begin 'a current in the air alone' 'current_x = 0.5' 'a current needs a fluid'
 from slow_315kN; add '&fluid air_density = 1.2, current_x = 0.5 /'; check
 begin 'fluid with the box scheme' 'box' 'no fluid loads'
 from slow_315kN; add '&fluid density = 1025 /'; edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
+# --- the seabed (&seabed) -----------------------------------------------------------------
+begin 'a negative seabed depth' 'depth = -40' 'in [0, 100000]'
+from slow_315kN; add '&seabed depth = -40 /'; check
+begin 'a seabed with no stiffness' 'stiffness = 0' 'must be > 0'
+from slow_315kN; add '&seabed depth = 40, stiffness = 0 /'; check
+begin 'a negative friction coefficient' 'mu_axial = -0.3' 'in [0, 100]'
+from slow_315kN; add '&seabed depth = 40, mu_axial = -0.3 /'; check
+begin 'a negative contact damping' 'damping = -1' 'in [0, 1e15]'
+from slow_315kN; add '&seabed depth = 40, damping = -1 /'; check
+begin 'a fixed end below the seabed' 'end_b: z = 0' 'below the seabed'
+from slack_swing; add '&seabed depth = 1, slope_x = 0.5 /'; check
+begin 'the water surface below the seabed' 'surface_z = -50' 'below the seabed'
+from slow_315kN; add '&fluid density = 1025, surface_z = -50 /'; add '&seabed depth = 40 /'; check
 begin 'air with the box scheme' 'box' 'no fluid loads'
 from slow_315kN; add '&fluid air_density = 1.2 /'; edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
 

@@ -186,15 +186,15 @@ RK4      tScheme
         moordyn.SetVerbosity(system, moordyn.LEVEL_ERR)
         moordyn.Init(system, [], [])
         line = moordyn.GetLine(system, 1)
-        # The top segment's tension along the line (node N, towards the fairlead) and the top
-        # node's half-segment net weight: the force the line puts on the fairlead.
-        ten = np.array(moordyn.GetLineNodeTen(line, segments))
+        # The top segment's tension (from its strain) pulls the fairlead towards the line, and
+        # the top node carries its half segment's net weight: the force the line puts on the
+        # fairlead.
         weight = np.array(moordyn.GetLineNodeWeight(line, segments))
         nodes = np.array([moordyn.GetLineNodePos(line, i) for i in range(segments + 1)])
         moordyn.Close(system)
     top = nodes[-1] - nodes[-2]
-    pull = np.linalg.norm(ten) * top / np.linalg.norm(top)
-    force = pull + weight
+    tension = EA * (np.linalg.norm(top) / (CAT_LENGTH / segments) - 1)
+    force = -tension * top / np.linalg.norm(top) + weight
     return (float(force[0]), float(force[2])), crossing(nodes[::-1, 2], CAT_LENGTH)
 
 

@@ -96,6 +96,12 @@ module xcable_io_config
       !> &fluid surface_z: height of the still-water level, m; air_density: the air above it, kg/m^3;
       !> surface_band: height over which a cross-section goes from dry to wet, m (negative: the diameter).
       real(dp) :: surface_z = 0, air_density = 0, surface_band = -1
+      !> &seabed: depth of the seabed under z = 0 at x = y = 0, m (0: no seabed); its slopes dz/dx and
+      !> dz/dy; contact stiffness (Pa: N/m^2 per m of penetration and per m of diameter) and damping
+      !> (Pa s/m); Coulomb friction coefficients along and across the line; the slip speed below which
+      !> friction is proportional to the slip, m/s.
+      real(dp) :: seabed_depth = 0, seabed_slope_x = 0, seabed_slope_y = 0, seabed_stiffness = 3.0e6_dp, &
+                  seabed_damping = 3.0e5_dp, mu_axial = 0, mu_lateral = 0, slip_velocity = 1.0e-2_dp
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp

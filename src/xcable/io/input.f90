@@ -158,6 +158,8 @@ contains
             call read_end(unit, 'end_b', c%end_b, ios, msg)
          case ('fluid')
             call read_fluid(unit, c, ios, msg)
+         case ('seabed')
+            call read_seabed(unit, c, ios, msg)
          case ('rupture')
             read (unit, nml=rupture, iostat=ios, iomsg=msg)
          case ('numerics')
@@ -262,4 +264,26 @@ contains
       c%ca_normal = ca_normal; c%current_x = current_x; c%current_z = current_z; c%current_y = current_y
       c%surface_z = surface_z; c%air_density = air_density; c%surface_band = surface_band
    end subroutine read_fluid
+
+   !> Read &seabed into the case.
+   subroutine read_seabed(unit, c, ios, msg)
+      !> Open namelist file, rewound.
+      integer, intent(in) :: unit
+      !> The case: defaults in, values given out.
+      type(case_config), intent(inout) :: c
+      !> iostat of the read.
+      integer, intent(out) :: ios
+      !> iomsg of the read.
+      character(len=*), intent(inout) :: msg
+      real(dp) :: depth, slope_x, slope_y, stiffness, damping, mu_axial, mu_lateral, slip_velocity
+      namelist /seabed/ depth, slope_x, slope_y, stiffness, damping, mu_axial, mu_lateral, slip_velocity
+      depth = c%seabed_depth; slope_x = c%seabed_slope_x; slope_y = c%seabed_slope_y
+      stiffness = c%seabed_stiffness; damping = c%seabed_damping; mu_axial = c%mu_axial
+      mu_lateral = c%mu_lateral; slip_velocity = c%slip_velocity
+      read (unit, nml=seabed, iostat=ios, iomsg=msg)
+      if (ios /= 0) return
+      c%seabed_depth = depth; c%seabed_slope_x = slope_x; c%seabed_slope_y = slope_y
+      c%seabed_stiffness = stiffness; c%seabed_damping = damping; c%mu_axial = mu_axial
+      c%mu_lateral = mu_lateral; c%slip_velocity = slip_velocity
+   end subroutine read_seabed
 end module xcable_io_input

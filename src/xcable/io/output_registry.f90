@@ -160,6 +160,8 @@ contains
                'external force on the end along the global y axis')
       call add('/history/wetted_length', 'dataset', 'record', 'm', '&fluid with water', &
                'unstretched length of the cable under the water''s surface (its cells'' wetted fractions)')
+      call add('/history/grounded_length', 'dataset', 'record', 'm', '&seabed', &
+               'unstretched length of the cable on (below) the seabed (its cells'' contact fractions)')
       call add('/history/energy', 'group', '', '', '&output energy', &
                'the energy ledger: ledger = strain + kinetic + bending + gravity - work - loads + dissipation stays constant')
       call add('/history/energy/strain', 'dataset', 'record', 'J', '&output energy', 'strain energy of the cable')
@@ -187,6 +189,8 @@ contains
       call add('/summary@static_max_tension', 'attribute', '', 'N', '', 'largest static tension')
       call add('/summary@static_wetted_length', 'attribute', '', 'm', '&fluid with water', &
                'unstretched length under the water''s surface in the static state')
+      call add('/summary@static_grounded_length', 'attribute', '', 'm', '&seabed', &
+               'unstretched length on the seabed in the static state')
       call add('/summary@notes', 'attribute', '', '', 'something to say', &
                'what the log says about the scene, one line each (a line partly out of the water, ...)')
       call add('/summary@peak_end_speed', 'attribute', '', 'm/s', '', 'largest speed of a released or loaded end')

@@ -171,6 +171,24 @@ contains
                'height over which a cross-section goes from dry to wet at the surface (0: a step, exact for a '// &
                'straight cell but not differentiable for one lying in the surface)', 0.0_dp, 1.0e3_dp, &
                default_means='the diameter')
+      ! &seabed
+      call add(t, 'seabed', 'depth', 'real', 'm', '0', &
+               'depth of the seabed under z = 0 at x = y = 0: the bottom is z = -depth + slope_x x + slope_y y', &
+               0.0_dp, 1.0e5_dp, zero_means='no seabed')
+      call add(t, 'seabed', 'slope_x', 'real', '-', '0', 'slope of the seabed along x, dz/dx', -10.0_dp, 10.0_dp)
+      call add(t, 'seabed', 'slope_y', 'real', '-', '0', 'slope of the seabed along y, dz/dy (3-D)', -10.0_dp, 10.0_dp)
+      call add(t, 'seabed', 'stiffness', 'real', 'Pa', '3e6', &
+               'contact stiffness per unit of penetration and of diameter (MoorDyn kBot): the bottom pushes with '// &
+               'stiffness d times the penetration per unstretched metre', 0.0_dp, 1.0e15_dp, lower_open=.true.)
+      call add(t, 'seabed', 'damping', 'real', 'Pa s/m', '300000', &
+               'contact damping per unit of penetration rate and of diameter (MoorDyn cBot)', 0.0_dp, 1.0e15_dp)
+      call add(t, 'seabed', 'mu_axial', 'real', '-', '0', 'Coulomb friction coefficient along the line', &
+               0.0_dp, 100.0_dp)
+      call add(t, 'seabed', 'mu_lateral', 'real', '-', '0', 'Coulomb friction coefficient across the line (3-D)', &
+               0.0_dp, 100.0_dp)
+      call add(t, 'seabed', 'slip_velocity', 'real', 'm/s', '0.01', &
+               'slip speed below which friction grows with the slip instead of being full: mu N v / sqrt(v^2 + '// &
+               'slip_velocity^2)', 0.0_dp, 1.0e3_dp, lower_open=.true.)
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &

@@ -11,6 +11,7 @@ module xcable_loads_factory
    use xcable_io_config, only: case_config
    use xcable_loads_load, only: cable_load, load_slot
    use xcable_loads_fluid, only: fluid_from_case
+   use xcable_loads_seabed, only: seabed_from_case
    implicit none
    private
    public :: case_loads
@@ -40,6 +41,7 @@ contains
       type(load_slot), allocatable, intent(out) :: loads(:)
       allocate (loads(0))
       call add(fluid_from_case)
+      call add(seabed_from_case)
    contains
       subroutine add(build)
          procedure(builder) :: build

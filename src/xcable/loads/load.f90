@@ -35,6 +35,14 @@ module xcable_loads_load
       procedure :: has_3d => load_has_3d
       !> The same in 3-D: vectors (x, y, z), z up; derivatives 3x3.
       procedure :: cell_force3 => load_cell_force3
+      !> Whether the load shares its force unequally between a cell's two nodes (cell_skew).
+      procedure :: has_skew => load_has_skew
+      !> The unequal share: node a of the cell takes ds (f / 2 + g), node b ds (f / 2 - g), per
+      !> unstretched length g and its derivatives, in either dimension (2 or 3 components, the
+      !> last vertical). A load with a potential that varies along the cell (a stiff contact)
+      !> needs it: with equal shares, nodes moving alternately up and down leave every cell's
+      !> mean unchanged, a mode the load would not resist.
+      procedure :: cell_skew => load_cell_skew
       !> Name of a length the load measures along the cable for the history (a dataset
       !> /history/<name> and the summary's static_<name>; '' : none, the default).
       procedure :: measure_name => load_measure_name
@@ -204,6 +212,23 @@ contains
          notes = notes//line
       end do
    end subroutine note_measures
+
+   pure logical function load_has_skew(self)
+      class(cable_load), intent(in) :: self
+      load_has_skew = .false.
+   end function load_has_skew
+
+   !> Equal shares: g = 0.
+   pure subroutine load_cell_skew(self, x, ds, e, w, a, g, dg_dx, dg_de, dg_dw, dg_da)
+      class(cable_load), intent(in) :: self
+      real(dp), intent(in) :: x(:), ds, e(:), w(:), a(:)
+      real(dp), intent(out) :: g(:), dg_dx(:, :), dg_de(:, :), dg_dw(:, :), dg_da(:, :)
+      g = 0
+      dg_dx = 0
+      dg_de = 0
+      dg_dw = 0
+      dg_da = 0
+   end subroutine load_cell_skew
 
    pure real(dp) function load_lift(self)
       class(cable_load), intent(in) :: self

@@ -141,6 +141,10 @@ module xcable_model_rod
       !> derivatives of each cell's load force with respect to the new positions of
       !> its two nodes (2, 2, 0:1, n - 1): side 0 node c, side 1 node c + 1.
       real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
+      !> Of loads that share unequally (cable_load cell_skew): whether there is one, and the
+      !> derivatives of each cell's unequal part G_c = ds g (node c takes +G_c, node c + 1 -G_c).
+      logical :: skewed = .false.
+      real(dp), allocatable :: skew_block(:, :, :, :)
       !> Factor on the distributed loads (1; the statics ramps it up when it must).
       real(dp) :: load_factor = 1
    contains
@@ -311,9 +315,10 @@ contains
       self%memo_valid = .false.
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
       self%v1 = 0
-      allocate (self%load_node(2, n), self%load_block(2, 2, 0:1, n - 1))
+      allocate (self%load_node(2, n), self%load_block(2, 2, 0:1, n - 1), self%skew_block(2, 2, 0:1, n - 1))
       self%load_node = 0
       self%load_block = 0
+      self%skew_block = 0
       self%mass = 0
       self%mass(0, :) = (1 - mu)*mass*self%lumped
       self%mass(0, 1) = self%mass(0, 1) + end_a%point_mass()
@@ -1545,6 +1550,7 @@ contains
       integer :: c, i, n
       real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), de_coef, kin(2, 2), &
                   xm(2), dx_coef, df_dx(2, 2)
+      logical :: skew
       ! Without loads load_node stays the zeros init set: only this routine writes other
       ! values, and a piece's loads are set once, before its first evaluation. (Clearing it
       ! at every evaluation, a memset per node, took 0.8 % of fast_180kN's instructions.)
@@ -1553,6 +1559,8 @@ contains
       self%load_node = 0
       n = self%n
       self%load_block = 0
+      self%skewed = any([(self%loads(i)%load%has_skew(), i=1, size(self%loads))])
+      if (self%skewed) self%skew_block = 0
       do c = 1, n - 1
          r1 = reshape(x(2*c - 1:2*c + 2), [2, 2])
          call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
@@ -1573,6 +1581,21 @@ contains
             if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
             self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) - de_coef*df_de + kin
             self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + de_coef*df_de + kin
+         end do
+         ! The unequal shares: node c takes +ds g, node c + 1 -ds g.
+         if (.not. self%skewed) cycle
+         do i = 1, size(self%loads)
+            skew = self%loads(i)%load%has_skew()
+            if (.not. skew) cycle
+            call self%loads(i)%load%cell_skew(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
+            f = self%load_factor*f
+            self%load_node(:, c) = self%load_node(:, c) + self%ds(c)*f
+            self%load_node(:, c + 1) = self%load_node(:, c + 1) - self%ds(c)*f
+            if (.not. with_jacobian) cycle
+            kin = self%ds(c)*dx_coef*df_dx
+            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            self%skew_block(:, :, 0, c) = self%skew_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
+            self%skew_block(:, :, 1, c) = self%skew_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
          end do
       end do
    end subroutine apply_loads
@@ -1827,6 +1850,27 @@ contains
                   end do
                end do
             end do
+            ! Unequal shares: node c -G_c, node c + 1 +G_c in the residual's sign.
+            if (self%skewed) then
+               do c = 1, n - 1
+                  do side = 0, 1
+                     node = c + side
+                     do j = 0, 1
+                        k = c + j
+                        if (k == 1 .and. held_a) cycle
+                        if (k == n .and. held_b) cycle
+                        do a = 1, 2
+                           do b = 1, 2
+                              row = 2*(k - 1) + a
+                              col = 2*(node - 1) + b
+                              jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
+                                 - merge(1.0_dp, -1.0_dp, j == 0)*self%skew_block(a, b, side, c)*scale
+                           end do
+                        end do
+                     end do
+                  end do
+               end do
+            end if
          end if
       end if
       if (held_a) call held_rows(1)

@@ -160,6 +160,10 @@ module xcable_model_rod3d
       !> Force of the loads on each node in the last evaluation (3, n), N, and the derivatives of
       !> each cell's load force with respect to the new positions of its nodes (3, 3, 0:1, n - 1).
       real(dp), allocatable :: load_node(:, :), load_block(:, :, :, :)
+      !> Of loads that share unequally (cable_load cell_skew): whether there is one, and the
+      !> derivatives of each cell's unequal part G_c = ds g (node c takes +G_c, node c + 1 -G_c).
+      logical :: skewed = .false.
+      real(dp), allocatable :: skew_block(:, :, :, :)
       !> Factor on the distributed loads.
       real(dp) :: load_factor = 1
       !> The twist angle psi_1 is held at when no end holds the twist (the rigid spin), rad: 0, or
@@ -294,9 +298,11 @@ contains
       allocate (self%e1(3, n - 1), self%l1(n - 1), self%th1(n), self%force(3, n - 1), self%force_node(3, n))
       allocate (self%v1(3, n), self%block(3, 3, -1:1, n - 1), self%mass(0:2, n))
       if (allocated(self%load_node)) deallocate (self%load_node, self%load_block)
-      allocate (self%load_node(3, n), self%load_block(3, 3, 0:1, n - 1))
+      if (allocated(self%skew_block)) deallocate (self%skew_block)
+      allocate (self%load_node(3, n), self%load_block(3, 3, 0:1, n - 1), self%skew_block(3, 3, 0:1, n - 1))
       self%load_node = 0
       self%load_block = 0
+      self%skew_block = 0
       if (allocated(self%loads)) deallocate (self%loads)
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%force_node = 0; self%v1 = 0; self%block = 0
@@ -1158,6 +1164,8 @@ contains
       band0 = jacobian%kl + jacobian%ku + 1
       call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
                                self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self))
+      if (self%skewed) call add_skew_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, &
+                                            self%skew_block, scale, held_a, held_b)
       do c = 1, n - 1
          call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
          call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
@@ -1308,6 +1316,34 @@ contains
       end if
    end subroutine add_position_blocks
 
+   !> The unequal shares of the loads (cable_load cell_skew) in band storage: node c takes +G_c
+   !> and node c + 1 -G_c, so their rows get -dG_c/dR and +dG_c/dR (the residual's sign).
+   pure subroutine add_skew_blocks(n, ld, ncol, ab, band0, skew_block, scale, held_a, held_b)
+      integer, intent(in) :: n, ld, ncol, band0
+      real(dp), intent(inout) :: ab(ld, ncol)
+      real(dp), intent(in) :: skew_block(3, 3, 0:1, n - 1), scale
+      logical, intent(in) :: held_a, held_b
+      integer :: c, side, node, j, k, a, b, row, col
+      do c = 1, n - 1
+         do side = 0, 1
+            node = c + side
+            do j = 0, 1
+               k = c + j
+               if (k == 1 .and. held_a) cycle
+               if (k == n .and. held_b) cycle
+               do a = 1, 3
+                  row = 3*(k - 1) + a
+                  do b = 1, 3
+                     col = 3*(node - 1) + b
+                     ab(band0 + row - col, col) = ab(band0 + row - col, col) &
+                                                  - merge(1.0_dp, -1.0_dp, j == 0)*skew_block(a, b, side, c)*scale
+                  end do
+               end do
+            end do
+         end do
+      end do
+   end subroutine add_skew_blocks
+
    !> Whether the piece has distributed loads.
    pure logical function has_loads(self)
       class(rod3d_piece), intent(in) :: self
@@ -1430,10 +1466,13 @@ contains
       real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3), &
                   xm(3), dx_coef, df_dx(3, 3)
       self%load_node = 0
+      self%skewed = .false.
       if (.not. allocated(self%loads)) return
       if (size(self%loads) == 0) return
       n = self%n
       self%load_block = 0
+      self%skewed = any([(self%loads(i)%load%has_skew(), i=1, size(self%loads))])
+      if (self%skewed) self%skew_block = 0
       do c = 1, n - 1
          r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
          call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
@@ -1450,6 +1489,20 @@ contains
             if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
             self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
             self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
+         end do
+         ! The unequal shares: node c takes +ds g, node c + 1 -ds g.
+         if (.not. self%skewed) cycle
+         do i = 1, size(self%loads)
+            if (.not. self%loads(i)%load%has_skew()) cycle
+            call self%loads(i)%load%cell_skew(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
+            f = self%load_factor*f
+            self%load_node(:, c) = self%load_node(:, c) + self%ds(c)*f
+            self%load_node(:, c + 1) = self%load_node(:, c + 1) - self%ds(c)*f
+            if (.not. with_jacobian) cycle
+            kin = self%ds(c)*dx_coef*df_dx
+            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
+            self%skew_block(:, :, 0, c) = self%skew_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
+            self%skew_block(:, :, 1, c) = self%skew_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
          end do
       end do
    end subroutine apply_loads

@@ -25,6 +25,7 @@ module xcable_model_rod_statics
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
    use xcable_core_strings, only: str
    use xcable_scene_scene, only: scene_type
+   use xcable_loads_load, only: load_slot
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_end_condition, only: end_condition
@@ -219,7 +220,8 @@ contains
             step = min(2*step, 1 - factor)
          end do
          problem%piece%load_factor = 1
-         if (factor < 1) call fatal_error(err, 'statics: no equilibrium found under the distributed loads (fluid): '// &
+         if (factor < 1) call fatal_error(err, 'statics: no equilibrium found under the distributed loads ('// &
+                                         load_names(problem%piece%loads)//'): '// &
                                          'reached '//str(100*factor)//' % of them (the last step: '//why//')', &
                                          stat_numerics)
       end subroutine solve_with_loads
@@ -633,4 +635,15 @@ contains
       end do
    end function sag_below_chord
 
+   !> The loads' names, comma-separated.
+   function load_names(loads) result(text)
+      type(load_slot), intent(in) :: loads(:)
+      character(:), allocatable :: text
+      integer :: i
+      text = ''
+      do i = 1, size(loads)
+         if (i > 1) text = text//', '
+         text = text//loads(i)%load%name()
+      end do
+   end function load_names
 end module xcable_model_rod_statics

@@ -303,6 +303,20 @@ contains
          return
       end if
 
+      ! The seabed: held ends and anchors above it, the water's surface above it where the line is.
+      if (c%seabed_depth > 0) then
+         call above_seabed(c%end_a, 'end_a', error)
+         if (allocated(error)) return
+         call above_seabed(c%end_b, 'end_b', error)
+         if (allocated(error)) return
+         if (c%fluid_density > 0 .and. c%surface_z < -c%seabed_depth) then
+            call fatal_error(error, c%source//': &fluid: surface_z = '//real_text(c%surface_z)//': below the seabed '// &
+                             '(z = '//real_text(-c%seabed_depth)//' at x = y = 0, &seabed depth = '// &
+                             real_text(c%seabed_depth)//'); the water''s level must lie above the bottom', stat_input)
+            return
+         end if
+      end if
+
       held = quoted_words(end_kind_names(held=.true.), ' or ')
       held_a = is_word(c%end_a%kind, end_kind_names(held=.true.))
       held_b = is_word(c%end_b%kind, end_kind_names(held=.true.))
@@ -365,6 +379,22 @@ contains
                           'there is nothing to break; break at a '//held//' end, inside the cable '// &
                           '(0 < s_break < L), or set enabled = .false.', stat_input)
       end if
+
+   contains
+
+      !> A held end or a spring's anchor at or above the seabed (1 mm below it allowed: an anchor
+      !> placed on the bottom, written with rounding).
+      subroutine above_seabed(e, group, error)
+         type(end_config), intent(in) :: e
+         character(*), intent(in) :: group
+         type(error_type), allocatable, intent(out) :: error
+         real(dp) :: bottom
+         if (.not. (is_word(e%kind, end_kind_names(held=.true.)) .or. trim(e%kind) == 'spring')) return
+         bottom = -c%seabed_depth + c%seabed_slope_x*e%x + c%seabed_slope_y*e%y
+         if (e%z < bottom - 1.0e-3_dp) call fatal_error(error, c%source//': &'//group//': z = '//real_text(e%z)// &
+            ': the '//trim(e%kind)//' end is below the seabed (z = '//real_text(bottom)//' there, &seabed depth = '// &
+            real_text(c%seabed_depth)//'); place it on or above the bottom', stat_input)
+      end subroutine above_seabed
    end subroutine check_scene
 
    !> The model against the scene: 3-D data under model = '2d', and what the

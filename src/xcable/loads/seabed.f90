@@ -1,0 +1,314 @@
+!> The seabed (&seabed): a plane z = -depth + slope_x x + slope_y y that pushes
+!> back on the part of a cell below it, with damping and Coulomb friction.
+!>
+!> With n the plane's unit normal (up) and d(r) the depth of a point r below
+!> the plane along n, a straight cell with its ends at x -+ e ds / 2 has the
+!> penetrations d1 = dm + delta and d2 = dm - delta, dm = d(x) and
+!> delta = (ds/2) n.e. Per unstretched length the cell takes
+!>
+!>     contact    N n,  N = k P,  P = mean of max(d, 0) along the straight cell
+!>                (dm where both ends are in, 0 where both are out, (dm + |delta|)^2
+!>                / (4 |delta|) across the bottom: continuous with continuous first
+!>                derivatives, so a node touching down gives no jump),
+!>     damping    -c phi (n.w) n,  phi the fraction of the cell below the plane,
+!>     friction   -N [mu_a g(w_a) + mu_l g(w_l)],  g(v) = v / sqrt(|v|^2 + v_s^2),
+!>                w_a the cell's velocity along the line's direction in the plane,
+!>                w_l the rest of its velocity in the plane,
+!>
+!> with k = stiffness d and c = damping d (MoorDyn's kBot and cBot on the
+!> diameter d), the cell's velocity w and v_s the slip_velocity. In 2-D there is
+!> no lateral direction. The contact and the friction are booked as work in the
+!> ledger, as every load's is. The length on the bottom (the sum of ds phi) is
+!> the load's measure.
+module xcable_loads_seabed
+   use xcable_core_kinds, only: dp
+   use xcable_core_strings, only: quantity
+   use xcable_io_config, only: case_config
+   use xcable_loads_load, only: cable_load
+   implicit none
+   private
+   public :: seabed_load, seabed_from_case
+
+   !> A seabed.
+   type, extends(cable_load) :: seabed_load
+      !> Depth under z = 0 at the origin (m) and slopes dz/dx, dz/dy.
+      real(dp) :: depth = 0, slope_x = 0, slope_y = 0
+      !> Contact stiffness (N/m^2) and damping (N s/m^2) per unstretched length.
+      real(dp) :: stiffness = 0, damping = 0
+      !> Friction coefficients along and across the line; slip speed of the regularisation, m/s.
+      real(dp) :: mu_axial = 0, mu_lateral = 0, slip_velocity = 1.0e-2_dp
+   contains
+      procedure :: name => seabed_name
+      procedure :: cell_force => seabed_cell_force
+      procedure :: has_3d => seabed_has_3d
+      procedure :: cell_force3 => seabed_cell_force3
+      procedure :: has_skew => seabed_has_skew
+      procedure :: cell_skew => seabed_cell_skew
+      procedure :: measure_name => seabed_measure_name
+      procedure :: cell_measure => seabed_cell_measure
+      procedure :: measure_note => seabed_measure_note
+      !> Height of the bottom under a horizontal point (x) or (x, y), m.
+      procedure :: bottom => seabed_bottom
+   end type seabed_load
+
+contains
+
+   !> The seabed of a case (&seabed depth > 0), none otherwise.
+   subroutine seabed_from_case(config, area, load)
+      !> Validated case.
+      type(case_config), intent(in) :: config
+      !> Unstretched cross-section of the cable, m^2 (unused).
+      real(dp), intent(in) :: area
+      !> The seabed, or unallocated.
+      class(cable_load), allocatable, intent(out) :: load
+      if (config%seabed_depth <= 0) return
+      allocate (load, source=seabed_load(depth=config%seabed_depth, slope_x=config%seabed_slope_x, &
+                                         slope_y=config%seabed_slope_y, &
+                                         stiffness=config%seabed_stiffness*config%diameter, &
+                                         damping=config%seabed_damping*config%diameter, mu_axial=config%mu_axial, &
+                                         mu_lateral=config%mu_lateral, slip_velocity=config%slip_velocity))
+   end subroutine seabed_from_case
+
+   pure function seabed_name(self) result(name)
+      class(seabed_load), intent(in) :: self
+      character(:), allocatable :: name
+      name = 'seabed'
+   end function seabed_name
+
+   pure logical function seabed_has_3d(self)
+      class(seabed_load), intent(in) :: self
+      seabed_has_3d = .true.
+   end function seabed_has_3d
+
+   pure real(dp) function seabed_bottom(self, p)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: p(:)
+      seabed_bottom = -self%depth + self%slope_x*p(1)
+      if (size(p) >= 2) seabed_bottom = seabed_bottom + self%slope_y*p(2)
+   end function seabed_bottom
+
+   !> The plane's unit normal (up) in dimension nd (2: x, z; 3: x, y, z) and the depth of the
+   !> origin's projection: d(r) = offset - n.r.
+   pure subroutine plane(self, nd, n, offset)
+      class(seabed_load), intent(in) :: self
+      integer, intent(in) :: nd
+      real(dp), intent(out) :: n(nd), offset
+      real(dp) :: nu
+      if (nd == 2) then
+         nu = sqrt(1 + self%slope_x**2)
+         n = [-self%slope_x, 1.0_dp]/nu
+      else
+         nu = sqrt(1 + self%slope_x**2 + self%slope_y**2)
+         n = [-self%slope_x, -self%slope_y, 1.0_dp]/nu
+      end if
+      offset = -self%depth/nu
+   end subroutine plane
+
+   !> Mean penetration P and contact fraction phi of a straight cell with its ends' penetrations
+   !> dm + delta and dm - delta, and their derivatives with respect to dm and delta.
+   pure subroutine penetration(dm, delta, p, dp_dm, dp_dd, phi, dphi_dm, dphi_dd)
+      real(dp), intent(in) :: dm, delta
+      real(dp), intent(out) :: p, dp_dm, dp_dd, phi, dphi_dm, dphi_dd
+      real(dp) :: a, s
+      a = abs(delta)
+      s = sign(1.0_dp, delta)
+      dp_dd = 0
+      dphi_dm = 0
+      dphi_dd = 0
+      if (dm >= a) then
+         p = dm
+         dp_dm = 1
+         phi = 1
+         if (dm == 0) phi = 0.5_dp
+      else if (dm <= -a) then
+         p = 0
+         dp_dm = 0
+         phi = 0
+      else
+         p = (dm + a)**2/(4*a)
+         dp_dm = (dm + a)/(2*a)
+         dp_dd = s*(dp_dm - p/a)
+         phi = (dm + a)/(2*a)
+         dphi_dm = 1/(2*a)
+         dphi_dd = s*(1/(2*a) - phi/a)
+      end if
+   end subroutine penetration
+
+   pure logical function seabed_has_skew(self)
+      class(seabed_load), intent(in) :: self
+      seabed_has_skew = .true.
+   end function seabed_has_skew
+
+   !> The contact's consistent shares: node a (the cell's first end) takes ds int_0^1 (1 - xi)
+   !> k max(d, 0) n dxi, node b ds int xi k max(d, 0) n dxi, the gradient of the cell's contact
+   !> energy ds k int max(d, 0)^2 / 2. So g = k Q n / 2, Q = int_0^1 (1 - 2 xi) max(d(xi), 0) dxi
+   !> (delta / 3 with the whole cell in contact). Without it nodes moving alternately up and down
+   !> would leave every cell's mean penetration, and so the contact, unchanged.
+   pure subroutine seabed_cell_skew(self, x, ds, e, w, a, g, dg_dx, dg_de, dg_dw, dg_da)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: x(:), ds, e(:), w(:), a(:)
+      real(dp), intent(out) :: g(:), dg_dx(:, :), dg_de(:, :), dg_dw(:, :), dg_da(:, :)
+      real(dp) :: n(size(e)), offset, dm, delta, q, dq_dm, dq_dd, ad, u0, s
+      integer :: i, j
+      dg_dw = 0
+      dg_da = 0
+      call plane(self, size(e), n, offset)
+      dm = offset - dot_product(n, x)
+      delta = 0.5_dp*ds*dot_product(n, e)
+      ad = abs(delta)
+      s = sign(1.0_dp, delta)
+      if (dm >= ad) then
+         q = delta/3
+         dq_dm = 0
+         dq_dd = 1.0_dp/3
+      else if (dm <= -ad) then
+         q = 0
+         dq_dm = 0
+         dq_dd = 0
+      else
+         ! Q = s Q+(dm, |delta|), Q+ = [dm (1 - u0^2) / 2 + |delta| (1 - u0^3) / 3] / 2, u0 = -dm / |delta|.
+         u0 = -dm/ad
+         q = s*0.5_dp*(dm*(1 - u0*u0)/2 + ad*(1 - u0**3)/3)
+         dq_dm = s*(1 - u0*u0)/4
+         dq_dd = (1 - u0**3)/6
+      end if
+      g = 0.5_dp*self%stiffness*q*n
+      do j = 1, size(e)
+         do i = 1, size(e)
+            dg_dx(i, j) = -0.5_dp*self%stiffness*dq_dm*n(i)*n(j)
+            dg_de(i, j) = 0.25_dp*ds*self%stiffness*dq_dd*n(i)*n(j)
+         end do
+      end do
+   end subroutine seabed_cell_skew
+
+   !> Planar form (x, z).
+   pure subroutine seabed_cell_force(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: x(2), ds, e(2), w(2), a(2)
+      real(dp), intent(out) :: f(2), df_dx(2, 2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
+      call contact_force(self, x, ds, e, w, f, df_dx, df_de, df_dw)
+      df_da = 0
+   end subroutine seabed_cell_force
+
+   !> 3-D form (x, y, z).
+   pure subroutine seabed_cell_force3(self, x, ds, e, w, a, f, df_dx, df_de, df_dw, df_da)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: x(3), ds, e(3), w(3), a(3)
+      real(dp), intent(out) :: f(3), df_dx(3, 3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
+      call contact_force(self, x, ds, e, w, f, df_dx, df_de, df_dw)
+      df_da = 0
+   end subroutine seabed_cell_force3
+
+   !> Contact, damping and friction per unstretched length, any dimension.
+   pure subroutine contact_force(self, x, ds, e, w, f, df_dx, df_de, df_dw)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: x(:), ds, e(:), w(:)
+      real(dp), intent(out) :: f(:), df_dx(:, :), df_de(:, :), df_dw(:, :)
+      integer :: nd, i
+      real(dp), dimension(size(e)) :: n, pe, ax, wa, wl, ga, gl, fric, dn_dx, dn_de
+      real(dp), dimension(size(e), size(e)) :: pn, aa, gam, gml, dax_de, turn, eye
+      real(dp) :: offset, dm, delta, p, dp_dm, dp_dd, phi, dphi_dm, dphi_dd, force, vn, lpe
+      nd = size(e)
+      f = 0
+      df_dx = 0
+      df_de = 0
+      df_dw = 0
+      call plane(self, nd, n, offset)
+      dm = offset - dot_product(n, x)
+      delta = 0.5_dp*ds*dot_product(n, e)
+      call penetration(dm, delta, p, dp_dm, dp_dd, phi, dphi_dm, dphi_dd)
+      if (p <= 0 .and. phi <= 0) return
+      eye = 0
+      do i = 1, nd
+         eye(i, i) = 1
+      end do
+      ! Contact N n, N = k P: dN/dx = -k dP/ddm n, dN/de = k dP/ddelta ds/2 n.
+      force = self%stiffness*p
+      dn_dx = -self%stiffness*dp_dm*n
+      dn_de = 0.5_dp*ds*self%stiffness*dp_dd*n
+      f = force*n
+      df_dx = outer(n, dn_dx)
+      df_de = outer(n, dn_de)
+      ! Damping -c phi (n.w) n.
+      vn = dot_product(n, w)
+      f = f - self%damping*phi*vn*n
+      df_dw = -self%damping*phi*outer(n, n)
+      df_dx = df_dx + self%damping*vn*dphi_dm*outer(n, n)
+      df_de = df_de - 0.5_dp*ds*self%damping*vn*dphi_dd*outer(n, n)
+      if (self%mu_axial == 0 .and. self%mu_lateral == 0) return
+      ! Friction -N [mu_a g(w_a) + mu_l g(w_l)] in the plane.
+      pn = eye - outer(n, n)
+      pe = matmul(pn, e)
+      lpe = norm2(pe)
+      if (lpe > 1.0e-12_dp*norm2(e)) then
+         ax = pe/lpe
+      else
+         ax = 0
+      end if
+      aa = outer(ax, ax)
+      wa = dot_product(ax, w)*ax
+      wl = matmul(pn, w) - wa
+      call regularised(wa, self%slip_velocity, ga, gam)
+      call regularised(wl, self%slip_velocity, gl, gml)
+      fric = -(self%mu_axial*ga + self%mu_lateral*gl)
+      f = f + force*fric
+      df_dx = df_dx + outer(fric, dn_dx)
+      df_de = df_de + outer(fric, dn_de)
+      df_dw = df_dw - force*(self%mu_axial*matmul(gam, aa) + self%mu_lateral*matmul(gml, pn - aa))
+      if (lpe > 1.0e-12_dp*norm2(e)) then
+         ! w_a = (a.w) a: dw_a/da = (a.w) I + a w^T, da/de = (I - a a^T) P_n / |P_n e|; w_l = P_n w - w_a.
+         turn = dot_product(ax, w)*eye + outer(ax, w)
+         dax_de = matmul(eye - aa, pn)/lpe
+         df_de = df_de - force*matmul(self%mu_axial*gam - self%mu_lateral*gml, matmul(turn, dax_de))
+      end if
+   end subroutine contact_force
+
+   !> g(v) = v / sqrt(|v|^2 + vs^2) and dg/dv.
+   pure subroutine regularised(v, vs, g, dg)
+      real(dp), intent(in) :: v(:), vs
+      real(dp), intent(out) :: g(:), dg(:, :)
+      real(dp) :: r
+      integer :: i
+      r = sqrt(dot_product(v, v) + vs*vs)
+      g = v/r
+      dg = -outer(v, v)/r**3
+      do i = 1, size(v)
+         dg(i, i) = dg(i, i) + 1/r
+      end do
+   end subroutine regularised
+
+   pure function outer(a, b) result(m)
+      real(dp), intent(in) :: a(:), b(:)
+      real(dp) :: m(size(a), size(b))
+      integer :: j
+      do j = 1, size(b)
+         m(:, j) = a*b(j)
+      end do
+   end function outer
+
+   pure function seabed_measure_name(self) result(name)
+      class(seabed_load), intent(in) :: self
+      character(:), allocatable :: name
+      name = 'grounded_length'
+   end function seabed_measure_name
+
+   !> The unstretched length of the cell below the bottom, ds phi, m.
+   pure real(dp) function seabed_cell_measure(self, r1, r2, ds)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: r1(:), r2(:), ds
+      real(dp) :: n(size(r1)), offset, p, d1, d2, phi, d3, d4
+      call plane(self, size(r1), n, offset)
+      call penetration(offset - 0.5_dp*dot_product(n, r1 + r2), 0.5_dp*dot_product(n, r2 - r1), p, d1, d2, phi, d3, d4)
+      seabed_cell_measure = ds*phi
+   end function seabed_cell_measure
+
+   !> Says how much of the line lies on the bottom at the start.
+   function seabed_measure_note(self, value, length) result(text)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: value, length
+      character(:), allocatable :: text
+      text = ''
+      if (value > 0) text = 'the line lies on the seabed at the start: grounded length '//quantity(value, 'm')// &
+                            ' of '//quantity(length, 'm')
+   end function seabed_measure_note
+end module xcable_loads_seabed

@@ -1,0 +1,290 @@
+!> The seabed (&seabed): the contact, damping and friction force of a cell and
+!> its unequal shares against central differences, in 2-D and 3-D, for cells
+!> lying on the bottom, crossing it at several angles and clear of it; an
+!> elastic catenary resting partly on a frictionless bottom against its closed
+!> form; and the energy ledger of a line dropped onto the bottom, with and
+!> without friction.
+module suite_seabed
+   use xcable_core_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check
+   use xcable_core_strings, only: str
+   use xcable_io_input, only: read_config
+   use xcable_io_config, only: case_config
+   use xcable_loads_seabed, only: seabed_load
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_records, only: run_observer, static_info
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   implicit none
+   private
+   public :: collect_seabed
+
+   real(dp), parameter :: pi = acos(-1.0_dp), g = 9.81_dp
+   character(len=*), parameter :: path = 'build/test_seabed.nml'
+
+   !> Keeps the static state's heights and end tensions.
+   type, extends(run_observer) :: static_keeper
+      real(dp) :: tension(2) = 0
+      real(dp), allocatable :: s(:), x(:), z(:)
+   contains
+      procedure :: static => keep_static
+      procedure :: snapshot => skip_snapshot
+   end type static_keeper
+
+contains
+
+   subroutine collect_seabed(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('contact_and_friction_derivatives', test_derivatives), &
+               new_unittest('catenary_on_a_frictionless_bottom', test_catenary), &
+               new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger)]
+   end subroutine collect_seabed
+
+   subroutine keep_static(self, info, error)
+      class(static_keeper), intent(inout) :: self
+      type(static_info), intent(in) :: info
+      type(error_type), allocatable, intent(out) :: error
+      self%tension = [info%tension_a, info%tension_b]
+      self%s = info%s
+      self%x = info%fields(:, 6)
+      self%z = info%fields(:, 7)
+   end subroutine keep_static
+
+   subroutine skip_snapshot(self, t, fields, error)
+      class(static_keeper), intent(inout) :: self
+      real(dp), intent(in) :: t
+      real(dp), intent(in) :: fields(:, :)
+      type(error_type), allocatable, intent(out) :: error
+   end subroutine skip_snapshot
+
+   !> Run a case given as namelist text.
+   subroutine run_text(text, sim, obs, error)
+      character(*), intent(in) :: text
+      type(simulation), intent(inout) :: sim
+      type(static_keeper), intent(inout) :: obs
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      integer :: unit
+      open (newunit=unit, file=path, status='replace', action='write')
+      write (unit, '(a)') text
+      close (unit)
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call sim%prepare(config, error)
+      if (allocated(error)) return
+      call sim%run(obs, error)
+   end subroutine run_text
+
+   !> A sloping bottom (slopes 0.1 along x, -0.05 along y), contact stiffness, damping and
+   !> friction along and across the line: the force per unstretched length and its unequal
+   !> share, df/dx, df/de, df/dw (and the same of g) against central differences, for cells at
+   !> angles from 0 (lying on the bottom) to 90 degrees to it and at heights from in to out of
+   !> it, moving in the bottom's plane and into it.
+   subroutine test_derivatives(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: angles(6) = [0.0_dp, 3.0_dp, 20.0_dp, 45.0_dp, 90.0_dp, 160.0_dp]
+      real(dp), parameter :: heights(6) = [-0.02_dp, -0.003_dp, 0.0_dp, 0.004_dp, 0.05_dp, 0.4_dp]
+      real(dp), parameter :: ds = 0.5_dp, h = 1.0e-7_dp, azimuth = 25*pi/180
+      type(seabed_load) :: bed
+      real(dp) :: worst(2), al, x3(3), e3(3), w3(3), x2(2), e2(2), w2(2), base
+      integer :: i, j, touching
+      bed = seabed_load(depth=30, slope_x=0.1_dp, slope_y=-0.05_dp, stiffness=2.0e5_dp, damping=3.0e3_dp, &
+                        mu_axial=0.6_dp, mu_lateral=0.9_dp, slip_velocity=0.05_dp)
+      worst = 0
+      touching = 0
+      do i = 1, size(angles)
+         al = angles(i)*pi/180
+         do j = 1, size(heights)
+            ! The cell's middle at (2, -1.5) (3-D) or x = 2 (2-D), heights(j) above the bottom there.
+            base = bed%bottom([2.0_dp, -1.5_dp])
+            x3 = [2.0_dp, -1.5_dp, base + heights(j)]
+            e3 = 1.02_dp*[cos(al)*cos(azimuth), cos(al)*sin(azimuth), sin(al)] + [0.0_dp, 0.0_dp, 0.1_dp*cos(al)]
+            w3 = [0.3_dp, -0.2_dp, -0.05_dp]
+            worst(2) = max(worst(2), off(x3, e3, w3))
+            x2 = [2.0_dp, bed%bottom([2.0_dp]) + heights(j)]
+            e2 = 1.02_dp*[cos(al), sin(al)] + [0.0_dp, 0.1_dp*cos(al)]
+            w2 = [0.3_dp, -0.05_dp]
+            worst(1) = max(worst(1), off(x2, e2, w2))
+         end do
+      end do
+      write (output_unit, '(4x,a,2es9.2,a,i0,a)') 'seabed force and shares: largest |analytic - central difference| '// &
+         '/ (1 + |f| + the largest derivative), 2-D and 3-D', worst, ' (', touching, ' cells touching)'
+      call check(error, touching > 20, 'too few cells touched the bottom: '//str(touching))
+      if (allocated(error)) return
+      call check(error, maxval(worst) < 3.0e-8_dp, 'the seabed''s derivatives are off by '//str(worst(1))//' (2-D), '// &
+                 str(worst(2))//' (3-D)')
+
+   contains
+
+      !> Largest deviation of f's and g's derivatives in x, e and w.
+      real(dp) function off(x, e, w) result(dev)
+         real(dp), intent(in) :: x(:), e(:), w(:)
+         real(dp), dimension(size(x)) :: f, gg, fp, fm, gp, gm, u, a
+         real(dp), dimension(size(x), size(x)) :: fx, fe, fw, gx, ge, gw, q1, q2, q3, q4, q5, q6
+         integer :: k, v, m
+         m = size(x)
+         a = 0
+         call force(x, e, w, f, gg, fx, fe, fw, gx, ge, gw)
+         if (norm2(f) > 0) touching = touching + 1
+         dev = 0
+         do v = 1, 3
+            do k = 1, m
+               u = 0
+               u(k) = h
+               select case (v)
+               case (1)
+                  call force(x + u, e, w, fp, gp, q1, q2, q3, q4, q5, q6)
+                  call force(x - u, e, w, fm, gm, q1, q2, q3, q4, q5, q6)
+                  dev = max(dev, maxval(abs((fp - fm)/(2*h) - fx(:, k))), maxval(abs((gp - gm)/(2*h) - gx(:, k))))
+               case (2)
+                  call force(x, e + u, w, fp, gp, q1, q2, q3, q4, q5, q6)
+                  call force(x, e - u, w, fm, gm, q1, q2, q3, q4, q5, q6)
+                  dev = max(dev, maxval(abs((fp - fm)/(2*h) - fe(:, k))), maxval(abs((gp - gm)/(2*h) - ge(:, k))))
+               case (3)
+                  call force(x, e, w + u, fp, gp, q1, q2, q3, q4, q5, q6)
+                  call force(x, e, w - u, fm, gm, q1, q2, q3, q4, q5, q6)
+                  dev = max(dev, maxval(abs((fp - fm)/(2*h) - fw(:, k))), maxval(abs((gp - gm)/(2*h) - gw(:, k))))
+               end select
+            end do
+         end do
+         ! Relative to the largest derivative (a stiff contact's derivatives are much larger than
+         ! its force, and central differences err by a fraction of them).
+         dev = dev/(1 + norm2(f) + max(maxval(abs(fx)), maxval(abs(fe)), maxval(abs(fw)), maxval(abs(gx)), &
+                                       maxval(abs(ge))))
+      end function off
+
+      subroutine force(x, e, w, f, gg, fx, fe, fw, gx, ge, gw)
+         real(dp), intent(in) :: x(:), e(:), w(:)
+         real(dp), intent(out) :: f(:), gg(:), fx(:, :), fe(:, :), fw(:, :), gx(:, :), ge(:, :), gw(:, :)
+         real(dp) :: a(size(x)), fa(size(x), size(x)), ga(size(x), size(x))
+         a = 0
+         if (size(x) == 2) then
+            call bed%cell_force(x, ds, e, w, a, f, fx, fe, fw, fa)
+         else
+            call bed%cell_force3(x, ds, e, w, a, f, fx, fe, fw, fa)
+         end if
+         call bed%cell_skew(x, ds, e, w, a, gg, gx, ge, gw, ga)
+      end subroutine force
+   end subroutine test_derivatives
+
+   !> A 100 m line (d 0.1 m, 2000 kg/m^3, EA 1e8 N, in sea water) from an anchor on a flat,
+   !> frictionless bottom 40 m down to a fairlead 80 m away at z = 0: the elastic catenary with
+   !> a grounded part. Closed form (solved here by Newton): with H the horizontal tension, L_b the
+   !> grounded length, L_s = L - L_b and V = w L_s,
+   !>   X = L_b (1 + H/EA) + (H/w) asinh(V/H) + H L_s/EA,
+   !>   Z = (H/w) (sqrt(1 + (V/H)^2) - 1) + w L_s^2/(2 EA);
+   !> anchor tension H, fairlead tension sqrt(H^2 + V^2). Stiffness 1e10 Pa (the line sinks
+   !> w/k = 7.5e-8 m into the bottom), 1601 nodes. The touchdown, from the static shape: the
+   !> square root of the height of the first two nodes off the bottom is linear in the arc
+   !> length (z = (s - s_t)^2 / (2 R) near it), extrapolated to 0.
+   subroutine test_catenary(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: length = 100, span = 80, drop = 40, ea = 1.0e8_dp
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      real(dp) :: w, hh, lb, touch, errs(3), z1, z2, flat
+      integer :: k
+      w = (2000 - 1025)*0.25_dp*pi*0.1_dp**2*g
+      call closed_form(hh, lb)
+      call run_text("&cable length = 100, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
+                    "&material law = 'linear', ea = 1e8 /"//new_line('a')// &
+                    "&fluid density = 1025, surface_z = 10 /"//new_line('a')// &
+                    "&seabed depth = 40, stiffness = 1e10 /"//new_line('a')// &
+                    "&end_a kind = 'fixed', x = 0, z = -40 /"//new_line('a')// &
+                    "&end_b kind = 'fixed', x = 80, z = 0 /"//new_line('a')// &
+                    "&rupture enabled = .false. /"//new_line('a')// &
+                    "&numerics nodes = 1601, dt = 1e-3, t_end = 1e-3, newton_tol = 1e-12 /"//new_line('a')// &
+                    "&output interval = 0, quiet = .true. /", sim, obs, error)
+      if (allocated(error)) return
+      ! The first node more than 1e-6 m off the bottom, and the next.
+      do k = 2, size(obs%z) - 1
+         if (obs%z(k) + drop > 1.0e-6_dp) exit
+      end do
+      z1 = sqrt(obs%z(k) + drop)
+      z2 = sqrt(obs%z(k + 1) + drop)
+      touch = obs%s(k) - z1*(obs%s(k + 1) - obs%s(k))/(z2 - z1)
+      ! The grounded nodes (clear of the anchor and the touchdown) lie flat at the sink w/k: with
+      ! equal shares of each cell's contact they would zigzag (a mode no cell's mean sees).
+      flat = maxval(abs(obs%z(3:k - 3) + drop + w/(1.0e10_dp*0.1_dp)))
+      errs = [abs(obs%tension(1) - hh)/hh, abs(obs%tension(2) - hypot(hh, w*(length - lb)))/hypot(hh, w*(length - lb)), &
+              abs(touch - lb)/lb]
+      write (output_unit, '(4x,a,3f12.5,a,3es9.2,a,es9.2,a)') 'catenary on the bottom: anchor tension, fairlead '// &
+         'tension, touchdown', obs%tension(1), obs%tension(2), touch, '; relative errors', errs, &
+         '; grounded nodes off the sink by up to', flat, ' m'
+      call check(error, flat < 2.0e-8_dp, 'the grounded part is not flat: '//str(flat)//' m')
+      if (allocated(error)) return
+      call check(error, errs(1) < 2.0e-6_dp .and. errs(2) < 2.0e-6_dp .and. errs(3) < 1.0e-4_dp, &
+                 'the catenary on the bottom is off its closed form: '//str(errs(1))//', '//str(errs(2))//', '// &
+                 str(errs(3)))
+
+   contains
+
+      subroutine closed_form(hh, lb)
+         real(dp), intent(out) :: hh, lb
+         real(dp) :: v(2), r(2), jac(2, 2), dv(2), rp(2), rm(2), det
+         integer :: it, j
+         v = [1800.0_dp, 40.0_dp]
+         do it = 1, 60
+            r = residual(v)
+            do j = 1, 2
+               dv = 0
+               dv(j) = 1.0e-6_dp*max(1.0_dp, abs(v(j)))
+               rp = residual(v + dv)
+               rm = residual(v - dv)
+               jac(:, j) = (rp - rm)/(2*dv(j))
+            end do
+            det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+            v = v - [jac(2, 2)*r(1) - jac(1, 2)*r(2), -jac(2, 1)*r(1) + jac(1, 1)*r(2)]/det
+         end do
+         hh = v(1)
+         lb = v(2)
+      end subroutine closed_form
+
+      function residual(v) result(r)
+         real(dp), intent(in) :: v(2)
+         real(dp) :: r(2), ls, vv
+         ls = length - v(2)
+         vv = w*ls
+         r(1) = v(2)*(1 + v(1)/ea) + v(1)/w*asinh(vv/v(1)) + v(1)*ls/ea - span
+         r(2) = v(1)/w*(sqrt(1 + (vv/v(1))**2) - 1) + w*ls**2/(2*ea) - drop
+      end function residual
+   end subroutine test_catenary
+
+   !> A 30 m line held at one end 2 m above a bottom sloping along x, its other end free,
+   !> released from a straight horizontal state so that it falls onto the bottom and slides;
+   !> no fluid drag. The energy ledger closes to the Newton tolerance without friction and with
+   !> it, and friction's work is negative and grows (it only takes energy).
+   subroutine test_ledger(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: mu(2) = ['0.0', '0.6']
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      real(dp) :: drift(2), work(2), grounded(2)
+      integer :: i, n
+      do i = 1, 2
+         call run_text("&cable length = 30, diameter = 0.05, density = 2000, bending_stiffness = 10 /"// &
+                       new_line('a')//"&material law = 'linear', ea = 1e6 /"//new_line('a')// &
+                       "&seabed depth = 2, slope_x = -0.05, stiffness = 1e7, mu_axial = "//mu(i)// &
+                       ", mu_lateral = "//mu(i)//" /"//new_line('a')// &
+                       "&end_a kind = 'fixed', x = 0, z = 0 /"//new_line('a')// &
+                       "&end_b kind = 'force', force_x = 2000, force_z = 0, history = 'ramp', ramp_time = 0.2 /"// &
+                       new_line('a')//"&rupture enabled = .false. /"//new_line('a')// &
+                       "&numerics nodes = 61, dt = 0.002, t_end = 2, newton_tol = 1e-12 /"//new_line('a')// &
+                       "&output interval = 0, quiet = .true., energy = .true. /", sim, obs, error)
+         if (allocated(error)) return
+         associate (hist => sim%rod%history)
+            n = hist%n
+            drift(i) = maxval(abs(hist%energy(7, 0:n) - hist%energy(7, 0)))/maxval(abs(hist%energy(1:6, 0:n)))
+            work(i) = hist%energy(8, n)
+            grounded(i) = hist%measures(1, n)
+         end associate
+         write (output_unit, '(4x,a,a,a,es9.2,a,f10.3,a,f7.3,a)') 'line dropped on the bottom, mu ', mu(i), &
+            ': ledger drift', drift(i), ' of the largest term; the bottom''s work', work(i), ' J; grounded', &
+            grounded(i), ' m at the end'
+      end do
+      call check(error, maxval(drift) < 1.0e-12_dp, 'the ledger of the dropped line drifts by '//str(maxval(drift)))
+      if (allocated(error)) return
+      call check(error, minval(grounded) > 5, 'the line did not reach the bottom')
+      if (allocated(error)) return
+      call check(error, work(2) < work(1), 'friction did not take energy: '//str(work(1))//', '//str(work(2))//' J')
+   end subroutine test_ledger
+end module suite_seabed

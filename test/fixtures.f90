@@ -7,9 +7,12 @@ module xcable_fixtures
    use xcable_box_equations, only: cable_model
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options
+   use xcable_io_input, only: read_config
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_records, only: run_observer
    implicit none
    private
-   public :: paper_case, write_text, pushing_rope
+   public :: paper_case, write_text, pushing_rope, run_text
 
 contains
 
@@ -58,4 +61,21 @@ contains
       case_text = text
       if (index(text, '&material') == 0) case_text = "&material compression = 'law' /"//new_line('a')//text
    end function pushing_rope
+   !> Write a case given as namelist text to path, read it, prepare and run it.
+   subroutine run_text(path, text, sim, obs, error)
+      !> Where the namelist is written; its text.
+      character(*), intent(in) :: path, text
+      !> The simulation and what receives its results.
+      type(simulation), intent(inout) :: sim
+      class(run_observer), intent(inout) :: obs
+      !> Error of reading, preparing or running.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: config
+      call write_text(path, text//new_line('a'))
+      call read_config(path, config, error)
+      if (allocated(error)) return
+      call sim%prepare(config, error)
+      if (allocated(error)) return
+      call sim%run(obs, error)
+   end subroutine run_text
 end module xcable_fixtures

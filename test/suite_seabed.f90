@@ -8,10 +8,9 @@ module suite_seabed
    use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_core_strings, only: str
-   use xcable_io_input, only: read_config
-   use xcable_io_config, only: case_config
    use xcable_loads_seabed, only: seabed_load
    use xcable_driver_simulation, only: simulation
+   use xcable_fixtures, only: run_text
    use xcable_driver_records, only: run_observer, static_info
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -55,24 +54,6 @@ contains
       real(dp), intent(in) :: fields(:, :)
       type(error_type), allocatable, intent(out) :: error
    end subroutine skip_snapshot
-
-   !> Run a case given as namelist text.
-   subroutine run_text(text, sim, obs, error)
-      character(*), intent(in) :: text
-      type(simulation), intent(inout) :: sim
-      type(static_keeper), intent(inout) :: obs
-      type(error_type), allocatable, intent(out) :: error
-      type(case_config) :: config
-      integer :: unit
-      open (newunit=unit, file=path, status='replace', action='write')
-      write (unit, '(a)') text
-      close (unit)
-      call read_config(path, config, error)
-      if (allocated(error)) return
-      call sim%prepare(config, error)
-      if (allocated(error)) return
-      call sim%run(obs, error)
-   end subroutine run_text
 
    !> A sloping bottom (slopes 0.1 along x, -0.05 along y), contact stiffness, damping and
    !> friction along and across the line: the force per unstretched length and its unequal
@@ -185,7 +166,7 @@ contains
       integer :: k
       w = (2000 - 1025)*0.25_dp*pi*0.1_dp**2*g
       call closed_form(hh, lb)
-      call run_text("&cable length = 100, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
+      call run_text(path, "&cable length = 100, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
                     "&material law = 'linear', ea = 1e8 /"//new_line('a')// &
                     "&fluid density = 1025, surface_z = 10 /"//new_line('a')// &
                     "&seabed depth = 40, stiffness = 1e10 /"//new_line('a')// &
@@ -261,7 +242,7 @@ contains
       real(dp) :: drift(2), work(2), grounded(2)
       integer :: i, n
       do i = 1, 2
-         call run_text("&cable length = 30, diameter = 0.05, density = 2000, bending_stiffness = 10 /"// &
+         call run_text(path, "&cable length = 30, diameter = 0.05, density = 2000, bending_stiffness = 10 /"// &
                        new_line('a')//"&material law = 'linear', ea = 1e6 /"//new_line('a')// &
                        "&seabed depth = 2, slope_x = -0.05, stiffness = 1e7, mu_axial = "//mu(i)// &
                        ", mu_lateral = "//mu(i)//" /"//new_line('a')// &

@@ -10,11 +10,10 @@ module suite_surface
    use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_core_strings, only: str
-   use xcable_io_input, only: read_config
-   use xcable_io_config, only: case_config
    use xcable_loads_fluid, only: fluid_load
    use xcable_loads_surface, only: water_surface
    use xcable_driver_simulation, only: simulation
+   use xcable_fixtures, only: run_text
    use xcable_driver_records, only: run_observer, static_info
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -74,24 +73,6 @@ contains
       call move_alloc(tt, self%t)
       call move_alloc(zz, self%z)
    end subroutine keep_snapshot
-
-   !> Run a case given as namelist text.
-   subroutine run_text(text, sim, obs, error)
-      character(*), intent(in) :: text
-      type(simulation), intent(inout) :: sim
-      type(tension_keeper), intent(inout) :: obs
-      type(error_type), allocatable, intent(out) :: error
-      type(case_config) :: config
-      integer :: unit
-      open (newunit=unit, file=path, status='replace', action='write')
-      write (unit, '(a)') text
-      close (unit)
-      call read_config(path, config, error)
-      if (allocated(error)) return
-      call sim%prepare(config, error)
-      if (allocated(error)) return
-      call sim%run(obs, error)
-   end subroutine run_text
 
    !> Where no end lies in the band, the fraction is the exact fraction of the straight cell
    !> under the level (to round-off), at any angle and with either end up; with band 0 it is so
@@ -180,12 +161,12 @@ contains
             e2 = 1.01_dp*[cos(al), sin(al)]
             w2 = [0.3_dp, -0.45_dp]
             a2 = [-0.8_dp, 0.6_dp]
-            worst2 = max(worst2, off2(x2, e2, w2, a2))
+            worst2 = max(worst2, off(x2, e2, w2, a2))
             x3 = [1.7_dp, -0.4_dp, heights(j)]
             e3 = 1.01_dp*[cos(al)*cos(azimuth), cos(al)*sin(azimuth), sin(al)]
             w3 = [0.3_dp, 0.2_dp, -0.45_dp]
             a3 = [-0.8_dp, 0.1_dp, 0.6_dp]
-            worst3 = max(worst3, off3(x3, e3, w3, a3))
+            worst3 = max(worst3, off(x3, e3, w3, a3))
          end do
       end do
       write (output_unit, '(4x,a,2es9.2)') 'fluid force across the surface, 2-D and 3-D: largest |analytic - '// &
@@ -197,73 +178,65 @@ contains
 
    contains
 
-      real(dp) function off2(x, e, w, a) result(worst)
-         real(dp), intent(in) :: x(2), e(2), w(2), a(2)
-         real(dp) :: f0(2), dx(2, 2), de(2, 2), dw(2, 2), da(2, 2), fp(2), fm(2), d(2, 2, 4), u(2), phi, p1, p2
-         integer :: k, v
-         call f%cell_force(x, ds, e, w, a, f0, dx, de, dw, da)
-         call f%wetted(x(2), ds, e(2), phi, p1, p2)
+      !> The largest deviation of df/dx, df/de, df/dw, df/da (2-D or 3-D by the size of x) over
+      !> 1 + |f|; counts the cells that cross the surface.
+      real(dp) function off(x, e, w, a) result(worst)
+         real(dp), intent(in) :: x(:), e(:), w(:), a(:)
+         real(dp), dimension(size(x)) :: f0, fp, fm, u
+         real(dp), dimension(size(x), size(x)) :: dx, de, dw, da, d
+         real(dp) :: phi, p1, p2
+         integer :: k, v, m
+         m = size(x)
+         call force(x, e, w, a, f0, dx, de, dw, da)
+         call f%wetted(x(m), ds, e(m), phi, p1, p2)
          if (phi > 0 .and. phi < 1) crossed = crossed + 1
          worst = 0
          do v = 1, 4
-            do k = 1, 2
+            do k = 1, m
                u = 0
                u(k) = h
                select case (v)
                case (1)
-                  fp = force2(x + u, e, w, a); fm = force2(x - u, e, w, a)
+                  fp = value(x + u, e, w, a); fm = value(x - u, e, w, a)
                case (2)
-                  fp = force2(x, e + u, w, a); fm = force2(x, e - u, w, a)
+                  fp = value(x, e + u, w, a); fm = value(x, e - u, w, a)
                case (3)
-                  fp = force2(x, e, w + u, a); fm = force2(x, e, w - u, a)
+                  fp = value(x, e, w + u, a); fm = value(x, e, w - u, a)
                case (4)
-                  fp = force2(x, e, w, a + u); fm = force2(x, e, w, a - u)
+                  fp = value(x, e, w, a + u); fm = value(x, e, w, a - u)
                end select
-               d(:, k, v) = (fp - fm)/(2*h)
+               d(:, k) = (fp - fm)/(2*h)
             end do
+            select case (v)
+            case (1)
+               worst = max(worst, maxval(abs(d - dx)))
+            case (2)
+               worst = max(worst, maxval(abs(d - de)))
+            case (3)
+               worst = max(worst, maxval(abs(d - dw)))
+            case (4)
+               worst = max(worst, maxval(abs(d - da)))
+            end select
          end do
-         worst = max(maxval(abs(d(:, :, 1) - dx)), maxval(abs(d(:, :, 2) - de)), maxval(abs(d(:, :, 3) - dw)), &
-                     maxval(abs(d(:, :, 4) - da)))/(1 + norm2(f0))
-      end function off2
+         worst = worst/(1 + norm2(f0))
+      end function off
 
-      function force2(x, e, w, a) result(ff)
-         real(dp), intent(in) :: x(2), e(2), w(2), a(2)
-         real(dp) :: ff(2), d0(2, 2), d1(2, 2), d2(2, 2), d3(2, 2)
-         call f%cell_force(x, ds, e, w, a, ff, d0, d1, d2, d3)
-      end function force2
+      subroutine force(x, e, w, a, ff, dx, de, dw, da)
+         real(dp), intent(in) :: x(:), e(:), w(:), a(:)
+         real(dp), intent(out) :: ff(:), dx(:, :), de(:, :), dw(:, :), da(:, :)
+         if (size(x) == 2) then
+            call f%cell_force(x, ds, e, w, a, ff, dx, de, dw, da)
+         else
+            call f%cell_force3(x, ds, e, w, a, ff, dx, de, dw, da)
+         end if
+      end subroutine force
 
-      real(dp) function off3(x, e, w, a) result(worst)
-         real(dp), intent(in) :: x(3), e(3), w(3), a(3)
-         real(dp) :: f0(3), dx(3, 3), de(3, 3), dw(3, 3), da(3, 3), fp(3), fm(3), d(3, 3, 4), u(3)
-         integer :: k, v
-         call f%cell_force3(x, ds, e, w, a, f0, dx, de, dw, da)
-         worst = 0
-         do v = 1, 4
-            do k = 1, 3
-               u = 0
-               u(k) = h
-               select case (v)
-               case (1)
-                  fp = force3(x + u, e, w, a); fm = force3(x - u, e, w, a)
-               case (2)
-                  fp = force3(x, e + u, w, a); fm = force3(x, e - u, w, a)
-               case (3)
-                  fp = force3(x, e, w + u, a); fm = force3(x, e, w - u, a)
-               case (4)
-                  fp = force3(x, e, w, a + u); fm = force3(x, e, w, a - u)
-               end select
-               d(:, k, v) = (fp - fm)/(2*h)
-            end do
-         end do
-         worst = max(maxval(abs(d(:, :, 1) - dx)), maxval(abs(d(:, :, 2) - de)), maxval(abs(d(:, :, 3) - dw)), &
-                     maxval(abs(d(:, :, 4) - da)))/(1 + norm2(f0))
-      end function off3
-
-      function force3(x, e, w, a) result(ff)
-         real(dp), intent(in) :: x(3), e(3), w(3), a(3)
-         real(dp) :: ff(3), d0(3, 3), d1(3, 3), d2(3, 3), d3(3, 3)
-         call f%cell_force3(x, ds, e, w, a, ff, d0, d1, d2, d3)
-      end function force3
+      function value(x, e, w, a) result(ff)
+         real(dp), intent(in) :: x(:), e(:), w(:), a(:)
+         real(dp) :: ff(size(x)), d0(size(x), size(x)), d1(size(x), size(x)), d2(size(x), size(x)), &
+                     d3(size(x), size(x))
+         call force(x, e, w, a, ff, d0, d1, d2, d3)
+      end function value
    end subroutine test_force_derivatives
 
    !> The crane scene's top tension, dry weight above the water, wet weight below it, and the mass:
@@ -321,7 +294,7 @@ contains
       do i = 1, size(tips)
          exact = crane_tension(tips(i))
          do j = 1, merge(2, 1, i <= 2)
-            call run_text(crane_text(tips(i), "model = '"//models(j)//"', nodes = 41, dt = 1e-3, t_end = 1e-3, "// &
+            call run_text(path, crane_text(tips(i), "model = '"//models(j)//"', nodes = 41, dt = 1e-3, t_end = 1e-3, "// &
                           "newton_tol = 1e-12"), sim, obs, error)
             if (allocated(error)) return
             rel = abs(obs%tension(1) - exact)/exact
@@ -376,7 +349,7 @@ contains
             zs = zs//str(-speed*(t - 0.5_dp*ramp))
          end if
       end do
-      call run_text("&cable length = 30, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
+      call run_text(path, "&cable length = 30, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
                     "&material law = 'linear', ea = 1e8 /"//new_line('a')// &
                     "&fluid density = 1025 /"//new_line('a')// &
                     "&end_a kind = 'motion', x = 0, z = 10, motion = 'table', table_time = "//times//","// &
@@ -438,7 +411,7 @@ contains
       do i = 1, 2
          obs%n = 0
          if (allocated(obs%t)) deallocate (obs%t, obs%z)
-         call run_text("&cable length = 20.3, diameter = 0.03, density = 1140 /"//new_line('a')// &
+         call run_text(path, "&cable length = 20.3, diameter = 0.03, density = 1140 /"//new_line('a')// &
                        "&material law = 'linear', ea = 2e6 /"//new_line('a')// &
                        "&fluid density = 1025 /"//new_line('a')// &
                        "&end_a kind = 'fixed', x = 0, z = 0.5 /"//new_line('a')// &

@@ -32,6 +32,7 @@ module xcable_loads_fluid
    use xcable_core_kinds, only: dp
    use xcable_core_strings, only: quantity
    use xcable_loads_load, only: cable_load
+   use xcable_numerics_vector3, only: outer
    use xcable_loads_surface, only: water_surface
    use xcable_io_config, only: case_config
    implicit none
@@ -281,12 +282,4 @@ contains
       end if
    end function dg
 
-   pure function outer(a, b) result(m)
-      real(dp), intent(in) :: a(:), b(:)
-      real(dp) :: m(size(a), size(b))
-      integer :: j
-      do j = 1, size(b)
-         m(:, j) = a*b(j)
-      end do
-   end function outer
 end module xcable_loads_fluid

@@ -25,6 +25,7 @@ module xcable_loads_seabed
    use xcable_core_strings, only: quantity
    use xcable_io_config, only: case_config
    use xcable_loads_load, only: cable_load
+   use xcable_numerics_vector3, only: outer
    implicit none
    private
    public :: seabed_load, seabed_from_case
@@ -276,15 +277,6 @@ contains
          dg(i, i) = dg(i, i) + 1/r
       end do
    end subroutine regularised
-
-   pure function outer(a, b) result(m)
-      real(dp), intent(in) :: a(:), b(:)
-      real(dp) :: m(size(a), size(b))
-      integer :: j
-      do j = 1, size(b)
-         m(:, j) = a*b(j)
-      end do
-   end function outer
 
    pure function seabed_measure_name(self) result(name)
       class(seabed_load), intent(in) :: self

@@ -1784,6 +1784,7 @@ contains
       logical, intent(in) :: with_jacobian, dynamic
       real(dp), intent(in), optional :: theta
       integer :: n, c, k, j, side, node, band0, a, b, row, col
+      real(dp) :: share
       real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new, jac_a(2, 2), jac_b(2, 2)
       logical :: held_a, held_b, state_a, state_b
       n = self%n
@@ -1829,7 +1830,7 @@ contains
                         held_a, held_b, dynamic, self%block_scaled, self%mass_scaled)
       if (state_a) call add_end_block(jacobian, 0, jac_a, scale)
       if (state_b) call add_end_block(jacobian, 2*n - 2, jac_b, scale)
-      ! Distributed loads: node c and node c+1 each get -F_c / 2.
+      ! Distributed loads: node c and node c+1 each get -F_c / 2 (and -G_c, +G_c of unequal shares).
       if (allocated(self%loads)) then
          if (size(self%loads) > 0) then
             do c = 1, n - 1
@@ -1843,34 +1844,14 @@ contains
                         do b = 1, 2
                            row = 2*(k - 1) + a
                            col = 2*(node - 1) + b
-                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                                                 - 0.5_dp*self%load_block(a, b, side, c)*scale
+                           share = 0.5_dp*self%load_block(a, b, side, c)
+                           if (self%skewed) share = share + merge(1.0_dp, -1.0_dp, j == 0)*self%skew_block(a, b, side, c)
+                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) - share*scale
                         end do
                      end do
                   end do
                end do
             end do
-            ! Unequal shares: node c -G_c, node c + 1 +G_c in the residual's sign.
-            if (self%skewed) then
-               do c = 1, n - 1
-                  do side = 0, 1
-                     node = c + side
-                     do j = 0, 1
-                        k = c + j
-                        if (k == 1 .and. held_a) cycle
-                        if (k == n .and. held_b) cycle
-                        do a = 1, 2
-                           do b = 1, 2
-                              row = 2*(k - 1) + a
-                              col = 2*(node - 1) + b
-                              jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) &
-                                 - merge(1.0_dp, -1.0_dp, j == 0)*self%skew_block(a, b, side, c)*scale
-                           end do
-                        end do
-                     end do
-                  end do
-               end do
-            end if
          end if
       end if
       if (held_a) call held_rows(1)

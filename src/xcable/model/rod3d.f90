@@ -1163,9 +1163,8 @@ contains
       jacobian%factorised = .false.
       band0 = jacobian%kl + jacobian%ku + 1
       call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
-                               self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self))
-      if (self%skewed) call add_skew_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, &
-                                            self%skew_block, scale, held_a, held_b)
+                               self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self), &
+                               self%skew_block, self%skewed)
       do c = 1, n - 1
          call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
          call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
@@ -1234,14 +1233,17 @@ contains
    !> explicit-shape arrays (a class argument's allocatable components cost several times the
    !> instructions in these loops, docs/measurements/data/speed_rounds.md item 4); the same sums in the same order.
    pure subroutine add_position_blocks(n, ld, ncol, ab, band0, block, ds, mass, load_block, scale, rate, held_a, held_b, &
-                                       dynamic, loads)
+                                       dynamic, loads, skew_block, skewed)
       integer, intent(in) :: n, ld, ncol, band0
       real(dp), intent(inout) :: ab(ld, ncol)
       real(dp), intent(in) :: block(3, 3, -1:1, n - 1), ds(n - 1), mass(0:2, n), load_block(3, 3, 0:1, n - 1)
       real(dp), intent(in) :: scale, rate
       logical, intent(in) :: held_a, held_b, dynamic, loads
+      !> The unequal shares' blocks (cable_load cell_skew) and whether there are any.
+      real(dp), intent(in) :: skew_block(3, 3, 0:1, n - 1)
+      logical, intent(in) :: skewed
       integer :: c, cp, side, node, j, k, a, b, row, col
-      real(dp) :: sgn, t(3, 3)
+      real(dp) :: sgn, t(3, 3), share
       ! Cell c's force N_c enters node c with - and node c+1 with +; e_cp = (R_cp+1 - R_cp) / ds_cp.
       ! Each block is scaled once: (+-1 / ds) scale block = +-((1 / ds) scale block), the same bits.
       do c = 1, n - 1
@@ -1295,7 +1297,7 @@ contains
          end do
       end if
       if (loads) then
-         ! Node c and node c+1 each get -F_c / 2.
+         ! Node c and node c+1 each get -F_c / 2 (and -G_c, +G_c of unequal shares).
          do c = 1, n - 1
             do side = 0, 1
                node = c + side
@@ -1307,7 +1309,9 @@ contains
                      row = 3*(k - 1) + a
                      do b = 1, 3
                         col = 3*(node - 1) + b
-                        ab(band0 + row - col, col) = ab(band0 + row - col, col) - 0.5_dp*load_block(a, b, side, c)*scale
+                        share = 0.5_dp*load_block(a, b, side, c)
+                        if (skewed) share = share + merge(1.0_dp, -1.0_dp, j == 0)*skew_block(a, b, side, c)
+                        ab(band0 + row - col, col) = ab(band0 + row - col, col) - share*scale
                      end do
                   end do
                end do
@@ -1315,34 +1319,6 @@ contains
          end do
       end if
    end subroutine add_position_blocks
-
-   !> The unequal shares of the loads (cable_load cell_skew) in band storage: node c takes +G_c
-   !> and node c + 1 -G_c, so their rows get -dG_c/dR and +dG_c/dR (the residual's sign).
-   pure subroutine add_skew_blocks(n, ld, ncol, ab, band0, skew_block, scale, held_a, held_b)
-      integer, intent(in) :: n, ld, ncol, band0
-      real(dp), intent(inout) :: ab(ld, ncol)
-      real(dp), intent(in) :: skew_block(3, 3, 0:1, n - 1), scale
-      logical, intent(in) :: held_a, held_b
-      integer :: c, side, node, j, k, a, b, row, col
-      do c = 1, n - 1
-         do side = 0, 1
-            node = c + side
-            do j = 0, 1
-               k = c + j
-               if (k == 1 .and. held_a) cycle
-               if (k == n .and. held_b) cycle
-               do a = 1, 3
-                  row = 3*(k - 1) + a
-                  do b = 1, 3
-                     col = 3*(node - 1) + b
-                     ab(band0 + row - col, col) = ab(band0 + row - col, col) &
-                                                  - merge(1.0_dp, -1.0_dp, j == 0)*skew_block(a, b, side, c)*scale
-                  end do
-               end do
-            end do
-         end do
-      end do
-   end subroutine add_skew_blocks
 
    !> Whether the piece has distributed loads.
    pure logical function has_loads(self)

@@ -1,10 +1,11 @@
-!> Small 3-D vector algebra shared by the 3-D rod, its driver and the fluid
-!> loads: the outer product, the identity and the cross product.
+!> Small 3-D vector algebra shared by the 3-D rod, its driver and the loads:
+!> the outer product (of 3-vectors, and of vectors of any size for the loads'
+!> 2-D and 3-D forms), the identity and the cross product.
 module xcable_numerics_vector3
    use xcable_core_kinds, only: dp
    implicit none
    private
-   public :: outer3, identity3, cross3
+   public :: outer3, identity3, cross3, outer
 
 contains
 
@@ -17,6 +18,16 @@ contains
          m(:, j) = a*b(j)
       end do
    end function outer3
+
+   !> a b^T for vectors of any size.
+   pure function outer(a, b) result(m)
+      real(dp), intent(in) :: a(:), b(:)
+      real(dp) :: m(size(a), size(b))
+      integer :: j
+      do j = 1, size(b)
+         m(:, j) = a*b(j)
+      end do
+   end function outer
 
    !> The 3x3 identity.
    pure function identity3() result(m)

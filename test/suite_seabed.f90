@@ -35,6 +35,7 @@ contains
       type(unittest_type), allocatable, intent(out) :: tests(:)
       tests = [new_unittest('contact_and_friction_derivatives', test_derivatives), &
                new_unittest('catenary_on_a_frictionless_bottom', test_catenary), &
+               new_unittest('catenary_on_the_bottom_3d_at_an_azimuth', test_catenary_3d), &
                new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger)]
    end subroutine collect_seabed
 
@@ -229,6 +230,37 @@ contains
          r(2) = v(1)/w*(sqrt(1 + (vv/v(1))**2) - 1) + w*ls**2/(2*ea) - drop
       end function residual
    end subroutine test_catenary
+
+   !> The catenary of test_catenary on 101 nodes with its fairlead at 30 degrees in the
+   !> horizontal plane, run by the 3-D model: the end tensions and the grounded length are the
+   !> planar run's.
+   subroutine test_catenary_3d(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: common = "&cable length = 100, diameter = 0.1, density = 2000, "// &
+                                              "bending_stiffness = 1e-3 /"//new_line('a')// &
+                                              "&material law = 'linear', ea = 1e8 /"//new_line('a')// &
+                                              "&fluid density = 1025, surface_z = 10 /"//new_line('a')// &
+                                              "&seabed depth = 40, stiffness = 1e10 /"//new_line('a')// &
+                                              "&end_a kind = 'fixed', x = 0, z = -40 /"//new_line('a')// &
+                                              "&rupture enabled = .false. /"//new_line('a')// &
+                                              "&output interval = 0, quiet = .true. /"//new_line('a')
+      type(simulation) :: sim2, sim3
+      type(static_keeper) :: obs2, obs3
+      real(dp) :: diff(3)
+      call run_text(path, common//"&end_b kind = 'fixed', x = 80, z = 0 /"//new_line('a')// &
+                    "&numerics nodes = 101, dt = 1e-3, t_end = 1e-3, newton_tol = 1e-12 /", sim2, obs2, error)
+      if (allocated(error)) return
+      call run_text(path, common//"&end_b kind = 'fixed', x = 69.28203230275509, y = 40, z = 0 /"//new_line('a')// &
+                    "&numerics model = '3d', nodes = 101, dt = 1e-3, t_end = 1e-3, newton_tol = 1e-12 /", &
+                    sim3, obs3, error)
+      if (allocated(error)) return
+      diff = [abs(obs3%tension - obs2%tension)/obs2%tension, &
+              abs(sim3%rod%history%measures(1, 0) - sim2%rod%history%measures(1, 0))/sim2%rod%history%measures(1, 0)]
+      write (output_unit, '(4x,a,3es9.2)') 'catenary on the bottom at 30 degrees, 3-D against 2-D: end tensions and '// &
+         'grounded length differ by', diff
+      call check(error, maxval(diff) < 1.0e-10_dp, 'the 3-D catenary on the bottom differs from the planar one by '// &
+                 str(maxval(diff)))
+   end subroutine test_catenary_3d
 
    !> A 30 m line held at one end 2 m above a bottom sloping along x, its other end free,
    !> released from a straight horizontal state so that it falls onto the bottom and slides;

@@ -6,10 +6,9 @@ is under water: a 100 m line (diameter 0.1 m, 2000 kg/m^3, EA 1e8 N) in sea wate
 on a flat bottom 50 m down to a fairlead 80 m away at z = -10 m. Both codes use MoorDyn's default
 bottom (kBot 3e6 Pa, cBot 3e5 Pa s/m on the diameter), no friction. MoorDyn finds its static
 state by dynamic relaxation (TmaxIC 10000 s: it settles slowly, a stiff line on a soft bottom),
-xcable by Newton. Printed: the horizontal tension at the anchor's segment, the fairlead tension,
-the grounded length (MoorDyn: the arc length to the first node more than 1 mm off the bottom;
-xcable: its grounded_length, the cells under the bottom) and the elastic catenary's closed form
-for a rigid bottom.
+xcable by Newton. Printed: the horizontal tension at the anchor's segment, the force on the fairlead,
+the arc length of the last node within 1 mm of the bottom (both codes alike), and the elastic
+catenary's closed form for a rigid bottom.
 
 Usage: python3 bench/peer/seabed.py [--segments 20 40] [--exe bin/xcable]
 """
@@ -94,15 +93,21 @@ RK4      tScheme
         moordyn.Init(system, [], [])
         line = moordyn.GetLine(system, 1)
         nodes = np.array([moordyn.GetLineNodePos(line, i) for i in range(segments + 1)])
+        weight = np.array(moordyn.GetLineNodeWeight(line, segments))
         moordyn.Close(system)
     seg = np.diff(nodes, axis=0)
     lens = np.linalg.norm(seg, axis=1)
     ten = EA * (lens / (LENGTH / segments) - 1)
     h = ten[0] * seg[0, 0] / lens[0]
-    fair = ten[-1]
-    off = np.nonzero(nodes[:, 2] + DEPTH > 1e-3)[0]
-    grounded = LENGTH * off[0] / segments if len(off) else LENGTH
-    return h, fair, grounded
+    # The force on the fairlead: the top segment's pull and the top node's half-segment weight.
+    fair = np.linalg.norm(-ten[-1] * seg[-1] / lens[-1] + weight)
+    return h, fair, last_grounded(nodes[:, 2], segments)
+
+
+def last_grounded(z, segments):
+    """Arc length of the last node within 1 mm of the bottom (from the anchor)."""
+    off = np.nonzero(z + DEPTH > 1e-3)[0]
+    return LENGTH * (off[0] - 1) / segments if len(off) else LENGTH
 
 
 def xcable_run(exe, segments):
@@ -126,7 +131,7 @@ def xcable_run(exe, segments):
         with h5py.File(out) as f:
             a = f["summary"].attrs
             return (-float(f["history/end_a/force_x"][0]), float(a["static_tension_b"]),
-                    float(a["static_grounded_length"]))
+                    last_grounded(f["static/z"][:], segments))
 
 
 def main():
@@ -136,8 +141,8 @@ def main():
     args = ap.parse_args()
     h, lb, tf = closed_form()
     print(f"closed form, rigid bottom: H {h:.4f} N, grounded {lb:.4f} m, fairlead {tf:.4f} N")
-    print("| segments | MoorDyn H N | MoorDyn fairlead N | MoorDyn grounded m | xcable H N | xcable fairlead N "
-          "| xcable grounded m |")
+    print("| segments | MoorDyn H N | MoorDyn fairlead N | MoorDyn last grounded node m | xcable H N | xcable fairlead N "
+          "| xcable last grounded node m |")
     print("|---|---|---|---|---|---|---|")
     for n in args.segments:
         mh, mf, mg = moordyn_run(n)

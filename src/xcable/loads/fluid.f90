@@ -32,7 +32,7 @@ module xcable_loads_fluid
    use xcable_core_kinds, only: dp
    use xcable_core_strings, only: quantity
    use xcable_loads_load, only: cable_load
-   use xcable_numerics_vector3, only: outer
+   use xcable_numerics_vector3, only: outer3, identity3
    use xcable_loads_surface, only: water_surface
    use xcable_io_config, only: case_config
    implicit none
@@ -167,7 +167,15 @@ contains
       real(dp), intent(in) :: x(2), ds
       real(dp), intent(in) :: e(2), w(2), a(2)
       real(dp), intent(out) :: f(2), df_dx(2, 2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
-      call surface_force(self, x, ds, e, w, a, self%current, f, df_dx, df_de, df_dw, df_da)
+      real(dp) :: phi, dphi_dz, dphi_de, fa(2), fa_de(2, 2), fa_dw(2, 2), fa_da(2, 2)
+      df_dx = 0
+      call self%wetted(x(2), ds, e(2), phi, dphi_dz, dphi_de)
+      ! All under water (the common case): the water's loads alone.
+      call morison2(self, self%density, self%current, e, w, a, f, df_de, df_dw, df_da)
+      if (phi == 1) return
+      fa = 0; fa_de = 0; fa_dw = 0; fa_da = 0
+      if (self%air_density > 0) call morison2(self, self%air_density, [0.0_dp, 0.0_dp], e, w, a, fa, fa_de, fa_dw, fa_da)
+      call mix(self, phi, dphi_dz, dphi_de, fa, fa_de, fa_dw, fa_da, f, df_dx, df_de, df_dw, df_da)
    end subroutine fluid_cell_force
 
    !> The 3-D form of fluid_cell_force: the same formulas with vectors (x, y, z), the
@@ -178,75 +186,55 @@ contains
       real(dp), intent(in) :: x(3), ds
       real(dp), intent(in) :: e(3), w(3), a(3)
       real(dp), intent(out) :: f(3), df_dx(3, 3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
-      call surface_force(self, x, ds, e, w, a, [self%current(1), self%current_y, self%current(2)], &
-                         f, df_dx, df_de, df_dw, df_da)
+      real(dp) :: phi, dphi_dz, dphi_de, fa(3), fa_de(3, 3), fa_dw(3, 3), fa_da(3, 3)
+      df_dx = 0
+      call self%wetted(x(3), ds, e(3), phi, dphi_dz, dphi_de)
+      call morison3(self, self%density, [self%current(1), self%current_y, self%current(2)], e, w, a, f, df_de, df_dw, &
+                    df_da)
+      if (phi == 1) return
+      fa = 0; fa_de = 0; fa_dw = 0; fa_da = 0
+      if (self%air_density > 0) call morison3(self, self%air_density, [0.0_dp, 0.0_dp, 0.0_dp], e, w, a, fa, fa_de, &
+                                              fa_dw, fa_da)
+      call mix(self, phi, dphi_dz, dphi_de, fa, fa_de, fa_dw, fa_da, f, df_dx, df_de, df_dw, df_da)
    end subroutine fluid_cell_force3
 
-   !> The fluid's force in any dimension (the last component vertical): the water's on the
-   !> wetted fraction, the air's and the missing buoyancy on the rest.
-   pure subroutine surface_force(self, x, ds, e, w, a, current, f, df_dx, df_de, df_dw, df_da)
+   !> A cell across the surface, any dimension (the last component vertical): f and its
+   !> derivatives hold the water's loads on entry and leave as phi of them, 1 - phi of the air's
+   !> (fa and its derivatives) and the buoyancy the dry part lacks, with the fraction's
+   !> derivatives through the cell's mid height and vertical stretch.
+   pure subroutine mix(self, phi, dphi_dz, dphi_de, fa, fa_de, fa_dw, fa_da, f, df_dx, df_de, df_dw, df_da)
       class(fluid_load), intent(in) :: self
-      real(dp), intent(in) :: x(:), ds, e(:), w(:), a(:), current(:)
-      real(dp), intent(out) :: f(:), df_dx(:, :), df_de(:, :), df_dw(:, :), df_da(:, :)
-      real(dp), dimension(size(e)) :: fa, jump
-      real(dp), dimension(size(e), size(e)) :: fa_de, fa_dw, fa_da
-      real(dp) :: phi, dphi_dz, dphi_de, still(size(e))
+      real(dp), intent(in) :: phi, dphi_dz, dphi_de, fa(:), fa_de(:, :), fa_dw(:, :), fa_da(:, :)
+      real(dp), intent(inout) :: f(:), df_dx(:, :), df_de(:, :), df_dw(:, :), df_da(:, :)
+      real(dp) :: jump(size(f)), lack
       integer :: nd
-      nd = size(e)
-      df_dx = 0
-      call self%wetted(x(nd), ds, e(nd), phi, dphi_dz, dphi_de)
-      if (phi == 1) then
-         ! All under water (the common case, and the same numbers as without a surface).
-         call morison(self, self%density, current, e, w, a, f, df_de, df_dw, df_da)
-         return
-      end if
-      still = 0
-      if (phi > 0) then
-         call morison(self, self%density, current, e, w, a, f, df_de, df_dw, df_da)
-      else
-         f = 0
-         df_de = 0
-         df_dw = 0
-         df_da = 0
-      end if
-      if (self%air_density > 0) then
-         call morison(self, self%air_density, still, e, w, a, fa, fa_de, fa_dw, fa_da)
-      else
-         fa = 0
-         fa_de = 0
-         fa_dw = 0
-         fa_da = 0
-      end if
+      nd = size(f)
       ! f = phi F_w + (1 - phi) F_a - (1 - phi) (rho_w - rho_a) A g z^.
+      lack = (self%density - self%air_density)*self%area*self%gravity
       jump = f - fa
-      jump(nd) = jump(nd) + (self%density - self%air_density)*self%area*self%gravity
+      jump(nd) = jump(nd) + lack
       f = phi*f + (1 - phi)*fa
-      f(nd) = f(nd) - (1 - phi)*(self%density - self%air_density)*self%area*self%gravity
+      f(nd) = f(nd) - (1 - phi)*lack
       df_de = phi*df_de + (1 - phi)*fa_de
       df_dw = phi*df_dw + (1 - phi)*fa_dw
       df_da = phi*df_da + (1 - phi)*fa_da
       df_dx(:, nd) = jump*dphi_dz
       df_de(:, nd) = df_de(:, nd) + jump*dphi_de
-   end subroutine surface_force
+   end subroutine mix
 
    !> Drag and added mass per unstretched length in a fluid of density rho moving with the
-   !> current, and their derivatives with respect to e, w and a (any dimension).
-   pure subroutine morison(self, rho, current, e, w, a, f, df_de, df_dw, df_da)
+   !> current, planar, and their derivatives with respect to e, w and a (fixed sizes: the
+   !> inner loop of every cell of a line in water).
+   pure subroutine morison2(self, rho, current, e, w, a, f, df_de, df_dw, df_da)
       class(fluid_load), intent(in) :: self
-      real(dp), intent(in) :: rho, current(:), e(:), w(:), a(:)
-      real(dp), intent(out) :: f(:), df_de(:, :), df_dw(:, :), df_da(:, :)
-      real(dp), dimension(size(e), size(e)) :: tt, pn, dd_dt, dd_dv, turn, eye
-      real(dp), dimension(size(e)) :: t, v, vt, vn, drag
-      real(dp) :: l, k, root, ma
-      integer :: i
-      eye = 0
-      do i = 1, size(e)
-         eye(i, i) = 1
-      end do
+      real(dp), intent(in) :: rho, current(2), e(2), w(2), a(2)
+      real(dp), intent(out) :: f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2)
+      real(dp) :: l, t(2), tt(2, 2), pn(2, 2), v(2), vt(2), vn(2), k, root, ma, drag(2), dd_dt(2, 2), dd_dv(2, 2)
+      real(dp) :: turn(2, 2)
       l = norm2(e)
       t = e/l
-      tt = outer(t, t)
-      pn = eye - tt
+      tt = outer2(t, t)
+      pn = identity2() - tt
       v = current - w
       vt = matmul(tt, v)
       vn = v - vt
@@ -254,32 +242,80 @@ contains
       root = sqrt(l)
       ! Drag: k root D, D = Cdn g(V_n) + pi Cdt g(V_t), g(V) = |V| V.
       drag = self%cd_normal*norm2(vn)*vn + pi*self%cd_tangential*norm2(vt)*vt
-      dd_dv = self%cd_normal*matmul(dg(vn), pn) + pi*self%cd_tangential*matmul(dg(vt), tt)
+      dd_dv = self%cd_normal*matmul(dg2(vn), pn) + pi*self%cd_tangential*matmul(dg2(vt), tt)
       ! d(T V)/dt = (t . V) I + t V^T, d(P V)/dt = -that.
-      turn = dot_product(t, v)*eye + outer(t, v)
-      dd_dt = matmul(pi*self%cd_tangential*dg(vt) - self%cd_normal*dg(vn), turn)
+      turn = dot_product(t, v)*identity2() + outer2(t, v)
+      dd_dt = matmul(pi*self%cd_tangential*dg2(vt) - self%cd_normal*dg2(vn), turn)
       ma = self%ca_normal*rho*self%area
       f = k*root*drag - ma*matmul(pn, a)
       df_dw = -k*root*dd_dv
       df_da = -ma*pn
       ! Through t = e / l (dt/de = P / l) and sqrt(l) (d sqrt(l)/de = t^T / (2 sqrt(l))).
-      df_de = k*(outer(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
-              + ma*matmul(dot_product(t, a)*eye + outer(t, a), pn)/l
-   end subroutine morison
+      df_de = k*(outer2(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
+              + ma*matmul(dot_product(t, a)*identity2() + outer2(t, a), pn)/l
+   end subroutine morison2
 
-   !> d(|V| V)/dV = |V| I + V V^T / |V| (0 at V = 0).
-   pure function dg(v) result(m)
-      real(dp), intent(in) :: v(:)
-      real(dp) :: m(size(v), size(v)), s
-      integer :: i
+   !> morison2 in 3-D.
+   pure subroutine morison3(self, rho, current, e, w, a, f, df_de, df_dw, df_da)
+      class(fluid_load), intent(in) :: self
+      real(dp), intent(in) :: rho, current(3), e(3), w(3), a(3)
+      real(dp), intent(out) :: f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3)
+      real(dp) :: l, t(3), tt(3, 3), pn(3, 3), v(3), vt(3), vn(3), k, root, ma, drag(3), dd_dt(3, 3), dd_dv(3, 3)
+      real(dp) :: turn(3, 3), eye(3, 3)
+      eye = identity3()
+      l = norm2(e)
+      t = e/l
+      tt = outer3(t, t)
+      pn = eye - tt
+      v = current - w
+      vt = matmul(tt, v)
+      vn = v - vt
+      k = 0.5_dp*rho*self%diameter
+      root = sqrt(l)
+      drag = self%cd_normal*norm2(vn)*vn + pi*self%cd_tangential*norm2(vt)*vt
+      dd_dv = self%cd_normal*matmul(dg3(vn), pn) + pi*self%cd_tangential*matmul(dg3(vt), tt)
+      turn = dot_product(t, v)*eye + outer3(t, v)
+      dd_dt = matmul(pi*self%cd_tangential*dg3(vt) - self%cd_normal*dg3(vn), turn)
+      ma = self%ca_normal*rho*self%area
+      f = k*root*drag - ma*matmul(pn, a)
+      df_dw = -k*root*dd_dv
+      df_da = -ma*pn
+      df_de = k*(outer3(drag, t)/(2*root) + root*matmul(dd_dt, pn)/l) &
+              + ma*matmul(dot_product(t, a)*eye + outer3(t, a), pn)/l
+   end subroutine morison3
+
+   pure function dg3(v) result(m)
+      real(dp), intent(in) :: v(3)
+      real(dp) :: m(3, 3), s
       s = norm2(v)
-      m = 0
       if (s > 0) then
-         m = outer(v, v)/s
-         do i = 1, size(v)
-            m(i, i) = m(i, i) + s
-         end do
+         m = s*identity3() + outer3(v, v)/s
+      else
+         m = 0
       end if
-   end function dg
+   end function dg3
 
+   !> d(|V| V)/dV = |V| I + V V^T / |V| (0 at V = 0), planar.
+   pure function dg2(v) result(m)
+      real(dp), intent(in) :: v(2)
+      real(dp) :: m(2, 2), s
+      s = norm2(v)
+      if (s > 0) then
+         m = s*identity2() + outer2(v, v)/s
+      else
+         m = 0
+      end if
+   end function dg2
+
+   pure function outer2(a, b) result(m)
+      real(dp), intent(in) :: a(2), b(2)
+      real(dp) :: m(2, 2)
+      m(:, 1) = a*b(1)
+      m(:, 2) = a*b(2)
+   end function outer2
+
+   pure function identity2() result(m)
+      real(dp) :: m(2, 2)
+      m = reshape([1.0_dp, 0.0_dp, 0.0_dp, 1.0_dp], [2, 2])
+   end function identity2
 end module xcable_loads_fluid

@@ -12,7 +12,7 @@ module xcable_fixtures
    use xcable_driver_records, only: run_observer
    implicit none
    private
-   public :: paper_case, write_text, pushing_rope, run_text
+   public :: paper_case, write_text, pushing_rope, run_text, column_text
 
 contains
 
@@ -78,4 +78,20 @@ contains
       if (allocated(error)) return
       call sim%run(obs, error)
    end subroutine run_text
+   !> A namelist column: name = v1, v2, ... (five values a line).
+   function column_text(name, v) result(text)
+      !> Variable name and its values.
+      character(*), intent(in) :: name
+      real(dp), intent(in) :: v(:)
+      character(:), allocatable :: text
+      character(len=32) :: item
+      integer :: k
+      text = name//' ='
+      do k = 1, size(v)
+         write (item, '(es24.16e3)') v(k)
+         text = text//' '//trim(adjustl(item))//','
+         if (mod(k, 5) == 0) text = text//new_line('a')
+      end do
+   end function column_text
+
 end module xcable_fixtures

@@ -29,7 +29,7 @@ module suite_model3d
    use xcable_core_strings, only: str
    use xcable_io_input, only: read_config
    use xcable_io_config, only: case_config
-   use xcable_fixtures, only: pushing_rope
+   use xcable_fixtures, only: pushing_rope, column_text
    use xcable_driver_simulation, only: simulation
    use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_ends_end_condition, only: end_condition
@@ -1195,21 +1195,6 @@ contains
              "&end_b kind = 'fixed', x = 48, z = 24 /"//new_line('a')//"&rupture enabled = .false. /"//new_line('a')// &
              "&output interval = 0, quiet = .true. /"//new_line('a')
    end function sway_scene
-
-   !> A namelist column: name = v1, v2, ... (five values a line).
-   function column_text(name, v) result(text)
-      character(*), intent(in) :: name
-      real(dp), intent(in) :: v(:)
-      character(:), allocatable :: text
-      character(len=32) :: item
-      integer :: k
-      text = name//' ='
-      do k = 1, size(v)
-         write (item, '(es24.16e3)') v(k)
-         text = text//' '//trim(adjustl(item))//','
-         if (mod(k, 5) == 0) text = text//new_line('a')
-      end do
-   end function column_text
 
    !> End b moved across the plane (direction (0.3, 1, 0.2), amplitude 1 m,
    !> period 2 s, no smooth start; dry line, 31 nodes, dt 10 ms, to 0.8 s),

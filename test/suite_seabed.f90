@@ -10,7 +10,7 @@ module suite_seabed
    use xcable_core_strings, only: str
    use xcable_loads_seabed, only: seabed_load
    use xcable_driver_simulation, only: simulation
-   use xcable_fixtures, only: run_text
+   use xcable_fixtures, only: run_text, column_text
    use xcable_driver_records, only: run_observer, static_info
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -316,35 +316,16 @@ contains
       real(dp), parameter :: v = 0.2_dp, mu = 0.5_dp
       type(simulation) :: sim
       type(static_keeper) :: obs
-      character(:), allocatable :: times, xs, zs
-      real(dp) :: rows(31), t, w, vs, gv, fx, fz, expected, worst_force, worst_rate, rate
+      real(dp) :: rows(31), xs(31), w, vs, gv, fx, fz, expected, worst_force, worst_rate, rate
       character(len=8) :: word
       integer :: i, k, n, m
       rows(1:21) = [(0.1_dp*k, k=0, 20)]
       rows(22:31) = [(real(k, dp), k=3, 12)]
-      times = ''
-      xs = ''
-      zs = ''
-      do k = 1, size(rows)
-         t = rows(k)
-         if (k > 1) then
-            times = times//','
-            xs = xs//','
-            zs = zs//','
-            if (mod(k, 8) == 0) then
-               times = times//new_line('a')
-               xs = xs//new_line('a')
-               zs = zs//new_line('a')
-            end if
-         end if
-         times = times//str(t)
-         zs = zs//'0'
-         if (t < 2) then
-            xs = xs//str(-v*(0.5_dp*t - 1/pi*sin(pi*t/2)))
-         else
-            xs = xs//str(-v*(t - 1))
-         end if
-      end do
+      where (rows < 2)
+         xs = -v*(0.5_dp*rows - 1/pi*sin(pi*rows/2))
+      elsewhere
+         xs = -v*(rows - 1)
+      end where
       w = 2000*0.25_dp*pi*0.05_dp**2*g
       worst_force = 0
       worst_rate = 0
@@ -355,8 +336,9 @@ contains
          call run_text(path, "&cable length = 30, diameter = 0.05, density = 2000 /"//new_line('a')// &
                        "&material law = 'linear', ea = 1e6, compression = 'law' /"//new_line('a')// &
                        "&seabed depth = 10, mu_axial = 0.5, slip_velocity = "//trim(slips(i))//" /"//new_line('a')// &
-                       "&end_a kind = 'motion', x = 0, z = -10, motion = 'table', table_time = "//times//","// &
-                       new_line('a')//"table_x = "//xs//","//new_line('a')//"table_z = "//zs//" /"//new_line('a')// &
+                       "&end_a kind = 'motion', x = 0, z = -10, motion = 'table',"//new_line('a')// &
+                       column_text('table_time', rows)//new_line('a')//column_text('table_x', xs)//new_line('a')// &
+                       column_text('table_z', 0*rows)//" /"//new_line('a')// &
                        "&end_b kind = 'force', force_x = 10, force_z = 0 /"//new_line('a')// &
                        "&rupture enabled = .false. /"//new_line('a')// &
                        "&numerics nodes = 61, dt = 0.01, t_end = 12 /"//new_line('a')// &

@@ -13,7 +13,7 @@ module suite_surface
    use xcable_loads_fluid, only: fluid_load
    use xcable_loads_surface, only: water_surface
    use xcable_driver_simulation, only: simulation
-   use xcable_fixtures, only: run_text
+   use xcable_fixtures, only: run_text, column_text
    use xcable_driver_records, only: run_observer, static_info
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
@@ -320,40 +320,22 @@ contains
       real(dp), parameter :: speed = 0.5_dp, ramp = 2, t_end = 31
       type(simulation) :: sim
       type(tension_keeper) :: obs
-      character(:), allocatable :: times, zs, xs
-      real(dp) :: t, worst_mean, window_t, window_exact, rows(50)
+      real(dp) :: worst_mean, window_t, window_exact, rows(50), zs(50)
       integer :: k, n, count, start
       ! Rows every 0.1 s over the start (so the table's first slope is nearly 0), then every second.
       rows(1:21) = [(0.1_dp*k, k=0, 20)]
       rows(22:50) = [(real(k, dp), k=3, 31)]
-      times = ''
-      zs = ''
-      xs = ''
-      do k = 1, size(rows)
-         t = rows(k)
-         if (k > 1) then
-            times = times//','
-            zs = zs//','
-            xs = xs//','
-            if (mod(k, 8) == 0) then
-               times = times//new_line('a')
-               zs = zs//new_line('a')
-               xs = xs//new_line('a')
-            end if
-         end if
-         times = times//str(t)
-         xs = xs//'0'
-         if (t < ramp) then
-            zs = zs//str(-speed*(0.5_dp*t - ramp/(2*pi)*sin(pi*t/ramp)))
-         else
-            zs = zs//str(-speed*(t - 0.5_dp*ramp))
-         end if
-      end do
+      where (rows < ramp)
+         zs = -speed*(0.5_dp*rows - ramp/(2*pi)*sin(pi*rows/ramp))
+      elsewhere
+         zs = -speed*(rows - 0.5_dp*ramp)
+      end where
       call run_text(path, "&cable length = 30, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
                     "&material law = 'linear', ea = 1e8 /"//new_line('a')// &
                     "&fluid density = 1025 /"//new_line('a')// &
-                    "&end_a kind = 'motion', x = 0, z = 10, motion = 'table', table_time = "//times//","// &
-                    new_line('a')//"table_x = "//xs//","//new_line('a')//"table_z = "//zs//" /"//new_line('a')// &
+                    "&end_a kind = 'motion', x = 0, z = 10, motion = 'table',"//new_line('a')// &
+                    column_text('table_time', rows)//new_line('a')//column_text('table_x', 0*rows)//new_line('a')// &
+                    column_text('table_z', zs)//" /"//new_line('a')// &
                     "&end_b kind = 'mass', mass = 100 /"//new_line('a')// &
                     "&rupture enabled = .false. /"//new_line('a')// &
                     "&numerics nodes = 41, dt = 0.005, t_end = "//str(t_end)//" /"//new_line('a')// &

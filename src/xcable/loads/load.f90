@@ -20,7 +20,7 @@ module xcable_loads_load
    use xcable_core_kinds, only: dp
    implicit none
    private
-   public :: cable_load, load_slot, cell_kinematics, measure_names, load_measures, note_measures
+   public :: cable_load, load_slot, cell_kinematics, measure_names, load_measures, note_measures, any_skew
 
    !> A distributed load.
    type, abstract :: cable_load
@@ -212,6 +212,17 @@ contains
          notes = notes//line
       end do
    end subroutine note_measures
+
+   !> Whether any of the loads shares its force unequally (has_skew).
+   pure logical function any_skew(loads)
+      !> The loads.
+      type(load_slot), intent(in) :: loads(:)
+      integer :: i
+      any_skew = .false.
+      do i = 1, size(loads)
+         if (loads(i)%load%has_skew()) any_skew = .true.
+      end do
+   end function any_skew
 
    pure logical function load_has_skew(self)
       class(cable_load), intent(in) :: self

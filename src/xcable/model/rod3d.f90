@@ -75,7 +75,7 @@ module xcable_model_rod3d
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem
-   use xcable_loads_load, only: load_slot, cell_kinematics
+   use xcable_loads_load, only: load_slot, cell_kinematics, any_skew
    use xcable_numerics_vector3, only: outer3, identity3, cross3
    implicit none
    private
@@ -1447,7 +1447,7 @@ contains
       if (size(self%loads) == 0) return
       n = self%n
       self%load_block = 0
-      self%skewed = any([(self%loads(i)%load%has_skew(), i=1, size(self%loads))])
+      self%skewed = any_skew(self%loads)
       if (self%skewed) self%skew_block = 0
       do c = 1, n - 1
          r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])

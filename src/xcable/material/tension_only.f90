@@ -17,7 +17,7 @@ module xcable_material_tension_only
    use xcable_material_law, only: material_law
    implicit none
    private
-   public :: tension_only_law, new_tension_only, slack_cell_force, slack_dissipation, damped_tension
+   public :: tension_only_law, new_tension_only, slack_cell_force, slack_dissipation, damped_tension, may_cross_kink
 
    !> The law without compression.
    type, extends(material_law) :: tension_only_law
@@ -237,4 +237,32 @@ contains
          val = 0
       end if
    end function damped_tension
+   !> Whether a change du (dims, n) of the node positions may carry a cell further than
+   !> allowance past the kink at eps_z. The strain |e| - 1 of a cell, e = (R_c+1 - R_c) / ds_c,
+   !> changes by at most |du_c+1 - du_c| / ds_c, so a cell moves past the kink by at most
+   !> |du_c+1 - du_c| - |eps_c - eps_z| ds_c in length. Past it the slope of the cell force
+   !> differs from the one the Newton update was made with, by about f'(eps_z) / 2, so its
+   !> force is off the linear model by f'(eps_z) / 2 times the overshoot in strain, which the
+   !> next update corrects by about half the overshoot in length. Newton's contraction estimate
+   !> assumes a smooth residual along the last update: where an overshoot exceeds the update's
+   !> tolerance (allowance, m), it does not hold (newton_problem estimate_trusted;
+   !> docs/theory/compression.md).
+   pure logical function may_cross_kink(eps_z, l, ds, du, allowance) result(may)
+      !> Strain of the kink.
+      real(dp), intent(in) :: eps_z
+      !> Cell lengths over their unstretched lengths (1 + strain), and the unstretched lengths, m.
+      real(dp), intent(in) :: l(:), ds(:)
+      !> Change of the positions of the cells' nodes (one more node than cells), m.
+      real(dp), intent(in) :: du(:, :)
+      !> The overshoot allowed, m.
+      real(dp), intent(in) :: allowance
+      integer :: c
+      may = .false.
+      do c = 1, size(l)
+         if (norm2(du(:, c + 1) - du(:, c)) - abs(l(c) - 1 - eps_z)*ds(c) > allowance) then
+            may = .true.
+            return
+         end if
+      end do
+   end function may_cross_kink
 end module xcable_material_tension_only

@@ -46,7 +46,7 @@ module xcable_model_rod
    use xcable_core_error, only: error_type, fatal_error, stat_numerics
    use xcable_core_strings, only: str
    use xcable_material_law, only: material_law
-   use xcable_material_tension_only, only: slack_cell_force, damped_tension
+   use xcable_material_tension_only, only: slack_cell_force, damped_tension, may_cross_kink
    use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
    use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use xcable_solver_banded, only: band_matrix
@@ -189,6 +189,8 @@ module xcable_model_rod
       integer :: lo = 1, hi = 0
    contains
       procedure :: evaluate => rod_problem_evaluate
+      !> Newton's contraction estimate only where no cell can have crossed the kink.
+      procedure :: estimate_trusted => rod_problem_estimate_trusted
       !> After a converged step solve at x: what the accepted state needs, instead of a full
       !> residual (step_state).
       procedure :: accepted_state => rod_problem_accepted_state
@@ -217,6 +219,35 @@ contains
          call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
       end if
    end subroutine rod_problem_evaluate
+
+   !> Newton's contraction estimate (newton_problem) after the update from the last evaluated
+   !> point: trusted unless it may have carried a cell past the kink of the law by more than
+   !> the tolerance (may_cross_kink) (the cells
+   !> whose strains the evaluation computed from the unknowns: a window's lo - 1 .. hi).
+   logical function rod_problem_estimate_trusted(self, update, tolerance) result(trusted)
+      !> Problem.
+      class(rod_problem), intent(in) :: self
+      !> The update, 2 per node of the window (all nodes when there is none), m.
+      real(dp), intent(in) :: update(:)
+      !> Tolerance on the scaled update (scale: length_ref).
+      real(dp), intent(in) :: tolerance
+      real(dp) :: du(rod_nodal, self%piece%n)
+      integer :: lo, hi, ca, cb
+      trusted = .true.
+      if (.not. self%piece%law%strain_slack > -huge(1.0_dp)) return
+      lo = 1
+      hi = self%piece%n
+      if (self%dt > 0 .and. self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)) then
+         lo = self%lo
+         hi = self%hi
+      end if
+      ca = max(1, lo - 1)
+      cb = min(self%piece%n - 1, hi)
+      du(:, ca:cb + 1) = 0
+      du(:, lo:hi) = reshape(update, [rod_nodal, hi - lo + 1])
+      trusted = .not. may_cross_kink(self%piece%law%strain_slack, self%piece%l1(ca:cb), self%piece%ds(ca:cb), &
+                                     du(:, ca:cb + 1), tolerance*self%piece%length_ref)
+   end function rod_problem_estimate_trusted
 
    !> The evaluation of a step at its converged positions x (the window's unknowns when the
    !> problem has a window, as for evaluate), in place of the full residual Newton would

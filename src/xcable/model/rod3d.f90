@@ -70,7 +70,7 @@ module xcable_model_rod3d
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_material_law, only: material_law
-   use xcable_material_tension_only, only: slack_cell_force
+   use xcable_material_tension_only, only: slack_cell_force, may_cross_kink
    use xcable_numerics_tan, only: fast_tan
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end_condition, only: end_condition
@@ -208,6 +208,8 @@ module xcable_model_rod3d
       real(dp) :: dt = 0, t0 = 0, theta = 0.5_dp
    contains
       procedure :: evaluate => rod3d_problem_evaluate
+      !> Newton's contraction estimate only where no cell can have crossed the kink.
+      procedure :: estimate_trusted => rod3d_problem_estimate_trusted
    end type rod3d_problem
 
 contains
@@ -230,6 +232,23 @@ contains
          call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
       end if
    end subroutine rod3d_problem_evaluate
+
+   !> Newton's contraction estimate (newton_problem) after the update from the last evaluated
+   !> point: trusted unless it may have carried a cell past the kink of the law by more than
+   !> the tolerance (may_cross_kink).
+   logical function rod3d_problem_estimate_trusted(self, update, tolerance) result(trusted)
+      !> Problem.
+      class(rod3d_problem), intent(in) :: self
+      !> The update: 3 positions per node, then the twists, m and rad.
+      real(dp), intent(in) :: update(:)
+      !> Tolerance on the scaled update (scale of the positions: length_ref).
+      real(dp), intent(in) :: tolerance
+      trusted = .true.
+      if (.not. self%piece%law%strain_slack > -huge(1.0_dp)) return
+      trusted = .not. may_cross_kink(self%piece%law%strain_slack, self%piece%l1, self%piece%ds, &
+                                     reshape(update(1:3*self%piece%n), [3, self%piece%n]), &
+                                     tolerance*self%piece%length_ref)
+   end function rod3d_problem_estimate_trusted
 
    !> Set up a piece on the node arc lengths s; error for what the 3-D rod does not have yet.
    subroutine rod3d_init(self, s, mass, weight, ei, gip, gravity, mu, law, end_a, end_b, tension_ref, error, mu2, damping)

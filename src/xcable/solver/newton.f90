@@ -19,7 +19,10 @@
 !> rho = |dx_k| / |dx_(k-1)| < 1/2 bounds the distance to the solution,
 !> rho / (1 - rho) |dx_k| (the tail of a geometric series), by the tolerance.
 !> A simplified Newton iteration contracting by 0.05 per step thus stops one
-!> iteration earlier, at the same accuracy. The defaults are the classical
+!> iteration earlier, at the same accuracy. The estimate assumes a smooth
+!> residual along the last update; a problem with kinks (a rope that cannot
+!> push) says where that may fail (`estimate_trusted`), and there only the
+!> update itself is tested. The defaults are the classical
 !> iteration; run_rupture sets the time-stepping values (estimate_error,
 !> max_contraction 0.5, refresh_contraction 0.05, no final residual).
 module xcable_solver_newton
@@ -37,6 +40,10 @@ module xcable_solver_newton
    contains
       !> Residual F(x) and, if with_jacobian, dF/dx into the band matrix.
       procedure(evaluate_interface), deferred :: evaluate
+      !> Whether the contraction estimate may stop the iteration after this update from the
+      !> last evaluated point (a problem with kinks says no where the update may have crossed
+      !> one: the estimate assumes a smooth residual along it).
+      procedure :: estimate_trusted
    end type newton_problem
 
    abstract interface
@@ -107,6 +114,17 @@ module xcable_solver_newton
    end type newton_workspace
 
 contains
+
+   !> The default: a smooth residual, the estimate holds.
+   logical function estimate_trusted(self, update, tolerance)
+      !> The problem.
+      class(newton_problem), intent(in) :: self
+      !> The last update (x_k = x_k-1 - update), unscaled.
+      real(dp), intent(in) :: update(:)
+      !> Tolerance on the scaled update.
+      real(dp), intent(in) :: tolerance
+      estimate_trusted = .true.
+   end function estimate_trusted
 
    !> Allocate the workspace.
    subroutine workspace_init(self, n, kl, ku, scale)
@@ -189,7 +207,10 @@ contains
          rate = 1
          if (it >= 2) rate = dnorm/dnorm_prev
          converged = dnorm <= options%tolerance
-         if (options%estimate_error .and. rate < 0.5_dp) converged = converged .or. rate/(1 - rate)*dnorm <= options%tolerance
+         if (options%estimate_error .and. rate < 0.5_dp .and. .not. converged) then
+            if (problem%estimate_trusted(work%update(1:m), options%tolerance)) &
+               converged = rate/(1 - rate)*dnorm <= options%tolerance
+         end if
          if (converged) then
             report%converged = .true.
             work%contraction = 0

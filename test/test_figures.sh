@@ -69,6 +69,17 @@ run sway3d "&end_b    kind = 'fixed', x = 40.0, y = 20.0, z = 0.0 /
 &rupture  s_break = 60.0, t_break = 0.0 /
 &numerics model = '3d', nodes = 21, courant = 2.0, t_end = 0.5 /" "interval = 0.05"
 stem_3=$tmp/sway3d
+# A chain on a sloping seabed, its fairlead heaved: the line over the bottom (seabed.gp).
+run seabed "&cable    length = 100.0, diameter = 0.1, density = 7850.0, area = 0.0075, bending_stiffness = 1.0 /
+&material law = 'linear', ea = 1.0e8, compression = 'none' /
+&fluid    density = 1025.0 /
+&seabed   depth = 30.0, slope_x = 0.02 /
+&end_a    kind = 'fixed', x = 0.0, z = -30.0 /
+&end_b    kind = 'motion', x = 80.0, z = -5.0, motion = 'harmonic', amplitude = 1.0, period = 5.0,
+          direction_x = 0.0, direction_z = 1.0, ramp_time = 2.0 /
+&rupture  enabled = .false. /
+&numerics nodes = 41, courant = 4.0, t_end = 6.0 /" "interval = 0.2"
+stem_s=$tmp/seabed
 
 # The 3-D run's text: the snapshot header names the 3-D columns 10-15 and every data line has
 # 15 columns, y (column 10) reaching end b's 20 m; the history names each end's y, vy, force_y.
@@ -151,6 +162,27 @@ for stem in "$stem_a" "$stem_b" "$stem_m" "$stem_h" "$stem_3"; do
     check "$kind.gp ($(basename "$stem"))" "$out" "$stem.$kind.err" "$rc"
   done
 done
+# The line over the seabed: drawn without warnings, its touchdown points found in every
+# snapshot (the label names the arc length of the one at t = 0), and a clear refusal without
+# the bottom's depth.
+out=$stem_s.seabed.png rc=0
+gnuplot -e "stem='$stem_s'; out='$out'; depth=30; slope_x=0.02; diameter=0.1" "$plots/seabed.gp" \
+  -e "load '$plots/check_fill.gp'" 2> "$stem_s.seabed.err" || rc=$?
+check "seabed.gp (seabed)" "$out" "$stem_s.seabed.err" "$rc"
+touch=$(gnuplot -e "stem='$stem_s'; out='$tmp/seabed_report.png'; depth=30; slope_x=0.02; diameter=0.1; report=1" \
+  "$plots/seabed.gp" 2>&1 | sed -n 's/^seabed.gp: //p')
+if [ "$(echo "$touch" | awk '{ print ($1 == $3 && $3 > 20) ? "yes" : "no" }')" = yes ]; then
+  pass "seabed: $touch"
+else
+  fail "seabed: expected a touchdown point in each of more than 20 snapshots, got '$touch'"
+fi
+rc=0
+gnuplot -e "stem='$stem_s'; out='$tmp/seabed_nodepth.png'" "$plots/seabed.gp" 2> "$tmp/seabed_nodepth.err" || rc=$?
+if [ "$rc" -ne 0 ] && [ ! -s "$tmp/seabed_nodepth.png" ] && grep -q "give depth and slope_x" "$tmp/seabed_nodepth.err"; then
+  pass "seabed.gp refuses a call without the bottom"
+else
+  fail "seabed.gp without depth: exit $rc, messages: $(cat "$tmp/seabed_nodepth.err")"
+fi
 # The 3-D views of the 3-D run, and a clear refusal of a planar run.
 for kind in motion3d plan; do
   out=$stem_3.$kind.png rc=0
@@ -183,12 +215,14 @@ sed -i -E -e 's/^bottom_key = .*/bottom_key = "set key off; set bmargin 5.5"/' \
    -e "s/^corner_key = .*/corner_key = \"set key at screen 0.01, screen 0.99 left top Left reverse box lc rgb 'white' opaque textcolor rgb 'white' samplen 1 spacing 1.1 width 1\"/" \
    "$keyless/common.gp"
 sed -i -e "s/lc rgb '#404040' title label_/lc rgb '#ffffff' title label_/" "$keyless/motion3d.gp"
-for stem in "$stem_a" "$stem_m" "$stem_h" "$stem_3"; do
+for stem in "$stem_a" "$stem_m" "$stem_h" "$stem_3" "$stem_s"; do
   kinds="motion tension velocity ends energy"
   [ "$stem" = "$stem_3" ] && kinds="$kinds motion3d plan"
+  [ "$stem" = "$stem_s" ] && kinds="seabed"
   for kind in $kinds; do
-    name="$kind.gp ($(basename "$stem"))" rc=0
-    gnuplot -e "stem='$stem'; out='$stem.$kind.keyless.png'" "$keyless/$kind.gp" 2> "$stem.$kind.keyless.err" || rc=$?
+    name="$kind.gp ($(basename "$stem"))" rc=0 extra=""
+    [ "$kind" = seabed ] && extra="depth=30; slope_x=0.02; diameter=0.1; "
+    gnuplot -e "stem='$stem'; out='$stem.$kind.keyless.png'; $extra" "$keyless/$kind.gp" 2> "$stem.$kind.keyless.err" || rc=$?
     if [ "$rc" -ne 0 ] || [ ! -s "$stem.$kind.keyless.png" ]; then fail "$name without its key: $(head -c 300 "$stem.$kind.keyless.err")"; continue; fi
     if msg=$(python3 "$root/tools/check_figure_keys.py" "$stem.$kind.png" "$stem.$kind.keyless.png" "$name"); then
       pass "$msg"
@@ -210,7 +244,7 @@ done
 
 # The drivers: draw.sh on each kind of run, in PNG, and in PDF; draw.sh's messages are not
 # warnings (it says which figures it skips and why).
-for stem in "$stem_b" "$stem_m" "$stem_h" "$stem_3"; do
+for stem in "$stem_b" "$stem_m" "$stem_h" "$stem_3" "$stem_s"; do
   name=$(basename "$stem") rc=0
   "$plots/draw.sh" "$stem" "$tmp/draw_$name" > "$tmp/draw_$name.log" 2> "$tmp/draw_$name.err" || rc=$?
   for kind in motion tension velocity ends energy; do
@@ -221,6 +255,8 @@ for kind in motion3d plan; do
   check "draw.sh $kind.png (sway3d)" "$tmp/draw_sway3d/$kind.png" "$tmp/draw_sway3d.err" 0
   if [ -e "$tmp/draw_short_315/$kind.png" ]; then fail "draw.sh drew $kind.png for a planar run (short_315)"; fi
 done
+check "draw.sh seabed.png (seabed)" "$tmp/draw_seabed/seabed.png" "$tmp/draw_seabed.err" 0
+if [ -e "$tmp/draw_short_315/seabed.png" ]; then fail "draw.sh drew seabed.png for a run without a seabed (short_315)"; fi
 check "draw.sh map.png (break_middle)" "$tmp/draw_break_middle/map.png" "$tmp/draw_break_middle.err" 0
 if [ ! -e "$tmp/draw_short_315/map.png" ] && grep -q "map not drawn" "$tmp/draw_short_315.log"; then
   pass "draw.sh skips the map of a run with few snapshots, and says so"

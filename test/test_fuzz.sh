@@ -580,6 +580,12 @@ begin 'a negative contact damping' 'damping = -1' 'in [0, 1e15]'
 from slow_315kN; add '&seabed depth = 40, damping = -1 /'; check
 begin 'a fixed end below the seabed' 'end_b: z = 0' 'below the seabed'
 from slack_swing; add '&seabed depth = 1, slope_x = 0.5 /'; check
+begin "a spring's anchor below the seabed" 'end_b: z = -40' 'the spring end is below the seabed'
+from slack_swing; add '&fluid density = 1025 /'; add '&seabed depth = 30 /'
+edit "s/^&end_b .*/\&end_b kind = 'spring', x = 50.0, z = -40.0, stiffness = 1e5 \//"; check
+begin 'a moving end below the seabed' 'end_b: z = -40' 'the motion end is below the seabed'
+from slack_swing; add '&fluid density = 1025 /'; add '&seabed depth = 30 /'
+edit "s/^&end_b .*/\&end_b kind = 'motion', x = 50.0, z = -40.0, amplitude = 1.0, period = 5.0 \//"; check
 begin 'the water surface below the seabed' 'surface_z = -50' 'below the seabed'
 from slow_315kN; add '&fluid density = 1025, surface_z = -50 /'; add '&seabed depth = 40 /'; check
 begin 'air with the box scheme' 'box' 'no fluid loads'

@@ -389,7 +389,8 @@ contains
          character(*), intent(in) :: group
          type(error_type), allocatable, intent(out) :: error
          real(dp) :: bottom
-         if (.not. (is_word(e%kind, end_kind_names(held=.true.)) .or. trim(e%kind) == 'spring')) return
+         ! The kinds placed at a point x, y, z (a held end's position, a spring's anchor).
+         if (.not. is_word(e%kind, kinds_using('z'))) return
          bottom = -c%seabed_depth + c%seabed_slope_x*e%x + c%seabed_slope_y*e%y
          if (e%z < bottom - 1.0e-3_dp) call fatal_error(error, c%source//': &'//group//': z = '//real_text(e%z)// &
             ': the '//trim(e%kind)//' end is below the seabed (z = '//real_text(bottom)//' there, &seabed depth = '// &

@@ -470,6 +470,11 @@ contains
       if (scene%end_a%point_mass() > 0 .or. scene%end_b%point_mass() > 0) terms = terms//' point_mass'
       if (scene%end_a%kind() == 'force' .or. scene%end_b%kind() == 'force') terms = terms//' end_force'
       if (scene%end_a%kind() == 'motion' .or. scene%end_b%kind() == 'motion') terms = terms//' end_motion'
+      ! An end with a state of its own (a spring, and the bodies to come): its kind names the term.
+      if (scene%end_a%state_dependent()) terms = terms//' end_'//scene%end_a%kind()
+      if (scene%end_b%state_dependent() .and. .not. (scene%end_a%state_dependent() .and. &
+                                                    scene%end_a%kind() == scene%end_b%kind())) &
+         terms = terms//' end_'//scene%end_b%kind()
       if (scene%breaks) terms = terms//' break'
       if (index(scene%law%name(), 'without compression') > 0) terms = terms//' tension_only'
       if (scene%law%name() == 'table' .or. index(scene%law%name(), 'table ') == 1) terms = terms//' table_law'

@@ -37,7 +37,8 @@ contains
                new_unittest('catenary_on_a_frictionless_bottom', test_catenary), &
                new_unittest('catenary_on_the_bottom_3d_at_an_azimuth', test_catenary_3d), &
                new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger), &
-               new_unittest('line_towed_along_the_bottom', test_towed)]
+               new_unittest('line_towed_along_the_bottom', test_towed), &
+               new_unittest('line_too_long_to_be_taut_explained', test_too_long)]
    end subroutine collect_seabed
 
    subroutine keep_static(self, info, error)
@@ -377,4 +378,32 @@ contains
       call check(error, worst_force < 5.0e-5_dp .and. worst_rate < 3.0e-3_dp, 'the towed line''s friction is off: '// &
                  str(worst_force)//' (force), '//str(worst_rate)//' (growth along the line)')
    end subroutine test_towed
+   !> A chain mooring (input/chain_mooring_heave.nml's) with its fairlead moved in, from 230 m
+   !> to 200 m: 250 m of line against a way of 246.04 m from the anchor along the bottom and up
+   !> to the fairlead. It cannot be taut, a slack line on a frictionless bottom has no single
+   !> static state, and the statics' error says so, with both lengths. At 230 m (the case) no
+   !> such note: the statics are found.
+   subroutine test_too_long(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(static_keeper) :: keep
+      type(error_type), allocatable :: failed
+      character(len=*), parameter :: nl = new_line('a')
+      character(len=*), parameter :: common = &
+         "&cable length = 250.0, diameter = 0.13688, density = 7850.0, bending_stiffness = 1.0 /"//nl// &
+         "&material law = 'linear', ea = 4.9446e8, compression = 'none' /"//nl// &
+         "&fluid density = 1025.0 /"//nl//"&seabed depth = 60.0, slope_x = 0.02 /"//nl// &
+         "&end_a kind = 'fixed', x = 0.0, z = -60.0 /"//nl//"&rupture enabled = .false. /"//nl// &
+         "&numerics nodes = 101, t_end = 0.01 /"//nl//"&output interval = 0, quiet = .true. /"//nl
+      call run_text(path, common//"&end_b kind = 'fixed', x = 200.0, z = -10.0 /", sim, keep, failed)
+      call check(error, allocated(failed), 'a line too long to be taut over the bottom: statics found')
+      if (allocated(error)) return
+      write (output_unit, '(4x,a)') 'fairlead at 200 m: '//failed%message(max(1, index(failed%message, '; the line')):)
+      call check(error, index(failed%message, 'the line (250 m) is at least as long as the way down from end a') > 0 &
+                 .and. index(failed%message, '(246.04 m): it cannot be taut') > 0, &
+                 'the error does not say the line is too long: '//failed%message)
+      if (allocated(error)) return
+      call run_text(path, common//"&end_b kind = 'fixed', x = 230.0, z = -10.0 /", sim, keep, failed)
+      call check(error, .not. allocated(failed), 'the case itself fails')
+   end subroutine test_too_long
 end module suite_seabed

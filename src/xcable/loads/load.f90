@@ -52,6 +52,10 @@ module xcable_loads_load
       !> A line for the run's log about the measure at the start, of a cable of unstretched
       !> length (m) ('' : nothing to say, the default).
       procedure :: measure_note => load_measure_note
+      !> Height of a floor the load holds the line above (a seabed's bottom) under the
+      !> horizontal point p (x, or x and y), m; -huge: none (the default). The statics say when
+      !> a line is too long to be taut over it (model/rod_statics.f90).
+      procedure :: floor => load_floor
    end type cable_load
 
    !> A slot of an array of loads.
@@ -151,6 +155,12 @@ contains
       real(dp), intent(in) :: r1(:), r2(:), ds
       load_cell_measure = 0
    end function load_cell_measure
+
+   pure real(dp) function load_floor(self, p)
+      class(cable_load), intent(in) :: self
+      real(dp), intent(in) :: p(:)
+      load_floor = -huge(1.0_dp)
+   end function load_floor
 
    function load_measure_note(self, value, length) result(text)
       class(cable_load), intent(in) :: self

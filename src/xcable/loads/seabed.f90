@@ -50,6 +50,8 @@ module xcable_loads_seabed
       procedure :: measure_note => seabed_measure_note
       !> Height of the bottom under a horizontal point (x) or (x, y), m.
       procedure :: bottom => seabed_bottom
+      !> The bottom is a floor (the statics' note on a line too long to be taut).
+      procedure :: floor => seabed_bottom
    end type seabed_load
 
 contains

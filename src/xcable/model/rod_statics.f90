@@ -133,7 +133,10 @@ contains
          call first_guess(error)
          if (allocated(error)) return
          call solve_or_relax(error)
-         if (allocated(error)) return
+         if (allocated(error)) then
+            error%message = error%message//slack_on_floor_note()
+            return
+         end if
       end if
       call finish()
 
@@ -487,6 +490,39 @@ contains
                              'no static position', stat_input)
          end if
       end subroutine first_guess
+
+      !> Height of the highest floor of the loads (a seabed's bottom) under the horizontal point
+      !> x, m (-huge: none).
+      real(dp) function floor_at(x) result(z)
+         real(dp), intent(in) :: x
+         integer :: k
+         z = -huge(1.0_dp)
+         if (.not. allocated(problem%piece%loads)) return
+         do k = 1, size(problem%piece%loads)
+            z = max(z, problem%piece%loads(k)%load%floor([x]))
+         end do
+      end function floor_at
+
+      !> Both ends held over a floor (a seabed) and a line at least as long as the way from
+      !> one end straight down to the floor, along it, and straight up to the other end: there
+      !> is no taut static state, the excess lies slack on a frictionless floor (any heap of it
+      !> is an equilibrium), and Newton finds none. The note for the statics' error says so.
+      function slack_on_floor_note() result(note)
+         character(:), allocatable :: note
+         real(dp) :: pa(2), pb(2), fa, fb, way
+         note = ''
+         if (.not. (problem%piece%end_a%held() .and. problem%piece%end_b%held())) return
+         pa = problem%piece%end_a%position(0.0_dp)
+         pb = problem%piece%end_b%position(0.0_dp)
+         fa = floor_at(pa(1))
+         fb = floor_at(pb(1))
+         if (fa <= -huge(1.0_dp) .or. fb <= -huge(1.0_dp)) return
+         way = (pa(2) - fa) + hypot(pb(1) - pa(1), fb - fa) + (pb(2) - fb)
+         if (scene%length >= way) note = '; the line ('//str(scene%length)//' m) is at least as long as the '// &
+            'way down from end a to the seabed, along it and up to end b ('//str(way)//' m): it cannot be taut, '// &
+            'and a slack line on a frictionless seabed has no single static state; move the ends apart or '// &
+            'shorten the line'
+      end function slack_on_floor_note
 
       !> The load of a state-dependent loaded end (a spring) for the catenary guess: the load
       !> (time-only force, state force at the catenary's end point, the point mass's weight)

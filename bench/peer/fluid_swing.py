@@ -65,12 +65,13 @@ import json
 import math
 import os
 import re
-import struct
 import subprocess
 import sys
 import time
 
 import numpy as np
+
+import peer_common as pc  # the MoorDyn state file
 
 XCABLE = os.environ.get("XCABLE", "/tmp/fluidpeer/bin/xcable")
 
@@ -220,23 +221,6 @@ def md_write_current(workdir, u):
         f.write("\n".join("%g %.12g 0.0 0.0" % r for r in rows))
 
 
-def md_write_state(path, nodes, point_states):
-    data = b""
-    ninst = 0
-    for ps in point_states:
-        data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *ps)
-        ninst += 1
-    inner = nodes[1:-1]
-    data += struct.pack("<QQ", len(inner), 6)
-    for x, z in inner:
-        data += struct.pack("<6d", x, 0.0, z, 0.0, 0.0, 0.0)
-    ninst += 1
-    with open(path, "wb") as f:
-        f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, ninst))
-        f.write(data)
-
-
 def vertical_hang(n):
     """Exact static state of MoorDyn's chain hanging straight down: z of nodes."""
     ds = LENGTH / n
@@ -262,7 +246,7 @@ def md_run(n, courant, work, scene="pendulum", u=0.0, t_end=T_END):
     md_write_input(inp, n, r0[-1, 1], h, u=u)
     if u:
         md_write_current(wd, u)
-    md_write_state(os.path.join(wd, "static.state"), r0,
+    pc.moordyn_state(os.path.join(wd, "static.state"), [(x, 0.0, z) for x, z in r0[1:-1]],
                    [[0.0, 0.0, Z0, 0.0, 0.0, 0.0], [0.0, 0.0, r0[-1, 1], 0.0, 0.0, 0.0]])
     cwd = os.getcwd()
     os.chdir(wd)              # MoorDyn reads current_profile.txt next to the input

@@ -66,6 +66,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import fluid_swing as fs  # noqa: E402  (the line, the fluid, MoorDyn's input and state files)
+import peer_common as pc  # noqa: E402  (the MoorDyn state file)
 
 XCABLE = os.environ.get("XCABLE", os.path.join(HERE, "..", "..", "bin", "xcable"))
 AMP, PERIOD, RAMP = 2.0, 10.0, 20.0
@@ -151,7 +152,7 @@ def md_run(n, k, work, t_end, bound=None):
     r0 = fs.vertical_hang(n)
     inp = os.path.join(wd, "heave.txt")
     fs.md_write_input(inp, n, r0[-1, 1], h)
-    fs.md_write_state(os.path.join(wd, "static.state"), r0,
+    pc.moordyn_state(os.path.join(wd, "static.state"), [(x, 0.0, z) for x, z in r0[1:-1]],
                       [[0.0, 0.0, fs.Z0, 0.0, 0.0, 0.0], [0.0, 0.0, r0[-1, 1], 0.0, 0.0, 0.0]])
     saved = os.dup(1)
     devnull = os.open(os.devnull, os.O_WRONLY)

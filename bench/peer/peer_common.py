@@ -13,6 +13,7 @@ and the writer of the reference data files.
 """
 
 import math
+import struct
 
 import numpy as np
 
@@ -276,3 +277,19 @@ def write_tsv(path, rows):
 def read_tsv(path):
     """Structured array with the COLUMNS names."""
     return np.genfromtxt(path, names=True, delimiter="\t")
+
+
+def moordyn_state(path, inner, points):
+    """A MoorDyn v2 state file (the layout of its SaveState) of one line at rest: the points'
+    states first (each x, y, z, vx, vy, vz), then the line's inner nodes (x, y, z each)."""
+    data = b""
+    for ps in points:
+        data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *ps)
+    data += struct.pack("<QQ", len(inner), 6)
+    for p in inner:
+        data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
+    with open(path, "wb") as f:
+        f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
+        f.write(struct.pack("<QQ", len(data) // 8 + 1, len(points) + 1))
+        f.write(data)
+

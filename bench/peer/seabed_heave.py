@@ -55,7 +55,6 @@ import argparse
 import math
 import os
 import resource
-import struct
 import subprocess
 import sys
 import tempfile
@@ -68,6 +67,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import seabed as sc  # noqa: E402  (the scene of the static comparison)
+import peer_common as pc  # noqa: E402  (the MoorDyn state file)
 
 import moordyn  # noqa: E402
 
@@ -168,22 +168,6 @@ RK4      tScheme
         f.write(txt)
 
 
-def md_state(path, nodes):
-    """MoorDyn v2 state file (the layout of SaveState): the two points, then the line's inner
-    nodes, each as position and velocity (at rest)."""
-    data = b""
-    for p in (nodes[0], nodes[-1]):
-        data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *p, 0.0, 0.0, 0.0)
-    inner = nodes[1:-1]
-    data += struct.pack("<QQ", len(inner), 6)
-    for p in inner:
-        data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
-    with open(path, "wb") as f:
-        f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, 3))
-        f.write(data)
-
-
 def md_system(work, name, segments, dtm, ba, cd_factor, state):
     inp = os.path.join(work, name)
     md_input(inp, segments, dtm, ba, cd_factor)
@@ -206,7 +190,8 @@ def md_run(segments, static, courant, settle, sample, t_end, amp, period, ba, wo
     h = courant * ds / math.sqrt(sc.EA / sc.MASS)
     k = int(math.ceil(sample / h - 1e-9))   # steps per sample
     h = sample / k
-    md_state(os.path.join(work, "start.state"), static)
+    pc.moordyn_state(os.path.join(work, "start.state"), static[1:-1],
+                       [(*static[0], 0.0, 0.0, 0.0), (*static[-1], 0.0, 0.0, 0.0)])
     xb = [sc.FAIRLEAD[0], 0.0, sc.FAIRLEAD[1]]
 
     def measure(sysm):

@@ -72,7 +72,6 @@ import json
 import math
 import os
 import resource
-import struct
 import subprocess
 import sys
 import time
@@ -82,6 +81,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import fluid_swing as fs  # noqa: E402  (the line and the water, MoorDyn's version)
+import peer_common as pc  # noqa: E402  (the MoorDyn state file)
 
 XCABLE = os.environ.get("XCABLE", os.path.join(HERE, "..", "..", "bin", "xcable"))
 XB, ZB = 48.0, 24.0          # fairlead (end b), m; anchor (end a) at the origin
@@ -227,22 +227,6 @@ RK4      tScheme
         f.write("\n".join("%g 0.0 %.12g 0.0" % (z, U) for z in (-1000.0, -500.0, -100.0, 0.0)))
 
 
-def md_write_state(path, nodes):
-    """MoorDyn state file (format of SaveState): the two points (x, v), then the
-    inner nodes of the line (x, v), all at rest."""
-    data = b""
-    for p in (nodes[0], nodes[-1]):
-        data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *p, 0.0, 0.0, 0.0)
-    inner = nodes[1:-1]
-    data += struct.pack("<QQ", len(inner), 6)
-    for p in inner:
-        data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
-    with open(path, "wb") as f:
-        f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, 3))
-        f.write(data)
-
-
 def md_run(n, courant, work, static, t_end=T_END):
     import moordyn
     from scipy.interpolate import CubicSpline
@@ -256,7 +240,7 @@ def md_run(n, courant, work, static, t_end=T_END):
     r0 = CubicSpline(s_x, r_x, axis=0)(np.linspace(0.0, fs.LENGTH, n + 1))
     r0[0], r0[-1] = [0.0, 0.0, 0.0], [XB, 0.0, ZB]
     r0[:, 2] += Z0
-    md_write_state(os.path.join(wd, "start.state"), r0)
+    pc.moordyn_state(os.path.join(wd, "start.state"), r0[1:-1], [(*r0[0], 0.0, 0.0, 0.0), (*r0[-1], 0.0, 0.0, 0.0)])
 
     def system(name, ba, state, cd_factor=1.0):
         inp = os.path.join(wd, name)

@@ -35,7 +35,7 @@ module xcable_driver_rod_run
    use xcable_core_strings, only: str, quantity
    use xcable_scene_scene, only: scene_type, scene_grid
    use xcable_loads_load, only: measure_names, load_measures, note_measures
-   use xcable_model_rod, only: rod_piece, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
+   use xcable_model_rod, only: rod_piece, collapsed_length, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
                                bend_curvature, cell_rotations, small_strain_step
    use xcable_ends_end_condition, only: end_condition
    use xcable_material_law, only: material_law

@@ -65,6 +65,11 @@ module xcable_model_rod
    ! (suite_rod, bend_terms_in_pairs_same_bits). bend_nodes' kernels stay private, inlined
    ! into it (public, they cost 0.9e6 instructions on fast_180kN).
    public :: cell_terms, add_jacobian, bend_nodes, small_rotation, small_strain_step
+   public :: collapsed_length
+
+   !> A cell shorter than this fraction of its unstretched length has collapsed: the step
+   !> control rejects such a state (driver/rod_run/step.f90 check_range), the statics refuse it.
+   real(dp), parameter :: collapsed_length = 0.05_dp
 
    !> The unknowns of a node, in their order in Newton's vector (node after node).
    character(len=*), parameter :: rod_unknown_names(2) = [character(len=1) :: 'x', 'z']

@@ -26,7 +26,7 @@ module xcable_model_rod_statics
    use xcable_core_strings, only: str
    use xcable_scene_scene, only: scene_type
    use xcable_loads_load, only: load_slot
-   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku
+   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, collapsed_length
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
@@ -95,7 +95,10 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: span0, span1, sag, angle, mid, r0, r1, span2
       integer :: it, n
+      !> Whether a solve reached a state with a collapsed cell (refused by check_fold).
+      logical :: saw_collapse
       n = problem%piece%n
+      saw_collapse = .false.
       allocate (state%r(2, n))
       problem%dt = 0
       problem%t0 = 0
@@ -135,6 +138,10 @@ contains
          call solve_or_relax(error)
          if (allocated(error)) then
             error%message = error%message//slack_on_floor_note()
+            if (saw_collapse) error%message = error%message//'; on the way Newton reached an equilibrium with '// &
+               'a collapsed cell (slack line heaped into a point), which the dynamics cannot start from: the '// &
+               'line is slack somewhere; with compression = ''none'' nothing resists that, with ''law'' the '// &
+               'rope pushes back'
             return
          end if
       end if
@@ -421,7 +428,9 @@ contains
       end subroutine solve_now
 
       !> A solution is refused when it is folded: at some interior node the two
-      !> cells turn back on themselves (turning angle above pi/2). Such a state is
+      !> cells turn back on themselves (turning angle above pi/2), or when a cell has
+      !> collapsed (shorter than collapsed_length of its unstretched length, as the step
+      !> control refuses it). Such a state is
       !> an equilibrium of compressed, zigzagging cells (compression = 'law') or a
       !> bend sharper than the grid resolves, not the static state sought.
       subroutine check_fold(r, err)
@@ -444,6 +453,17 @@ contains
          if (.not. (worst <= fold_angle)) call fatal_error(err, 'statics: a folded state (the cells at node '// &
                                                            str(at)//' turn back on themselves, by '//str(worst)// &
                                                            ' rad, more than pi/2)', stat_numerics)
+         if (allocated(err)) return
+         ! A collapsed cell (a slack rope heaped into one point): the dynamics would refuse it.
+         do k = 1, size(r, 2) - 1
+            if (norm2(r(:, k + 1) - r(:, k)) < collapsed_length*problem%piece%ds(k)) then
+               saw_collapse = .true.
+               call fatal_error(err, 'statics: a collapsed state (cell '//str(k)//' squeezed to '// &
+                                str(100*norm2(r(:, k + 1) - r(:, k))/problem%piece%ds(k))// &
+                                ' % of its length: slack line heaped into a point)', stat_numerics)
+               return
+            end if
+         end do
       end subroutine check_fold
 
       !> The catenary guess.

@@ -475,7 +475,7 @@ contains
          return
       end if
       do c = 1, size(l)
-         if (l(c) < 0.05_dp) then
+         if (l(c) < collapsed_length) then
             call fatal_error(error, 'cell '//str(c)//' of piece '//str(p)//' squeezed to '// &
                              str(100*l(c))//' % of its length (strain '//str(l(c) - 1)// &
                              '): the compressed zone has collapsed'//trim(squeeze_advice(law)), stat_numerics)

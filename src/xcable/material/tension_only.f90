@@ -237,6 +237,7 @@ contains
          val = 0
       end if
    end function damped_tension
+
    !> Whether a change du (dims, n) of the node positions may carry a cell further than
    !> allowance past the kink at eps_z. The strain |e| - 1 of a cell, e = (R_c+1 - R_c) / ds_c,
    !> changes by at most |du_c+1 - du_c| / ds_c, so a cell moves past the kink by at most

@@ -86,6 +86,9 @@ import numpy as np
 
 import moordyn
 
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import peer_common as pc  # noqa: E402  (MoorDyn's state file and start from it)
+
 HERE = os.path.dirname(os.path.abspath(__file__))
 XCABLE = os.environ.get("XCABLE", os.path.join(HERE, "..", "..", "bin", "xcable"))
 
@@ -269,45 +272,14 @@ def chain_static(n):
     return np.vstack([[0.0, 0.0], np.cumsum(shape(hv), axis=0)])
 
 
-def md_state(path, nodes):
-    """MoorDyn state file (SaveState layout): the two points, then the line's inner nodes,
-    positions and zero velocities."""
-    import struct
-    data = b""
-    for x, z in (nodes[0], nodes[-1]):
-        data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", x, 0.0, z, 0.0, 0.0, 0.0)
-    data += struct.pack("<QQ", len(nodes) - 2, 6)
-    for x, z in nodes[1:-1]:
-        data += struct.pack("<6d", x, 0.0, z, 0.0, 0.0, 0.0)
-    with open(path, "wb") as f:
-        f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, 3))
-        f.write(data)
-
-
-def md_system(inp, state, xb):
-    saved = os.dup(1)
-    devnull = os.open(os.devnull, os.O_WRONLY)
-    os.dup2(devnull, 1)       # MoorDyn's banner
-    try:
-        sysm = moordyn.Create(inp)
-        moordyn.SetVerbosity(sysm, moordyn.LEVEL_ERR)
-        moordyn.Init_NoIC(sysm, list(xb), [0.0, 0.0, 0.0])
-        moordyn.LoadState(sysm, state)
-    finally:
-        os.dup2(saved, 1)
-        os.close(devnull)
-        os.close(saved)
-    return sysm
-
-
 def md_run(n, courant, work):
     wd = os.path.join(work, f"md_n{n}_c{courant:g}")
     os.makedirs(wd, exist_ok=True)
     ds = LENGTH / n
     h = courant * ds / math.sqrt(EA / MASS)
     r0 = chain_static(n)
-    md_state(os.path.join(wd, "start.state"), r0)
+    pc.moordyn_state(os.path.join(wd, "start.state"), [(x, 0.0, z) for x, z in r0[1:-1]],
+                     [(x, 0.0, z, 0.0, 0.0, 0.0) for x, z in (r0[0], r0[-1])])
     xb0 = [XB0, 0.0, ZB0]
     md_input(os.path.join(wd, "settle.txt"), n, h, -1.0)
     md_input(os.path.join(wd, "run.txt"), n, h, 0.0)
@@ -317,7 +289,7 @@ def md_run(n, courant, work):
         return EA * np.maximum(np.linalg.norm(np.diff(p, axis=0), axis=1) / ds - 1, 0.0), p
 
     w0 = time.time()
-    sysm = md_system(os.path.join(wd, "settle.txt"), os.path.join(wd, "start.state"), xb0)
+    sysm = pc.moordyn_from_state(os.path.join(wd, "settle.txt"), xb0, os.path.join(wd, "start.state"))
     t = -T_SETTLE
     line = moordyn.GetLine(sysm, 1)
     tb_settle = []
@@ -331,7 +303,7 @@ def md_run(n, courant, work):
     tb_settle = np.array(tb_settle)
     last = tb_settle[-int(round(0.5 / h)):]
 
-    sysm = md_system(os.path.join(wd, "run.txt"), os.path.join(wd, "settled.state"), xb0)
+    sysm = pc.moordyn_from_state(os.path.join(wd, "run.txt"), xb0, os.path.join(wd, "settled.state"))
     line = moordyn.GetLine(sysm, 1)
     fair = moordyn.GetPoint(sysm, 2)
     seg, p = seg_tension(line)
@@ -386,7 +358,8 @@ def md_failure_check(work):
     n = 60
     h = 0.5 * (LENGTH / n) / math.sqrt(EA / MASS)
     r0 = chain_static(n)
-    md_state(os.path.join(work, "fc.state"), r0)
+    pc.moordyn_state(os.path.join(work, "fc.state"), [(x, 0.0, z) for x, z in r0[1:-1]],
+                     [(x, 0.0, z, 0.0, 0.0, 0.0) for x, z in (r0[0], r0[-1])])
     for label, ftime, ften in (("tension", 0.0, MBL), ("time 5 s", 5.0, 0.0)):
         inp = os.path.join(work, "fc.txt")
         md_input(inp, n, h, 0.0)
@@ -399,7 +372,7 @@ def md_failure_check(work):
         txt = txt.replace("---------------------- OPTIONS", fail + "---------------------- OPTIONS")
         with open(inp, "w") as f:
             f.write(txt)
-        sysm = md_system(inp, os.path.join(work, "fc.state"), [XB0, 0.0, ZB0])
+        sysm = pc.moordyn_from_state(inp, [XB0, 0.0, ZB0], os.path.join(work, "fc.state"))
         line = moordyn.GetLine(sysm, 1)
         npts0 = moordyn.GetNumberPoints(sysm)
         detached, t, k, top = None, 0.0, 0, 0.0

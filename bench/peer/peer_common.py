@@ -293,3 +293,23 @@ def moordyn_state(path, inner, points):
         f.write(struct.pack("<QQ", len(data) // 8 + 1, len(points) + 1))
         f.write(data)
 
+
+def moordyn_from_state(inp, coupled, state):
+    """A MoorDyn v2 system from its input file, started from a state file (moordyn_state), the
+    coupled point at coupled (x, y, z) and at rest; MoorDyn's banner kept off the terminal."""
+    import os
+    import moordyn
+    saved = os.dup(1)
+    devnull = os.open(os.devnull, os.O_WRONLY)
+    os.dup2(devnull, 1)
+    try:
+        sysm = moordyn.Create(inp)
+        moordyn.SetVerbosity(sysm, moordyn.LEVEL_ERR)
+        moordyn.Init_NoIC(sysm, list(coupled), [0.0, 0.0, 0.0])
+        moordyn.LoadState(sysm, state)
+    finally:
+        os.dup2(saved, 1)
+        os.close(devnull)
+        os.close(saved)
+    return sysm
+

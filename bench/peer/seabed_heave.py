@@ -67,7 +67,7 @@ import numpy as np
 HERE = os.path.dirname(os.path.abspath(__file__))
 sys.path.insert(0, HERE)
 import seabed as sc  # noqa: E402  (the scene of the static comparison)
-import peer_common as pc  # noqa: E402  (the MoorDyn state file)
+import peer_common as pc  # noqa: E402  (MoorDyn's state file and start from it)
 
 import moordyn  # noqa: E402
 
@@ -171,18 +171,7 @@ RK4      tScheme
 def md_system(work, name, segments, dtm, ba, cd_factor, state):
     inp = os.path.join(work, name)
     md_input(inp, segments, dtm, ba, cd_factor)
-    saved, devnull = os.dup(1), os.open(os.devnull, os.O_WRONLY)
-    os.dup2(devnull, 1)                    # MoorDyn's banner
-    try:
-        sysm = moordyn.Create(inp)
-        moordyn.SetVerbosity(sysm, moordyn.LEVEL_ERR)
-        moordyn.Init_NoIC(sysm, [sc.FAIRLEAD[0], 0.0, sc.FAIRLEAD[1]], [0.0, 0.0, 0.0])
-        moordyn.LoadState(sysm, state)
-    finally:
-        os.dup2(saved, 1)
-        os.close(devnull)
-        os.close(saved)
-    return sysm
+    return pc.moordyn_from_state(inp, [sc.FAIRLEAD[0], 0.0, sc.FAIRLEAD[1]], state)
 
 
 def md_run(segments, static, courant, settle, sample, t_end, amp, period, ba, work):

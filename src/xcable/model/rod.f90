@@ -214,7 +214,7 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form it.
       logical, intent(in) :: with_jacobian
-      if (self%dt > 0 .and. self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)) then
+      if (windowed(self)) then
          call step_window(self%piece, x, self%lo, self%hi, self%t0, self%dt, self%theta, residual, jacobian, &
                           with_jacobian)
       else if (self%dt > 0) then
@@ -241,7 +241,7 @@ contains
       if (.not. self%piece%law%strain_slack > -huge(1.0_dp)) return
       lo = 1
       hi = self%piece%n
-      if (self%dt > 0 .and. self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)) then
+      if (windowed(self)) then
          lo = self%lo
          hi = self%hi
       end if
@@ -253,6 +253,12 @@ contains
                                      du(:, ca:cb + 1), tolerance*self%piece%length_ref)
    end function rod_problem_estimate_trusted
 
+   !> Whether the problem is a step on a window of the piece's nodes (lo .. hi, not all of them).
+   pure logical function windowed(self)
+      class(rod_problem), intent(in) :: self
+      windowed = self%dt > 0 .and. self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)
+   end function windowed
+
    !> The evaluation of a step at its converged positions x (the window's unknowns when the
    !> problem has a window, as for evaluate), in place of the full residual Newton would
    !> evaluate there (newton_options%final_residual): step_state.
@@ -261,7 +267,7 @@ contains
       class(rod_problem), intent(inout) :: self
       !> Positions, 2 per node of the window (all nodes when there is none).
       real(dp), intent(in) :: x(:)
-      if (self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)) then
+      if (windowed(self)) then
          call step_state(self%piece, x, self%lo, self%hi, self%t0, self%dt, self%theta)
       else
          call step_state(self%piece, x, 1, self%piece%n, self%t0, self%dt, self%theta)

@@ -24,6 +24,7 @@ program checkpoint_cost
    use xcable_core_strings, only: str
    use xcable_io_input, only: case_config, read_config, config_text
    use xcable_driver_simulation, only: simulation
+   use xcable_driver_stepping, only: start_dynamics
    use xcable_io_checkpoint, only: checkpoint_file, remove_checkpoint
    use xcable_core_version, only: code_version
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
@@ -140,7 +141,7 @@ contains
       type(simulation) :: sim
       call sim%prepare(config, error)
       call stop_on(error)
-      call sim%rod%start(error=error)
+      call start_dynamics(sim%rod, sim%planar, error=error)
       call stop_on(error)
       call time_saves(sim, first, bytes_first)
       call sim%prepare(config, error)

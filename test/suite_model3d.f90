@@ -31,6 +31,7 @@ module suite_model3d
    use xcable_io_config, only: case_config
    use xcable_fixtures, only: pushing_rope, column_text
    use xcable_driver_simulation, only: simulation
+   use xcable_driver_stepping, only: start_dynamics
    use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_ends_end_condition, only: end_condition
    use xcable_ends_factory, only: new_end
@@ -369,7 +370,7 @@ contains
          call run%problem%piece%static_system(run%x, 0.0_dp, res, unused, .false.)
          whole = maxval(abs(res(1:3*run%problem%piece%n)))
       end associate
-      call sim%rod3%start(sim%rod, error=error)
+      call start_dynamics(sim%rod, sim%rod3, error=error)
       if (allocated(error)) return
       call check(error, size(sim%rod3%pieces) == 2, 'pieces after the break: '//str(size(sim%rod3%pieces)))
       if (allocated(error)) return
@@ -448,7 +449,7 @@ contains
          call piece%static_system(x, 0.0_dp, res, unused, .false.)
          whole = maxval(abs(res))
       end associate
-      call sim%rod%start(error=error)
+      call start_dynamics(sim%rod, sim%planar, error=error)
       if (allocated(error)) return
       call check(error, size(sim%rod%pieces) == 2, 'pieces after the break: '//str(size(sim%rod%pieces)))
       if (allocated(error)) return

@@ -18,6 +18,7 @@ module suite_rupture
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
    use xcable_driver_simulation, only: simulation
+   use xcable_driver_stepping, only: start_dynamics, advance_dynamics
    use xcable_driver_rod_run, only: pause_none, rupture_tolerance
    use xcable_driver_records, only: summary_text
    use suite_golden, only: snapshot_store
@@ -109,12 +110,12 @@ contains
       call prepare_text(text//"&rupture enabled = .false. /"//nl//numerics_of(model_nodes, 1.0_dp), sim, error)
       if (allocated(error)) return
       sim%rod%options%checkpoint_steps = 1
-      call sim%rod%start(error=error)
+      call start_dynamics(sim%rod, sim%planar, error=error)
       if (allocated(error)) return
       before = tensions(sim)
       t_before = sim%rod%t
       do
-         call sim%rod%advance(error=error, pause=pause)
+         call advance_dynamics(sim%rod, sim%planar, error=error, pause=pause)
          if (allocated(error)) return
          after = tensions(sim)
          if (maxval(after) >= mbl) exit

@@ -13,15 +13,17 @@
 !> fields of a state are those of driver/rod3d_fields.f90; the history keeps
 !> the y components of the ends too (run_history%ends_y).
 !>
-!> Step control as the planar run's (its module header; the same procedures
-!> plan_step, reject_attempt, advance_time and check_range, and the fold
-!> check in 3-D form, rod3d_piece%turning_folds): a failed or out-of-range
-!> attempt is rejected and the step halved, then grown back.
+!> The dynamics are those of the one step loop (driver/stepping.f90), for
+!> which this type is the model of the cable (cable_model): an attempt on
+!> every piece with the checks of the new state (check_state3: the planar
+!> run's check_range, and the fold check in 3-D form,
+!> rod3d_piece%turning_folds), the rejection, the acceptance, the snapshots,
+!> the history record and the break. The step control, its landing, the
+!> checkpoint pauses and the summary are the loop's and the planar run's.
 !>
-!> Checkpoints as the planar run's: start, advance (pausing where the
-!> planar run's checkpoint_pause says), finish; save_state and load_state
-!> list the state (exchange3) with the planar run's sync procedures
-!> (io/archive.f90) and its exchange_progress and exchange_records.
+!> Checkpoints as the planar run's: save_state and load_state list the state
+!> (exchange3) with the planar run's sync procedures (io/archive.f90) and its
+!> exchange_progress and exchange_records.
 !>
 !> A break inside the cable as in the planar run: the output has the break
 !> node twice (the planar run's columns and end slots break_a, break_b), and
@@ -39,9 +41,8 @@ module xcable_driver_rod3d_drive
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_core_strings, only: str
-   use xcable_driver_rod_run, only: rod_run, end_value, snapshot_time, ends_change, wall_limit, plan_step, reject_attempt, &
-                             advance_time, jacobian_kept, check_range, check_folds, checkpoint_pause, pause_none, &
-                             exchange_progress, exchange_records, max_steps, watch_step
+   use xcable_driver_rod_run, only: rod_run, cable_model, end_value, snapshot_time, jacobian_kept, check_range, &
+                                    check_folds, exchange_progress, exchange_records, watch_step, max_steps
    use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_driver_rod3d_run, only: rod3d_run
@@ -73,8 +74,8 @@ module xcable_driver_rod3d_drive
       integer :: end_slot(2) = 0
    end type piece3
 
-   !> A 3-D run.
-   type :: rod3d_drive
+   !> A 3-D run: the 3-D rod as the model of a run (cable_model, driven by driver/stepping.f90).
+   type, extends(cable_model) :: rod3d_drive
       !> The pieces (one, or two after a break inside the cable).
       type(piece3), allocatable :: pieces(:)
       !> Whether the break has happened.
@@ -84,15 +85,21 @@ module xcable_driver_rod3d_drive
       real(dp) :: cut_force(3, 2) = 0, cut_couple(2) = 0, cut_axis(3, 2) = 0, cut_torque(2) = 0
       !> Extra fields of the static state (n_out, n_fields3).
       real(dp), allocatable :: static_extra(:, :)
+      !> Pieces the last attempt solved (a rejection takes them back to the old level).
+      integer :: tried = 0
    contains
       !> The 3-D statics from the planar run's static state; static fields and records.
       procedure :: prepare => drive_prepare
-      !> The dynamics to t_end (start, advance until done, finish).
-      procedure :: run_dynamics => drive_run
-      !> The parts of run_dynamics: the records of t = 0; the steps until t_end or a pause; the summary.
-      procedure :: start => drive_start
-      procedure :: advance => drive_advance
-      procedure :: finish => finish
+      !> The bindings of cable_model (the step loop's view of the model).
+      procedure :: begin => drive_begin
+      procedure :: attempt => drive_attempt
+      procedure :: reject => drive_reject
+      procedure :: watch => drive_watch
+      procedure :: accept => drive_accept
+      procedure :: emit => drive_emit
+      procedure :: record => drive_record
+      procedure :: split => drive_split
+      procedure :: conclude => drive_conclude
       !> The state between two steps to an archive (a checkpoint), and back into a prepared run.
       procedure :: save_state => drive_save_state
       procedure :: load_state => drive_load_state
@@ -116,172 +123,135 @@ module xcable_driver_rod3d_drive
 
 contains
 
-   !> The dynamics: start, advance until done, finish (a run that writes
-   !> checkpoints goes through the parts itself, driver/simulation.f90).
-   subroutine drive_run(self, rod, observer, error)
-      !> 3-D run (prepared).
+   !> The start of the dynamics: the history's labels and record of t = 0, the static state
+   !> with its snapshot (and the 3-D fields) to the observer.
+   subroutine drive_begin(self, run, observer, error)
       class(rod3d_drive), intent(inout) :: self
       !> The planar run it shares its records with.
-      type(rod_run), intent(inout) :: rod
-      !> Receives the static state and the snapshots.
+      type(rod_run), intent(inout) :: run
       class(run_observer), intent(inout), optional :: observer
-      !> Error when the run cannot go on (the records hold what was done).
       type(error_type), allocatable, intent(out) :: error
-      integer :: pause
-      call self%start(rod, observer, error)
-      if (.not. allocated(error)) then
-         do
-            call self%advance(rod, observer, error, pause)
-            if (allocated(error) .or. pause == pause_none) exit
-         end do
-      end if
-      call self%finish(rod)
-   end subroutine drive_run
+      call start_records(self, run)
+      if (.not. present(observer)) return
+      call observer%static(run%info, error)
+      if (.not. allocated(error)) call observer%snapshot(0.0_dp, run%info%fields, error)
+      if (.not. allocated(error)) call observer%snapshot_extra(0.0_dp, field3_names, self%static_extra, error)
+   end subroutine drive_begin
 
-   !> The start of the dynamics: the record of t = 0, the static state and
-   !> its snapshot to the observer, a break at t = 0, and the skip to a later
-   !> break when nothing moves before it.
-   subroutine drive_start(self, rod, observer, error)
-      !> 3-D run (prepared).
+   !> An attempt of h on every piece (the first that fails stops the others), each checked
+   !> (check_state3) before the next.
+   subroutine drive_attempt(self, run, h, iterations, retry_same, error)
       class(rod3d_drive), intent(inout) :: self
-      !> The planar run it shares its records with.
-      type(rod_run), intent(inout) :: rod
-      !> Receives the static state and the snapshots.
-      class(run_observer), intent(inout), optional :: observer
-      !> Error when the output fails.
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      integer, intent(out) :: iterations
+      logical, intent(out) :: retry_same
       type(error_type), allocatable, intent(out) :: error
-      integer :: capacity
-      call system_clock(rod%clock%start, rod%clock%rate)
-      rod%clock%last_report = 0
-      rod%t = 0
-      rod%progress%h = rod%dt
-      rod%progress%n_good = 0
-      rod%progress%rejected_here = 0
-      rod%progress%snapshot_index = 1
-      call start_records(self, rod)
-      capacity = int(min(rod%options%t_end/rod%dt, 1.0e6_dp)) + 16
-      call rod%history%reserve(capacity, size(rod%history%end_labels), rod%options%energy)
-      if (present(observer)) then
-         call observer%static(rod%info, error)
-         if (.not. allocated(error)) call observer%snapshot(0.0_dp, rod%info%fields, error)
-         if (.not. allocated(error)) call observer%snapshot_extra(0.0_dp, field3_names, self%static_extra, error)
-         if (allocated(error)) return
-      end if
-      associate (scene => rod%scene)
-         if (scene%breaks .and. scene%break_time <= 0) then
-            call split(self, rod, error)
-            if (allocated(error)) return
-         end if
-         ! Nothing moves before the break if no end moves or changes its load: skip to it.
-         if (scene%breaks .and. .not. self%broken .and. .not. ends_change(rod)) then
-            call emit(self, rod, observer, scene%break_time, .true., error)
-            if (allocated(error)) return
-            rod%t = scene%break_time
-            call set_time(self, rod%t)
-            call record(self, rod, 0, rod%t - rod%history%time(rod%history%n))
-            call split(self, rod, error)
-            if (allocated(error)) return
-         end if
-      end associate
-      rod%clock%records_at_checkpoint = rod%history%n
-   end subroutine drive_start
+      logical :: kept, newton_failed
+      integer :: p
+      kept = .false.
+      newton_failed = .false.
+      iterations = 0
+      self%tried = 0
+      do p = 1, size(self%pieces)
+         associate (piece => self%pieces(p))
+            piece%x_prev = piece%run%x
+            piece%v_prev = piece%run%v
+            piece%run%t = run%t
+            kept = kept .or. jacobian_kept(piece%run%options, piece%run%work)
+            self%tried = p
+            call piece%run%attempt(h, run%options%theta, error)
+            newton_failed = allocated(error)
+            if (.not. newton_failed) call check_state3(piece%run%problem%piece, piece%run%x, p, h, error)
+            iterations = max(iterations, piece%run%last_iterations)
+         end associate
+         if (allocated(error)) exit
+      end do
+      retry_same = newton_failed .and. kept
+   end subroutine drive_attempt
 
-   !> Time steps until t_end, an error, or a pause (the planar run's
-   !> checkpoint_pause, checked before every attempt: SIGTERM, or a
-   !> checkpoint due). After a pause the state can be saved (save_state) and
-   !> advance called again.
-   subroutine drive_advance(self, rod, observer, error, pause)
-      !> 3-D run (started, or loaded from a checkpoint).
+   !> The pieces the last attempt solved back to the old level.
+   subroutine drive_reject(self, run)
       class(rod3d_drive), intent(inout) :: self
-      !> The planar run it shares its records with.
-      type(rod_run), intent(inout) :: rod
-      !> Receives the snapshots.
-      class(run_observer), intent(inout), optional :: observer
-      !> Error when the run cannot go on (the records hold what was done).
-      type(error_type), allocatable, intent(out) :: error
-      !> Why it returned: pause_none (t_end or an error), pause_checkpoint or pause_termination.
-      integer, intent(out) :: pause
-      real(dp) :: t_stop, h_try, wall
-      integer(i8) :: now
-      integer :: p, tried, iterations
-      logical :: landing, kept, newton_failed, retry
-      type(error_type), allocatable :: step_error
-      pause = pause_none
-      associate (scene => rod%scene)
-         do while (rod%t < rod%options%t_end*(1 - 1.0e-12_dp))
-            call system_clock(now)
-            wall = real(now - rod%clock%start, dp)/rod%clock%rate
-            call wall_limit(rod, wall, error)
-            if (allocated(error)) exit
-            pause = checkpoint_pause(rod, wall)
-            if (pause /= pause_none) return
-            call plan_step(rod, h_try, t_stop, landing, error)
-            if (allocated(error)) exit
-            ! One attempt on every piece (the first that fails stops the others).
-            kept = .false.
-            newton_failed = .false.
-            tried = 0
-            do p = 1, size(self%pieces)
-               associate (piece => self%pieces(p))
-                  piece%x_prev = piece%run%x
-                  piece%v_prev = piece%run%v
-                  piece%run%t = rod%t
-                  kept = kept .or. jacobian_kept(piece%run%options, piece%run%work)
-                  tried = p
-                  call piece%run%attempt(h_try, rod%options%theta, step_error)
-                  newton_failed = allocated(step_error)
-                  if (.not. newton_failed) call check_state3(piece%run%problem%piece, piece%run%x, p, h_try, step_error)
-               end associate
-               if (allocated(step_error)) exit
-            end do
-            if (allocated(step_error)) then
-               do p = 1, tried
-                  call self%pieces(p)%run%reject()
-               end do
-               call reject_attempt(rod, step_error%message, newton_failed .and. kept, error)
-               deallocate (step_error)
-               if (allocated(error)) exit
-               cycle
-            end if
-            ! The search for a break by tension: a step past the crossing is taken again, shorter.
-            if (rod%watch%mbl > 0) then
-               associate (run => self%pieces(1)%run, n => self%pieces(1)%run%problem%piece%n)
-                  call watch_step(rod, h_try, reshape(run%x_old(1:3*n), [3, n]), reshape(run%x(1:3*n), [3, n]), &
-                                  run%problem%piece%ds, run%problem%piece%law, retry)
-               end associate
-               if (retry) then
-                  call self%pieces(1)%run%reject()
-                  cycle
-               end if
-            end if
-            iterations = 0
-            do p = 1, size(self%pieces)
-               associate (run => self%pieces(p)%run)
-                  call run%accept(h_try, rod%options%theta)
-                  self%pieces(p)%reaction(:, 1) = run%problem%piece%reaction(1, h_try)
-                  self%pieces(p)%reaction(:, 2) = run%problem%piece%reaction(run%problem%piece%n, h_try)
-                  iterations = max(iterations, run%last_iterations)
-               end associate
-            end do
-            call emit(self, rod, observer, rod%t + h_try, .false., error)
-            if (allocated(error)) exit
-            call advance_time(rod, h_try, t_stop, landing)
-            call set_time(self, rod%t)
-            call record(self, rod, iterations, h_try)
-            rod%history%rejected(rod%history%n) = rod%progress%rejected_here
-            rod%progress%rejected_here = 0
-            if (rod%watch%found) exit
-            if (scene%breaks .and. .not. self%broken .and. rod%t >= scene%break_time*(1 - 1.0e-12_dp)) then
-               call split(self, rod, error)
-               if (allocated(error)) exit
-            end if
-            if (present(observer) .and. wall - rod%clock%last_report >= 1.0_dp) then
-               rod%clock%last_report = wall
-               call observer%progress(rod%t, rod%options%t_end, wall)
-            end if
-         end do
+      type(rod_run), intent(inout) :: run
+      integer :: p
+      do p = 1, self%tried
+         call self%pieces(p)%run%reject()
+      end do
+   end subroutine drive_reject
+
+   !> The search for a break by tension on the attempt of h (one piece: the run without its break).
+   subroutine drive_watch(self, run, h, retry)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      logical, intent(out) :: retry
+      associate (r3 => self%pieces(1)%run, n => self%pieces(1)%run%problem%piece%n)
+         call watch_step(run, h, reshape(r3%x_old(1:3*n), [3, n]), reshape(r3%x(1:3*n), [3, n]), &
+                         r3%problem%piece%ds, r3%problem%piece%law, retry)
       end associate
-   end subroutine drive_advance
+      if (retry) call self%pieces(1)%run%reject()
+   end subroutine drive_watch
+
+   !> The attempt of h taken on every piece: new velocities and ledger (rod3d_run's accept),
+   !> the forces of the supports on the end nodes.
+   subroutine drive_accept(self, run, h)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      integer :: p
+      do p = 1, size(self%pieces)
+         associate (r3 => self%pieces(p)%run)
+            call r3%accept(h, run%options%theta)
+            self%pieces(p)%reaction(:, 1) = r3%problem%piece%reaction(1, h)
+            self%pieces(p)%reaction(:, 2) = r3%problem%piece%reaction(r3%problem%piece%n, h)
+         end associate
+      end do
+   end subroutine drive_accept
+
+   !> Snapshots up to t_new (emit).
+   subroutine drive_emit(self, run, observer, t_new, static, error)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(run_observer), intent(inout), optional :: observer
+      real(dp), intent(in) :: t_new
+      logical, intent(in) :: static
+      type(error_type), allocatable, intent(inout) :: error
+      call emit(self, run, observer, t_new, static, error)
+   end subroutine drive_emit
+
+   !> A history record at run%t (record), with the attempts rejected before it.
+   subroutine drive_record(self, run, iterations, rejected, step)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer, intent(in) :: iterations, rejected
+      real(dp), intent(in) :: step
+      call set_time(self, run%t)
+      call record(self, run, iterations, step)
+      run%history%rejected(run%history%n) = rejected
+   end subroutine drive_record
+
+   !> The break (split).
+   subroutine drive_split(self, run, error)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      type(error_type), allocatable, intent(out) :: error
+      call split(self, run, error)
+   end subroutine drive_split
+
+   !> The summary's Newton figures from the pieces (full Newton: one factorisation per
+   !> iteration) and, with the ledger on, the dissipation booked by the pieces (the first
+   !> carries what the whole cable booked before a break), as the planar run reports them.
+   subroutine drive_conclude(self, run)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer :: p
+      associate (s => run%summary)
+         s%newton_iterations = sum([(self%pieces(p)%run%iterations, p=1, size(self%pieces))])
+         s%factorisations = s%newton_iterations
+         if (run%options%energy) s%dissipated = sum([(self%pieces(p)%run%dissipated, p=1, size(self%pieces))])
+      end associate
+   end subroutine drive_conclude
 
    !> The time of every piece's stepper.
    subroutine set_time(self, t)
@@ -295,45 +265,45 @@ contains
 
    !> Save the state of the run between two steps (after start, or a pause
    !> of advance) to an archive (see exchange3). archive%ok tells whether it was stored.
-   subroutine drive_save_state(self, rod, archive)
+   subroutine drive_save_state(self, run, archive)
       !> 3-D run.
       class(rod3d_drive), intent(inout) :: self
       !> The planar run it shares its records with.
-      type(rod_run), intent(inout) :: rod
+      type(rod_run), intent(inout) :: run
       !> Where the state goes.
       class(state_archive), intent(inout) :: archive
       type(error_type), allocatable :: error
-      call exchange3(self, rod, archive, .true., error)
+      call exchange3(self, run, archive, .true., error)
    end subroutine drive_save_state
 
    !> Load a state saved by save_state into a run prepared from the same case,
    !> ready for advance. Errors (stat_input) when the archive fails or holds a
    !> state this run cannot have.
-   subroutine drive_load_state(self, rod, archive, error)
+   subroutine drive_load_state(self, run, archive, error)
       !> 3-D run, prepared.
       class(rod3d_drive), intent(inout) :: self
       !> The planar run it shares its records with (prepared).
-      type(rod_run), intent(inout) :: rod
+      type(rod_run), intent(inout) :: run
       !> Where the state comes from.
       class(state_archive), intent(inout) :: archive
       !> Error.
       type(error_type), allocatable, intent(out) :: error
       integer :: p
-      call exchange3(self, rod, archive, .false., error)
+      call exchange3(self, run, archive, .false., error)
       if (allocated(error)) return
       if (.not. archive%ok) then
          call fatal_error(error, archive%message, stat_input)
          return
       end if
-      rod%pieces(1)%end_slot = [1, 2]
-      call set_time(self, rod%t)
+      run%pieces(1)%end_slot = [1, 2]
+      call set_time(self, run%t)
       do p = 1, size(self%pieces)
          self%pieces(p)%run%work%usable = .false.
       end do
-      call system_clock(rod%clock%start, rod%clock%rate)
-      rod%clock%last_report = 0
-      rod%clock%last_checkpoint = 0
-      rod%clock%records_at_checkpoint = rod%history%n
+      call system_clock(run%clock%start, run%clock%rate)
+      run%clock%last_report = 0
+      run%clock%last_checkpoint = 0
+      run%clock%records_at_checkpoint = run%history%n
    end subroutine drive_load_state
 
    !> The state of a 3-D run, listed once for saving (saving = .true.) and
@@ -446,23 +416,6 @@ contains
       call piece%turning_folds(r, fold)
       call check_folds(fold, p, h, error)
    end subroutine check_state3
-
-   !> The summary (the planar run's summarise, on the shared records).
-   subroutine finish(self, rod)
-      class(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: rod
-      integer :: p
-      call rod%finish()
-      associate (s => rod%summary)
-         s%newton_iterations = sum([(self%pieces(p)%run%iterations, p=1, size(self%pieces))])
-         ! Full Newton: one factorisation per iteration.
-         s%factorisations = s%newton_iterations
-         ! The dissipation booked in the ledger (the pieces' damping, springs' dampers, theta > 1/2;
-         ! the first piece carries what the whole cable booked before a break), as the planar run
-         ! reports it: only with the ledger on.
-         if (rod%options%energy) s%dissipated = sum([(self%pieces(p)%run%dissipated, p=1, size(self%pieces))])
-      end associate
-   end subroutine finish
 
    !> History labels, slots and the record of t = 0 (break_a and break_b too with a break inside the cable).
    subroutine start_records(self, rod)

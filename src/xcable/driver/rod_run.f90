@@ -57,7 +57,7 @@ module xcable_driver_rod_run
    private
    public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
    public :: wall_limit, plan_step, reject_attempt, advance_time, jacobian_kept, check_range, check_folds
-   public :: checkpoint_pause, exchange_progress, exchange_records, watch_step
+   public :: exchange_progress, exchange_records, watch_step
 
    !> Why advance returned: the run ended (t_end or an error), a checkpoint is
    !> due, or SIGTERM arrived.
@@ -256,11 +256,7 @@ module xcable_driver_rod_run
    contains
       !> Statics, the time step and the pieces (before any output).
       procedure :: prepare => run_prepare
-      !> The dynamics to t_end (start, advance until done, finish).
-      procedure :: run => run_dynamics
-      !> The parts of run: the records of t = 0; the steps until t_end or a pause; the summary.
-      procedure :: start => run_start
-      procedure :: advance => run_advance
+      !> The summary at the end of the dynamics (driver/stepping.f90, finish_dynamics).
       procedure :: finish => run_finish
       !> Wall time of the dynamics so far (all processes of a resumed run), s.
       procedure :: wall_time => run_wall_time
@@ -270,6 +266,139 @@ module xcable_driver_rod_run
       !> Fields on the output nodes.
       procedure :: fields => run_fields
    end type rod_run
+
+   !> What the step loop asks of a model of the cable in a run (its pieces,
+   !> one or two after a break inside the cable). Each procedure gets the run,
+   !> whose time (run%t), options, records and step control it reads and writes.
+   type, abstract, public :: cable_model
+   contains
+      !> The records of t = 0 (history labels and the first record) and the static state to the observer.
+      procedure(model_begin), deferred :: begin
+      !> A step of h from run%t on every piece (Newton), then the checks of the new state. An
+      !> error says why the attempt fails; retry_same: Newton failed from a kept factorisation
+      !> (the step control tries the same step again with a fresh one). iterations: the most
+      !> Newton iterations a piece took.
+      procedure(model_attempt), deferred :: attempt
+      !> Drop the attempt: the pieces back to the old level, no kept factorisation.
+      procedure(model_plain), deferred :: reject
+      !> The search for a break by tension on the attempt of h just made (watch_step with the
+      !> first piece's two levels); retry: the attempt is dropped, to be taken again shorter.
+      procedure(model_watch), deferred :: watch
+      !> Take the attempt of h: new velocities, reactions, the ledger's work of the step.
+      procedure(model_accept), deferred :: accept
+      !> Snapshots due up to t_new: inside the step just accepted, or the static state (static).
+      procedure(model_emit), deferred :: emit
+      !> A history record at run%t: the step taken, Newton's iterations and the rejected attempts.
+      procedure(model_record), deferred :: record
+      !> The break: a held end let go, or the piece cut in two at the break node.
+      procedure(model_split), deferred :: split
+      !> What the model adds to the summary once the run's summary is made.
+      procedure(model_plain), deferred :: conclude
+      !> The state between two steps to an archive (a checkpoint; archive%ok tells whether it
+      !> was stored), and back into a run prepared from the same case (errors stat_input).
+      procedure(model_save), deferred :: save_state
+      procedure(model_load), deferred :: load_state
+   end type cable_model
+
+   abstract interface
+      subroutine model_begin(self, run, observer, error)
+         import :: cable_model, rod_run, run_observer, error_type
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(run_observer), intent(inout), optional :: observer
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine model_begin
+
+      subroutine model_attempt(self, run, h, iterations, retry_same, error)
+         import :: cable_model, rod_run, dp, error_type
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         real(dp), intent(in) :: h
+         integer, intent(out) :: iterations
+         logical, intent(out) :: retry_same
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine model_attempt
+
+      subroutine model_plain(self, run)
+         import :: cable_model, rod_run
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+      end subroutine model_plain
+
+      subroutine model_watch(self, run, h, retry)
+         import :: cable_model, rod_run, dp
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         real(dp), intent(in) :: h
+         logical, intent(out) :: retry
+      end subroutine model_watch
+
+      subroutine model_accept(self, run, h)
+         import :: cable_model, rod_run, dp
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         real(dp), intent(in) :: h
+      end subroutine model_accept
+
+      subroutine model_emit(self, run, observer, t_new, static, error)
+         import :: cable_model, rod_run, run_observer, dp, error_type
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(run_observer), intent(inout), optional :: observer
+         real(dp), intent(in) :: t_new
+         logical, intent(in) :: static
+         type(error_type), allocatable, intent(inout) :: error
+      end subroutine model_emit
+
+      subroutine model_record(self, run, iterations, rejected, step)
+         import :: cable_model, rod_run, dp
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         integer, intent(in) :: iterations, rejected
+         real(dp), intent(in) :: step
+      end subroutine model_record
+
+      subroutine model_split(self, run, error)
+         import :: cable_model, rod_run, error_type
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine model_split
+
+      subroutine model_save(self, run, archive)
+         import :: cable_model, rod_run, state_archive
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(state_archive), intent(inout) :: archive
+      end subroutine model_save
+
+      subroutine model_load(self, run, archive, error)
+         import :: cable_model, rod_run, state_archive, error_type
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(state_archive), intent(inout) :: archive
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine model_load
+   end interface
+
+   !> The planar rod (model/rod.f90) as the model of a run: the pieces of the run itself
+   !> (rod_run%pieces), stepped by the submodules step.f90 (the window of the quiescent
+   !> skip, the range and fold checks, the break) and records.f90 (snapshots and history).
+   type, extends(cable_model), public :: planar_model
+   contains
+      procedure :: begin => planar_begin
+      procedure :: attempt => planar_attempt
+      procedure :: reject => planar_reject
+      procedure :: watch => planar_watch
+      procedure :: accept => planar_accept
+      procedure :: emit => planar_emit
+      procedure :: record => planar_record
+      procedure :: split => planar_split
+      procedure :: conclude => planar_conclude
+      procedure :: save_state => planar_save_state
+      procedure :: load_state => planar_load_state
+   end type planar_model
+
 
    ! Procedures of the submodules in driver/rod_run/.
    interface
@@ -567,6 +696,92 @@ module xcable_driver_rod_run
       module subroutine summarise(self)
          type(rod_run), intent(inout) :: self
       end subroutine summarise
+      !> The planar model (planar_model; the bindings of cable_model, driver/stepping.f90's loop).
+      !> The records of t = 0 and the static state (turned back into the scene's frame for a
+      !> scene run turned into x-z) to the observer.
+      module subroutine planar_begin(self, run, observer, error)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(run_observer), intent(inout), optional :: observer
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine planar_begin
+
+      !> An attempt of h on every piece (attempt; the first failure stops), then check_state.
+      module subroutine planar_attempt(self, run, h, iterations, retry_same, error)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         real(dp), intent(in) :: h
+         integer, intent(out) :: iterations
+         logical, intent(out) :: retry_same
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine planar_attempt
+
+      !> A rejected attempt: no piece keeps its factorisation (the attempt left r and v alone).
+      module subroutine planar_reject(self, run)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+      end subroutine planar_reject
+
+      !> The search for a break by tension on the first piece's attempt of h (watch_step).
+      module subroutine planar_watch(self, run, h, retry)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         real(dp), intent(in) :: h
+         logical, intent(out) :: retry
+      end subroutine planar_watch
+
+      !> The attempt of h taken (accept).
+      module subroutine planar_accept(self, run, h)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         real(dp), intent(in) :: h
+      end subroutine planar_accept
+
+      !> Snapshots up to t_new (emit_snapshots).
+      module subroutine planar_emit(self, run, observer, t_new, static, error)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(run_observer), intent(inout), optional :: observer
+         real(dp), intent(in) :: t_new
+         logical, intent(in) :: static
+         type(error_type), allocatable, intent(inout) :: error
+      end subroutine planar_emit
+
+      !> A history record (record).
+      module subroutine planar_record(self, run, iterations, rejected, step)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         integer, intent(in) :: iterations, rejected
+         real(dp), intent(in) :: step
+      end subroutine planar_record
+
+      !> The break (split).
+      module subroutine planar_split(self, run, error)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine planar_split
+
+      !> Nothing to add to the summary (record and summarise made it).
+      module subroutine planar_conclude(self, run)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+      end subroutine planar_conclude
+
+      !> The run's state to an archive (rod_run's save_state).
+      module subroutine planar_save_state(self, run, archive)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(state_archive), intent(inout) :: archive
+      end subroutine planar_save_state
+
+      !> The run's state from an archive (rod_run's load_state).
+      module subroutine planar_load_state(self, run, archive, error)
+         class(planar_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         class(state_archive), intent(inout) :: archive
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine planar_load_state
    end interface
 
 contains
@@ -661,207 +876,6 @@ contains
          end_value = c1 + 0.5_dp*(c1 - c2)
       end if
    end function end_value
-
-   !> Integrate to t_end, sending snapshots to the observer: start, advance
-   !> until done, finish. On error the history and summary hold what was
-   !> done. A run that is to write checkpoints goes through start (or
-   !> load_state), advance and finish itself (driver/simulation.f90).
-   subroutine run_dynamics(self, observer, error)
-      !> Run (prepared).
-      class(rod_run), intent(inout) :: self
-      !> Receives the static state and snapshots.
-      class(run_observer), intent(inout), optional :: observer
-      !> Error when the run cannot go on.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: pause
-      call self%start(observer, error)
-      if (allocated(error)) return
-      do
-         call self%advance(observer, error, pause)
-         if (allocated(error) .or. pause == pause_none) exit
-      end do
-      call self%finish()
-   end subroutine run_dynamics
-
-   !> The start of the dynamics: the record of t = 0, the static state and
-   !> its snapshot to the observer, a break at t = 0, and the skip to a later
-   !> break when nothing moves before it.
-   subroutine run_start(self, observer, error)
-      !> Run (prepared).
-      class(rod_run), intent(inout) :: self
-      !> Receives the static state and the snapshots before the break.
-      class(run_observer), intent(inout), optional :: observer
-      !> Error when the output fails.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: capacity
-      call system_clock(self%clock%start, self%clock%rate)
-      self%t = 0
-      self%work = 0
-      self%load_work = 0
-      self%dissipation = 0
-      self%progress = run_progress(h=self%dt)
-      call start_history(self)
-      if (present(observer)) then
-         if (self%plane_azimuth /= 0) then
-            block
-               type(static_info) :: turned
-               turned = self%info
-               allocate (turned%extra(self%n_out, n_fields3))
-               call turned_back(self, turned%fields, column_velocities(self), turned%extra)
-               call observer%static(turned, error)
-               if (allocated(error)) return
-               call observer%snapshot(0.0_dp, turned%fields, error)
-               if (allocated(error)) return
-               call observer%snapshot_extra(0.0_dp, field3_names, turned%extra, error)
-               if (allocated(error)) return
-            end block
-         else
-            call observer%static(self%info, error)
-            if (allocated(error)) return
-            call observer%snapshot(0.0_dp, self%info%fields, error)
-            if (allocated(error)) return
-         end if
-      end if
-      capacity = int(min(self%options%t_end/self%dt, real(max_steps, dp))) + 16
-      call self%history%reserve(capacity, size(self%history%end_labels), self%options%energy)
-      ! A break at t = 0 happens before the first step.
-      if (self%scene%breaks .and. self%scene%break_time <= 0) then
-         call split(self, error)
-         if (allocated(error)) return
-      end if
-      ! Nothing moves before a break if no end moves or changes its load: skip to it.
-      if (self%scene%breaks .and. .not. self%broken .and. .not. ends_change(self)) then
-         call emit_snapshots(self, observer, self%scene%break_time, .true., error)
-         if (allocated(error)) return
-         self%t = self%scene%break_time
-         call record(self, 0, 0, self%t - self%history%time(self%history%n))
-         call split(self, error)
-         if (allocated(error)) return
-      end if
-      self%clock%records_at_checkpoint = self%history%n
-   end subroutine run_start
-
-   !> Time steps until t_end, an error, or a pause: the SIGTERM flag is set
-   !> (with options%stop_on_termination) or a checkpoint is due (every
-   !> options%checkpoint_interval seconds of wall time, or every
-   !> options%checkpoint_steps accepted steps), checked before every step
-   !> attempt, where the state is complete (a checkpoint needs at least one
-   !> step since the last). After a pause the state can be saved
-   !> (save_state) and advance called again.
-   subroutine run_advance(self, observer, error, pause)
-      !> Run (started, or loaded from a checkpoint).
-      class(rod_run), intent(inout) :: self
-      !> Receives the snapshots.
-      class(run_observer), intent(inout), optional :: observer
-      !> Error when the run cannot go on.
-      type(error_type), allocatable, intent(out) :: error
-      !> Why it returned: pause_none (t_end or an error), pause_checkpoint or pause_termination.
-      integer, intent(out) :: pause
-      type(error_type), allocatable :: step_error
-      integer(i8) :: clock_now
-      real(dp) :: h_try, wall, t_stop
-      integer :: p, iterations
-      logical :: newton_failed, kept, any_kept, landing, retry
-
-      pause = pause_none
-      associate (h => self%progress%h, n_good => self%progress%n_good, rejected_here => self%progress%rejected_here)
-         do while (self%t < self%options%t_end*(1 - 1.0e-12_dp))
-            call system_clock(clock_now)
-            wall = real(clock_now - self%clock%start, dp)/self%clock%rate
-            call wall_limit(self, wall, error)
-            if (allocated(error)) exit
-            ! A pause, where the state is that of an accepted step (or of the start).
-            pause = checkpoint_pause(self, wall)
-            if (pause /= pause_none) return
-            call plan_step(self, h_try, t_stop, landing, error)
-            if (allocated(error)) exit
-            ! One attempt on every piece.
-            newton_failed = .false.
-            any_kept = .false.
-            iterations = 0
-            do p = 1, size(self%pieces)
-               call attempt(self, p, h_try, kept, iterations, step_error)
-               any_kept = any_kept .or. kept
-               if (allocated(step_error)) then
-                  newton_failed = .true.
-                  exit
-               end if
-            end do
-            if (.not. allocated(step_error)) call check_state(self, h_try, step_error)
-            if (allocated(step_error)) then
-               do p = 1, size(self%pieces)
-                  self%pieces(p)%work%usable = .false.
-               end do
-               call reject_attempt(self, step_error%message, newton_failed .and. any_kept, error)
-               deallocate (step_error)
-               if (allocated(error)) exit
-               cycle
-            end if
-            ! The search for a break by tension: a step past the crossing is taken again, shorter.
-            if (self%watch%mbl > 0) then
-               associate (piece => self%pieces(1)%problem%piece)
-                  call watch_step(self, h_try, self%pieces(1)%r, reshape(self%pieces(1)%x, [2, piece%n]), &
-                                  piece%ds, piece%law, retry)
-               end associate
-               if (retry) then
-                  self%pieces(1)%work%usable = .false.
-                  cycle
-               end if
-            end if
-            ! Accept: snapshots inside the step, then the new level.
-            call accept(self, h_try)
-            call emit_snapshots(self, observer, self%t + h_try, .false., error)
-            if (allocated(error)) exit
-            call advance_time(self, h_try, t_stop, landing)
-            call record(self, iterations, rejected_here, h_try)
-            rejected_here = 0
-            if (self%watch%found) exit
-            if (self%scene%breaks .and. .not. self%broken .and. self%t >= self%scene%break_time*(1 - 1.0e-12_dp)) then
-               call split(self, error)
-               if (allocated(error)) exit
-            end if
-            call system_clock(clock_now)
-            wall = real(clock_now - self%clock%start, dp)/self%clock%rate
-            if (present(observer) .and. wall - self%clock%last_report >= 1.0_dp) then
-               self%clock%last_report = wall
-               call observer%progress(self%t, self%options%t_end, wall)
-            end if
-         end do
-      end associate
-   end subroutine run_advance
-
-   !> Whether the step loop pauses before its next attempt (either model):
-   !> pause_termination when SIGTERM has arrived (options%stop_on_termination),
-   !> pause_checkpoint when a checkpoint is due (every
-   !> options%checkpoint_interval seconds of wall time, or every
-   !> options%checkpoint_steps accepted steps; at least one step since the
-   !> last), else pause_none. The clock notes a checkpoint pause.
-   integer function checkpoint_pause(self, wall) result(pause)
-      !> Run (its history counts the steps).
-      type(rod_run), intent(inout) :: self
-      !> Wall time of this process's dynamics, s.
-      real(dp), intent(in) :: wall
-      logical :: due
-      pause = pause_none
-      if (self%options%stop_on_termination) then
-         if (termination_requested()) then
-            pause = pause_termination
-            return
-         end if
-      end if
-      if (self%history%n > self%clock%records_at_checkpoint) then
-         due = .false.
-         if (self%options%checkpoint_interval > 0) &
-            due = wall - self%clock%last_checkpoint >= self%options%checkpoint_interval
-         if (self%options%checkpoint_steps > 0) &
-            due = due .or. self%history%n - self%clock%records_at_checkpoint >= self%options%checkpoint_steps
-         if (due) then
-            self%clock%last_checkpoint = wall
-            self%clock%records_at_checkpoint = self%history%n
-            pause = pause_checkpoint
-         end if
-      end if
-   end function checkpoint_pause
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings.

@@ -24,10 +24,11 @@ module xcable_driver_simulation
    use xcable_core_strings, only: str, real_text, quantity
    use xcable_io_config, only: case_config, end_config
    use xcable_scene_scene, only: scene_type, scene_from_config, set_break
-   use xcable_driver_rod_run, only: rod_run, rod_run_options, pause_none, pause_termination, tension_watch, &
-                             rupture_tolerance
+   use xcable_driver_rod_run, only: rod_run, rod_run_options, cable_model, planar_model, pause_none, pause_termination, &
+                                    tension_watch, rupture_tolerance
    use xcable_box_run, only: box_run
    use xcable_driver_rod3d_drive, only: rod3d_drive
+   use xcable_driver_stepping, only: run_dynamics, start_dynamics, advance_dynamics, finish_dynamics
    use xcable_driver_records, only: run_history, run_summary, static_info, run_observer
    use xcable_io_checkpoint, only: checkpoint_file
    use xcable_core_version, only: code_version
@@ -66,7 +67,10 @@ module xcable_driver_simulation
       !> The run of each scheme (only one is used).
       type(rod_run) :: rod
       type(box_run) :: box
-      !> The 3-D run (model '3d'): it shares the grid, time step and records of rod.
+      !> The model of the cable that the step loop (driver/stepping.f90) drives on rod: the planar
+      !> rod (rod's own pieces) or the 3-D rod (model '3d'; it shares the grid, time step and
+      !> records of rod). model_of gives the one in use.
+      type(planar_model) :: planar
       type(rod3d_drive) :: rod3
       !> What the model computes, for the result file.
       character(:), allocatable :: terms
@@ -79,6 +83,8 @@ module xcable_driver_simulation
    contains
       procedure :: prepare => sim_prepare
       procedure :: run => sim_run
+      !> The model of the cable in use (rod scheme): planar or rod3.
+      procedure :: model_of => sim_model_of
       !> Write checkpoints during run (rod scheme).
       procedure :: enable_checkpoints => sim_enable_checkpoints
       !> Continue from a checkpoint: load it into the prepared run.
@@ -265,7 +271,7 @@ contains
    !> nothing has been written);
    !> the first pass's errors.
    subroutine find_break(self, config, scene, error, statics_only)
-      type(simulation), intent(inout) :: self
+      type(simulation), intent(inout), target :: self
       type(case_config), intent(in) :: config
       !> The scene: its break is set here.
       type(scene_type), intent(inout) :: scene
@@ -273,6 +279,7 @@ contains
       !> Stop after the check against the static tension.
       logical, intent(in), optional :: statics_only
       type(tension_watch) :: found
+      class(cable_model), pointer :: model
       real(dp) :: static_max
       integer :: kb, n
       static_max = max(self%rod%static_max_tension, self%rod%info%max_tension)
@@ -287,11 +294,8 @@ contains
          if (statics_only) return
       end if
       self%rod%watch%mbl = scene%mbl
-      if (self%model == '3d') then
-         call self%rod3%run_dynamics(self%rod, error=error)
-      else
-         call self%rod%run(error=error)
-      end if
+      model => self%model_of()
+      call run_dynamics(self%rod, model, error=error)
       if (allocated(error)) then
          call prefix_error(error, 'the first pass of the break by tension (the run without the break, to find '// &
                            'where and when the tension reaches mbl): ')
@@ -488,56 +492,26 @@ contains
    !> The dynamics.
    subroutine sim_run(self, observer, error)
       !> Simulation (prepared).
-      class(simulation), intent(inout) :: self
+      class(simulation), intent(inout), target :: self
       !> Receives the static state and the snapshots.
       class(run_observer), intent(inout), optional :: observer
       !> Error when the run cannot go on (the records hold what was done).
       type(error_type), allocatable, intent(out) :: error
+      class(cable_model), pointer :: model
       integer :: pause
-      select case (self%scheme)
-      case ('box')
+      if (self%scheme == 'box') then
          call self%box%run(observer, error)
-      case default
-         if (self%model == '3d') then
-            call run_3d(self, observer, error)
-            return
-         end if
-         if (.not. allocated(self%checkpoints%path)) then
-            call self%rod%run(observer, error)
-            return
-         end if
-         if (.not. self%resumed) then
-            call self%rod%start(observer, error)
-            if (allocated(error)) return
-         end if
-         do
-            call self%rod%advance(observer, error, pause)
-            if (allocated(error) .or. pause == pause_none) exit
-            call write_checkpoint(self, error)
-            if (allocated(error)) exit
-            if (pause == pause_termination) then
-               self%interrupted = .true.
-               exit
-            end if
-         end do
-         call self%rod%finish()
-      end select
-   end subroutine sim_run
-
-   !> The 3-D run (model '3d'), with checkpoints as the planar one's.
-   subroutine run_3d(self, observer, error)
-      type(simulation), intent(inout) :: self
-      class(run_observer), intent(inout), optional :: observer
-      type(error_type), allocatable, intent(out) :: error
-      integer :: pause
-      if (.not. allocated(self%checkpoints%path)) then
-         call self%rod3%run_dynamics(self%rod, observer, error)
          return
       end if
-      if (.not. self%resumed) call self%rod3%start(self%rod, observer, error)
+      model => self%model_of()
+      if (.not. allocated(self%checkpoints%path)) then
+         call run_dynamics(self%rod, model, observer, error)
+         return
+      end if
+      if (.not. self%resumed) call start_dynamics(self%rod, model, observer, error)
       if (.not. allocated(error)) then
          do
-            call self%rod3%advance(self%rod, observer, error, pause)
+            call advance_dynamics(self%rod, model, observer, error, pause)
             if (allocated(error) .or. pause == pause_none) exit
             call write_checkpoint(self, error)
             if (allocated(error)) exit
@@ -547,8 +521,21 @@ contains
             end if
          end do
       end if
-      call self%rod3%finish(self%rod)
-   end subroutine run_3d
+      call finish_dynamics(self%rod, model)
+   end subroutine sim_run
+
+   !> The model of the cable that the step loop drives (rod scheme): the 3-D rod for model
+   !> '3d', else the planar rod.
+   function sim_model_of(self) result(model)
+      !> Simulation (prepared).
+      class(simulation), intent(inout), target :: self
+      class(cable_model), pointer :: model
+      if (self%model == '3d') then
+         model => self%rod3
+      else
+         model => self%planar
+      end if
+   end function sim_model_of
 
    !> Write checkpoints to path during run: every interval seconds of wall
    !> time (0: none), every every_steps accepted steps (0: none; tests), and,
@@ -583,17 +570,15 @@ contains
 
    !> Write the state of the rod run to the checkpoint file (atomically).
    subroutine write_checkpoint(self, error)
-      type(simulation), intent(inout) :: self
+      type(simulation), intent(inout), target :: self
       type(error_type), allocatable, intent(out) :: error
       type(checkpoint_file) :: file
+      class(cable_model), pointer :: model
       call file%create(self%checkpoints%path, code_version, self%checkpoints%fingerprint, self%checkpoints%run_id, &
                        self%rod%t, error)
       if (allocated(error)) return
-      if (self%model == '3d') then
-         call self%rod3%save_state(self%rod, file)
-      else
-         call self%rod%save_state(file)
-      end if
+      model => self%model_of()
+      call model%save_state(self%rod, file)
       call file%commit(error)
       if (.not. allocated(error)) self%checkpoints_written = self%checkpoints_written + 1
    end subroutine write_checkpoint
@@ -605,7 +590,7 @@ contains
    !> the identifier of the run the checkpoint belongs to.
    subroutine sim_resume(self, path, fingerprint, run_id, error)
       !> Simulation (prepared).
-      class(simulation), intent(inout) :: self
+      class(simulation), intent(inout), target :: self
       !> Checkpoint file.
       character(*), intent(in) :: path
       !> The case's namelist fingerprint.
@@ -615,6 +600,7 @@ contains
       !> Error.
       type(error_type), allocatable, intent(out) :: error
       type(checkpoint_file) :: file
+      class(cable_model), pointer :: model
       if (self%scheme == 'box') then
          call fatal_error(error, path//': the box scheme writes no checkpoints and cannot resume', stat_input)
          return
@@ -642,11 +628,8 @@ contains
          call file%close()
          return
       end if
-      if (self%model == '3d') then
-         call self%rod3%load_state(self%rod, file, error)
-      else
-         call self%rod%load_state(file, error)
-      end if
+      model => self%model_of()
+      call model%load_state(self%rod, file, error)
       if (allocated(error)) then
          error%message = "checkpoint '"//path//"': "//error%message
          call file%close()

@@ -229,4 +229,21 @@ contains
          call sync_real(a, 'summary/max_strain', s%max_strain, saving)
       end associate
    end subroutine exchange_records
+   !> The planar model's state to an archive: the run's (save_state).
+   module subroutine planar_save_state(self, run, archive)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(state_archive), intent(inout) :: archive
+      call run%save_state(archive)
+   end subroutine planar_save_state
+
+   !> The planar model's state from an archive: the run's (load_state).
+   module subroutine planar_load_state(self, run, archive, error)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(state_archive), intent(inout) :: archive
+      type(error_type), allocatable, intent(out) :: error
+      call run%load_state(archive, error)
+   end subroutine planar_load_state
+
 end submodule xcable_driver_rod_run_checkpoint

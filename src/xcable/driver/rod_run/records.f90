@@ -522,4 +522,57 @@ contains
          if (self%pieces(p)%end_slot(2) == j) end_is_held = self%pieces(p)%problem%piece%end_b%held()
       end do
    end function end_is_held
+   !> The planar model's start: the history's labels and its record of t = 0, and the static
+   !> state with its snapshot to the observer (turned back into the scene's frame for a scene
+   !> run turned into x-z, with the fields of a 3-D run).
+   module subroutine planar_begin(self, run, observer, error)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(run_observer), intent(inout), optional :: observer
+      type(error_type), allocatable, intent(out) :: error
+      type(static_info) :: turned
+      call start_history(run)
+      if (.not. present(observer)) return
+      if (run%plane_azimuth /= 0) then
+         turned = run%info
+         allocate (turned%extra(run%n_out, n_fields3))
+         call turned_back(run, turned%fields, column_velocities(run), turned%extra)
+         call observer%static(turned, error)
+         if (allocated(error)) return
+         call observer%snapshot(0.0_dp, turned%fields, error)
+         if (allocated(error)) return
+         call observer%snapshot_extra(0.0_dp, field3_names, turned%extra, error)
+      else
+         call observer%static(run%info, error)
+         if (allocated(error)) return
+         call observer%snapshot(0.0_dp, run%info%fields, error)
+      end if
+   end subroutine planar_begin
+
+   !> The planar model's snapshots up to t_new (emit_snapshots).
+   module subroutine planar_emit(self, run, observer, t_new, static, error)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(run_observer), intent(inout), optional :: observer
+      real(dp), intent(in) :: t_new
+      logical, intent(in) :: static
+      type(error_type), allocatable, intent(inout) :: error
+      call emit_snapshots(run, observer, t_new, static, error)
+   end subroutine planar_emit
+
+   !> The planar model's history record (record).
+   module subroutine planar_record(self, run, iterations, rejected, step)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer, intent(in) :: iterations, rejected
+      real(dp), intent(in) :: step
+      call record(run, iterations, rejected, step)
+   end subroutine planar_record
+
+   !> The planar model adds nothing to the summary (record and summarise made it).
+   module subroutine planar_conclude(self, run)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+   end subroutine planar_conclude
+
 end submodule xcable_driver_rod_run_records

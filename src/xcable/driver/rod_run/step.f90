@@ -748,4 +748,69 @@ contains
       call self%pieces(2)%work%init(2*(n - kb + 1), rod_kl, rod_ku, &
                                     spread(self%pieces(2)%problem%piece%length_ref, 1, 2*(n - kb + 1)))
    end subroutine apply_split
+   !> The planar model's attempt of h on every piece (the first that fails stops the others),
+   !> then the checks of the new state (check_state).
+   module subroutine planar_attempt(self, run, h, iterations, retry_same, error)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      integer, intent(out) :: iterations
+      logical, intent(out) :: retry_same
+      type(error_type), allocatable, intent(out) :: error
+      integer :: p
+      logical :: kept, any_kept
+      any_kept = .false.
+      retry_same = .false.
+      iterations = 0
+      do p = 1, size(run%pieces)
+         call attempt(run, p, h, kept, iterations, error)
+         any_kept = any_kept .or. kept
+         if (allocated(error)) then
+            ! Newton failed: from a kept factorisation the same step is tried again with a fresh one.
+            retry_same = any_kept
+            return
+         end if
+      end do
+      call check_state(run, h, error)
+   end subroutine planar_attempt
+
+   !> The planar model's rejection: no piece keeps its factorisation (an attempt leaves the
+   !> current state, r and v, alone).
+   module subroutine planar_reject(self, run)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer :: p
+      do p = 1, size(run%pieces)
+         run%pieces(p)%work%usable = .false.
+      end do
+   end subroutine planar_reject
+
+   !> The planar model's search for a break by tension (one piece: the run without its break).
+   module subroutine planar_watch(self, run, h, retry)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      logical, intent(out) :: retry
+      associate (piece => run%pieces(1)%problem%piece)
+         call watch_step(run, h, run%pieces(1)%r, reshape(run%pieces(1)%x, [2, piece%n]), piece%ds, piece%law, retry)
+      end associate
+      if (retry) run%pieces(1)%work%usable = .false.
+   end subroutine planar_watch
+
+   !> The planar model's acceptance of the attempt of h (accept).
+   module subroutine planar_accept(self, run, h)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      call accept(run, h)
+   end subroutine planar_accept
+
+   !> The planar model's break (split).
+   module subroutine planar_split(self, run, error)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      type(error_type), allocatable, intent(out) :: error
+      call split(run, error)
+   end subroutine planar_split
+
 end submodule xcable_driver_rod_run_step

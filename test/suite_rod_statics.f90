@@ -395,9 +395,9 @@ contains
          call sim%prepare(c, error)
          if (allocated(error)) return
          n = c%nodes
-         associate (r => sim%rod%static%r)
-            tension = sim%rod%pieces(1)%problem%piece%law%tension(norm2(r(:, 2:n) - r(:, 1:n - 1), 1) &
-                                                                  /sim%rod%pieces(1)%problem%piece%ds - 1)
+         ! The planar static state (of a 3-D run: its statics' first guess).
+         associate (r => sim%rod%static%r, s => sim%rod%s)
+            tension = sim%rod%scene%law%tension(norm2(r(:, 2:n) - r(:, 1:n - 1), 1)/(s(2:n) - s(1:n - 1)) - 1)
          end associate
          call sim%run(error=error)
          if (allocated(error)) return

@@ -38,10 +38,10 @@
 !> piece's end node at rest, so that both pieces start in the balance the
 !> whole cable had (their forces add up to none).
 module xcable_driver_rod3d_drive
-   use xcable_core_kinds, only: dp, i8
+   use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_core_strings, only: str
-   use xcable_driver_rod_run, only: rod_run, cable_model, end_value, snapshot_time, jacobian_kept, check_range, &
+   use xcable_driver_rod_run, only: rod_run, cable_model, end_value, jacobian_kept, check_range, &
                                     check_folds, exchange_progress, exchange_records, watch_step, max_steps
    use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
@@ -52,7 +52,7 @@ module xcable_driver_rod3d_drive
    use xcable_ends_force, only: force_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_loads_load, only: measure_names, load_measures
-   use xcable_driver_records, only: run_observer, n_fields, static_figures, note_min_strain
+   use xcable_driver_records, only: run_observer, static_figures, note_min_strain
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
@@ -96,9 +96,10 @@ module xcable_driver_rod3d_drive
       procedure :: reject => drive_reject
       procedure :: watch => drive_watch
       procedure :: accept => drive_accept
-      procedure :: emit => drive_emit
+      procedure :: snapshot => drive_snapshot
       procedure :: record => drive_record
       procedure :: split => drive_split
+      procedure :: end_info => drive_end_info
       procedure :: conclude => drive_conclude
       !> The state between two steps to an archive (a checkpoint), and back into a prepared run.
       procedure :: save_state => drive_save_state
@@ -209,27 +210,23 @@ contains
       end do
    end subroutine drive_accept
 
-   !> Snapshots up to t_new (emit).
-   subroutine drive_emit(self, run, observer, t_new, static, error)
+   !> The fields of a snapshot at ts: the static state's (static) or interpolated inside the step
+   !> just accepted (interpolated), with the 3-D fields.
+   subroutine drive_snapshot(self, run, t_new, ts, static, fields, extra, with_extra)
       class(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
-      class(run_observer), intent(inout), optional :: observer
-      real(dp), intent(in) :: t_new
+      real(dp), intent(in) :: t_new, ts
       logical, intent(in) :: static
-      type(error_type), allocatable, intent(inout) :: error
-      call emit(self, run, observer, t_new, static, error)
-   end subroutine drive_emit
-
-   !> A history record at run%t (record), with the attempts rejected before it.
-   subroutine drive_record(self, run, iterations, rejected, step)
-      class(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: run
-      integer, intent(in) :: iterations, rejected
-      real(dp), intent(in) :: step
-      call set_time(self, run%t)
-      call record(self, run, iterations, step)
-      run%history%rejected(run%history%n) = rejected
-   end subroutine drive_record
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      logical, intent(out) :: with_extra
+      with_extra = .true.
+      if (static) then
+         fields = run%info%fields
+         extra = self%static_extra
+      else
+         call interpolated(self, run, run%t, t_new - run%t, ts, fields, extra)
+      end if
+   end subroutine drive_snapshot
 
    !> The break (split).
    subroutine drive_split(self, run, error)
@@ -238,6 +235,30 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call split(self, run, error)
    end subroutine drive_split
+
+   !> The end in history slot j at the end of the run: its kind and whether it is held.
+   subroutine drive_end_info(self, run, j, kind, held)
+      class(rod3d_drive), intent(in) :: self
+      type(rod_run), intent(in) :: run
+      integer, intent(in) :: j
+      character(:), allocatable, intent(out) :: kind
+      logical, intent(out) :: held
+      integer :: p
+      kind = ''
+      held = .false.
+      do p = 1, size(self%pieces)
+         associate (piece => self%pieces(p)%run%problem%piece)
+            if (self%pieces(p)%end_slot(1) == j) then
+               kind = piece%end_a%kind()
+               held = piece%end_a%held()
+            end if
+            if (self%pieces(p)%end_slot(2) == j) then
+               kind = piece%end_b%kind()
+               held = piece%end_b%held()
+            end if
+         end associate
+      end do
+   end subroutine drive_end_info
 
    !> The summary's Newton figures from the pieces (full Newton: one factorisation per
    !> iteration) and, with the ledger on, the dissipation booked by the pieces (the first
@@ -295,7 +316,6 @@ contains
          call fatal_error(error, archive%message, stat_input)
          return
       end if
-      run%pieces(1)%end_slot = [1, 2]
       call set_time(self, run%t)
       do p = 1, size(self%pieces)
          self%pieces(p)%run%work%usable = .false.
@@ -417,7 +437,8 @@ contains
       call check_folds(fold, p, h, error)
    end subroutine check_state3
 
-   !> History labels, slots and the record of t = 0 (break_a and break_b too with a break inside the cable).
+   !> History labels and slots (break_a and break_b too with a break inside the cable); the record of
+   !> t = 0 follows (driver/stepping.f90).
    subroutine start_records(self, rod)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
@@ -427,34 +448,23 @@ contains
       allocate (rod%history%end_labels(n_ends))
       rod%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
       if (n_ends == 4) rod%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
-      rod%pieces(1)%end_slot = [1, 2]
       self%pieces(1)%end_slot = [1, 2]
       call rod%history%reserve(16, n_ends, rod%options%energy, with_y=.true.)
       call rod%history%keep_measures(measure_names(rod%scene%loads))
-      rod%history%n = -1
-      call record(self, rod, 0, 0.0_dp)
    end subroutine start_records
 
-   !> Append a history record at the current time: the end quantities of the
-   !> planar run's (x and z components) and their y components (ends_y);
-   !> before a break inside the cable, break_a and break_b are the break node
-   !> with the pull of the cable on either side, as in the planar run.
-   subroutine record(self, rod, iterations, step)
-      type(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: rod
-      integer, intent(in) :: iterations
-      real(dp), intent(in) :: step
-      integer :: i, side, k, n, p, slot
+   !> The 3-D model's part of history record i at run%t (the step loop wrote its time, step,
+   !> Newton iterations and rejected attempts): the end quantities of the planar run's (x and z
+   !> components) and their y components (ends_y); before a break inside the cable, break_a and
+   !> break_b are the break node with the pull of the cable on either side, as in the planar run.
+   subroutine drive_record(self, run, i)
+      class(rod3d_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer, intent(in) :: i
+      integer :: side, k, n, p, slot
       real(dp) :: f(3), en(5), ledger(3), e(3), ten
-      associate (h => rod%history)
-         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), size(h%end_labels), rod%options%energy)
-         i = h%n + 1
-         h%n = i
-         h%time(i) = rod%t
-         h%step(i) = step
-         h%newton_iterations(i) = iterations
-         h%rejected(i) = 0
-         if (i > 0) rod%summary%max_newton_iterations = max(rod%summary%max_newton_iterations, iterations)
+      call set_time(self, run%t)
+      associate (h => run%history, rod => run)
          en = 0
          ledger = 0
          do p = 1, size(self%pieces)
@@ -515,7 +525,7 @@ contains
             h%energy(8, i) = ledger(2)
          end if
       end associate
-   end subroutine record
+   end subroutine drive_record
 
    !> The force of a state-dependent end's own state at position x with velocity v, N.
    function state_force(end, t, x, v) result(f)
@@ -616,8 +626,7 @@ contains
 
    !> The pieces after the break, with new ends that start from cut_force,
    !> cut_couple, cut_axis and cut_torque, ramped to zero over t_break: the
-   !> released end replaced, in the 3-D piece and in the planar run's piece
-   !> (its summary asks whether an end is held); or the piece cut in two at
+   !> released end replaced; or the piece cut in two at
    !> the break node, each new piece taking the positions, twist angles,
    !> velocities, output columns, history slots and reactions of its nodes,
    !> the first the ledger so far. Also rebuilds the pieces of a broken run
@@ -635,17 +644,15 @@ contains
       cut = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
                       force0=[f(1), f(3)], force0_y=f(2))
       if (rod%break_node == 0) then
-         associate (piece => self%pieces(1)%run%problem%piece, planar => rod%pieces(1)%problem%piece)
+         associate (piece => self%pieces(1)%run%problem%piece)
             if (rod%scene%break_at_b) then
                cut%label = 'end_b'
-               deallocate (piece%end_b, planar%end_b)
+               deallocate (piece%end_b)
                allocate (piece%end_b, source=cut)
-               allocate (planar%end_b, source=cut)
             else
                cut%label = 'end_a'
-               deallocate (piece%end_a, planar%end_a)
+               deallocate (piece%end_a)
                allocate (piece%end_a, source=cut)
-               allocate (planar%end_a, source=cut)
             end if
          end associate
          self%pieces(1)%run%work%usable = .false.
@@ -706,36 +713,6 @@ contains
       self%pieces(2)%end_slot = [4, 2]
       self%pieces(2)%reaction(:, 2) = old(1)%reaction(:, 2)
    end subroutine release
-
-   !> Snapshots up to t_new: the static fields (static) or interpolated inside the step just taken.
-   subroutine emit(self, rod, observer, t_new, static, error)
-      type(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: rod
-      class(run_observer), intent(inout), optional :: observer
-      real(dp), intent(in) :: t_new
-      logical, intent(in) :: static
-      type(error_type), allocatable, intent(inout) :: error
-      real(dp) :: ts, fields(rod%n_out, n_fields), extra(rod%n_out, n_fields3)
-      do
-         ts = snapshot_time(rod, rod%progress%snapshot_index)
-         if (ts > t_new*(1 + 1.0e-12_dp)) exit
-         if (static) then
-            fields = rod%info%fields
-            extra = self%static_extra
-         else
-            call interpolated(self, rod, rod%t, t_new - rod%t, ts, fields, extra)
-         end if
-         rod%progress%snapshot_index = rod%progress%snapshot_index + 1
-         if (present(observer)) then
-            call observer%snapshot(ts, fields, error)
-            if (.not. allocated(error)) call observer%snapshot_extra(ts, field3_names, extra, error)
-            if (allocated(error)) then
-               call prefix_error(error, 'output: ')
-               return
-            end if
-         end if
-      end do
-   end subroutine emit
 
    !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
    !> and velocities of its two levels, the twist angles linear.

@@ -239,8 +239,6 @@ module xcable_driver_rod_run
       !> Where the step loop stands, and this process's clock.
       type(run_progress) :: progress
       type(run_clock) :: clock
-      !> Fields of a snapshot (n_out, n_fields).
-      real(dp), allocatable :: buffer(:, :)
       !> Skip of the quiescent cable in this process (not kept in a checkpoint): nodes times
       !> Newton solves (one per piece and attempt, a redone window counted again), and of
       !> them the nodes held outside the window; windows enlarged because the motion reached
@@ -272,7 +270,8 @@ module xcable_driver_rod_run
    !> whose time (run%t), options, records and step control it reads and writes.
    type, abstract, public :: cable_model
    contains
-      !> The records of t = 0 (history labels and the first record) and the static state to the observer.
+      !> The history's end labels and slots (the loop then appends the record of t = 0), and the
+      !> static state to the observer.
       procedure(model_begin), deferred :: begin
       !> A step of h from run%t on every piece (Newton), then the checks of the new state. An
       !> error says why the attempt fails; retry_same: Newton failed from a kept factorisation
@@ -286,12 +285,18 @@ module xcable_driver_rod_run
       procedure(model_watch), deferred :: watch
       !> Take the attempt of h: new velocities, reactions, the ledger's work of the step.
       procedure(model_accept), deferred :: accept
-      !> Snapshots due up to t_new: inside the step just accepted, or the static state (static).
-      procedure(model_emit), deferred :: emit
-      !> A history record at run%t: the step taken, Newton's iterations and the rejected attempts.
+      !> The fields of a snapshot at ts (run%t <= ts <= t_new): interpolated inside the step just
+      !> accepted (from run%t to t_new), or those of the static state (static). extra: the fields
+      !> of field3_names (driver/records.f90) too, when with_extra.
+      procedure(model_snapshot), deferred :: snapshot
+      !> The model's part of history record i at run%t (the loop wrote its time, step, Newton
+      !> iterations and rejected attempts): the ends, the loads' measures, the ledger.
       procedure(model_record), deferred :: record
       !> The break: a held end let go, or the piece cut in two at the break node.
       procedure(model_split), deferred :: split
+      !> The kind ('fixed', 'motion', ..., 'break') of the end in history slot j at the end of the
+      !> run, and whether it is held (the summary's fixed-end figures and the front's arrival).
+      procedure(model_end_info), deferred :: end_info
       !> What the model adds to the summary once the run's summary is made.
       procedure(model_plain), deferred :: conclude
       !> The state between two steps to an archive (a checkpoint; archive%ok tells whether it
@@ -340,22 +345,21 @@ module xcable_driver_rod_run
          real(dp), intent(in) :: h
       end subroutine model_accept
 
-      subroutine model_emit(self, run, observer, t_new, static, error)
-         import :: cable_model, rod_run, run_observer, dp, error_type
-         class(cable_model), intent(inout) :: self
-         type(rod_run), intent(inout) :: run
-         class(run_observer), intent(inout), optional :: observer
-         real(dp), intent(in) :: t_new
-         logical, intent(in) :: static
-         type(error_type), allocatable, intent(inout) :: error
-      end subroutine model_emit
-
-      subroutine model_record(self, run, iterations, rejected, step)
+      subroutine model_snapshot(self, run, t_new, ts, static, fields, extra, with_extra)
          import :: cable_model, rod_run, dp
          class(cable_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
-         integer, intent(in) :: iterations, rejected
-         real(dp), intent(in) :: step
+         real(dp), intent(in) :: t_new, ts
+         logical, intent(in) :: static
+         real(dp), intent(out) :: fields(:, :), extra(:, :)
+         logical, intent(out) :: with_extra
+      end subroutine model_snapshot
+
+      subroutine model_record(self, run, i)
+         import :: cable_model, rod_run
+         class(cable_model), intent(inout) :: self
+         type(rod_run), intent(inout) :: run
+         integer, intent(in) :: i
       end subroutine model_record
 
       subroutine model_split(self, run, error)
@@ -364,6 +368,15 @@ module xcable_driver_rod_run
          type(rod_run), intent(inout) :: run
          type(error_type), allocatable, intent(out) :: error
       end subroutine model_split
+
+      subroutine model_end_info(self, run, j, kind, held)
+         import :: cable_model, rod_run
+         class(cable_model), intent(in) :: self
+         type(rod_run), intent(in) :: run
+         integer, intent(in) :: j
+         character(:), allocatable, intent(out) :: kind
+         logical, intent(out) :: held
+      end subroutine model_end_info
 
       subroutine model_save(self, run, archive)
          import :: cable_model, rod_run, state_archive
@@ -391,9 +404,10 @@ module xcable_driver_rod_run
       procedure :: reject => planar_reject
       procedure :: watch => planar_watch
       procedure :: accept => planar_accept
-      procedure :: emit => planar_emit
+      procedure :: snapshot => planar_snapshot
       procedure :: record => planar_record
       procedure :: split => planar_split
+      procedure :: end_info => planar_end_info
       procedure :: conclude => planar_conclude
       procedure :: save_state => planar_save_state
       procedure :: load_state => planar_load_state
@@ -495,16 +509,6 @@ module xcable_driver_rod_run
          !> The y components too (a 3-D run; default .false.).
          logical, intent(in), optional :: with_y
       end subroutine exchange_records
-
-      !> Snapshots due up to time t_new: inside the step just accepted
-      !> (interpolated), or of the static state (static = .true.).
-      module subroutine emit_snapshots(self, observer, t_new, static, error)
-         type(rod_run), intent(inout) :: self
-         class(run_observer), intent(inout), optional :: observer
-         real(dp), intent(in) :: t_new
-         logical, intent(in) :: static
-         type(error_type), allocatable, intent(inout) :: error
-      end subroutine emit_snapshots
 
       !> Time of snapshot i (i >= 1); huge when there is none.
       pure real(dp) module function snapshot_time(self, i)
@@ -663,17 +667,11 @@ module xcable_driver_rod_run
          real(dp), intent(in) :: h
       end subroutine accept
 
-      !> End labels and the record of the static state (index 0).
+      !> End labels and slots, and the supports' forces of the static state (the history's
+      !> record of t = 0 follows: driver/stepping.f90).
       module subroutine start_history(self)
          type(rod_run), intent(inout) :: self
       end subroutine start_history
-
-      !> Append a history record at the current time.
-      module subroutine record(self, iterations, rejected, step)
-         type(rod_run), intent(inout) :: self
-         integer, intent(in) :: iterations, rejected
-         real(dp), intent(in) :: step
-      end subroutine record
 
       !> The break: split the piece at the break node into two, or release a held
       !> end. The new ends carry the force (and at an inner break the moment) that
@@ -693,8 +691,11 @@ module xcable_driver_rod_run
       end subroutine apply_split
 
       !> Summary figures and warnings from the history.
-      module subroutine summarise(self)
+      module subroutine summarise(self, kinds, held)
          type(rod_run), intent(inout) :: self
+         !> Kind of the end in each history slot, and whether it is held (the model's end_info).
+         character(len=*), intent(in) :: kinds(:)
+         logical, intent(in) :: held(:)
       end subroutine summarise
       !> The planar model (planar_model; the bindings of cable_model, driver/stepping.f90's loop).
       !> The records of t = 0 and the static state (turned back into the scene's frame for a
@@ -737,22 +738,22 @@ module xcable_driver_rod_run
          real(dp), intent(in) :: h
       end subroutine planar_accept
 
-      !> Snapshots up to t_new (emit_snapshots).
-      module subroutine planar_emit(self, run, observer, t_new, static, error)
+      !> The fields of a snapshot at ts (the static state's, or interpolated inside the step),
+      !> turned back into the scene's frame with the 3-D fields for a scene run turned into x-z.
+      module subroutine planar_snapshot(self, run, t_new, ts, static, fields, extra, with_extra)
          class(planar_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
-         class(run_observer), intent(inout), optional :: observer
-         real(dp), intent(in) :: t_new
+         real(dp), intent(in) :: t_new, ts
          logical, intent(in) :: static
-         type(error_type), allocatable, intent(inout) :: error
-      end subroutine planar_emit
+         real(dp), intent(out) :: fields(:, :), extra(:, :)
+         logical, intent(out) :: with_extra
+      end subroutine planar_snapshot
 
-      !> A history record (record).
-      module subroutine planar_record(self, run, iterations, rejected, step)
+      !> The pieces' part of history record i: ends, measures, ledger.
+      module subroutine planar_record(self, run, i)
          class(planar_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
-         integer, intent(in) :: iterations, rejected
-         real(dp), intent(in) :: step
+         integer, intent(in) :: i
       end subroutine planar_record
 
       !> The break (split).
@@ -761,6 +762,15 @@ module xcable_driver_rod_run
          type(rod_run), intent(inout) :: run
          type(error_type), allocatable, intent(out) :: error
       end subroutine planar_split
+
+      !> Kind of the end in history slot j, and whether it is held.
+      module subroutine planar_end_info(self, run, j, kind, held)
+         class(planar_model), intent(in) :: self
+         type(rod_run), intent(in) :: run
+         integer, intent(in) :: j
+         character(:), allocatable, intent(out) :: kind
+         logical, intent(out) :: held
+      end subroutine planar_end_info
 
       !> Nothing to add to the summary (record and summarise made it).
       module subroutine planar_conclude(self, run)
@@ -879,12 +889,16 @@ contains
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings.
-   subroutine run_finish(self)
+   subroutine run_finish(self, kinds, held)
       !> Run.
       class(rod_run), intent(inout) :: self
+      !> Kind of the end in each history slot at the end of the run, and whether it is held
+      !> (the model's end_info).
+      character(len=*), intent(in) :: kinds(:)
+      logical, intent(in) :: held(:)
       self%summary%wall_time = self%wall_time()
       self%summary%time_reached = self%t
-      call summarise(self)
+      call summarise(self, kinds, held)
       if (self%plane_azimuth /= 0) call turn_back_history(self)
    end subroutine run_finish
 

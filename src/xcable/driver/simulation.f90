@@ -216,10 +216,11 @@ contains
          end block
       end if
       if (self%model == '3d') then
-         ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90). That of
-         ! the scene turned about the vertical so that its chord lies in the x-z plane: the
-         ! true span, static strains, wave speed, time step and Courant number (not those of
-         ! the scene's shadow on x-z). The 3-D run itself takes the scene as given.
+         ! The 3-D statics start from a planar static state (driver/rod3d_drive.f90): that of
+         ! the scene turned about the vertical so that its chord lies in the x-z plane (the
+         ! true span and static strains, not those of the scene's shadow on x-z). The planar
+         ! preparation also gives the grid and the output nodes; the 3-D run then takes the
+         ! scene as given, and its static state, step, Courant number and checks are its own.
          block
             type(scene_type) :: planar
             real(dp) :: azimuth
@@ -245,6 +246,8 @@ contains
       if (self%model == '3d') then
          call self%rod3%prepare(self%rod, error, chord_azimuth(scene), [config%end_a%x, config%end_a%y])
          self%terms = 'rod3d:'//self%terms(5:)//' twist'
+         ! The planar statics was the 3-D statics' first guess; no planar piece runs under the 3-D one.
+         if (allocated(self%rod%pieces)) deallocate (self%rod%pieces)
       end if
    end subroutine prepare_rod
 

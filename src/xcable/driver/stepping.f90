@@ -6,7 +6,9 @@
 !> declared in driver/rod_run.f90 with the run it reads and writes) for what
 !> depends on the discretisation: an attempt at a step on all its pieces with
 !> the checks of the new state, the rejection or the acceptance of it, the
-!> snapshots inside the step, the history record, the break. It owns the rest:
+!> fields of a snapshot inside the step, its part of a history record (ends,
+!> measures, ledger), the break. It owns the rest: when snapshots are due and
+!> their output, the history's records,
 !> the step to try and its landing on t_end and on the start of the break
 !> (plan_step), the halving and doubling back (reject_attempt, advance_time),
 !> the search for a break by tension (the model gives the two levels'
@@ -20,11 +22,11 @@
 !> cable_model; the loop does not change.
 module xcable_driver_stepping
    use xcable_core_kinds, only: dp, i8
-   use xcable_core_error, only: error_type
+   use xcable_core_error, only: error_type, prefix_error
    use xcable_driver_rod_run, only: rod_run, cable_model, run_progress, pause_none, pause_checkpoint, &
                                     pause_termination, max_steps, wall_limit, plan_step, reject_attempt, advance_time, &
-                                    ends_change
-   use xcable_driver_records, only: run_observer
+                                    ends_change, snapshot_time
+   use xcable_driver_records, only: run_observer, n_fields, n_fields3, field3_names
    use xcable_system_posix, only: termination_requested
    implicit none
    private
@@ -78,6 +80,8 @@ contains
       run%progress = run_progress(h=run%dt)
       call model%begin(run, observer, error)
       if (allocated(error)) return
+      run%history%n = -1
+      call append_record(run, model, 0, 0, 0.0_dp)
       capacity = int(min(run%options%t_end/run%dt, real(max_steps, dp))) + 16
       call run%history%reserve(capacity, size(run%history%end_labels), run%options%energy)
       ! A break at t = 0 happens before the first step.
@@ -87,10 +91,10 @@ contains
       end if
       ! Nothing moves before a break if no end moves or changes its load: skip to it.
       if (run%scene%breaks .and. .not. run%broken .and. .not. ends_change(run)) then
-         call model%emit(run, observer, run%scene%break_time, .true., error)
+         call emit_snapshots(run, model, observer, run%scene%break_time, .true., error)
          if (allocated(error)) return
          run%t = run%scene%break_time
-         call model%record(run, 0, 0, run%t - run%history%time(run%history%n))
+         call append_record(run, model, 0, 0, run%t - run%history%time(run%history%n))
          call model%split(run, error)
          if (allocated(error)) return
       end if
@@ -147,10 +151,10 @@ contains
          end if
          ! Accept: snapshots inside the step, then the new level.
          call model%accept(run, h_try)
-         call model%emit(run, observer, run%t + h_try, .false., error)
+         call emit_snapshots(run, model, observer, run%t + h_try, .false., error)
          if (allocated(error)) exit
          call advance_time(run, h_try, t_stop, landing)
-         call model%record(run, iterations, run%progress%rejected_here, h_try)
+         call append_record(run, model, iterations, run%progress%rejected_here, h_try)
          run%progress%rejected_here = 0
          if (run%watch%found) exit
          if (run%scene%breaks .and. .not. run%broken .and. run%t >= run%scene%break_time*(1 - 1.0e-12_dp)) then
@@ -174,9 +178,78 @@ contains
       type(rod_run), intent(inout) :: run
       !> Model of its cable.
       class(cable_model), intent(inout) :: model
-      call run%finish()
+      character(len=16), allocatable :: kinds(:)
+      logical, allocatable :: held(:)
+      character(:), allocatable :: kind
+      integer :: j, n_slots
+      if (.not. allocated(run%history%end_labels)) return
+      n_slots = size(run%history%end_labels)
+      allocate (kinds(n_slots), held(n_slots))
+      do j = 1, n_slots
+         call model%end_info(run, j, kind, held(j))
+         kinds(j) = kind
+      end do
+      call run%finish(kinds, held)
       call model%conclude(run)
    end subroutine finish_dynamics
+
+   !> Snapshots due up to t_new (snapshot_time, from the run's next one): inside the step just
+   !> accepted (from run%t to t_new), or of the static state (static), with the fields the model
+   !> gives, to the observer (with the 3-D fields when the model gives them).
+   subroutine emit_snapshots(run, model, observer, t_new, static, error)
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Model of its cable.
+      class(cable_model), intent(inout) :: model
+      !> Receives the snapshots.
+      class(run_observer), intent(inout), optional :: observer
+      !> End of the step just accepted (or the time the static state holds until), s.
+      real(dp), intent(in) :: t_new
+      !> Whether the snapshots are of the static state.
+      logical, intent(in) :: static
+      !> Error of the output.
+      type(error_type), allocatable, intent(inout) :: error
+      real(dp) :: ts, fields(run%n_out, n_fields), extra(run%n_out, n_fields3)
+      logical :: with_extra
+      do
+         ts = snapshot_time(run, run%progress%snapshot_index)
+         if (ts > t_new*(1 + 1.0e-12_dp)) exit
+         call model%snapshot(run, t_new, ts, static, fields, extra, with_extra)
+         run%progress%snapshot_index = run%progress%snapshot_index + 1
+         if (.not. present(observer)) cycle
+         call observer%snapshot(ts, fields, error)
+         if (.not. allocated(error) .and. with_extra) call observer%snapshot_extra(ts, field3_names, extra, error)
+         if (allocated(error)) then
+            call prefix_error(error, 'output: ')
+            return
+         end if
+      end do
+   end subroutine emit_snapshots
+
+   !> Append a history record at run%t: the step taken, Newton's iterations and the attempts
+   !> rejected before it, then the model's part (ends, measures, ledger).
+   subroutine append_record(run, model, iterations, rejected, step)
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Model of its cable.
+      class(cable_model), intent(inout) :: model
+      !> Newton iterations of the step (the most of a piece) and attempts rejected before it.
+      integer, intent(in) :: iterations, rejected
+      !> The step, s.
+      real(dp), intent(in) :: step
+      integer :: i
+      associate (h => run%history)
+         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), size(h%end_labels), run%options%energy)
+         i = h%n + 1
+         h%n = i
+         h%time(i) = run%t
+         h%step(i) = step
+         h%newton_iterations(i) = iterations
+         h%rejected(i) = rejected
+      end associate
+      if (i > 0) run%summary%max_newton_iterations = max(run%summary%max_newton_iterations, iterations)
+      call model%record(run, i)
+   end subroutine append_record
 
    !> Whether the step loop pauses before its next attempt:
    !> pause_termination when SIGTERM has arrived (options%stop_on_termination),

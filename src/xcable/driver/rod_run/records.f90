@@ -60,46 +60,6 @@ contains
       if (size(self%pieces) == 1 .and. self%break_node > 0) v(:, self%break_node + 1) = v(:, self%break_node)
    end function column_velocities
 
-   !> Snapshots due up to time t_new: inside the step just accepted
-   !> (interpolated), or of the static state (static = .true.).
-   module subroutine emit_snapshots(self, observer, t_new, static, error)
-      type(rod_run), intent(inout) :: self
-      class(run_observer), intent(inout), optional :: observer
-      real(dp), intent(in) :: t_new
-      logical, intent(in) :: static
-      type(error_type), allocatable, intent(inout) :: error
-      type(error_type), allocatable :: output_error
-      real(dp) :: ts
-      real(dp), allocatable :: v(:, :), extra(:, :)
-      do
-         ts = snapshot_time(self, self%progress%snapshot_index)
-         if (ts > t_new*(1 + 1.0e-12_dp)) exit
-         if (.not. allocated(self%buffer)) allocate (self%buffer(self%n_out, n_fields))
-         if (static) then
-            self%buffer = self%info%fields
-            if (self%plane_azimuth /= 0) v = column_velocities(self)
-         else
-            call interpolated_fields(self, ts, self%buffer, v)
-         end if
-         if (self%plane_azimuth /= 0) then
-            allocate (extra(self%n_out, n_fields3))
-            call turned_back(self, self%buffer, v, extra)
-         end if
-         self%progress%snapshot_index = self%progress%snapshot_index + 1
-         if (present(observer)) then
-            call observer%snapshot(ts, self%buffer, output_error)
-            if (.not. allocated(output_error) .and. allocated(extra)) &
-               call observer%snapshot_extra(ts, field3_names, extra, output_error)
-            if (allocated(output_error)) then
-               call prefix_error(output_error, 'output: ')
-               call move_alloc(output_error, error)
-               return
-            end if
-         end if
-         if (allocated(extra)) deallocate (extra)
-      end do
-   end subroutine emit_snapshots
-
    !> Time of snapshot i (i >= 1); huge when there is none.
    pure real(dp) module function snapshot_time(self, i)
       type(rod_run), intent(in) :: self
@@ -112,7 +72,8 @@ contains
       end if
    end function snapshot_time
 
-   !> End labels and the record of the static state (index 0).
+   !> End labels and slots, and the supports' forces of the static state (the history's
+   !> record of t = 0 follows: driver/stepping.f90).
    module subroutine start_history(self)
       type(rod_run), intent(inout) :: self
       integer :: n_ends
@@ -125,29 +86,21 @@ contains
       self%pieces(1)%reaction(:, 2) = self%static%reaction_b
       call self%history%reserve(16, n_ends, self%options%energy)
       call self%history%keep_measures(measure_names(self%scene%loads))
-      self%history%n = -1
-      call record(self, 0, 0, 0.0_dp)
    end subroutine start_history
 
-   !> Append a history record at the current time.
-   module subroutine record(self, iterations, rejected, step)
-      type(rod_run), intent(inout) :: self
-      integer, intent(in) :: iterations, rejected
-      real(dp), intent(in) :: step
-      integer :: i, p, side, node, slot
+   !> The planar model's part of history record i at run%t (the step loop wrote its time, step,
+   !> Newton iterations and rejected attempts): the ends (position, velocity, tension, the force
+   !> on the cable: the support's at a held end, the applied one at a loaded end), the loads'
+   !> measures, the ledger.
+   module subroutine planar_record(self, run, i)
+      class(planar_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer, intent(in) :: i
+      integer :: p, side, node, slot
       real(dp) :: en(4), e(2), f(2), ten
-      if (self%history%n + 1 > ubound(self%history%time, 1)) &
-         call self%history%reserve(2*ubound(self%history%time, 1), size(self%history%end_labels), self%options%energy)
-      i = self%history%n + 1
-      self%history%n = i
-      self%history%time(i) = self%t
-      self%history%step(i) = step
-      self%history%newton_iterations(i) = iterations
-      self%history%rejected(i) = rejected
-      if (i > 0) self%summary%max_newton_iterations = max(self%summary%max_newton_iterations, iterations)
       en = 0
-      do p = 1, size(self%pieces)
-         associate (run_piece => self%pieces(p), piece => self%pieces(p)%problem%piece)
+      do p = 1, size(run%pieces)
+         associate (run_piece => run%pieces(p), piece => run%pieces(p)%problem%piece)
             do side = 1, 2
                slot = run_piece%end_slot(side)
                if (slot == 0) cycle
@@ -157,20 +110,20 @@ contains
                   if (piece%end_a%held()) then
                      f = run_piece%reaction(:, 1)
                   else
-                     f = piece%end_a%applied_force(self%t)
+                     f = piece%end_a%applied_force(run%t)
                      if (piece%end_a%state_dependent()) f = f + state_force(piece%end_a, node)
                   end if
                else
                   if (piece%end_b%held()) then
                      f = run_piece%reaction(:, 2)
                   else
-                     f = piece%end_b%applied_force(self%t)
+                     f = piece%end_b%applied_force(run%t)
                      if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, node)
                   end if
                end if
-               self%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
+               run%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
             end do
-            if (self%options%energy) then
+            if (run%options%energy) then
                call piece%complete_memo()
                call piece%geometry(run_piece%r, piece%e1, piece%l1, piece%th1)
                en = en + piece%energies(run_piece%r, run_piece%v, piece%l1, piece%th1)
@@ -179,32 +132,32 @@ contains
       end do
       ! Before a break inside the cable, its two ends are the break node: the
       ! pull of the cable on either side (mean tension of the node's two cells).
-      if (size(self%pieces) == 1 .and. self%break_node > 0) then
-         associate (r => self%pieces(1)%r, v => self%pieces(1)%v, k => self%break_node, &
-                    piece => self%pieces(1)%problem%piece)
+      if (size(run%pieces) == 1 .and. run%break_node > 0) then
+         associate (r => run%pieces(1)%r, v => run%pieces(1)%v, k => run%break_node, &
+                    piece => run%pieces(1)%problem%piece)
             e = r(:, k + 1) - r(:, k)
             f = piece%law%tension(norm2(e)/piece%ds(k) - 1)*e/norm2(e)
             ten = 0.5_dp*(norm2(f) + piece%law%tension(norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
-            self%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
+            run%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
             e = r(:, k) - r(:, k - 1)
             f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
-            self%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
+            run%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
          end associate
       end if
-      if (allocated(self%history%measures)) then
-         self%history%measures(:, i) = 0
-         do p = 1, size(self%pieces)
-            associate (piece => self%pieces(p)%problem%piece)
-               call load_measures(self%scene%loads, self%pieces(p)%r, piece%ds, self%history%measures(:, i))
+      if (allocated(run%history%measures)) then
+         run%history%measures(:, i) = 0
+         do p = 1, size(run%pieces)
+            associate (piece => run%pieces(p)%problem%piece)
+               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, run%history%measures(:, i))
             end associate
          end do
       end if
-      if (self%options%energy) then
-         self%history%energy(1:4, i) = en
-         self%history%energy(5, i) = self%work
-         self%history%energy(6, i) = self%dissipation
-         self%history%energy(7, i) = sum(en) - self%work - self%load_work + self%dissipation
-         self%history%energy(8, i) = self%load_work
+      if (run%options%energy) then
+         run%history%energy(1:4, i) = en
+         run%history%energy(5, i) = run%work
+         run%history%energy(6, i) = run%dissipation
+         run%history%energy(7, i) = sum(en) - run%work - run%load_work + run%dissipation
+         run%history%energy(8, i) = run%load_work
       end if
 
    contains
@@ -214,13 +167,13 @@ contains
          class(end_condition), intent(in) :: end
          integer, intent(in) :: node
          real(dp) :: force(2), f3(3), dx(3, 3), dv(3, 3), damp(3)
-         associate (run_piece => self%pieces(p))
-            call end%state_force(self%t, [run_piece%r(1, node), 0.0_dp, run_piece%r(2, node)], &
+         associate (run_piece => run%pieces(p))
+            call end%state_force(run%t, [run_piece%r(1, node), 0.0_dp, run_piece%r(2, node)], &
                                  [run_piece%v(1, node), 0.0_dp, run_piece%v(2, node)], f3, dx, dv, damp)
          end associate
          force = f3([1, 3])
       end function state_force
-   end subroutine record
+   end subroutine planar_record
 
    !> Tension at an end of a piece (side 1: node 1, side 2: node n), from its
    !> end cells by end_value, and not below the law's tension at the strain
@@ -277,8 +230,10 @@ contains
    end subroutine interpolated_fields
 
    !> Summary figures and warnings from the history.
-   module subroutine summarise(self)
+   module subroutine summarise(self, kinds, held)
       type(rod_run), intent(inout) :: self
+      character(len=*), intent(in) :: kinds(:)
+      logical, intent(in) :: held(:)
       integer :: i, j, n, n_ends
       real(dp) :: speed, f0, f1, fi, reference, slack_level
       logical :: held_end
@@ -325,7 +280,7 @@ contains
       slack_level = slack_tension_fraction*max(self%info%max_tension, self%info%tension_a, self%info%tension_b)
       do j = 1, n_ends
          associate (e => self%summary%ends(j))
-            e%kind = end_kind(self, j)
+            e%kind = kinds(j)
             e%min_tension = self%history%ends(5, j, 0)
             e%max_tension = self%history%ends(5, j, 0)
             e%max_tension_time = self%history%time(0)
@@ -361,7 +316,7 @@ contains
                   self%summary%min_fixed_end_tension_time = e%min_tension_time
                end if
             end if
-            held_end = end_is_held(self, j)
+            held_end = held(j)
             if (held_end .and. self%summary%has_front) then
                ! The 1 % drop of the tension at the end.
                f0 = self%history%ends(5, j, 0)
@@ -396,7 +351,7 @@ contains
       if (self%summary%max_turning_angle > warn_turning_angle) call warn('neighbouring cells turned by up to '// &
          str(self%summary%max_turning_angle)//' rad (more than '//str(warn_turning_angle)// &
          ' rad): a kink at the grid scale, the buckled zone is not resolved; more nodes resolve it')
-      associate (law => self%pieces(1)%problem%piece%law)
+      associate (law => self%scene%law)
          if (self%summary%max_strain > law%strain_max) call warn('cells were stretched to strain '// &
             str(self%summary%max_strain)//', beyond the range of the '//law%name()//' law (strain '// &
             str(law%strain_max)//'): the law was extrapolated there')
@@ -411,7 +366,7 @@ contains
          'cannot push: this state is held by the bending stiffness and the law''s compression branch, and may '// &
          'be a loop or a buckle (compare with compression = ''none'' and with more nodes)')
       ! A rope that pushes: the law's compressive branch reached in the dynamics.
-      associate (law => self%pieces(1)%problem%piece%law)
+      associate (law => self%scene%law)
          if (law%tension(self%summary%min_strain) < -warn_dynamic_compression*self%static_max_tension) &
             call warn('the line was compressed to '//quantity(law%tension(self%summary%min_strain), 'N')// &
                       ' (strain '//str(self%summary%min_strain)//') at s = '//quantity(self%summary%min_strain_s, 'm')// &
@@ -424,7 +379,7 @@ contains
          ' rad): the grid is too coarse for the shape; about '//str(nodes_for(self%static_max_turn/warn_static_turn))// &
          ' nodes resolve it')
       if (self%front_cells > 0 .and. self%front_cells < min_front_cells) call warn('the break''s front (t_break = '// &
-         str(self%scene%t_break)//' s at wave speed '//str(self%front_cells*maxval(self%pieces(1)%problem%piece%ds)/ &
+         str(self%scene%t_break)//' s at wave speed '//str(self%front_cells*maxval(self%s(2:) - self%s(:size(self%s) - 1))/ &
          self%scene%t_break)//' m/s) spans '//str(self%front_cells)//' cells, fewer than '//str(min_front_cells)// &
          ': about '//str(nodes_for(min_front_cells/self%front_cells))//' nodes resolve it')
       if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
@@ -498,30 +453,28 @@ contains
       end subroutine push
    end subroutine slack_intervals
 
-   !> Kind of the end in history slot j at the end of the run ('fixed', 'motion', ..., 'break').
-   function end_kind(self, j) result(kind)
-      type(rod_run), intent(in) :: self
+   !> The planar model's end in history slot j at the end of the run: its kind ('fixed',
+   !> 'motion', ..., 'break') and whether it is held ('' and not held: no end in that slot).
+   module subroutine planar_end_info(self, run, j, kind, held)
+      class(planar_model), intent(in) :: self
+      type(rod_run), intent(in) :: run
       integer, intent(in) :: j
-      character(:), allocatable :: kind
+      character(:), allocatable, intent(out) :: kind
+      logical, intent(out) :: held
       integer :: p
       kind = ''
-      do p = 1, size(self%pieces)
-         if (self%pieces(p)%end_slot(1) == j) kind = self%pieces(p)%problem%piece%end_a%kind()
-         if (self%pieces(p)%end_slot(2) == j) kind = self%pieces(p)%problem%piece%end_b%kind()
+      held = .false.
+      do p = 1, size(run%pieces)
+         if (run%pieces(p)%end_slot(1) == j) then
+            kind = run%pieces(p)%problem%piece%end_a%kind()
+            held = run%pieces(p)%problem%piece%end_a%held()
+         end if
+         if (run%pieces(p)%end_slot(2) == j) then
+            kind = run%pieces(p)%problem%piece%end_b%kind()
+            held = run%pieces(p)%problem%piece%end_b%held()
+         end if
       end do
-   end function end_kind
-
-   !> Whether history slot j belongs to an end held at the end of the run.
-   logical function end_is_held(self, j)
-      type(rod_run), intent(in) :: self
-      integer, intent(in) :: j
-      integer :: p
-      end_is_held = .false.
-      do p = 1, size(self%pieces)
-         if (self%pieces(p)%end_slot(1) == j) end_is_held = self%pieces(p)%problem%piece%end_a%held()
-         if (self%pieces(p)%end_slot(2) == j) end_is_held = self%pieces(p)%problem%piece%end_b%held()
-      end do
-   end function end_is_held
+   end subroutine planar_end_info
    !> The planar model's start: the history's labels and its record of t = 0, and the static
    !> state with its snapshot to the observer (turned back into the scene's frame for a scene
    !> run turned into x-z, with the fields of a 3-D run).
@@ -549,25 +502,26 @@ contains
       end if
    end subroutine planar_begin
 
-   !> The planar model's snapshots up to t_new (emit_snapshots).
-   module subroutine planar_emit(self, run, observer, t_new, static, error)
+   !> The planar model's snapshot at ts: the static state's fields (static) or those interpolated
+   !> inside the step just accepted (interpolated_fields); for a scene run turned into x-z, turned
+   !> back into the scene's frame with the fields of a 3-D run (turned_back).
+   module subroutine planar_snapshot(self, run, t_new, ts, static, fields, extra, with_extra)
       class(planar_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
-      class(run_observer), intent(inout), optional :: observer
-      real(dp), intent(in) :: t_new
+      real(dp), intent(in) :: t_new, ts
       logical, intent(in) :: static
-      type(error_type), allocatable, intent(inout) :: error
-      call emit_snapshots(run, observer, t_new, static, error)
-   end subroutine planar_emit
-
-   !> The planar model's history record (record).
-   module subroutine planar_record(self, run, iterations, rejected, step)
-      class(planar_model), intent(inout) :: self
-      type(rod_run), intent(inout) :: run
-      integer, intent(in) :: iterations, rejected
-      real(dp), intent(in) :: step
-      call record(run, iterations, rejected, step)
-   end subroutine planar_record
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      logical, intent(out) :: with_extra
+      real(dp), allocatable :: v(:, :)
+      if (static) then
+         fields = run%info%fields
+         if (run%plane_azimuth /= 0) v = column_velocities(run)
+      else
+         call interpolated_fields(run, ts, fields, v)
+      end if
+      with_extra = run%plane_azimuth /= 0
+      if (with_extra) call turned_back(run, fields, v, extra)
+   end subroutine planar_snapshot
 
    !> The planar model adds nothing to the summary (record and summarise made it).
    module subroutine planar_conclude(self, run)

@@ -41,6 +41,11 @@
 !> The unknowns of Newton's method are the new positions, two per node, node
 !> after node; the momentum balance of node k involves nodes k-2 .. k+2, so
 !> the Jacobian has kl = ku = 5. A held end's rows are R = X(t).
+!>
+!> This file holds the piece's types and the statics and time step with their helpers (the hot
+!> path, kept in one compilation unit: gfortran inlines and specialises only a unit's private
+!> procedures; the piece-free kernels are in model/rod_kernels.f90). The submodules in model/rod/
+!> hold the cold parts: init.f90 (the set-up) and records.f90 (the reaction, the cell fields).
 module xcable_model_rod
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, fatal_error, stat_numerics
@@ -66,6 +71,8 @@ module xcable_model_rod
    ! into it (public, they cost 0.9e6 instructions on fast_180kN).
    public :: cell_terms, add_jacobian, bend_nodes, small_rotation, small_strain_step
    public :: collapsed_length
+   ! For the submodules in model/rod/ (see the wrappers at the end).
+   public :: rod_node_weight, rod_old_energies
 
    !> A cell shorter than this fraction of its unstretched length has collapsed: the step
    !> control rejects such a state (driver/rod_run/step.f90 check_range), the statics refuse it.
@@ -200,6 +207,64 @@ module xcable_model_rod
       procedure :: accepted_state => rod_problem_accepted_state
    end type rod_problem
 
+   ! Procedures of the submodules in model/rod/ (see the file head).
+   interface
+      !> Set up a piece on the node arc lengths s.
+      module subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref, mu2, damping)
+         !> Piece.
+         class(rod_piece), intent(inout) :: self
+         !> Node arc lengths, increasing, m.
+         real(dp), intent(in) :: s(:)
+         !> Mass (kg/m) and weight (N/m) per unstretched length, EI (N m^2), gravity (m/s^2).
+         real(dp), intent(in) :: mass, weight, ei, gravity
+         !> Share of the averaged mass matrix, 0 to 1.
+         real(dp), intent(in) :: mu
+         !> Tension-strain law.
+         class(material_law), intent(in) :: law
+         !> Ends at s(1) and s(n).
+         class(end_condition), intent(in) :: end_a, end_b
+         !> Reference tension of the row scaling, N.
+         real(dp), intent(in) :: tension_ref
+         !> Weight of the second-difference kinetic energy (0 if absent).
+         real(dp), intent(in), optional :: mu2
+         !> Kelvin-Voigt damping c, N s (0 if absent).
+         real(dp), intent(in), optional :: damping
+      end subroutine rod_init
+
+      !> The force the support exerts on end node k (1 or n) to keep the balance of
+      !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step
+      !> also plus the node's inertia [M (V^n+1 - V^n)]_k / dt. Uses the cell forces
+      !> of the last evaluation (at the converged state: a residual, or for a step
+      !> rod_problem%accepted_state, which computes the end cells' forces and the end
+      !> nodes' velocities this needs), so call it right after.
+      module function rod_reaction(self, k, x, dt, theta) result(f)
+         !> Piece.
+         class(rod_piece), intent(in) :: self
+         !> End node, 1 or n.
+         integer, intent(in) :: k
+         !> Positions at which the piece was last evaluated, 2 per node.
+         real(dp), intent(in) :: x(:)
+         !> Step (0: statics) and time weight.
+         real(dp), intent(in) :: dt, theta
+         real(dp) :: f(2)
+      end function rod_reaction
+
+      !> Tension, strain and shear force of each cell and the moment of each node of positions R.
+      module subroutine rod_cell_fields(self, r, tension, strain, shear, moment_node, v)
+         !> Piece.
+         class(rod_piece), intent(inout) :: self
+         !> Positions (2, n).
+         real(dp), intent(in) :: r(:, :)
+         !> Velocities (2, n): with them the tension includes the damping c d(eps)/dt.
+         real(dp), intent(in), optional :: v(:, :)
+         !> Tension (N; with the damping when v is given), strain, shear force (N; along the normal n of the
+         !> paper, -perp(t)) per cell (n - 1).
+         real(dp), intent(out) :: tension(:), strain(:), shear(:)
+         !> Moment per node, dB/dtheta, N m (0 at the ends).
+         real(dp), intent(out) :: moment_node(:)
+      end subroutine rod_cell_fields
+   end interface
+
 contains
 
    !> Residual and Jacobian (newton_problem interface).
@@ -273,94 +338,6 @@ contains
          call step_state(self%piece, x, 1, self%piece%n, self%t0, self%dt, self%theta)
       end if
    end subroutine rod_problem_accepted_state
-
-   !> Set up a piece on the node arc lengths s.
-   subroutine rod_init(self, s, mass, weight, ei, gravity, mu, law, end_a, end_b, tension_ref, mu2, damping)
-      !> Piece.
-      class(rod_piece), intent(inout) :: self
-      !> Node arc lengths, increasing, m.
-      real(dp), intent(in) :: s(:)
-      !> Mass (kg/m) and weight (N/m) per unstretched length, EI (N m^2), gravity (m/s^2).
-      real(dp), intent(in) :: mass, weight, ei, gravity
-      !> Share of the averaged mass matrix, 0 to 1.
-      real(dp), intent(in) :: mu
-      !> Tension-strain law.
-      class(material_law), intent(in) :: law
-      !> Ends at s(1) and s(n).
-      class(end_condition), intent(in) :: end_a, end_b
-      !> Reference tension of the row scaling, N.
-      real(dp), intent(in) :: tension_ref
-      !> Weight of the second-difference kinetic energy (0 if absent).
-      real(dp), intent(in), optional :: mu2
-      !> Kelvin-Voigt damping c, N s (0 if absent).
-      real(dp), intent(in), optional :: damping
-      integer :: n, k
-      real(dp) :: w
-      n = size(s)
-      self%n = n
-      self%s = s
-      self%ds = s(2:n) - s(1:n - 1)
-      allocate (self%lumped(n), self%dual(n))
-      self%lumped = 0
-      self%lumped(1:n - 1) = self%lumped(1:n - 1) + 0.5_dp*self%ds
-      self%lumped(2:n) = self%lumped(2:n) + 0.5_dp*self%ds
-      self%dual = 0
-      do k = 2, n - 1
-         self%dual(k) = 0.5_dp*(self%ds(k - 1) + self%ds(k))
-      end do
-      self%mass_per_length = mass
-      self%weight = weight
-      self%ei = ei
-      self%gravity = gravity
-      self%mu = mu
-      self%mu2 = 0
-      if (present(mu2)) self%mu2 = mu2
-      self%damping = 0
-      if (present(damping)) self%damping = damping
-      if (allocated(self%law)) deallocate (self%law)
-      allocate (self%law, source=law)
-      if (allocated(self%end_a)) deallocate (self%end_a)
-      if (allocated(self%end_b)) deallocate (self%end_b)
-      allocate (self%end_a, source=end_a)
-      allocate (self%end_b, source=end_b)
-      self%tension_ref = tension_ref
-      self%length_ref = sum(self%ds)/(n - 1)
-      allocate (self%r0(2, n), self%v0(2, n), self%mv0(2, n), self%e0(2, n - 1), self%l0(n - 1), self%th0(n))
-      allocate (self%e1(2, n - 1), self%l1(n - 1), self%th1(n), self%force(2, n - 1), self%force_node(2, n))
-      allocate (self%block(2, 2, -1:1, n - 1), self%block_scaled(2, 2, -1:1, n - 1), self%mass(0:2, n), self%v1(2, n), &
-                self%mass_scaled(2, 2, 0:2, n), self%mom(n), self%dmom(n))
-      self%mom = 0
-      self%dmom = 0
-      self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
-      allocate (self%b0(n))
-      call old_energies(self)
-      allocate (self%memo_x(2*n), self%memo_e(2, n - 1), self%memo_l(n - 1), self%memo_th(n), self%memo_b(n), &
-                self%memo_b_ok(n), self%memo_dphi(n - 1))
-      self%memo_valid = .false.
-      self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%block = 0
-      self%v1 = 0
-      allocate (self%load_node(2, n), self%load_block(2, 2, 0:1, n - 1), self%skew_block(2, 2, 0:1, n - 1))
-      self%load_node = 0
-      self%load_block = 0
-      self%skew_block = 0
-      self%mass = 0
-      self%mass(0, :) = (1 - mu)*mass*self%lumped
-      self%mass(0, 1) = self%mass(0, 1) + end_a%point_mass()
-      self%mass(0, n) = self%mass(0, n) + end_b%point_mass()
-      self%mass(1, 1:n - 1) = 0.25_dp*mu*mass*self%ds
-      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mass*self%ds
-      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mass*self%ds
-      ! Kinetic energy of the second differences of velocity, w |V_k-1 - 2 V_k + V_k+1|^2 / 2 per interior node.
-      do k = 2, n - 1
-         w = self%mu2*mass*self%dual(k)/16
-         self%mass(0, k - 1) = self%mass(0, k - 1) + w
-         self%mass(0, k) = self%mass(0, k) + 4*w
-         self%mass(0, k + 1) = self%mass(0, k + 1) + w
-         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
-         self%mass(1, k) = self%mass(1, k) - 2*w
-         self%mass(2, k - 1) = self%mass(2, k - 1) + w
-      end do
-   end subroutine rod_init
 
    !> Number of unknowns (two per node).
    pure integer function rod_unknowns(self)
@@ -1288,67 +1265,6 @@ contains
       end do
    end subroutine add_end_block
 
-   !> The force the support exerts on end node k (1 or n) to keep the balance of
-   !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step
-   !> also plus the node's inertia [M (V^n+1 - V^n)]_k / dt. Uses the cell forces
-   !> of the last evaluation (at the converged state: a residual, or for a step
-   !> rod_problem%accepted_state, which computes the end cells' forces and the end
-   !> nodes' velocities this needs), so call it right after.
-   function rod_reaction(self, k, x, dt, theta) result(f)
-      !> Piece.
-      class(rod_piece), intent(in) :: self
-      !> End node, 1 or n.
-      integer, intent(in) :: k
-      !> Positions at which the piece was last evaluated, 2 per node.
-      real(dp), intent(in) :: x(:)
-      !> Step (0: statics) and time weight.
-      real(dp), intent(in) :: dt, theta
-      real(dp) :: f(2), mv(2)
-      integer :: n, j
-      n = self%n
-      f = [0.0_dp, node_weight(self, k)] - self%load_node(:, k)
-      if (k < n) f = f - self%force(:, k)
-      if (k > 1) f = f + self%force(:, k - 1)
-      if (dt > 0) then
-         ! (M V^n+1)_k with V^n+1 of the last evaluation.
-         mv = self%mass(0, k)*self%v1(:, k)
-         do j = 1, 2
-            if (k + j <= n) mv = mv + self%mass(j, k)*self%v1(:, k + j)
-            if (k - j >= 1) mv = mv + self%mass(j, k - j)*self%v1(:, k - j)
-         end do
-         f = f + (mv - self%mv0(:, k))/dt
-      end if
-   end function rod_reaction
-
-   !> Tension, strain and shear force of each cell and the moment of each node of positions R.
-   subroutine rod_cell_fields(self, r, tension, strain, shear, moment_node, v)
-      !> Piece.
-      class(rod_piece), intent(inout) :: self
-      !> Positions (2, n).
-      real(dp), intent(in) :: r(:, :)
-      !> Velocities (2, n): with them the tension includes the damping c d(eps)/dt.
-      real(dp), intent(in), optional :: v(:, :)
-      !> Tension (N; with the damping when v is given), strain, shear force (N; along the normal n of the
-      !> paper, -perp(t)) per cell (n - 1).
-      real(dp), intent(out) :: tension(:), strain(:), shear(:)
-      !> Moment per node, dB/dtheta, N m (0 at the ends).
-      real(dp), intent(out) :: moment_node(:)
-      integer :: c, k
-      call self%geometry(r, self%e1, self%l1, self%th1)
-      moment_node = 0
-      do k = 2, self%n - 1
-         moment_node(k) = bend_moment(self, k, self%th1(k))
-      end do
-      do c = 1, self%n - 1
-         strain(c) = self%l1(c) - 1
-         tension(c) = self%law%tension(strain(c))
-         if (present(v) .and. self%damping > 0) tension(c) = damped_tension(self%law, strain(c), tension(c), &
-            self%damping*dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c)))
-         ! Sn along the paper's normal n = -perp(t): EI Omega' + (1 + eps) Sn = 0.
-         shear(c) = (moment_node(c + 1) - moment_node(c))/(self%ds(c)*self%l1(c))
-      end do
-   end subroutine rod_cell_fields
-
    !> M V with the band of M in mass(0:2, n), on explicit-shape arrays: the same
    !> operations in the same order as on the assumed-shape arrays and the class
    !> component, in 5 times fewer instructions (callgrind, fast_180kN; the other
@@ -1410,4 +1326,26 @@ contains
       real(dp) :: q(3)
       q = [p(1), 0.0_dp, p(2)]
    end function point3
+
+   ! ---- for the submodules in model/rod/ ----
+   ! gfortran 12 makes a module's private procedures local symbols that its submodules cannot link
+   ! to; making node_weight and old_energies themselves public would keep the compiler from
+   ! inlining and specialising them in the step here (a global symbol may be interposed under
+   ! fpm's -fPIC). So the submodules call these public wrappers.
+
+   !> node_weight, for the submodules.
+   pure real(dp) function rod_node_weight(self, k)
+      !> Piece.
+      class(rod_piece), intent(in) :: self
+      !> Node.
+      integer, intent(in) :: k
+      rod_node_weight = node_weight(self, k)
+   end function rod_node_weight
+
+   !> old_energies (b0 from the old level's turning angles), for the submodules.
+   subroutine rod_old_energies(self)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      call old_energies(self)
+   end subroutine rod_old_energies
 end module xcable_model_rod

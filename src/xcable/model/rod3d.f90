@@ -51,7 +51,7 @@
 !> (third order in the rotation) is dropped. The Jacobian is written out,
 !> the bending blocks of a step included (step_bending_jacobian: first and
 !> second derivatives of the rotation vector); the statics' bending blocks
-!> use forward-mode dual numbers (defined at the end of this module).
+!> use forward-mode dual numbers (defined in rod3d/statics.f90).
 !>
 !> Newton's vector holds the positions node after node (x, y, z), then the
 !> twist angles psi_1 .. psi_n. The momentum rows of node k reach nodes k-2 ..
@@ -66,6 +66,15 @@
 !> (loads/load.f90 cell_force3). An end couple acts about its end's couple axis (-y, as in the planar input, unless the end says
 !> otherwise: the new ends of a break inside the cable), on the angle of the
 !> end cell's projection on the plane normal to the axis.
+!>
+!> This file holds the piece's types, its geometry and mass helpers, the time step with the
+!> discrete gradient of the bending, and the assembly of the node rows: the hot path of a 3-D run,
+!> kept in one compilation unit because gfortran inlines and specialises its kernels only as
+!> private procedures of the unit (in a submodule the step's kernels cost +1.2 %, the assembly
+!> +1.8 % instructions on input/sway3d.nml). The submodules in model/rod3d/ hold the cold parts:
+!> init.f90 (the set-up), statics.f90 (the static system and its dual numbers), loads.f90 (the
+!> distributed loads and the end couples), records.f90 (energies, twist rates, the reaction) and
+!> frames.f90 (the material frames, Euler parameters).
 module xcable_model_rod3d
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
@@ -81,37 +90,8 @@ module xcable_model_rod3d
    private
    public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
    public :: paper_euler_parameters, couple_plane, bend_energy, bend_moment, small_strain_step
-
-   ! Forward-mode dual numbers: a value and its derivatives with respect to six seeded inputs
-   ! (the two cell vectors of a node; the statics' bending blocks). They live in this module so
-   ! that the compiler can inline their arithmetic (a separate module cost a factor of several).
-   !> Number of derivative slots.
-   integer, parameter :: dual_slots = 6
-
-   !> A value and its derivatives.
-   type :: dual
-      !> Value.
-      real(dp) :: v = 0
-      !> Derivatives with respect to the seeded inputs.
-      real(dp) :: d(dual_slots) = 0
-   end type dual
-
-   interface operator(+)
-      module procedure add_dd, add_dr, add_rd
-   end interface
-   interface operator(-)
-      module procedure sub_dd, sub_dr, sub_rd, neg_d
-   end interface
-   interface operator(*)
-      module procedure mul_dd, mul_dr, mul_rd
-   end interface
-   interface operator(/)
-      module procedure div_dd, div_dr, div_rd
-   end interface
-   interface sqrt
-      module procedure sqrt_d
-   end interface
-
+   ! For the submodules in model/rod3d/ (see the wrappers at the end).
+   public :: rod3d_unpack, rod3d_node_weight, rod3d_assemble
 
    !> The unknowns of a node: positions at 3 (k - 1) + 1..3, psi at 3 n + k.
    character(len=*), parameter :: rod3d_unknown_names(4) = [character(len=3) :: 'x', 'y', 'z', 'psi']
@@ -212,6 +192,135 @@ module xcable_model_rod3d
       procedure :: estimate_trusted => rod3d_problem_estimate_trusted
    end type rod3d_problem
 
+   ! Procedures of the submodules in model/rod3d/ (see the file head).
+   interface
+      !> Set up a piece on the node arc lengths s; error for what the 3-D rod does not have yet.
+      module subroutine rod3d_init(self, s, mass, weight, ei, gip, gravity, mu, law, end_a, end_b, tension_ref, error, mu2, damping)
+         !> Piece.
+         class(rod3d_piece), intent(inout) :: self
+         !> Node arc lengths, increasing, m.
+         real(dp), intent(in) :: s(:)
+         !> Mass (kg/m), weight (N/m), EI and GIp (N m^2), gravity (m/s^2).
+         real(dp), intent(in) :: mass, weight, ei, gip, gravity
+         !> Share of the averaged mass matrix, 0 to 1.
+         real(dp), intent(in) :: mu
+         !> Tension-strain law.
+         class(material_law), intent(in) :: law
+         !> Ends at s(1) and s(n).
+         class(end_condition), intent(in) :: end_a, end_b
+         !> Reference tension of the row scaling, N.
+         real(dp), intent(in) :: tension_ref
+         !> Error: GIp <= 0.
+         type(error_type), allocatable, intent(out) :: error
+         !> Weight of the second-difference kinetic energy; Kelvin-Voigt damping c, N s (0 if absent).
+         real(dp), intent(in), optional :: mu2, damping
+      end subroutine rod3d_init
+
+      !> Residual (and Jacobian) of the static equilibrium at time t: the exact gradient of U.
+      module subroutine rod3d_static_system(self, x, t, residual, jacobian, with_jacobian)
+         !> Piece.
+         class(rod3d_piece), intent(inout) :: self
+         !> Unknowns, 4 per node.
+         real(dp), intent(in) :: x(:)
+         !> Time of the loads and held positions, s.
+         real(dp), intent(in) :: t
+         !> Scaled residual.
+         real(dp), intent(out) :: residual(:)
+         !> Jacobian (band storage).
+         type(band_matrix), intent(inout) :: jacobian
+         !> Whether to form the Jacobian.
+         logical, intent(in) :: with_jacobian
+      end subroutine rod3d_static_system
+
+      !> Set the distributed loads (their lift must already be off the weight given to init).
+      module subroutine rod3d_set_loads(self, loads, error)
+         !> Piece.
+         class(rod3d_piece), intent(inout) :: self
+         !> Loads.
+         type(load_slot), intent(in) :: loads(:)
+         !> Error for a load without a 3-D form.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine rod3d_set_loads
+
+      !> The distributed loads at x on the nodes (load_node) and, with the Jacobian, their blocks
+      !> (more in rod3d/loads.f90).
+      module subroutine apply_loads(self, x, dt, theta, with_jacobian)
+         class(rod3d_piece), intent(inout) :: self
+         real(dp), intent(in) :: x(:)
+         real(dp), intent(in) :: dt, theta
+         logical, intent(in) :: with_jacobian
+      end subroutine apply_loads
+
+      !> The applied couples of the ends on the end cells, on the cell forces and blocks: in statics
+      !> at ta, in a step averaged over ta and tb (more in rod3d/loads.f90).
+      module subroutine add_couples(self, ta, tb, step, with_jacobian)
+         class(rod3d_piece), intent(inout) :: self
+         real(dp), intent(in) :: ta, tb
+         logical, intent(in) :: step, with_jacobian
+      end subroutine add_couples
+
+      !> An orthonormal basis (u, w) of the plane normal to the unit axis a, with
+      !> u x w = a: u the unit projection of x on the plane (of z when a is near
+      !> x). For a = -y it is (x, z) exactly, the planar couple's plane.
+      module pure function couple_plane(axis) result(basis)
+         !> Unit axis.
+         real(dp), intent(in) :: axis(3)
+         real(dp) :: basis(3, 2)
+      end function couple_plane
+
+      !> Energies of a state: strain, kinetic, bending, gravity, twist (J).
+      module function rod3d_energies(self, x, v) result(en)
+         !> Piece.
+         class(rod3d_piece), intent(in) :: self
+         !> Unknowns (4 per node) and velocities (3, n).
+         real(dp), intent(in) :: x(:), v(:, :)
+         real(dp) :: en(5)
+      end function rod3d_energies
+
+      !> Twist rate tau_c = Omega1 of each cell of x (n - 1), 1/m.
+      module pure function rod3d_twist_rates(self, x) result(tau)
+         !> Piece.
+         class(rod3d_piece), intent(in) :: self
+         !> Unknowns, 4 per node.
+         real(dp), intent(in) :: x(:)
+         real(dp) :: tau(self%n - 1)
+      end function rod3d_twist_rates
+
+      !> The force the support exerts on end node k (1 or n) to keep its balance, after an
+      !> evaluation at the state (statics: dt = 0).
+      module function rod3d_reaction(self, k, dt) result(f)
+         !> Piece.
+         class(rod3d_piece), intent(in) :: self
+         !> End node, 1 or n.
+         integer, intent(in) :: k
+         !> Step of the evaluation (0: statics).
+         real(dp), intent(in) :: dt
+         real(dp) :: f(3)
+      end function rod3d_reaction
+
+      !> Material frames of the cells of x as unit quaternions (4, n - 1), [beta0, beta1, beta2, beta3]:
+      !> the rotation of the fixed frame (x, y, z) onto (t, n, b) of each cell (more in
+      !> rod3d/frames.f90).
+      module pure subroutine rod3d_frames(self, x, beta)
+         !> Piece.
+         class(rod3d_piece), intent(in) :: self
+         !> Unknowns, 4 per node.
+         real(dp), intent(in) :: x(:)
+         !> Quaternions (4, n - 1).
+         real(dp), intent(out) :: beta(:, :)
+      end subroutine rod3d_frames
+
+      !> The paper's Euler parameters of a frame given as frames() gives it: the rotation of the
+      !> paper's fixed frame (i up, j horizontal, k = i x j, that is (z, x, y)) onto (t, n, b),
+      !> in components along i, j, k. In a planar state beta1 = beta2 = 0 and
+      !> t = (beta0^2 - beta3^2) i + 2 beta0 beta3 j, as in eqs. 18-21.
+      module pure function paper_euler_parameters(beta) result(b)
+         !> Quaternion of frames() (rotation of (x, y, z) onto (t, n, b)).
+         real(dp), intent(in) :: beta(4)
+         real(dp) :: b(4)
+      end function paper_euler_parameters
+   end interface
+
 contains
 
    !> Residual and Jacobian (newton_problem interface).
@@ -249,100 +358,6 @@ contains
                                      reshape(update(1:3*self%piece%n), [3, self%piece%n]), &
                                      tolerance*self%piece%length_ref)
    end function rod3d_problem_estimate_trusted
-
-   !> Set up a piece on the node arc lengths s; error for what the 3-D rod does not have yet.
-   subroutine rod3d_init(self, s, mass, weight, ei, gip, gravity, mu, law, end_a, end_b, tension_ref, error, mu2, damping)
-      !> Piece.
-      class(rod3d_piece), intent(inout) :: self
-      !> Node arc lengths, increasing, m.
-      real(dp), intent(in) :: s(:)
-      !> Mass (kg/m), weight (N/m), EI and GIp (N m^2), gravity (m/s^2).
-      real(dp), intent(in) :: mass, weight, ei, gip, gravity
-      !> Share of the averaged mass matrix, 0 to 1.
-      real(dp), intent(in) :: mu
-      !> Tension-strain law.
-      class(material_law), intent(in) :: law
-      !> Ends at s(1) and s(n).
-      class(end_condition), intent(in) :: end_a, end_b
-      !> Reference tension of the row scaling, N.
-      real(dp), intent(in) :: tension_ref
-      !> Error: GIp <= 0.
-      type(error_type), allocatable, intent(out) :: error
-      !> Weight of the second-difference kinetic energy; Kelvin-Voigt damping c, N s (0 if absent).
-      real(dp), intent(in), optional :: mu2, damping
-      integer :: n, k
-      real(dp) :: w
-      if (.not. gip > 0) then
-         call fatal_error(error, 'the torsional stiffness GIp must be > 0', stat_input)
-         return
-      end if
-      ! A piece may be set up again.
-      if (allocated(self%law)) deallocate (self%law)
-      if (allocated(self%end_a)) deallocate (self%end_a)
-      if (allocated(self%end_b)) deallocate (self%end_b)
-      if (allocated(self%lumped)) deallocate (self%lumped, self%dual_length, self%r0, self%v0, self%mv0, self%e0, &
-                                              self%l0, self%th0, self%e1, self%l1, self%th1, self%force, &
-                                              self%force_node, self%v1, self%block, self%mass)
-      n = size(s)
-      self%n = n
-      self%s = s
-      self%ds = s(2:n) - s(1:n - 1)
-      allocate (self%lumped(n), self%dual_length(n))
-      self%lumped = 0
-      self%lumped(1:n - 1) = self%lumped(1:n - 1) + 0.5_dp*self%ds
-      self%lumped(2:n) = self%lumped(2:n) + 0.5_dp*self%ds
-      self%dual_length = 0
-      do k = 2, n - 1
-         self%dual_length(k) = 0.5_dp*(self%ds(k - 1) + self%ds(k))
-      end do
-      self%mass_per_length = mass
-      self%weight = weight
-      self%ei = ei
-      self%gip = gip
-      self%gravity = gravity
-      self%mu = mu
-      self%mu2 = 0
-      if (present(mu2)) self%mu2 = mu2
-      self%damping = 0
-      if (present(damping)) self%damping = damping
-      allocate (self%law, source=law)
-      allocate (self%end_a, source=end_a)
-      allocate (self%end_b, source=end_b)
-      self%tension_ref = tension_ref
-      self%length_ref = sum(self%ds)/(n - 1)
-      allocate (self%r0(3, n), self%v0(3, n), self%mv0(3, n), self%e0(3, n - 1), self%l0(n - 1), self%th0(n))
-      if (allocated(self%phi_old)) deallocate (self%phi_old)
-      allocate (self%phi_old(3, n))
-      self%phi_old = 0
-      allocate (self%e1(3, n - 1), self%l1(n - 1), self%th1(n), self%force(3, n - 1), self%force_node(3, n))
-      allocate (self%v1(3, n), self%block(3, 3, -1:1, n - 1), self%mass(0:2, n))
-      if (allocated(self%load_node)) deallocate (self%load_node, self%load_block)
-      if (allocated(self%skew_block)) deallocate (self%skew_block)
-      allocate (self%load_node(3, n), self%load_block(3, 3, 0:1, n - 1), self%skew_block(3, 3, 0:1, n - 1))
-      self%load_node = 0
-      self%load_block = 0
-      self%skew_block = 0
-      if (allocated(self%loads)) deallocate (self%loads)
-      self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
-      self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%force_node = 0; self%v1 = 0; self%block = 0
-      ! The planar rod's mass matrix, for each component.
-      self%mass = 0
-      self%mass(0, :) = (1 - mu)*mass*self%lumped
-      self%mass(0, 1) = self%mass(0, 1) + end_a%point_mass()
-      self%mass(0, n) = self%mass(0, n) + end_b%point_mass()
-      self%mass(1, 1:n - 1) = 0.25_dp*mu*mass*self%ds
-      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mass*self%ds
-      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mass*self%ds
-      do k = 2, n - 1
-         w = self%mu2*mass*self%dual_length(k)/16
-         self%mass(0, k - 1) = self%mass(0, k - 1) + w
-         self%mass(0, k) = self%mass(0, k) + 4*w
-         self%mass(0, k + 1) = self%mass(0, k + 1) + w
-         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
-         self%mass(1, k) = self%mass(1, k) - 2*w
-         self%mass(2, k - 1) = self%mass(2, k - 1) + w
-      end do
-   end subroutine rod3d_init
 
    !> Number of unknowns (four per node).
    pure integer function rod3d_unknowns(self)
@@ -526,118 +541,6 @@ contains
          end do
       end do
    end subroutine rod3d_mass_times
-
-   !> Energies of a state: strain, kinetic, bending, gravity, twist (J).
-   function rod3d_energies(self, x, v) result(en)
-      !> Piece.
-      class(rod3d_piece), intent(in) :: self
-      !> Unknowns (4 per node) and velocities (3, n).
-      real(dp), intent(in) :: x(:), v(:, :)
-      real(dp) :: en(5), r(3, self%n), psi(self%n), e(3, self%n - 1), l(self%n - 1), th(self%n)
-      integer :: k, c
-      call unpack(x, r, psi)
-      call self%geometry(r, e, l, th)
-      en = 0
-      do c = 1, self%n - 1
-         en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
-         en(5) = en(5) + 0.5_dp*self%gip*(psi(c + 1) - psi(c))**2/self%ds(c)
-      end do
-      do k = 1, self%n
-         en(2) = en(2) + 0.5_dp*self%mass(0, k)*dot_product(v(:, k), v(:, k))
-         en(4) = en(4) + node_weight(self, k)*r(3, k)
-      end do
-      do k = 1, self%n - 1
-         en(2) = en(2) + self%mass(1, k)*dot_product(v(:, k), v(:, k + 1))
-      end do
-      do k = 1, self%n - 2
-         en(2) = en(2) + self%mass(2, k)*dot_product(v(:, k), v(:, k + 2))
-      end do
-      do k = 2, self%n - 1
-         en(3) = en(3) + bend_energy(self, k, th(k))
-      end do
-      ! The energy stored in state-dependent ends (springs) goes with the strain energy.
-      if (self%end_a%state_dependent()) en(1) = en(1) + self%end_a%stored_energy(r(:, 1))
-      if (self%end_b%state_dependent()) en(1) = en(1) + self%end_b%stored_energy(r(:, self%n))
-   end function rod3d_energies
-
-   !> Twist rate tau_c = Omega1 of each cell of x (n - 1), 1/m.
-   pure function rod3d_twist_rates(self, x) result(tau)
-      !> Piece.
-      class(rod3d_piece), intent(in) :: self
-      !> Unknowns, 4 per node.
-      real(dp), intent(in) :: x(:)
-      real(dp) :: tau(self%n - 1)
-      integer :: c
-      do c = 1, self%n - 1
-         tau(c) = (x(3*self%n + c + 1) - x(3*self%n + c))/self%ds(c)
-      end do
-   end function rod3d_twist_rates
-
-   !> Add node k's bending force to the cell forces and, with the Jacobian, its blocks.
-   !> fa, fb: the node's contributions to ds N of its cells k-1 and k, with derivatives
-   !> in slots 1-3 (new e_k-1) and 4-6 (new e_k).
-   subroutine add_node_bending(self, k, fa, fb, with_jacobian)
-      class(rod3d_piece), intent(inout) :: self
-      integer, intent(in) :: k
-      type(dual), intent(in) :: fa(3), fb(3)
-      logical, intent(in) :: with_jacobian
-      integer :: i
-      do i = 1, 3
-         self%force(i, k - 1) = self%force(i, k - 1) + fa(i)%v/self%ds(k - 1)
-         self%force(i, k) = self%force(i, k) + fb(i)%v/self%ds(k)
-         if (.not. with_jacobian) cycle
-         self%block(i, :, 0, k - 1) = self%block(i, :, 0, k - 1) + fa(i)%d(1:3)/self%ds(k - 1)
-         self%block(i, :, 1, k - 1) = self%block(i, :, 1, k - 1) + fa(i)%d(4:6)/self%ds(k - 1)
-         self%block(i, :, -1, k) = self%block(i, :, -1, k) + fb(i)%d(1:3)/self%ds(k)
-         self%block(i, :, 0, k) = self%block(i, :, 0, k) + fb(i)%d(4:6)/self%ds(k)
-      end do
-   end subroutine add_node_bending
-
-   !> Residual (and Jacobian) of the static equilibrium at time t: the exact gradient of U.
-   subroutine rod3d_static_system(self, x, t, residual, jacobian, with_jacobian)
-      !> Piece.
-      class(rod3d_piece), intent(inout) :: self
-      !> Unknowns, 4 per node.
-      real(dp), intent(in) :: x(:)
-      !> Time of the loads and held positions, s.
-      real(dp), intent(in) :: t
-      !> Scaled residual.
-      real(dp), intent(out) :: residual(:)
-      !> Jacobian (band storage).
-      type(band_matrix), intent(inout) :: jacobian
-      !> Whether to form the Jacobian.
-      logical, intent(in) :: with_jacobian
-      integer :: c, n, k, i
-      real(dp) :: f, fp, tc(3), r(3, self%n), psi(self%n)
-      type(dual) :: a(3), b(3), na, nb, cosine, coef
-      n = self%n
-      call unpack(x, r, psi)
-      call self%geometry(r, self%e1, self%l1, self%th1)
-      self%block = 0
-      do c = 1, n - 1
-         call self%law%tension_stiffness(self%l1(c) - 1, f, fp)
-         tc = self%e1(:, c)/self%l1(c)
-         self%force(:, c) = f*tc
-         if (with_jacobian) self%block(:, :, 0, c) = fp*outer3(tc, tc) + f/self%l1(c)*(identity3() - outer3(tc, tc))
-      end do
-      call add_couples(self, t, t, .false., with_jacobian)
-      do k = 2, n - 1
-         do i = 1, 3
-            a(i) = seeded(self%e1(i, k - 1), i)
-            b(i) = seeded(self%e1(i, k), i + 3)
-         end do
-         ! B = K (1 - c) / (1 + c), c = cos(th), K = 2 EI / h: grad B = -2 K / (1 + c)^2 grad c.
-         na = sqrt(dot3(a, a))
-         nb = sqrt(dot3(b, b))
-         cosine = dot3(a, b)/(na*nb)
-         coef = (-4*self%ei/self%dual_length(k))/((1.0_dp + cosine)*(1.0_dp + cosine))
-         call add_node_bending(self, k, (b/(na*nb) - a*(cosine/(na*na)))*coef, &
-                               (a/(na*nb) - b*(cosine/(nb*nb)))*coef, &
-                               with_jacobian)
-      end do
-      call apply_loads(self, x, 0.0_dp, 0.5_dp, with_jacobian)
-      call assemble(self, x, t, t, residual, jacobian, with_jacobian, .false., 0.5_dp)
-   end subroutine rod3d_static_system
 
    !> Store the old level (positions, velocities (3, n)) of a step.
    subroutine rod3d_prepare_step(self, r0, v0)
@@ -1346,381 +1249,46 @@ contains
       if (allocated(self%loads)) has_loads = size(self%loads) > 0
    end function has_loads
 
-   !> The applied couples of the ends on the end cells. A couple C about the
-   !> unit axis a (end_condition%couple_axis: -y for the planar input's couple,
-   !> positive counter-clockwise in the x-z plane) does the work C dphi, dphi
-   !> the change of the angle of the cell's projection on the plane normal to
-   !> a (couple_plane): in statics the force -C grad(phi) / ds, in a step the
-   !> time-averaged couple times the planar rod's exact discrete gradient of
-   !> that angle, perp(p_mid) dphi / (sin(dphi) |p0| |p1|) of the projections p.
-   subroutine add_couples(self, ta, tb, step, with_jacobian)
-      class(rod3d_piece), intent(inout) :: self
-      real(dp), intent(in) :: ta, tb
-      logical, intent(in) :: step, with_jacobian
-      real(dp) :: couple, p0(2), p1(2), pm(2), l0, l1, cross01, dphi, rho, drho, g, gvec(2), dg(2), dgvec(2, 2)
-      real(dp) :: jm(2, 2), jp(2, 2), basis(3, 2)
-      integer :: c, side, j
-      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
-      do side = 1, 2
-         if (side == 1) then
-            c = 1
-            couple = 0.5_dp*(self%end_a%applied_couple(ta) + self%end_a%applied_couple(tb))
-            basis = couple_plane(self%end_a%couple_axis())
-         else
-            c = self%n - 1
-            couple = 0.5_dp*(self%end_b%applied_couple(ta) + self%end_b%applied_couple(tb))
-            basis = couple_plane(self%end_b%couple_axis())
-         end if
-         if (couple == 0) cycle
-         p1 = matmul(self%e1(:, c), basis)
-         l1 = norm2(p1)
-         if (step) then
-            p0 = matmul(self%e0(:, c), basis)
-            l0 = norm2(p0)
-            pm = 0.5_dp*(p0 + p1)
-            cross01 = p0(1)*p1(2) - p0(2)*p1(1)
-            dphi = atan2(cross01, dot_product(p0, p1))
-            if (abs(dphi) < small_rotation) then
-               rho = 1 + dphi**2/6
-               drho = dphi/3
-            else
-               rho = dphi/sin(dphi)
-               drho = (sin(dphi) - dphi*cos(dphi))/sin(dphi)**2
-            end if
-            g = rho/(l0*l1)
-            gvec = [-pm(2), pm(1)]*g
-            ! d gvec / d p1 = g jm / 2 + perp(pm) dg^T, dg = drho dphi/dp1 / (l0 l1) - rho p1 / (l0 l1^3).
-            dg = drho*[-p1(2), p1(1)]/l1**2/(l0*l1) - rho/(l0*l1**2)*p1/l1
-            do j = 1, 2
-               dgvec(:, j) = 0.5_dp*g*jm(:, j) + [-pm(2), pm(1)]*dg(j)
-            end do
-         else
-            gvec = [-p1(2), p1(1)]/l1**2
-            jp = (jm - 2*outer2([-p1(2), p1(1)], p1)/l1**2)/l1**2
-            dgvec = jp
-         end if
-         ! Back to x, y, z: the force B g and the block B dg B^T of the plane's basis B.
-         self%force(:, c) = self%force(:, c) - couple*matmul(basis, gvec)/self%ds(c)
-         if (with_jacobian) self%block(:, :, 0, c) = self%block(:, :, 0, c) &
-                                                     - couple*matmul(basis, matmul(dgvec, transpose(basis)))/self%ds(c)
-      end do
+   ! ---- for the submodules in model/rod3d/ ----
+   ! gfortran 12 makes a module's private procedures local symbols that its submodules cannot link
+   ! to; making unpack, node_weight and assemble themselves public would keep the compiler from
+   ! inlining and specialising them in the time step here (a global symbol may be interposed under
+   ! fpm's -fPIC). So the submodules call these public wrappers.
 
-   contains
-
-      pure function outer2(u, v) result(m)
-         real(dp), intent(in) :: u(2), v(2)
-         real(dp) :: m(2, 2)
-         m(:, 1) = u*v(1)
-         m(:, 2) = u*v(2)
-      end function outer2
-   end subroutine add_couples
-
-   !> An orthonormal basis (u, w) of the plane normal to the unit axis a, with
-   !> u x w = a: u the unit projection of x on the plane (of z when a is near
-   !> x). For a = -y it is (x, z) exactly, the planar couple's plane.
-   pure function couple_plane(axis) result(basis)
-      !> Unit axis.
-      real(dp), intent(in) :: axis(3)
-      real(dp) :: basis(3, 2), u(3)
-      u = [1.0_dp, 0.0_dp, 0.0_dp]
-      if (abs(axis(1)) > 0.9_dp) u = [0.0_dp, 0.0_dp, 1.0_dp]
-      u = u - dot_product(u, axis)*axis
-      u = u/norm2(u)
-      basis(:, 1) = u
-      basis(:, 2) = cross3(axis, u)
-   end function couple_plane
-
-   !> Set the distributed loads (their lift must already be off the weight given to init).
-   subroutine rod3d_set_loads(self, loads, error)
-      !> Piece.
-      class(rod3d_piece), intent(inout) :: self
-      !> Loads.
-      type(load_slot), intent(in) :: loads(:)
-      !> Error for a load without a 3-D form.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: i
-      do i = 1, size(loads)
-         if (.not. loads(i)%load%has_3d()) then
-            call fatal_error(error, "the load '"//loads(i)%load%name()//"' has no 3-D form", stat_input)
-            return
-         end if
-      end do
-      self%loads = loads
-   end subroutine rod3d_set_loads
-
-   !> The distributed loads at x, as in the planar rod: each cell's force (load per unstretched
-   !> length times ds) half to each of its nodes; in a step the cell's kinematics are centred
-   !> on the step (stretch vector (e^n + e^n+1) / 2, velocity (R^n+1 - R^n) / dt, acceleration
-   !> (V^n+1 - V^n) / dt, means of its two nodes), in statics e of x at rest.
-   subroutine apply_loads(self, x, dt, theta, with_jacobian)
-      class(rod3d_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(in) :: dt, theta
-      logical, intent(in) :: with_jacobian
-      integer :: c, i, n
-      real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3), &
-                  xm(3), dx_coef, df_dx(3, 3)
-      self%load_node = 0
-      self%skewed = .false.
-      if (.not. allocated(self%loads)) return
-      if (size(self%loads) == 0) return
-      n = self%n
-      self%load_block = 0
-      self%skewed = any_skew(self%loads)
-      if (self%skewed) self%skew_block = 0
-      do c = 1, n - 1
-         r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
-         call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
-                              e, w, a, de_coef, xm, dx_coef)
-         do i = 1, size(self%loads)
-            call self%loads(i)%load%cell_force3(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
-            f = self%load_factor*f
-            self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
-            self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
-            if (.not. with_jacobian) cycle
-            ! dF_c/dR_b = ds [df/dx dx/dR_b + df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b],
-            ! dx/dR_b = dx_coef, de/dR_b = +-de_coef / ds.
-            kin = self%ds(c)*dx_coef*df_dx
-            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
-            self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
-            self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
-         end do
-         ! The unequal shares: node c takes +ds g, node c + 1 -ds g.
-         if (.not. self%skewed) cycle
-         do i = 1, size(self%loads)
-            if (.not. self%loads(i)%load%has_skew()) cycle
-            call self%loads(i)%load%cell_skew(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
-            f = self%load_factor*f
-            self%load_node(:, c) = self%load_node(:, c) + self%ds(c)*f
-            self%load_node(:, c + 1) = self%load_node(:, c + 1) - self%ds(c)*f
-            if (.not. with_jacobian) cycle
-            kin = self%ds(c)*dx_coef*df_dx
-            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
-            self%skew_block(:, :, 0, c) = self%skew_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
-            self%skew_block(:, :, 1, c) = self%skew_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
-         end do
-      end do
-   end subroutine apply_loads
-
-   !> The force the support exerts on end node k (1 or n) to keep its balance, after an
-   !> evaluation at the state (statics: dt = 0).
-   function rod3d_reaction(self, k, dt) result(f)
-      !> Piece.
-      class(rod3d_piece), intent(in) :: self
-      !> End node, 1 or n.
-      integer, intent(in) :: k
-      !> Step of the evaluation (0: statics).
-      real(dp), intent(in) :: dt
-      real(dp) :: f(3), mv(3)
-      integer :: n, j
-      n = self%n
-      f = [0.0_dp, 0.0_dp, node_weight(self, k)] - self%load_node(:, k)
-      if (k < n) f = f - self%force(:, k)
-      if (k > 1) f = f + self%force(:, k - 1)
-      if (dt > 0) then
-         mv = self%mass(0, k)*self%v1(:, k)
-         do j = 1, 2
-            if (k + j <= n) mv = mv + self%mass(j, k)*self%v1(:, k + j)
-            if (k - j >= 1) mv = mv + self%mass(j, k - j)*self%v1(:, k - j)
-         end do
-         f = f + (mv - self%mv0(:, k))/dt
-      end if
-   end function rod3d_reaction
-
-   !> Material frames of the cells of x as unit quaternions (4, n - 1), [beta0, beta1, beta2, beta3]:
-   !> the rotation of the fixed frame (x, y, z) onto (t, n, b) of each cell. The frame of a
-   !> cell along x is (x, -z, y), the paper's convention (n the in-plane normal, down for a
-   !> horizontal cable, b out of the plane along y). It is turned about z onto the vertical
-   !> plane of the first cell, carried to the first cell and on from cell to cell by the
-   !> smallest rotations between tangents, then turned by the cell's mean psi about t; so a
-   !> line in any vertical plane has n in that plane and b along its normal.
-   !> paper_euler_parameters gives the paper's parameters.
-   pure subroutine rod3d_frames(self, x, beta)
-      !> Piece.
-      class(rod3d_piece), intent(in) :: self
+   !> unpack, for the submodules.
+   pure subroutine rod3d_unpack(x, r, psi)
       !> Unknowns, 4 per node.
       real(dp), intent(in) :: x(:)
-      !> Quaternions (4, n - 1).
-      real(dp), intent(out) :: beta(:, :)
-      real(dp) :: r(3, self%n), psi(self%n), e(3, self%n - 1), l(self%n - 1), th(self%n), q(4), prev(3), angle
-      real(dp) :: h(2), azimuth
-      integer :: c
+      !> Positions (3, n) and twist angles (n).
+      real(dp), intent(out) :: r(:, :), psi(:)
       call unpack(x, r, psi)
-      call self%geometry(r, e, l, th)
-      ! The base frame: a quarter turn about x, (x, y, z) onto (x, -z, y), then turned about z
-      ! onto the vertical plane of the first cell, h = its horizontal direction with h_x >= 0
-      ! (so that b is that plane's normal and n lies in it; an x-z scene keeps (x, -z, y)
-      ! exactly). A vertical first cell keeps the x-z plane.
-      prev = [1.0_dp, 0.0_dp, 0.0_dp]
-      q = [sqrt(0.5_dp), -sqrt(0.5_dp), 0.0_dp, 0.0_dp]
-      h = [e(1, 1), e(2, 1)]
-      if (h(1) < 0 .or. (h(1) == 0 .and. h(2) < 0)) h = -h
-      if (h(2) /= 0 .and. norm2(h) > 1.0e-6_dp*l(1)) then
-         azimuth = atan2(h(2), h(1))
-         prev = [cos(azimuth), sin(azimuth), 0.0_dp]
-         q = quaternion_product([cos(0.5_dp*azimuth), 0.0_dp, 0.0_dp, sin(0.5_dp*azimuth)], q)
-      end if
-      do c = 1, self%n - 1
-         q = quaternion_product(minimal_rotation(prev, e(:, c)/l(c)), q)
-         prev = e(:, c)/l(c)
-         angle = 0.25_dp*(psi(c) + psi(c + 1))
-         beta(:, c) = quaternion_product(q, [cos(angle), sin(angle), 0.0_dp, 0.0_dp])
-      end do
-   end subroutine rod3d_frames
+   end subroutine rod3d_unpack
 
-   !> The paper's Euler parameters of a frame given as frames() gives it: the rotation of the
-   !> paper's fixed frame (i up, j horizontal, k = i x j, that is (z, x, y)) onto (t, n, b),
-   !> in components along i, j, k. In a planar state beta1 = beta2 = 0 and
-   !> t = (beta0^2 - beta3^2) i + 2 beta0 beta3 j, as in eqs. 18-21.
-   pure function paper_euler_parameters(beta) result(b)
-      !> Quaternion of frames() (rotation of (x, y, z) onto (t, n, b)).
-      real(dp), intent(in) :: beta(4)
-      real(dp) :: b(4), r(4)
-      ! Compose with the rotation taking (z, x, y) onto (x, y, z) (a third of a turn about (1, 1, 1)).
-      r = quaternion_product(beta, [0.5_dp, 0.5_dp, 0.5_dp, 0.5_dp])
-      b = [r(1), r(4), r(2), r(3)]
-   end function paper_euler_parameters
+   !> node_weight, for the submodules.
+   pure real(dp) function rod3d_node_weight(self, k)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Node.
+      integer, intent(in) :: k
+      rod3d_node_weight = node_weight(self, k)
+   end function rod3d_node_weight
 
-   !> The unit quaternion of the smallest rotation taking unit vector u to unit vector v
-   !> (half a turn about z when v = -u is along x, about an axis normal to u otherwise).
-   pure function minimal_rotation(u, v) result(q)
-      real(dp), intent(in) :: u(3), v(3)
-      real(dp) :: q(4), w(3), axis(3)
-      w = [u(2)*v(3) - u(3)*v(2), u(3)*v(1) - u(1)*v(3), u(1)*v(2) - u(2)*v(1)]
-      q = [1 + dot_product(u, v), w]
-      if (q(1) < 1.0e-12_dp) then
-         axis = [-u(2), u(1), 0.0_dp]
-         if (norm2(axis) < 1.0e-6_dp) axis = [0.0_dp, -u(3), u(2)]
-         q = [0.0_dp, axis/norm2(axis)]
-      else
-         q = q/norm2(q)
-      end if
-   end function minimal_rotation
-
-   !> Quaternion product p q.
-   pure function quaternion_product(p, q) result(r)
-      real(dp), intent(in) :: p(4), q(4)
-      real(dp) :: r(4)
-      r(1) = p(1)*q(1) - dot_product(p(2:4), q(2:4))
-      r(2:4) = p(1)*q(2:4) + q(1)*p(2:4) + [p(3)*q(4) - p(4)*q(3), p(4)*q(2) - p(2)*q(4), p(2)*q(3) - p(3)*q(2)]
-   end function quaternion_product
-
-   ! ---- dual-number arithmetic ----
-
-   !> A constant (no derivatives).
-   elemental type(dual) function constant(x) result(r)
-      !> Value.
-      real(dp), intent(in) :: x
-      r%v = x
-      r%d = 0
-   end function constant
-
-   !> Input i with value x (derivative 1 in slot i).
-   elemental type(dual) function seeded(x, i) result(r)
-      !> Value.
-      real(dp), intent(in) :: x
-      !> Slot.
-      integer, intent(in) :: i
-      r%v = x
-      r%d = 0
-      r%d(i) = 1
-   end function seeded
-
-   elemental type(dual) function add_dd(a, b) result(r)
-      type(dual), intent(in) :: a, b
-      r%v = a%v + b%v
-      r%d = a%d + b%d
-   end function add_dd
-
-   elemental type(dual) function add_dr(a, b) result(r)
-      type(dual), intent(in) :: a
-      real(dp), intent(in) :: b
-      r%v = a%v + b
-      r%d = a%d
-   end function add_dr
-
-   elemental type(dual) function add_rd(a, b) result(r)
-      real(dp), intent(in) :: a
-      type(dual), intent(in) :: b
-      r%v = a + b%v
-      r%d = b%d
-   end function add_rd
-
-   elemental type(dual) function sub_dd(a, b) result(r)
-      type(dual), intent(in) :: a, b
-      r%v = a%v - b%v
-      r%d = a%d - b%d
-   end function sub_dd
-
-   elemental type(dual) function sub_dr(a, b) result(r)
-      type(dual), intent(in) :: a
-      real(dp), intent(in) :: b
-      r%v = a%v - b
-      r%d = a%d
-   end function sub_dr
-
-   elemental type(dual) function sub_rd(a, b) result(r)
-      real(dp), intent(in) :: a
-      type(dual), intent(in) :: b
-      r%v = a - b%v
-      r%d = -b%d
-   end function sub_rd
-
-   elemental type(dual) function neg_d(a) result(r)
-      type(dual), intent(in) :: a
-      r%v = -a%v
-      r%d = -a%d
-   end function neg_d
-
-   elemental type(dual) function mul_dd(a, b) result(r)
-      type(dual), intent(in) :: a, b
-      r%v = a%v*b%v
-      r%d = a%d*b%v + a%v*b%d
-   end function mul_dd
-
-   elemental type(dual) function mul_dr(a, b) result(r)
-      type(dual), intent(in) :: a
-      real(dp), intent(in) :: b
-      r%v = a%v*b
-      r%d = a%d*b
-   end function mul_dr
-
-   elemental type(dual) function mul_rd(a, b) result(r)
-      real(dp), intent(in) :: a
-      type(dual), intent(in) :: b
-      r%v = a*b%v
-      r%d = a*b%d
-   end function mul_rd
-
-   elemental type(dual) function div_dd(a, b) result(r)
-      type(dual), intent(in) :: a, b
-      r%v = a%v/b%v
-      r%d = (a%d - r%v*b%d)/b%v
-   end function div_dd
-
-   elemental type(dual) function div_dr(a, b) result(r)
-      type(dual), intent(in) :: a
-      real(dp), intent(in) :: b
-      r%v = a%v/b
-      r%d = a%d/b
-   end function div_dr
-
-   elemental type(dual) function div_rd(a, b) result(r)
-      real(dp), intent(in) :: a
-      type(dual), intent(in) :: b
-      r%v = a/b%v
-      r%d = -r%v*b%d/b%v
-   end function div_rd
-
-   elemental type(dual) function sqrt_d(a) result(r)
-      type(dual), intent(in) :: a
-      r%v = sqrt(a%v)
-      r%d = 0.5_dp*a%d/r%v
-   end function sqrt_d
-
-   !> Dot product of two 3-vectors.
-   pure type(dual) function dot3(a, b) result(r)
-      type(dual), intent(in) :: a(3), b(3)
-      r = a(1)*b(1) + a(2)*b(2) + a(3)*b(3)
-   end function dot3
+   !> assemble, for the submodules (the statics).
+   subroutine rod3d_assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Unknowns, 4 per node.
+      real(dp), intent(in) :: x(:)
+      !> Statics: t1 the time; a step: t1 = t0, t2 = dt.
+      real(dp), intent(in) :: t1, t2
+      !> Scaled residual.
+      real(dp), intent(out) :: residual(:)
+      !> Jacobian (band storage).
+      type(band_matrix), intent(inout) :: jacobian
+      !> Whether to form the Jacobian; whether a step.
+      logical, intent(in) :: with_jacobian, dynamic
+      !> Time weight.
+      real(dp), intent(in) :: theta
+      call assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
+   end subroutine rod3d_assemble
 end module xcable_model_rod3d

@@ -242,7 +242,7 @@ contains
    !> (the second term of K11: the lines across the motion turn). One line in the x-z plane, run at
    !> (X, h) and 1 and 2 m either side in each, gives the derivatives by central differences over
    !> 1 and 2 m, extrapolated to 0 (Richardson: (4 D(1) - D(2))/3; over 1 m alone dH/dX is off by
-   !> 12 N/m, as the closed form shows). Frictionless bottom, stiff (the grounded part sinks
+   !> 18 N/m, as the closed form shows). Frictionless bottom, stiff (the grounded part sinks
    !> 8e-7 m), 401, 801 and 1601 nodes; against the table (four digits: within 5 N/m) and the
    !> grounded catenary's closed form (the same differences).
    subroutine test_oc3_hywind(error)
@@ -253,7 +253,7 @@ contains
       real(dp), parameter :: dx(9) = [0, 1, -1, 2, -2, 0, 0, 0, 0], dz(9) = [0, 0, 0, 0, 0, 1, -1, 2, -2]
       type(simulation) :: sim
       type(static_keeper) :: obs
-      real(dp) :: hv(2, 9), cf(2, 9), k(2, size(resolutions)), kcf(2), hh, lb, off(2, size(resolutions)), order(2)
+      real(dp) :: hv(2, 9), cf(2, 9), k(2, size(resolutions)), kcf(2), hh, lb, off(2, size(resolutions)), change(2)
       character(len=24) :: density
       integer :: i, j
       ! The mass per volume that gives the table's weight in water exactly (12214.7 kg/m^3; the
@@ -286,9 +286,11 @@ contains
             ' nodes: fairlead H, V', hv(:, 1), ' N; K11, K33', k(:, i), ' N/m; off the closed form by', off(:, i), &
             ' N/m, off the table by', k(:, i) - published, ' N/m'
       end do
-      order = log(abs(off(:, 2)/off(:, 3)))/log(2.0_dp)
-      write (output_unit, '(4x,a,2f10.2,a,2f12.2,a,2f6.2)') 'OC3-Hywind mooring: K11, K33 of the closed form', kcf, &
-         ' N/m, its fairlead H, V', cf(:, 1), ' N; order of the discretisation error (801 -> 1601 nodes)', order
+      ! (Beyond 401 nodes the place of the touchdown between two nodes dominates what is left: the
+      ! differences do not shrink at an order, so the change is reported.)
+      change = k(:, 3) - k(:, 2)
+      write (output_unit, '(4x,a,2f10.2,a,2f12.2,a,2f7.2,a)') 'OC3-Hywind mooring: K11, K33 of the closed form', kcf, &
+         ' N/m, its fairlead H, V', cf(:, 1), ' N; K11, K33 change by', change, ' N/m from 801 to 1601 nodes'
       ! The table's last digit is 10 N/m: its rounding alone allows 5.
       call check(error, all(abs(k(:, size(resolutions)) - published) < 5), 'the OC3-Hywind mooring stiffness is off '// &
                  'the published K11 = 41180 N/m, K33 = 11940 N/m: '//str(k(1, size(resolutions)))//', '// &

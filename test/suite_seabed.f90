@@ -2,7 +2,7 @@
 !> its unequal shares against central differences, in 2-D and 3-D, for cells
 !> lying on the bottom, crossing it at several angles and clear of it; an
 !> elastic catenary resting partly on a frictionless bottom against its closed
-!> form; and the energy ledger of a line dropped onto the bottom, with and
+!> form; the OC3-Hywind mooring's published stiffness (Jonkman 2010); and the energy ledger of a line dropped onto the bottom, with and
 !> without friction.
 module suite_seabed
    use xcable_core_kinds, only: dp
@@ -36,6 +36,7 @@ contains
       tests = [new_unittest('contact_and_friction_derivatives', test_derivatives), &
                new_unittest('catenary_on_a_frictionless_bottom', test_catenary), &
                new_unittest('catenary_on_the_bottom_3d_at_an_azimuth', test_catenary_3d), &
+               new_unittest('oc3_hywind_mooring_stiffness_published', test_oc3_hywind), &
                new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger), &
                new_unittest('line_towed_along_the_bottom', test_towed), &
                new_unittest('line_too_long_to_be_taut_explained', test_too_long)]
@@ -152,11 +153,8 @@ contains
 
    !> A 100 m line (d 0.1 m, 2000 kg/m^3, EA 1e8 N, in sea water) from an anchor on a flat,
    !> frictionless bottom 40 m down to a fairlead 80 m away at z = 0: the elastic catenary with
-   !> a grounded part. Closed form (solved here by Newton): with H the horizontal tension, L_b the
-   !> grounded length, L_s = L - L_b and V = w L_s,
-   !>   X = L_b (1 + H/EA) + (H/w) asinh(V/H) + H L_s/EA,
-   !>   Z = (H/w) (sqrt(1 + (V/H)^2) - 1) + w L_s^2/(2 EA);
-   !> anchor tension H, fairlead tension sqrt(H^2 + V^2). Stiffness 1e10 Pa (the line sinks
+   !> a grounded part, against its closed form (grounded_catenary): anchor tension H, fairlead
+   !> tension sqrt(H^2 + V^2), grounded length L_b. Stiffness 1e10 Pa (the line sinks
    !> w/k = 7.5e-8 m into the bottom), 1601 nodes. The touchdown, from the static shape: the
    !> square root of the height of the first two nodes off the bottom is linear in the arc
    !> length (z = (s - s_t)^2 / (2 R) near it), extrapolated to 0.
@@ -168,7 +166,7 @@ contains
       real(dp) :: w, hh, lb, touch, errs(3), z1, z2, flat
       integer :: k
       w = (2000 - 1025)*0.25_dp*pi*0.1_dp**2*g
-      call closed_form(hh, lb)
+      call grounded_catenary(length, span, drop, w, ea, [1800.0_dp, 40.0_dp], hh, lb)
       call run_text(path, "&cable length = 100, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//new_line('a')// &
                     "&material law = 'linear', ea = 1e8 /"//new_line('a')// &
                     "&fluid density = 1025, surface_z = 10 /"//new_line('a')// &
@@ -200,37 +198,6 @@ contains
                  'the catenary on the bottom is off its closed form: '//str(errs(1))//', '//str(errs(2))//', '// &
                  str(errs(3)))
 
-   contains
-
-      subroutine closed_form(hh, lb)
-         real(dp), intent(out) :: hh, lb
-         real(dp) :: v(2), r(2), jac(2, 2), dv(2), rp(2), rm(2), det
-         integer :: it, j
-         v = [1800.0_dp, 40.0_dp]
-         do it = 1, 60
-            r = residual(v)
-            do j = 1, 2
-               dv = 0
-               dv(j) = 1.0e-6_dp*max(1.0_dp, abs(v(j)))
-               rp = residual(v + dv)
-               rm = residual(v - dv)
-               jac(:, j) = (rp - rm)/(2*dv(j))
-            end do
-            det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
-            v = v - [jac(2, 2)*r(1) - jac(1, 2)*r(2), -jac(2, 1)*r(1) + jac(1, 1)*r(2)]/det
-         end do
-         hh = v(1)
-         lb = v(2)
-      end subroutine closed_form
-
-      function residual(v) result(r)
-         real(dp), intent(in) :: v(2)
-         real(dp) :: r(2), ls, vv
-         ls = length - v(2)
-         vv = w*ls
-         r(1) = v(2)*(1 + v(1)/ea) + v(1)/w*asinh(vv/v(1)) + v(1)*ls/ea - span
-         r(2) = v(1)/w*(sqrt(1 + (vv/v(1))**2) - 1) + w*ls**2/(2*ea) - drop
-      end function residual
    end subroutine test_catenary
 
    !> The catenary of test_catenary on 101 nodes with its fairlead at 30 degrees in the
@@ -263,6 +230,125 @@ contains
       call check(error, maxval(diff) < 1.0e-10_dp, 'the 3-D catenary on the bottom differs from the planar one by '// &
                  str(maxval(diff)))
    end subroutine test_catenary_3d
+
+   !> The OC3-Hywind mooring (Jonkman 2010, NREL/TP-500-47535, Table 5-1): three chain lines of
+   !> 902.2 m, 698.094 N/m in water, EA 384.243 MN, from anchors on a flat bottom 320 m down at a
+   !> radius of 853.87 m to fairleads 70 m down at a radius of 5.2 m, 120 degrees apart. The
+   !> report gives the system's linearised stiffness at the undisplaced platform (its Eq. 5-3),
+   !> among it surge K11 = 41,180 N/m and heave K33 = 11,940 N/m. With H and V the horizontal and
+   !> vertical force at a fairlead, X its horizontal and h its vertical distance from the anchor,
+   !> three lines 120 degrees apart give
+   !>   K11 = 3/2 (dH/dX + H/X),   K33 = 3 dV/dh
+   !> (the second term of K11: the lines across the motion turn). One line in the x-z plane, run at
+   !> (X, h) and 1 and 2 m either side in each, gives the derivatives by central differences over
+   !> 1 and 2 m, extrapolated to 0 (Richardson: (4 D(1) - D(2))/3; over 1 m alone dH/dX is off by
+   !> 18 N/m, as the closed form shows). Frictionless bottom, stiff (the grounded part sinks
+   !> 8e-7 m), 401, 801 and 1601 nodes; against the table (four digits: within 5 N/m) and the
+   !> grounded catenary's closed form (the same differences).
+   subroutine test_oc3_hywind(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: length = 902.2_dp, ea = 384.243e6_dp, span = 853.87_dp - 5.2_dp, drop = 250
+      real(dp), parameter :: published(2) = [41180.0_dp, 11940.0_dp], weight = 698.094_dp, gravity = 9.80665_dp
+      integer, parameter :: resolutions(3) = [401, 801, 1601]
+      real(dp), parameter :: dx(9) = [0, 1, -1, 2, -2, 0, 0, 0, 0], dz(9) = [0, 0, 0, 0, 0, 1, -1, 2, -2]
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      real(dp) :: hv(2, 9), cf(2, 9), k(2, size(resolutions)), kcf(2), hh, lb, off(2, size(resolutions)), change(2)
+      character(len=24) :: density
+      integer :: i, j
+      ! The mass per volume that gives the table's weight in water exactly (12214.7 kg/m^3; the
+      ! table's 77.7066 kg/m gives 698.0946 N/m).
+      write (density, '(es24.16)') 1025 + weight/(gravity*0.25_dp*pi*0.09_dp**2)
+      do j = 1, size(dx)
+         call grounded_catenary(length, span + dx(j), drop + dz(j), weight, ea, [7.4e5_dp, 135.0_dp], hh, lb)
+         cf(:, j) = [hh, weight*(length - lb)]
+      end do
+      kcf = stiffness(cf)
+      do i = 1, size(resolutions)
+         do j = 1, size(dx)
+            call run_text(path, "&cable length = 902.2, diameter = 0.09, density = "//trim(adjustl(density))// &
+                          ", gravity = 9.80665, bending_stiffness = 1 /"//new_line('a')// &
+                          "&material law = 'linear', ea = 384.243e6, compression = 'none' /"//new_line('a')// &
+                          "&fluid density = 1025 /"//new_line('a')// &
+                          "&seabed depth = 320, stiffness = 1e10 /"//new_line('a')// &
+                          "&end_a kind = 'fixed', x = 0, z = -320 /"//new_line('a')// &
+                          "&end_b kind = 'fixed', x = "//str(span + dx(j))//", z = "//str(drop + dz(j) - 320)//" /"// &
+                          new_line('a')//"&rupture enabled = .false. /"//new_line('a')// &
+                          "&numerics nodes = "//str(resolutions(i))//", dt = 1e-3, t_end = 1e-3 /"//new_line('a')// &
+                          "&output interval = 0, quiet = .true. /", sim, obs, error)
+            if (allocated(error)) return
+            ! The support's force on end b (the fairlead): H along +x, V up.
+            hv(:, j) = sim%rod%history%ends(6:7, 2, 0)
+         end do
+         k(:, i) = stiffness(hv)
+         off(:, i) = k(:, i) - kcf
+         write (output_unit, '(4x,a,i5,a,2f12.2,a,2f10.2,a,2f7.2,a,2f7.2,a)') 'OC3-Hywind mooring,', resolutions(i), &
+            ' nodes: fairlead H, V', hv(:, 1), ' N; K11, K33', k(:, i), ' N/m; off the closed form by', off(:, i), &
+            ' N/m, off the table by', k(:, i) - published, ' N/m'
+      end do
+      ! (Beyond 401 nodes the place of the touchdown between two nodes dominates what is left: the
+      ! differences do not shrink at an order, so the change is reported.)
+      change = k(:, 3) - k(:, 2)
+      write (output_unit, '(4x,a,2f10.2,a,2f12.2,a,2f7.2,a)') 'OC3-Hywind mooring: K11, K33 of the closed form', kcf, &
+         ' N/m, its fairlead H, V', cf(:, 1), ' N; K11, K33 change by', change, ' N/m from 801 to 1601 nodes'
+      ! The table's last digit is 10 N/m: its rounding alone allows 5.
+      call check(error, all(abs(k(:, size(resolutions)) - published) < 5), 'the OC3-Hywind mooring stiffness is off '// &
+                 'the published K11 = 41180 N/m, K33 = 11940 N/m: '//str(k(1, size(resolutions)))//', '// &
+                 str(k(2, size(resolutions)))//' N/m')
+      if (allocated(error)) return
+      call check(error, all(abs(off(:, size(resolutions))) < 1.0_dp), 'the OC3-Hywind mooring stiffness is off its '// &
+                 'closed form by '//str(off(1, size(resolutions)))//', '//str(off(2, size(resolutions)))//' N/m')
+
+   contains
+
+      !> K11 and K33 of three lines from the fairlead forces (2, 9) at the nine positions.
+      function stiffness(f) result(kk)
+         real(dp), intent(in) :: f(:, :)
+         real(dp) :: kk(2), near(2), far(2)
+         near = [(f(1, 2) - f(1, 3))/2, (f(2, 6) - f(2, 7))/2]
+         far = [(f(1, 4) - f(1, 5))/4, (f(2, 8) - f(2, 9))/4]
+         kk = [1.5_dp, 3.0_dp]*(4*near - far)/3 + [1.5_dp*f(1, 1)/span, 0.0_dp]
+      end function stiffness
+   end subroutine test_oc3_hywind
+
+   !> The elastic catenary resting partly on a flat frictionless bottom, its anchor on the bottom
+   !> and its other end span away and drop above (solved by Newton from a guess of H and L_b):
+   !> with H the horizontal tension, L_b the grounded length, L_s = L - L_b and V = w L_s,
+   !>   X = L_b (1 + H/EA) + (H/w) asinh(V/H) + H L_s/EA,
+   !>   Z = (H/w) (sqrt(1 + (V/H)^2) - 1) + w L_s^2/(2 EA);
+   !> anchor tension H, the other end's forces H and V.
+   subroutine grounded_catenary(length, span, drop, w, ea, guess, hh, lb)
+      real(dp), intent(in) :: length, span, drop, w, ea, guess(2)
+      real(dp), intent(out) :: hh, lb
+      real(dp) :: v(2), r(2), jac(2, 2), dv(2), rp(2), rm(2), det
+      integer :: it, j
+      v = guess
+      do it = 1, 60
+         r = residual(v)
+         do j = 1, 2
+            dv = 0
+            dv(j) = 1.0e-6_dp*max(1.0_dp, abs(v(j)))
+            rp = residual(v + dv)
+            rm = residual(v - dv)
+            jac(:, j) = (rp - rm)/(2*dv(j))
+         end do
+         det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+         v = v - [jac(2, 2)*r(1) - jac(1, 2)*r(2), -jac(2, 1)*r(1) + jac(1, 1)*r(2)]/det
+      end do
+      hh = v(1)
+      lb = v(2)
+
+   contains
+
+      function residual(v) result(r)
+         real(dp), intent(in) :: v(2)
+         real(dp) :: r(2), ls, vv
+         ls = length - v(2)
+         vv = w*ls
+         r(1) = v(2)*(1 + v(1)/ea) + v(1)/w*asinh(vv/v(1)) + v(1)*ls/ea - span
+         r(2) = v(1)/w*(sqrt(1 + (vv/v(1))**2) - 1) + w*ls**2/(2*ea) - drop
+      end function residual
+   end subroutine grounded_catenary
 
    !> A 30 m line held at one end 2 m above a bottom sloping along x, its other end free,
    !> released from a straight horizontal state so that it falls onto the bottom and slides;

@@ -792,100 +792,28 @@ module xcable_driver_rod_run
          class(state_archive), intent(inout) :: archive
          type(error_type), allocatable, intent(out) :: error
       end subroutine planar_load_state
+      !> Fields on the output nodes from the current state of the pieces (or from given positions
+      !> and velocities on the output columns); the fields of field_names (driver/records.f90).
+      module subroutine run_fields(self, fields, positions, velocities)
+         !> Run.
+         class(rod_run), intent(inout) :: self
+         !> Fields (n_out, n_fields) in the order of field_names.
+         real(dp), intent(out) :: fields(:, :)
+         !> Positions and velocities per piece (2, n_out): if given, used instead of the pieces' current state.
+         real(dp), intent(in), optional :: positions(:, :), velocities(:, :)
+      end subroutine run_fields
+
+      !> Value at an end node (side 1: node 1, side 2: node n) of a cell field, extrapolated
+      !> half a cell unless the three end cells zig-zag (either model).
+      pure real(dp) module function end_value(cells, side)
+         !> Cell values.
+         real(dp), intent(in) :: cells(:)
+         !> 1 or 2.
+         integer, intent(in) :: side
+      end function end_value
    end interface
 
 contains
-
-   !> Fields on the output nodes from the current state of the pieces: cell
-   !> values (tension, strain, shear) at a node are the mean of its cells
-   !> (one cell at an end); u, v along the node tangent (the mean direction of
-   !> its cells) and the paper's normal n = -perp(t); curvature is the paper's
-   !> Omega3 = -theta_k / h_k (0 at the ends).
-   subroutine run_fields(self, fields, positions, velocities)
-      !> Run.
-      class(rod_run), intent(inout) :: self
-      !> Fields (n_out, n_fields) in the order of field_names.
-      real(dp), intent(out) :: fields(:, :)
-      !> Positions and velocities per piece (2, n_out): if given, used instead of the pieces' current state.
-      real(dp), intent(in), optional :: positions(:, :), velocities(:, :)
-      integer :: p, k, n, col
-      real(dp), allocatable :: ten(:), eps(:), shear(:), mom(:), r(:, :), v(:, :)
-      real(dp) :: tk(2), nk(2), e(2)
-      do p = 1, size(self%pieces)
-         associate (piece => self%pieces(p)%problem%piece, cols => self%pieces(p)%column)
-            n = piece%n
-            allocate (ten(n - 1), eps(n - 1), shear(n - 1), mom(n), r(2, n), v(2, n))
-            if (present(positions)) then
-               r = positions(:, cols)
-               v = velocities(:, cols)
-            else
-               r = self%pieces(p)%r
-               v = self%pieces(p)%v
-            end if
-            call piece%cell_fields(r, ten, eps, shear, mom, v)
-            do k = 1, n
-               col = cols(k)
-               if (k == 1) then
-                  fields(col, 1) = max(end_value(ten, 1), piece%law%tension(-0.99_dp))
-                  fields(col, 2) = end_value(shear, 1)
-                  fields(col, 3) = max(end_value(eps, 1), -0.99_dp)
-                  e = r(:, 2) - r(:, 1)
-               else if (k == n) then
-                  fields(col, 1) = max(end_value(ten, 2), piece%law%tension(-0.99_dp))
-                  fields(col, 2) = end_value(shear, 2)
-                  fields(col, 3) = max(end_value(eps, 2), -0.99_dp)
-                  e = r(:, n) - r(:, n - 1)
-               else
-                  fields(col, 1) = 0.5_dp*(ten(k - 1) + ten(k))
-                  fields(col, 2) = 0.5_dp*(shear(k - 1) + shear(k))
-                  fields(col, 3) = 0.5_dp*(eps(k - 1) + eps(k))
-                  e = (r(:, k + 1) - r(:, k))/norm2(r(:, k + 1) - r(:, k)) + (r(:, k) - r(:, k - 1))/norm2(r(:, k) - r(:, k - 1))
-               end if
-               tk = e/max(norm2(e), tiny(1.0_dp))
-               nk = -perp(tk)
-               fields(col, 4) = dot_product(v(:, k), tk)
-               fields(col, 5) = dot_product(v(:, k), nk)
-               fields(col, 6) = r(1, k)
-               fields(col, 7) = r(2, k)
-               fields(col, 8) = 0
-               if (k > 1 .and. k < n) fields(col, 8) = -bend_curvature(piece, k, piece%th1(k))
-            end do
-            ! Before a break inside the cable the break node fills both of its columns.
-            if (size(self%pieces) == 1 .and. self%break_node > 0) fields(self%break_node + 1, :) = fields(self%break_node, :)
-            deallocate (ten, eps, shear, mom, r, v)
-         end associate
-      end do
-   end subroutine run_fields
-
-   !> Value at an end node (side 1: node 1, side 2: node n) of a cell field:
-   !> the end cell's value extrapolated half a cell along the slope c1 - c2
-   !> of the two end cells (second order), unless the three end cells
-   !> zig-zag (c1 - c2 and c2 - c3 of opposite signs: a buckle at the grid
-   !> scale), where the extrapolation would overshoot and the end cell's own
-   !> value is used.
-   pure real(dp) function end_value(cells, side)
-      !> Cell values.
-      real(dp), intent(in) :: cells(:)
-      !> 1 or 2.
-      integer, intent(in) :: side
-      integer :: m
-      real(dp) :: c1, c2, c3
-      m = size(cells)
-      if (m < 3) then
-         end_value = merge(cells(1), cells(m), side == 1)
-         return
-      end if
-      if (side == 1) then
-         c1 = cells(1); c2 = cells(2); c3 = cells(3)
-      else
-         c1 = cells(m); c2 = cells(m - 1); c3 = cells(m - 2)
-      end if
-      if ((c1 - c2)*(c2 - c3) < 0) then
-         end_value = c1
-      else
-         end_value = c1 + 0.5_dp*(c1 - c2)
-      end if
-   end function end_value
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings.

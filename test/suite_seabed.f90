@@ -36,6 +36,7 @@ contains
       tests = [new_unittest('contact_and_friction_derivatives', test_derivatives), &
                new_unittest('catenary_on_a_frictionless_bottom', test_catenary), &
                new_unittest('catenary_on_the_bottom_3d_at_an_azimuth', test_catenary_3d), &
+               new_unittest('catenary_with_static_friction_closed_form', test_static_friction), &
                new_unittest('oc3_hywind_mooring_stiffness_published', test_oc3_hywind), &
                new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger), &
                new_unittest('line_towed_along_the_bottom', test_towed), &
@@ -68,13 +69,15 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp), parameter :: angles(6) = [0.0_dp, 3.0_dp, 20.0_dp, 45.0_dp, 90.0_dp, 160.0_dp]
       real(dp), parameter :: heights(6) = [-0.02_dp, -0.003_dp, 0.0_dp, 0.004_dp, 0.05_dp, 0.4_dp]
+      real(dp), parameter :: stretches(3) = [1.02_dp, 1.1_dp, 0.97_dp]
       real(dp), parameter :: ds = 0.5_dp, h = 1.0e-7_dp, azimuth = 25*pi/180
       type(seabed_load) :: bed
-      real(dp) :: worst(2), al, x3(3), e3(3), w3(3), x2(2), e2(2), w2(2), base
-      integer :: i, j, touching
+      real(dp) :: worst(2), worst_static(2), al, x3(3), e3(3), w3(3), x2(2), e2(2), w2(2), base
+      integer :: i, j, k, m, touching
       bed = seabed_load(depth=30, slope_x=0.1_dp, slope_y=-0.05_dp, stiffness=2.0e5_dp, damping=3.0e3_dp, &
                         mu_axial=0.6_dp, mu_lateral=0.9_dp, slip_velocity=0.05_dp)
       worst = 0
+      worst_static = 0
       touching = 0
       do i = 1, size(angles)
          al = angles(i)*pi/180
@@ -91,8 +94,37 @@ contains
             worst(1) = max(worst(1), off(x2, e2, w2))
          end do
       end do
+      ! The statics' friction towards end a and towards end b, with a fading strain eps_r of 0.03
+      ! (the default's 1e-8 is below what central differences resolve): cells stretched by 2 %
+      ! (inside the fade), 10 % (past it) and compressed (none).
+      do k = -1, 1, 2
+         bed%static_towards = k
+         bed%static_strain = 0.03_dp
+         call bed%set_statics(.true., 0.0_dp, 0.0_dp)
+         do i = 1, size(angles)
+            al = angles(i)*pi/180
+            do j = 1, size(heights)
+               do m = 1, 3
+                  base = bed%bottom([2.0_dp, -1.5_dp])
+                  x3 = [2.0_dp, -1.5_dp, base + heights(j)]
+                  e3 = stretches(m)*[cos(al)*cos(azimuth), cos(al)*sin(azimuth), sin(al)]
+                  w3 = [0.3_dp, -0.2_dp, -0.05_dp]
+                  worst_static(2) = max(worst_static(2), off(x3, e3, w3))
+                  x2 = [2.0_dp, bed%bottom([2.0_dp]) + heights(j)]
+                  e2 = stretches(m)*[cos(al), sin(al)]
+                  w2 = [0.3_dp, -0.05_dp]
+                  worst_static(1) = max(worst_static(1), off(x2, e2, w2))
+               end do
+            end do
+         end do
+      end do
+      call bed%set_statics(.false., 0.0_dp, 0.0_dp)
       write (output_unit, '(4x,a,2es9.2,a,i0,a)') 'seabed force and shares: largest |analytic - central difference| '// &
          '/ (1 + |f| + the largest derivative), 2-D and 3-D', worst, ' (', touching, ' cells touching)'
+      write (output_unit, '(4x,a,2es9.2)') 'with the statics'' friction, 2-D and 3-D', worst_static
+      call check(error, maxval(worst_static) < 3.0e-8_dp, 'the seabed''s static friction derivatives are off by '// &
+                 str(worst_static(1))//' (2-D), '//str(worst_static(2))//' (3-D)')
+      if (allocated(error)) return
       call check(error, touching > 20, 'too few cells touched the bottom: '//str(touching))
       if (allocated(error)) return
       call check(error, maxval(worst) < 3.0e-8_dp, 'the seabed''s derivatives are off by '//str(worst(1))//' (2-D), '// &
@@ -199,6 +231,92 @@ contains
                  str(errs(3)))
 
    end subroutine test_catenary
+
+   !> The catenary of test_catenary with friction on the bottom in the statics
+   !> (static_friction = 'end_a': mu_axial fully mobilised towards the anchor), against the closed
+   !> form (grounded_catenary with cb = mu): mu = 0.5 leaves the anchor a tension
+   !> (H - mu w L_b > 0), mu = 1 takes it all (T_a = 0, the tension reaches zero before the
+   !> anchor). 401, 801 and 1601 nodes, planar; the 3-D model on 401 nodes gives the planar
+   !> figures. Compared: the anchor tension (against H), the fairlead tension, the touchdown.
+   subroutine test_static_friction(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: length = 100, span = 80, drop = 40, ea = 1.0e8_dp
+      character(len=*), parameter :: mus(2) = ['0.5', '1.0']
+      real(dp), parameter :: mu_values(2) = [0.5_dp, 1.0_dp]
+      integer, parameter :: nodes(3) = [401, 801, 1601]
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      real(dp) :: w, mu, hh, lb, ta, tf, errs(3, 3, 2), err3(3), touch
+      integer :: i, j
+      character(len=8) :: nn
+      w = (2000 - 1025)*0.25_dp*pi*0.1_dp**2*g
+      do i = 1, 2
+         mu = mu_values(i)
+         call grounded_catenary(length, span, drop, w, ea, [1800.0_dp, 40.0_dp], hh, lb, cb=mu)
+         ta = max(hh - mu*w*lb, 0.0_dp)
+         tf = hypot(hh, w*(length - lb))
+         do j = 1, size(nodes) + 1
+            write (nn, '(i0)') nodes(min(j, size(nodes)))
+            if (j > size(nodes)) nn = '401'
+            call run_text(path, "&cable length = 100, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"// &
+                          new_line('a')//"&material law = 'linear', ea = 1e8 /"//new_line('a')// &
+                          "&fluid density = 1025, surface_z = 10 /"//new_line('a')// &
+                          "&seabed depth = 40, stiffness = 1e10, mu_axial = "//mus(i)// &
+                          ", static_friction = 'end_a' /"//new_line('a')// &
+                          "&end_a kind = 'fixed', x = 0, z = -40 /"//new_line('a')// &
+                          "&end_b kind = 'fixed', x = 80, z = 0 /"//new_line('a')// &
+                          "&rupture enabled = .false. /"//new_line('a')// &
+                          "&numerics nodes = "//trim(nn)//", dt = 1e-3, t_end = 1e-3, newton_tol = 1e-12"// &
+                          merge(", model = '3d'", "              ", j > size(nodes))//" /"//new_line('a')// &
+                          "&output interval = 0, quiet = .true. /", sim, obs, error)
+            if (allocated(error)) return
+            touch = touchdown(obs)
+            if (j <= size(nodes)) then
+               errs(:, j, i) = [abs(obs%tension(1) - ta)/hh, abs(obs%tension(2) - tf)/tf, abs(touch - lb)/lb]
+               write (output_unit, '(4x,a,a,i6,a,3f12.4,a,3es9.2)') 'mu ', mus(i), nodes(j), &
+                  ' nodes: anchor, fairlead tension, touchdown', obs%tension(1), obs%tension(2), touch, &
+                  '; errors (anchor / H, fairlead, touchdown)', errs(:, j, i)
+            else
+               err3 = [abs(obs%tension(1) - ta)/hh, abs(obs%tension(2) - tf)/tf, abs(touch - lb)/lb]
+               write (output_unit, '(4x,a,a,a,3f12.4,a,3es9.2)') 'mu ', mus(i), ' 3-D, 401 nodes:', obs%tension(1), &
+                  obs%tension(2), touch, '; errors', err3
+               call check(error, maxval(abs(err3 - errs(:, 1, i))) < 1.0e-6_dp, 'mu '//mus(i)//': the 3-D statics '// &
+                          'differ from the planar: '//str(maxval(abs(err3 - errs(:, 1, i)))))
+               if (allocated(error)) return
+            end if
+         end do
+         write (output_unit, '(4x,a,a,a,f12.4,a,3f12.4)') 'mu ', mus(i), ': closed form anchor', ta, &
+            ' N, fairlead, touchdown, H', tf, lb, hh
+      end do
+      ! Measured at 1601 nodes: anchor 4.4e-4 and 7.5e-4 of H, fairlead 3.3e-7 and 3.4e-7,
+      ! touchdown 1.6e-5 and 1.4e-5. The anchor's error is first order: its support takes half the
+      ! first cell's friction, mu w ds / 2, and where the friction takes all the tension it fades
+      ! over fade_cells cells (loads/seabed.f90); the anchor errors halve with each halving of ds.
+      call check(error, maxval(errs(1, 3, :)) < 2.0e-3_dp .and. maxval(errs(2, 3, :)) < 1.0e-6_dp .and. &
+                 maxval(errs(3, 3, :)) < 5.0e-5_dp, 'the catenary with static friction is off its closed form: '// &
+                 'anchor '//str(maxval(errs(1, 3, :)))//', fairlead '//str(maxval(errs(2, 3, :)))//', touchdown '// &
+                 str(maxval(errs(3, 3, :))))
+      if (allocated(error)) return
+      call check(error, minval(errs(1, 2, :)/errs(1, 3, :)) > 1.8_dp, 'the anchor tension does not converge at '// &
+                 'first order: error ratios 801/1601 nodes '//str(errs(1, 2, 1)/errs(1, 3, 1))//', '// &
+                 str(errs(1, 2, 2)/errs(1, 3, 2)))
+
+   contains
+
+      !> The touchdown, as in test_catenary: sqrt of the height of the first two nodes off the
+      !> bottom, extrapolated to zero.
+      real(dp) function touchdown(o)
+         type(static_keeper), intent(in) :: o
+         integer :: k
+         real(dp) :: z1, z2
+         do k = 2, size(o%z) - 1
+            if (o%z(k) + drop > 1.0e-6_dp) exit
+         end do
+         z1 = sqrt(o%z(k) + drop)
+         z2 = sqrt(o%z(k + 1) + drop)
+         touchdown = o%s(k) - z1*(o%s(k + 1) - o%s(k))/(z2 - z1)
+      end function touchdown
+   end subroutine test_static_friction
 
    !> The catenary of test_catenary on 101 nodes with its fairlead at 30 degrees in the
    !> horizontal plane, run by the 3-D model: the end tensions and the grounded length are the
@@ -316,10 +434,17 @@ contains
    !> with H the horizontal tension, L_b the grounded length, L_s = L - L_b and V = w L_s,
    !>   X = L_b (1 + H/EA) + (H/w) asinh(V/H) + H L_s/EA,
    !>   Z = (H/w) (sqrt(1 + (V/H)^2) - 1) + w L_s^2/(2 EA);
-   !> anchor tension H, the other end's forces H and V.
-   subroutine grounded_catenary(length, span, drop, w, ea, guess, hh, lb)
+   !> anchor tension H, the other end's forces H and V. With a Coulomb friction coefficient cb
+   !> along the bottom, fully mobilised towards the anchor (the classic closed form of a line laid
+   !> from its anchor and pulled taut: Jonkman 2007, NREL/TP-500-41958, and MAP), the grounded
+   !> tension falls from H at the touchdown by cb w per metre, to T_a = max(H - cb w L_b, 0) at the
+   !> anchor, and the grounded stretch L_b H / EA becomes (L_b H - cb w L_b^2 / 2) / EA, or
+   !> H^2 / (2 cb w EA) where the tension reaches zero before the anchor.
+   subroutine grounded_catenary(length, span, drop, w, ea, guess, hh, lb, cb)
       real(dp), intent(in) :: length, span, drop, w, ea, guess(2)
       real(dp), intent(out) :: hh, lb
+      !> Friction coefficient along the bottom (default 0).
+      real(dp), intent(in), optional :: cb
       real(dp) :: v(2), r(2), jac(2, 2), dv(2), rp(2), rm(2), det
       integer :: it, j
       v = guess
@@ -346,6 +471,13 @@ contains
          ls = length - v(2)
          vv = w*ls
          r(1) = v(2)*(1 + v(1)/ea) + v(1)/w*asinh(vv/v(1)) + v(1)*ls/ea - span
+         if (present(cb)) then
+            if (v(1) >= cb*w*v(2)) then
+               r(1) = v(2) + (v(2)*v(1) - cb*w*v(2)**2/2)/ea + v(1)/w*asinh(vv/v(1)) + v(1)*ls/ea - span
+            else
+               r(1) = v(2) + v(1)**2/(2*cb*w*ea) + v(1)/w*asinh(vv/v(1)) + v(1)*ls/ea - span
+            end if
+         end if
          r(2) = v(1)/w*(sqrt(1 + (vv/v(1))**2) - 1) + w*ls**2/(2*ea) - drop
       end function residual
    end subroutine grounded_catenary

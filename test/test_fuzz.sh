@@ -578,6 +578,10 @@ begin 'a negative friction coefficient' 'mu_axial = -0.3' 'in [0, 100]'
 from slow_315kN; add '&seabed depth = 40, mu_axial = -0.3 /'; check
 begin 'a negative contact damping' 'damping = -1' 'in [0, 1e15]'
 from slow_315kN; add '&seabed depth = 40, damping = -1 /'; check
+begin 'static friction without a friction coefficient' "static_friction = 'end_a'" 'mu_axial > 0, now 0'
+from slow_315kN; add "&seabed depth = 40, static_friction = 'end_a' /"; check
+begin 'static friction towards no end' "static_friction = 'anchor'" "one of 'none', 'end_a', 'end_b'"
+from slow_315kN; add "&seabed depth = 40, mu_axial = 1, static_friction = 'anchor' /"; check
 begin 'a fixed end below the seabed' 'end_b: z = 0' 'below the seabed'
 from slack_swing; add '&seabed depth = 1, slope_x = 0.5 /'; check
 begin "a spring's anchor below the seabed" 'end_b: z = -40' 'the spring end is below the seabed'

@@ -51,7 +51,9 @@ module xcable_driver_rod3d_drive
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
    use xcable_ends_end_condition, only: end_condition
-   use xcable_loads_load, only: measure_names, load_measures
+   use xcable_loads_load, only: measure_names, load_measures, loads_in_statics, any_static_form
+   use xcable_material_law, only: material_law, secant_stiffness
+   use xcable_material_tension_only, only: uncut_law
    use xcable_driver_records, only: run_observer, static_figures, note_min_strain
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none

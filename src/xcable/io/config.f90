@@ -102,6 +102,9 @@ module xcable_io_config
       !> friction is proportional to the slip, m/s.
       real(dp) :: seabed_depth = 0, seabed_slope_x = 0, seabed_slope_y = 0, seabed_stiffness = 3.0e6_dp, &
                   seabed_damping = 3.0e5_dp, mu_axial = 0, mu_lateral = 0, slip_velocity = 1.0e-2_dp
+      !> &seabed static_friction: the statics' friction along the bottom, fully mobilised towards
+      !> end a or end b (the anchor), or 'none'.
+      character(len=16) :: static_friction = 'none'
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp

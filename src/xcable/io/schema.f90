@@ -189,6 +189,10 @@ contains
       call add(t, 'seabed', 'slip_velocity', 'real', 'm/s', '0.01', &
                'slip speed below which friction grows with the slip instead of being full: mu N v / sqrt(v^2 + '// &
                'slip_velocity^2)', 0.0_dp, 1.0e3_dp, lower_open=.true.)
+      call add(t, 'seabed', 'static_friction', 'string', '-', "'none'", &
+               "friction in the statics: 'none', or 'end_a' / 'end_b': mu_axial times the contact force along "// &
+               "the grounded line towards that end (the anchor), as if the line had been laid from the anchor "// &
+               "and pulled taut; it fades where the cell's strain falls to zero", length=16, choices='none end_a end_b')
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &

@@ -20,7 +20,8 @@ module xcable_loads_load
    use xcable_core_kinds, only: dp
    implicit none
    private
-   public :: cable_load, load_slot, cell_kinematics, measure_names, load_measures, note_measures, any_skew
+   public :: cable_load, load_slot, cell_kinematics, measure_names, load_measures, note_measures, any_skew, &
+             loads_in_statics, any_static_form
 
    !> A distributed load.
    type, abstract :: cable_load
@@ -56,6 +57,12 @@ module xcable_loads_load
       !> horizontal point p (x, or x and y), m; -huge: none (the default). The statics say when
       !> a line is too long to be taut over it (model/rod_statics.f90).
       procedure :: floor => load_floor
+      !> Whether the statics (on) or the dynamics (off) evaluates the load next, with the line's
+      !> axial stiffness near zero strain (N) and weight in the fluid (N/m): a load may act in the
+      !> statics as the dynamics cannot (the seabed's static friction). Default: the same.
+      procedure :: set_statics => load_set_statics
+      !> Whether the load acts otherwise in the statics than in the dynamics (default: no).
+      procedure :: static_form => load_static_form
    end type cable_load
 
    !> A slot of an array of loads.
@@ -155,6 +162,48 @@ contains
       real(dp), intent(in) :: r1(:), r2(:), ds
       load_cell_measure = 0
    end function load_cell_measure
+
+   !> The default: a load acts in the statics as in the dynamics.
+   subroutine load_set_statics(self, on, stiffness, weight)
+      class(cable_load), intent(inout) :: self
+      logical, intent(in) :: on
+      real(dp), intent(in) :: stiffness, weight
+   end subroutine load_set_statics
+
+   !> The default: no static form of its own.
+   pure logical function load_static_form(self)
+      class(cable_load), intent(in) :: self
+      load_static_form = .false.
+   end function load_static_form
+
+   !> Whether any load of an array acts otherwise in the statics (cable_load%static_form).
+   logical function any_static_form(loads)
+      !> The loads (unallocated: none).
+      type(load_slot), allocatable, intent(in) :: loads(:)
+      integer :: k
+      any_static_form = .false.
+      if (.not. allocated(loads)) return
+      do k = 1, size(loads)
+         any_static_form = any_static_form .or. loads(k)%load%static_form()
+      end do
+   end function any_static_form
+
+   !> Every load of an array told whether the statics (on) or the dynamics (off) evaluates it
+   !> (cable_load%set_statics); nothing without loads.
+   subroutine loads_in_statics(loads, on, stiffness, weight)
+      !> The loads (unallocated: none).
+      type(load_slot), allocatable, intent(inout) :: loads(:)
+      !> Statics (.true.) or dynamics.
+      logical, intent(in) :: on
+      !> The line's axial stiffness near zero strain (N) and its weight in the fluid per
+      !> unstretched length (N/m), for a static form that depends on them.
+      real(dp), intent(in) :: stiffness, weight
+      integer :: k
+      if (.not. allocated(loads)) return
+      do k = 1, size(loads)
+         call loads(k)%load%set_statics(on, stiffness, weight)
+      end do
+   end subroutine loads_in_statics
 
    pure real(dp) function load_floor(self, p)
       class(cable_load), intent(in) :: self

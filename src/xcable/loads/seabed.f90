@@ -14,6 +14,14 @@
 !>     friction   -N [mu_a g(w_a) + mu_l g(w_l)],  g(v) = v / sqrt(|v|^2 + v_s^2),
 !>                w_a the cell's velocity along the line's direction in the plane,
 !>                w_l the rest of its velocity in the plane,
+!>     static friction (statics only, static_friction = 'end_a' or 'end_b')
+!>                s mu_a N r(eps) a,  a the line's direction in the plane (from end a
+!>                towards end b), s = -1 towards end a, +1 towards end b, eps = |e| - 1
+!>                the cell's strain and r(eps) = eps / sqrt(eps^2 + eps_r^2): full towards
+!>                the anchor on a stretched cell, none at zero strain, and the other way
+!>                on a compressed one (static friction holds the line whichever way it
+!>                would slide, up to mu N; where the friction has taken all the tension
+!>                the line lies at zero strain, held, not slack and undetermined),
 !>
 !> with k = stiffness d and c = damping d (MoorDyn's kBot and cBot on the
 !> diameter d), the cell's velocity w and v_s the slip_velocity. In 2-D there is
@@ -30,6 +38,16 @@ module xcable_loads_seabed
    private
    public :: seabed_load, seabed_from_case
 
+   !> The strain eps_r over which the static friction fades to none at zero strain
+   !> (r(eps_r) = 0.71), smooth for Newton: the larger of static_friction_strain and
+   !> fade_cells ds mu_a w / EA, the strain that fade_cells cells' full friction would take
+   !> from the line (ds the cell's unstretched length, w the line's weight in the fluid, EA its
+   !> axial stiffness near zero strain). Where the friction takes all the tension, the tension
+   !> then falls to zero over a few cells instead of a point (resolved by the grid, so Newton
+   !> converges); where the tension stays above EA eps_r the friction is full to within
+   !> (eps_r / eps)^2 / 2. The effect on the statics is measured in docs/theory/seabed.md.
+   real(dp), parameter, public :: static_friction_strain = 1.0e-8_dp, fade_cells = 4
+
    !> A seabed.
    type, extends(cable_load) :: seabed_load
       !> Depth under z = 0 at the origin (m) and slopes dz/dx, dz/dy.
@@ -38,6 +56,13 @@ module xcable_loads_seabed
       real(dp) :: stiffness = 0, damping = 0
       !> Friction coefficients along and across the line; slip speed of the regularisation, m/s.
       real(dp) :: mu_axial = 0, mu_lateral = 0, slip_velocity = 1.0e-2_dp
+      !> The statics' friction: towards end a (-1), towards end b (+1) or none (0); whether the
+      !> statics evaluates the load now (set_statics).
+      integer :: static_towards = 0
+      logical :: in_statics = .false.
+      !> The least strain over which the static friction fades (static_friction_strain), and the
+      !> line's axial stiffness (N) and weight in the fluid (N/m) the statics gave (set_statics).
+      real(dp) :: static_strain = static_friction_strain, line_stiffness = 0, line_weight = 0
    contains
       procedure :: name => seabed_name
       procedure :: cell_force => seabed_cell_force
@@ -52,6 +77,8 @@ module xcable_loads_seabed
       procedure :: bottom => seabed_bottom
       !> The bottom is a floor (the statics' note on a line too long to be taut).
       procedure :: floor => seabed_bottom
+      procedure :: set_statics => seabed_set_statics
+      procedure :: static_form => seabed_static_form
    end type seabed_load
 
 contains
@@ -70,7 +97,29 @@ contains
                                          stiffness=config%seabed_stiffness*config%diameter, &
                                          damping=config%seabed_damping*config%diameter, mu_axial=config%mu_axial, &
                                          mu_lateral=config%mu_lateral, slip_velocity=config%slip_velocity))
+      select type (load)
+      type is (seabed_load)
+         if (trim(config%static_friction) == 'end_a') load%static_towards = -1
+         if (trim(config%static_friction) == 'end_b') load%static_towards = 1
+      end select
    end subroutine seabed_from_case
+
+   !> The seabed acts otherwise in the statics when it has a static friction.
+   pure logical function seabed_static_form(self)
+      class(seabed_load), intent(in) :: self
+      seabed_static_form = self%static_towards /= 0 .and. self%mu_axial > 0
+   end function seabed_static_form
+
+   !> The statics' friction acts while the statics evaluates the load.
+   subroutine seabed_set_statics(self, on, stiffness, weight)
+      class(seabed_load), intent(inout) :: self
+      logical, intent(in) :: on
+      !> The line's axial stiffness near zero strain (N) and weight in the fluid (N/m).
+      real(dp), intent(in) :: stiffness, weight
+      self%in_statics = on .and. self%static_form()
+      self%line_stiffness = stiffness
+      self%line_weight = weight
+   end subroutine seabed_set_statics
 
    pure function seabed_name(self) result(name)
       class(seabed_load), intent(in) :: self
@@ -238,6 +287,32 @@ contains
       df_dw = -self%damping*phi*outer(n, n)
       df_dx = df_dx + self%damping*vn*dphi_dm*outer(n, n)
       df_de = df_de - 0.5_dp*ds*self%damping*vn*dphi_dd*outer(n, n)
+      ! The statics' friction s mu_a N r(eps) a (the module header).
+      if (self%in_statics) then
+         block
+            real(dp) :: eps, r, dr, le, er2, c
+            real(dp), dimension(size(e)) :: a, ehat
+            real(dp), dimension(size(e), size(e)) :: da_de
+            le = norm2(e)
+            eps = le - 1
+            pn = eye - outer(n, n)
+            a = matmul(pn, e)
+            if (norm2(a) > 1.0e-12_dp*le) then
+               da_de = matmul(eye - outer(a, a)/dot_product(a, a), pn)/norm2(a)
+               a = a/norm2(a)
+               ehat = e/le
+               er2 = self%static_strain
+               if (self%line_stiffness > 0) er2 = max(er2, fade_cells*ds*self%mu_axial*self%line_weight/self%line_stiffness)
+               er2 = er2**2
+               r = eps/sqrt(eps*eps + er2)
+               dr = er2/sqrt(eps*eps + er2)**3
+               c = self%static_towards*self%mu_axial
+               f = f + c*force*r*a
+               df_dx = df_dx + c*r*outer(a, dn_dx)
+               df_de = df_de + c*(r*outer(a, dn_de) + force*dr*outer(a, ehat) + force*r*da_de)
+            end if
+         end block
+      end if
       if (self%mu_axial == 0 .and. self%mu_lateral == 0) return
       ! Friction -N [mu_a g(w_a) + mu_l g(w_l)] in the plane.
       pn = eye - outer(n, n)

@@ -13,7 +13,7 @@ module xcable_material_law
    implicit none
    private
    public :: material_law, tanh_law, linear_law, tanh_law_of, strain_kept
-   public :: paper_tanh_coefficients
+   public :: paper_tanh_coefficients, secant_stiffness
 
    !> Coefficients p1..p5 of eq. 17 for the paper's nylon line (N, -, -, N, N).
    real(dp), parameter :: paper_tanh_coefficients(5) = &
@@ -129,6 +129,13 @@ module xcable_material_law
    end type linear_law
 
 contains
+
+   !> The law's secant stiffness over the first 0.1 % of strain, (f(1e-3) - f(0)) / 1e-3, N: a
+   !> scale of its axial stiffness near zero strain for any law (a table's, a cut one's).
+   real(dp) function secant_stiffness(law)
+      class(material_law), intent(in) :: law
+      secant_stiffness = (law%tension(1.0e-3_dp) - law%tension(0.0_dp))/1.0e-3_dp
+   end function secant_stiffness
 
    !> W(eps1) - W(eps0), J/m (a law whose energy cancels at small strain steps overrides it).
    elemental function strain_energy_change(self, eps0, eps1) result(val)

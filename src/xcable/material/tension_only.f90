@@ -17,7 +17,7 @@ module xcable_material_tension_only
    use xcable_material_law, only: material_law
    implicit none
    private
-   public :: tension_only_law, new_tension_only, slack_cell_force, slack_dissipation, damped_tension, may_cross_kink
+   public :: tension_only_law, new_tension_only, uncut_law, slack_cell_force, slack_dissipation, damped_tension, may_cross_kink
 
    !> The law without compression.
    type, extends(material_law) :: tension_only_law
@@ -36,6 +36,25 @@ module xcable_material_tension_only
    end type tension_only_law
 
 contains
+
+   !> A copy of the law with its compressive branch: a tension-only law's base, any other law
+   !> itself. The statics with the seabed's static friction solves with it first (a line whose
+   !> friction takes all its tension would otherwise meet Newton with slack, stiffness-free
+   !> cells), then with the law itself from there.
+   subroutine uncut_law(law, uncut, was_cut)
+      class(material_law), intent(in) :: law
+      class(material_law), allocatable, intent(out) :: uncut
+      !> Whether the law was a tension-only law.
+      logical, intent(out) :: was_cut
+      select type (law)
+      type is (tension_only_law)
+         allocate (uncut, source=law%base)
+         was_cut = .true.
+      class default
+         allocate (uncut, source=law)
+         was_cut = .false.
+      end select
+   end subroutine uncut_law
 
    !> Wrap a law: its strain of zero tension becomes the kink (strain_slack).
    function new_tension_only(base) result(law)

@@ -25,14 +25,14 @@ module xcable_model_rod_statics
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
    use xcable_core_strings, only: str
    use xcable_scene_scene, only: scene_type
-   use xcable_loads_load, only: load_slot
+   use xcable_loads_load, only: load_slot, loads_in_statics, any_static_form
    use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, collapsed_length
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
    use xcable_solver_banded, only: band_matrix
-   use xcable_material_law, only: material_law
-   use xcable_material_tension_only, only: tension_only_law
+   use xcable_material_law, only: material_law, secant_stiffness
+   use xcable_material_tension_only, only: tension_only_law, uncut_law
    use xcable_theory_closed_forms, only: catenary_from_force, catenary_between, catenary_summary
    implicit none
    private
@@ -40,6 +40,9 @@ module xcable_model_rod_statics
 
    !> Scaled update at which the static solve stops.
    real(dp), parameter :: static_tolerance = 1.0e-10_dp
+   !> Newton iterations the statics allows a solve with the seabed's static friction (from the state
+   !> without it: the friction's fade near zero tension converges slowly on fine grids).
+   integer, parameter :: static_friction_iterations = 100
    !> Gauss-Legendre panels per cell of the catenary first guess (catenary_from_force; its
    !> exact reference takes 8): one panel of 8 points is exact to round-off on a cell, and
    !> the statics' Newton iteration takes the guess to the same state to round-off
@@ -144,6 +147,27 @@ contains
                'rope pushes back'
             return
          end if
+      end if
+      ! Loads with a static form of their own (the seabed's static friction): from the state
+      ! without it, Newton with it (the friction moves the grounded part by its stretch only).
+      if (any_static_form(problem%piece%loads)) then
+         call loads_in_statics(problem%piece%loads, .true., secant_stiffness(problem%piece%law), scene%weight)
+         ! First with the law's compressive branch (uncut_law), then with the law itself.
+         block
+            class(material_law), allocatable :: own, uncut
+            logical :: was_cut
+            call uncut_law(problem%piece%law, uncut, was_cut)
+            call move_alloc(problem%piece%law, own)
+            call move_alloc(uncut, problem%piece%law)
+            call solve_now(error, static_friction_iterations)
+            deallocate (problem%piece%law)
+            call move_alloc(own, problem%piece%law)
+            if (.not. allocated(error) .and. was_cut) call solve_now(error, static_friction_iterations)
+         end block
+         if (.not. allocated(error)) call finish()
+         call loads_in_statics(problem%piece%loads, .false., 0.0_dp, 0.0_dp)
+         if (allocated(error)) call prefix_error(error, 'with the static friction on the seabed: ')
+         return
       end if
       call finish()
 
@@ -405,8 +429,10 @@ contains
       end subroutine relax
 
       !> Newton from state%r.
-      subroutine solve_now(err)
+      subroutine solve_now(err, max_iterations)
          type(error_type), allocatable, intent(out) :: err
+         !> Iteration limit (default: the case's).
+         integer, intent(in), optional :: max_iterations
          type(newton_workspace) :: work
          type(newton_options) :: opts
          type(newton_report) :: report
@@ -414,6 +440,7 @@ contains
          opts = options
          opts%tolerance = static_tolerance
          opts%reuse_jacobian = .false.
+         if (present(max_iterations)) opts%max_iterations = max_iterations
          call work%init(2*n, rod_kl, rod_ku, spread(problem%piece%length_ref, 1, 2*n))
          x = reshape(state%r, [2*n])
          call newton_solve(problem, x, work, opts, report, err)

@@ -20,6 +20,8 @@ contains
       integer :: n, k
       real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2), phi
       real(dp), allocatable :: guess(:)
+      class(material_law), allocatable :: own, uncut
+      logical :: static_form, was_cut
       n = rod%options%nodes
       allocate (self%pieces(1))
       self%pieces(1)%column = rod%pieces(1)%column
@@ -76,19 +78,39 @@ contains
          end do
          run%x(3*n + 1:) = 0
          guess = run%x
+         ! Loads with a static form of their own (the seabed's static friction): the planar guess
+         ! has it already; Newton with it, first with the law's compressive branch (uncut_law: a
+         ! line whose friction takes all its tension lies at zero strain, where a tension-only
+         ! law has no stiffness), then with the law itself, as the planar statics
+         ! (model/rod_statics.f90).
+         static_form = any_static_form(piece%loads)
+         call loads_in_statics(piece%loads, static_form, secant_stiffness(piece%law), scene%weight)
+         if (static_form) then
+            call uncut_law(piece%law, uncut, was_cut)
+            call move_alloc(piece%law, own)
+            call move_alloc(uncut, piece%law)
+         end if
          call run%statics(0.0_dp, error)
          if (.not. allocated(error)) call check_static3(piece, run%x, error)
          if (allocated(error)) then
             ! Newton from the planar guess failed or landed in a folded state (a strong cross
             ! current): continuation in the distributed loads.
             call continue_statics(run, guess, error)
-            if (allocated(error)) then
-               call prefix_error(error, scene%source//': ')
-               return
-            end if
+         end if
+         if (static_form) then
+            deallocate (piece%law)
+            call move_alloc(own, piece%law)
+            if (.not. allocated(error) .and. was_cut) call run%statics(0.0_dp, error)
+            if (allocated(error)) call prefix_error(error, 'with the static friction on the seabed: ')
+         end if
+         if (allocated(error)) then
+            call loads_in_statics(piece%loads, .false., 0.0_dp, 0.0_dp)
+            call prefix_error(error, scene%source//': ')
+            return
          end if
          ! The supports' forces of the static state.
          call run%problem%evaluate(run%x, run%work%residual, run%work%jacobian, .false.)
+         call loads_in_statics(piece%loads, .false., 0.0_dp, 0.0_dp)
          run%work%usable = .false.
          reaction(:, 1) = piece%reaction(1, 0.0_dp)
          reaction(:, 2) = piece%reaction(n, 0.0_dp)

@@ -316,6 +316,14 @@ contains
             return
          end if
       end if
+      ! Friction in the statics needs a bottom and a friction coefficient along the line.
+      if (trim(c%static_friction) /= 'none' .and. (c%seabed_depth <= 0 .or. c%mu_axial <= 0)) then
+         call fatal_error(error, c%source//": &seabed: static_friction = '"//trim(c%static_friction)//"': friction "// &
+                          'in the statics needs a seabed (depth > 0, now '//real_text(c%seabed_depth)// &
+                          ') and a friction coefficient along the line (mu_axial > 0, now '//real_text(c%mu_axial)// &
+                          "); give them, or static_friction = 'none'", stat_input)
+         return
+      end if
 
       held = quoted_words(end_kind_names(held=.true.), ' or ')
       held_a = is_word(c%end_a%kind, end_kind_names(held=.true.))

@@ -195,7 +195,7 @@ contains
       real(dp), parameter :: length = 100, span = 80, drop = 40, ea = 1.0e8_dp
       type(simulation) :: sim
       type(static_keeper) :: obs
-      real(dp) :: w, hh, lb, touch, errs(3), z1, z2, flat
+      real(dp) :: w, hh, lb, touch, errs(3), flat
       integer :: k
       w = (2000 - 1025)*0.25_dp*pi*0.1_dp**2*g
       call grounded_catenary(length, span, drop, w, ea, [1800.0_dp, 40.0_dp], hh, lb)
@@ -209,13 +209,7 @@ contains
                     "&numerics nodes = 1601, dt = 1e-3, t_end = 1e-3, newton_tol = 1e-12 /"//new_line('a')// &
                     "&output interval = 0, quiet = .true. /", sim, obs, error)
       if (allocated(error)) return
-      ! The first node more than 1e-6 m off the bottom, and the next.
-      do k = 2, size(obs%z) - 1
-         if (obs%z(k) + drop > 1.0e-6_dp) exit
-      end do
-      z1 = sqrt(obs%z(k) + drop)
-      z2 = sqrt(obs%z(k + 1) + drop)
-      touch = obs%s(k) - z1*(obs%s(k + 1) - obs%s(k))/(z2 - z1)
+      call touchdown(obs, drop, touch, k)
       ! The grounded nodes (clear of the anchor and the touchdown) lie flat at the sink w/k: with
       ! equal shares of each cell's contact they would zigzag (a mode no cell's mean sees).
       flat = maxval(abs(obs%z(3:k - 3) + drop + w/(1.0e10_dp*0.1_dp)))
@@ -270,7 +264,7 @@ contains
                           merge(", model = '3d'", "              ", j > size(nodes))//" /"//new_line('a')// &
                           "&output interval = 0, quiet = .true. /", sim, obs, error)
             if (allocated(error)) return
-            touch = touchdown(obs)
+            call touchdown(obs, drop, touch)
             if (j <= size(nodes)) then
                errs(:, j, i) = [abs(obs%tension(1) - ta)/hh, abs(obs%tension(2) - tf)/tf, abs(touch - lb)/lb]
                write (output_unit, '(4x,a,a,i6,a,3f12.4,a,3es9.2)') 'mu ', mus(i), nodes(j), &
@@ -300,22 +294,6 @@ contains
       call check(error, minval(errs(1, 2, :)/errs(1, 3, :)) > 1.8_dp, 'the anchor tension does not converge at '// &
                  'first order: error ratios 801/1601 nodes '//str(errs(1, 2, 1)/errs(1, 3, 1))//', '// &
                  str(errs(1, 2, 2)/errs(1, 3, 2)))
-
-   contains
-
-      !> The touchdown, as in test_catenary: sqrt of the height of the first two nodes off the
-      !> bottom, extrapolated to zero.
-      real(dp) function touchdown(o)
-         type(static_keeper), intent(in) :: o
-         integer :: k
-         real(dp) :: z1, z2
-         do k = 2, size(o%z) - 1
-            if (o%z(k) + drop > 1.0e-6_dp) exit
-         end do
-         z1 = sqrt(o%z(k) + drop)
-         z2 = sqrt(o%z(k + 1) + drop)
-         touchdown = o%s(k) - z1*(o%s(k + 1) - o%s(k))/(z2 - z1)
-      end function touchdown
    end subroutine test_static_friction
 
    !> The catenary of test_catenary on 101 nodes with its fairlead at 30 degrees in the
@@ -428,6 +406,25 @@ contains
          kk = [1.5_dp, 3.0_dp]*(4*near - far)/3 + [1.5_dp*f(1, 1)/span, 0.0_dp]
       end function stiffness
    end subroutine test_oc3_hywind
+
+   !> The touchdown of a static shape on a flat bottom drop below z = 0: the square root of the
+   !> height of the first two nodes more than 1e-6 m off the bottom is linear in the arc length
+   !> (z = (s - s_t)^2 / (2 R) near it), extrapolated to 0; first, the first of those nodes.
+   subroutine touchdown(obs, drop, touch, first)
+      type(static_keeper), intent(in) :: obs
+      real(dp), intent(in) :: drop
+      real(dp), intent(out) :: touch
+      integer, intent(out), optional :: first
+      integer :: k
+      real(dp) :: z1, z2
+      do k = 2, size(obs%z) - 1
+         if (obs%z(k) + drop > 1.0e-6_dp) exit
+      end do
+      z1 = sqrt(obs%z(k) + drop)
+      z2 = sqrt(obs%z(k + 1) + drop)
+      touch = obs%s(k) - z1*(obs%s(k + 1) - obs%s(k))/(z2 - z1)
+      if (present(first)) first = k
+   end subroutine touchdown
 
    !> The elastic catenary resting partly on a flat frictionless bottom, its anchor on the bottom
    !> and its other end span away and drop above (solved by Newton from a guess of H and L_b):

@@ -100,7 +100,7 @@ contains
       do k = -1, 1, 2
          bed%static_towards = k
          bed%static_strain = 0.03_dp
-         call bed%set_statics(.true., 0.0_dp, 0.0_dp)
+         call bed%set_statics(.true., 0.0_dp, 0.0_dp, 1.0_dp)
          do i = 1, size(angles)
             al = angles(i)*pi/180
             do j = 1, size(heights)
@@ -118,7 +118,7 @@ contains
             end do
          end do
       end do
-      call bed%set_statics(.false., 0.0_dp, 0.0_dp)
+      call bed%set_statics(.false., 0.0_dp, 0.0_dp, 1.0_dp)
       write (output_unit, '(4x,a,2es9.2,a,i0,a)') 'seabed force and shares: largest |analytic - central difference| '// &
          '/ (1 + |f| + the largest derivative), 2-D and 3-D', worst, ' (', touching, ' cells touching)'
       write (output_unit, '(4x,a,2es9.2)') 'with the statics'' friction, 2-D and 3-D', worst_static

@@ -58,8 +58,9 @@ module xcable_loads_load
       !> a line is too long to be taut over it (model/rod_statics.f90).
       procedure :: floor => load_floor
       !> Whether the statics (on) or the dynamics (off) evaluates the load next, with the line's
-      !> axial stiffness near zero strain (N) and weight in the fluid (N/m): a load may act in the
-      !> statics as the dynamics cannot (the seabed's static friction). Default: the same.
+      !> axial stiffness near zero strain (N) and weight in the fluid (N/m) and the share of its
+      !> static form to apply (a continuation): a load may act in the statics as the dynamics
+      !> cannot (the seabed's static friction). Default: the same.
       procedure :: set_statics => load_set_statics
       !> Whether the load acts otherwise in the statics than in the dynamics (default: no).
       procedure :: static_form => load_static_form
@@ -164,10 +165,10 @@ contains
    end function load_cell_measure
 
    !> The default: a load acts in the statics as in the dynamics.
-   subroutine load_set_statics(self, on, stiffness, weight)
+   subroutine load_set_statics(self, on, stiffness, weight, share)
       class(cable_load), intent(inout) :: self
       logical, intent(in) :: on
-      real(dp), intent(in) :: stiffness, weight
+      real(dp), intent(in) :: stiffness, weight, share
    end subroutine load_set_statics
 
    !> The default: no static form of its own.
@@ -190,7 +191,7 @@ contains
 
    !> Every load of an array told whether the statics (on) or the dynamics (off) evaluates it
    !> (cable_load%set_statics); nothing without loads.
-   subroutine loads_in_statics(loads, on, stiffness, weight)
+   subroutine loads_in_statics(loads, on, stiffness, weight, share)
       !> The loads (unallocated: none).
       type(load_slot), allocatable, intent(inout) :: loads(:)
       !> Statics (.true.) or dynamics.
@@ -198,10 +199,15 @@ contains
       !> The line's axial stiffness near zero strain (N) and its weight in the fluid per
       !> unstretched length (N/m), for a static form that depends on them.
       real(dp), intent(in) :: stiffness, weight
+      !> The share of the static form to apply, in (0, 1] (the statics' continuation; default 1).
+      real(dp), intent(in), optional :: share
+      real(dp) :: part
       integer :: k
       if (.not. allocated(loads)) return
+      part = 1
+      if (present(share)) part = share
       do k = 1, size(loads)
-         call loads(k)%load%set_statics(on, stiffness, weight)
+         call loads(k)%load%set_statics(on, stiffness, weight, part)
       end do
    end subroutine loads_in_statics
 

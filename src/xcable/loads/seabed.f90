@@ -63,6 +63,8 @@ module xcable_loads_seabed
       !> The least strain over which the static friction fades (static_friction_strain), and the
       !> line's axial stiffness (N) and weight in the fluid (N/m) the statics gave (set_statics).
       real(dp) :: static_strain = static_friction_strain, line_stiffness = 0, line_weight = 0
+      !> The share of mu_axial the static friction takes (the statics' continuation: 1 at the end).
+      real(dp) :: static_share = 1
    contains
       procedure :: name => seabed_name
       procedure :: cell_force => seabed_cell_force
@@ -111,11 +113,13 @@ contains
    end function seabed_static_form
 
    !> The statics' friction acts while the statics evaluates the load.
-   subroutine seabed_set_statics(self, on, stiffness, weight)
+   subroutine seabed_set_statics(self, on, stiffness, weight, share)
       class(seabed_load), intent(inout) :: self
       logical, intent(in) :: on
-      !> The line's axial stiffness near zero strain (N) and weight in the fluid (N/m).
-      real(dp), intent(in) :: stiffness, weight
+      !> The line's axial stiffness near zero strain (N) and weight in the fluid (N/m); the share of
+      !> the friction coefficient the static friction takes.
+      real(dp), intent(in) :: stiffness, weight, share
+      self%static_share = share
       self%in_statics = on .and. self%static_form()
       self%line_stiffness = stiffness
       self%line_weight = weight
@@ -306,7 +310,7 @@ contains
                er2 = er2**2
                r = eps/sqrt(eps*eps + er2)
                dr = er2/sqrt(eps*eps + er2)**3
-               c = self%static_towards*self%mu_axial
+               c = self%static_towards*self%mu_axial*self%static_share
                f = f + c*force*r*a
                df_dx = df_dx + c*r*outer(a, dn_dx)
                df_de = df_de + c*(r*outer(a, dn_de) + force*dr*outer(a, ehat) + force*r*da_de)

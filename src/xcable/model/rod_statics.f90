@@ -43,6 +43,9 @@ module xcable_model_rod_statics
    !> Newton iterations the statics allows a solve with the seabed's static friction (from the state
    !> without it: the friction's fade near zero tension converges slowly on fine grids).
    integer, parameter :: static_friction_iterations = 100
+   !> Smallest step of the continuation in the static friction (a share of it) when Newton fails to
+   !> take it at once.
+   real(dp), parameter :: static_friction_min_share = 1.0_dp/64
    !> Gauss-Legendre panels per cell of the catenary first guess (catenary_from_force; its
    !> exact reference takes 8): one panel of 8 points is exact to round-off on a cell, and
    !> the statics' Newton iteration takes the guess to the same state to round-off
@@ -160,6 +163,7 @@ contains
             call move_alloc(problem%piece%law, own)
             call move_alloc(uncut, problem%piece%law)
             call solve_now(error, static_friction_iterations)
+            if (allocated(error)) call friction_continuation(error)
             deallocate (problem%piece%law)
             call move_alloc(own, problem%piece%law)
             if (.not. allocated(error) .and. was_cut) call solve_now(error, static_friction_iterations)
@@ -172,6 +176,41 @@ contains
       call finish()
 
    contains
+
+      !> When Newton fails from the state without the static friction to the state with it: from
+      !> the former again, the friction in steps of its share, each from the last state found, the
+      !> step halved after a failure (from a half, down to static_friction_min_share) and doubled
+      !> after a success.
+      subroutine friction_continuation(err)
+         type(error_type), allocatable, intent(inout) :: err
+         real(dp), allocatable :: r_good(:, :)
+         real(dp) :: done, step, try
+         r_good = state%r
+         deallocate (err)
+         done = 0
+         step = 0.5_dp
+         do while (done < 1)
+            try = min(1.0_dp, done + step)
+            call loads_in_statics(problem%piece%loads, .true., secant_stiffness(problem%piece%law), scene%weight, try)
+            call solve_now(err, static_friction_iterations)
+            if (allocated(err)) then
+               state%r = r_good
+               step = step/2
+               if (step < static_friction_min_share) then
+                  err%message = err%message//' (the continuation in the friction reached '// &
+                                str(nint(100*done))//' % of it)'
+                  call loads_in_statics(problem%piece%loads, .true., secant_stiffness(problem%piece%law), &
+                                        scene%weight)
+                  return
+               end if
+               deallocate (err)
+            else
+               done = try
+               r_good = state%r
+               step = 2*step
+            end if
+         end do
+      end subroutine friction_continuation
 
       !> Replace end b by a fixed end at the height of end a, span to its right.
       subroutine set_end_b(span)

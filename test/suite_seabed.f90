@@ -37,6 +37,7 @@ contains
                new_unittest('catenary_on_a_frictionless_bottom', test_catenary), &
                new_unittest('catenary_on_the_bottom_3d_at_an_azimuth', test_catenary_3d), &
                new_unittest('catenary_with_static_friction_closed_form', test_static_friction), &
+               new_unittest('chain_with_full_static_friction', test_chain_friction), &
                new_unittest('oc3_hywind_mooring_stiffness_published', test_oc3_hywind), &
                new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger), &
                new_unittest('line_towed_along_the_bottom', test_towed), &
@@ -295,6 +296,45 @@ contains
                  'first order: error ratios 801/1601 nodes '//str(errs(1, 2, 1)/errs(1, 3, 1))//', '// &
                  str(errs(1, 2, 2)/errs(1, 3, 2)))
    end subroutine test_static_friction
+
+   !> The chain of input/chain_mooring_heave.nml (250 m, 76 mm R4 studless, linear EA) on a flat,
+   !> default (soft) bottom 60 m down, its fairlead 230 m away and 10 m under the surface, with
+   !> static_friction = 'end_a' and mu_axial = 1 (the friction takes all the anchor's tension),
+   !> 401 nodes: Newton cannot take the friction at once from the frictionless state, and the
+   !> statics' continuation in its share finds it. The fairlead's tension against the closed form
+   !> with friction (grounded_catenary, cb = 1): measured 1.9e-5 (the line sinks 2.4 mm into the
+   !> soft bottom; NREL MoorPy's catenary gives the closed form's figure, bench/peer/static_friction.py).
+   subroutine test_chain_friction(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: dc = 0.076_dp, length = 250, span = 230, drop = 50
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      real(dp) :: mass, ea, dvol, w, density, hh, lb, tf, err
+      character(len=200) :: line
+      mass = 20.01e3_dp*dc*dc
+      ea = 85.61e9_dp*dc*dc - 3.927e7_dp*dc**3
+      dvol = 1.801_dp*dc
+      density = mass/(0.25_dp*pi*dvol*dvol)
+      w = (mass - 1025*0.25_dp*pi*dvol*dvol)*g
+      call grounded_catenary(length, span, drop, w, ea, [50000.0_dp, 160.0_dp], hh, lb, cb=1.0_dp)
+      tf = hypot(hh, w*(length - lb))
+      write (line, '(a,es22.15,a,es22.15,a)') "&cable length = 250, diameter = ", dvol, ", density = ", density, &
+         ", bending_stiffness = 0 /"
+      call run_text(path, trim(line)//new_line('a')// &
+                    "&material law = 'linear', ea = "//str(ea)//" /"//new_line('a')// &
+                    "&fluid density = 1025, surface_z = 0 /"//new_line('a')// &
+                    "&seabed depth = 60, mu_axial = 1, static_friction = 'end_a' /"//new_line('a')// &
+                    "&end_a kind = 'fixed', x = 0, z = -60 /"//new_line('a')// &
+                    "&end_b kind = 'fixed', x = 230, z = -10 /"//new_line('a')// &
+                    "&rupture enabled = .false. /"//new_line('a')// &
+                    "&numerics nodes = 401, dt = 1e-3, t_end = 1e-3, newton_tol = 1e-12 /"//new_line('a')// &
+                    "&output interval = 0, quiet = .true. /", sim, obs, error)
+      if (allocated(error)) return
+      err = abs(obs%tension(2) - tf)/tf
+      write (output_unit, '(4x,a,2f14.3,a,es9.2)') 'chain, mu 1: fairlead tension, closed form', obs%tension(2), tf, &
+         '; relative difference', err
+      call check(error, err < 5.0e-5_dp, 'the chain with full static friction is off the closed form: '//str(err))
+   end subroutine test_chain_friction
 
    !> The catenary of test_catenary on 101 nodes with its fairlead at 30 degrees in the
    !> horizontal plane, run by the 3-D model: the end tensions and the grounded length are the

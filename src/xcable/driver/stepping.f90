@@ -30,7 +30,7 @@ module xcable_driver_stepping
    use xcable_system_posix, only: termination_requested
    implicit none
    private
-   public :: run_dynamics, start_dynamics, advance_dynamics, finish_dynamics, checkpoint_pause
+   public :: run_dynamics, start_dynamics, advance_dynamics, finish_dynamics
 
 contains
 

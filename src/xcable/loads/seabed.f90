@@ -278,6 +278,8 @@ contains
       do i = 1, nd
          eye(i, i) = 1
       end do
+      ! The projector onto the bottom's plane (the friction's directions).
+      pn = eye - outer(n, n)
       ! Contact N n, N = k P: dN/dx = -k dP/ddm n, dN/de = k dP/ddelta ds/2 n.
       force = self%stiffness*p
       dn_dx = -self%stiffness*dp_dm*n
@@ -299,7 +301,6 @@ contains
             real(dp), dimension(size(e), size(e)) :: da_de
             le = norm2(e)
             eps = le - 1
-            pn = eye - outer(n, n)
             a = matmul(pn, e)
             if (norm2(a) > 1.0e-12_dp*le) then
                da_de = matmul(eye - outer(a, a)/dot_product(a, a), pn)/norm2(a)
@@ -319,7 +320,6 @@ contains
       end if
       if (self%mu_axial == 0 .and. self%mu_lateral == 0) return
       ! Friction -N [mu_a g(w_a) + mu_l g(w_l)] in the plane.
-      pn = eye - outer(n, n)
       pe = matmul(pn, e)
       lpe = norm2(pe)
       if (lpe > 1.0e-12_dp*norm2(e)) then

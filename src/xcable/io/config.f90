@@ -8,7 +8,7 @@ module xcable_io_config
    use xcable_material_law, only: paper_tanh_coefficients
    implicit none
    private
-   public :: case_config, end_config, max_table_points
+   public :: case_config, end_config, segment_config, max_table_points, max_segments
 
    !> Longest inline table (law tables and end histories).
    integer, parameter :: max_table_points = 1000
@@ -48,6 +48,34 @@ module xcable_io_config
       !> Table file with columns t, x (, z) or t, x, y, z ('' : none).
       character(len=512) :: table_file = ''
    end type end_config
+
+   !> Most segments of a line (&segment_1 ... &segment_8).
+   integer, parameter :: max_segments = 8
+
+   !> One segment of the line (&segment_k, counted from end a): the variables of &cable,
+   !> &material and &fluid that differ from those groups' values, and its own length, nodes
+   !> and minimum breaking load. A variable not given in the group takes the line's value
+   !> (case_config%segment_case resolves them; case_config%is_given('segment_k', name) tells
+   !> which were given).
+   type :: segment_config
+      !> Unstretched length, m (must be given).
+      real(dp) :: length = 0
+      !> As in &cable.
+      real(dp) :: diameter = 0, density = 0, young = 0, area = 0, bending_stiffness = 0, gip = 0
+      !> As in &material.
+      character(len=16) :: law = '', compression = ''
+      real(dp) :: p(5) = 0, ea = 0, strain_max = 0, damping = 0
+      real(dp) :: material_table_strain(max_table_points) = 0, material_table_tension(max_table_points) = 0
+      integer :: material_table_rows = 0
+      character(len=512) :: material_table_file = ''
+      !> As in &fluid.
+      real(dp) :: cd_normal = 0, cd_tangential = 0, ca_normal = 0
+      !> Nodes of the segment, its two end nodes included (0: a share of &numerics nodes in
+      !> proportion to its length).
+      integer :: nodes = 0
+      !> Minimum breaking load, N (&rupture criterion 'tension'; 0: &rupture mbl).
+      real(dp) :: mbl = 0
+   end type segment_config
 
    !> A case.
    type :: case_config
@@ -105,6 +133,11 @@ module xcable_io_config
       !> &seabed static_friction: the statics' friction along the bottom, fully mobilised towards
       !> end a or end b (the anchor), or 'none'.
       character(len=16) :: static_friction = 'none'
+      ! &segment_1 ... &segment_8
+      !> Number of segments given (0: the line is one segment, &cable and &material).
+      integer :: segment_count = 0
+      !> The segments, from end a; only 1 .. segment_count are used.
+      type(segment_config) :: segments(max_segments)
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp
@@ -185,6 +218,10 @@ module xcable_io_config
       procedure :: is_planar
       !> The model that runs: '2d' or '3d'.
       procedure :: model_to_run
+      !> Number of segments of the line (1 without &segment_ groups).
+      procedure :: segments_of_line
+      !> The case seen by one segment: its values in &cable, &material and &fluid.
+      procedure :: segment_case
    end type case_config
 
 contains
@@ -228,4 +265,57 @@ contains
          model = merge('2d', '3d', self%is_planar())
       end select
    end function model_to_run
+
+   !> Number of segments of the line: segment_count, or 1 without &segment_ groups.
+   pure integer function segments_of_line(self)
+      !> The case.
+      class(case_config), intent(in) :: self
+      segments_of_line = max(self%segment_count, 1)
+   end function segments_of_line
+
+   !> The case as segment k sees it: &cable, &material and &fluid with the segment's values
+   !> where its group gives them, its length in length and its breaking load in mbl (the
+   !> line's &rupture mbl where it gives none). Without segments (segment_count = 0), k = 1
+   !> is the case itself.
+   function segment_case(self, k) result(c)
+      !> The case.
+      class(case_config), intent(in) :: self
+      !> Segment, 1 .. segments_of_line().
+      integer, intent(in) :: k
+      type(case_config) :: c
+      character(len=16) :: g
+      c = self
+      if (self%segment_count == 0) return
+      associate (sg => self%segments(k))
+         write (g, '(a,i0)') 'segment_', k
+         c%length = sg%length
+         if (given('diameter')) c%diameter = sg%diameter
+         if (given('density')) c%density = sg%density
+         if (given('young')) c%young = sg%young
+         if (given('area')) c%area = sg%area
+         if (given('bending_stiffness')) c%bending_stiffness = sg%bending_stiffness
+         if (given('gip')) c%gip = sg%gip
+         if (given('law')) c%law = sg%law
+         if (given('compression')) c%compression = sg%compression
+         if (given('p')) c%p = sg%p
+         if (given('ea')) c%ea = sg%ea
+         if (given('strain_max')) c%strain_max = sg%strain_max
+         if (given('damping')) c%damping = sg%damping
+         if (given('table_strain') .or. given('table_tension') .or. given('table_file')) then
+            c%material_table_strain = sg%material_table_strain
+            c%material_table_tension = sg%material_table_tension
+            c%material_table_rows = sg%material_table_rows
+            c%material_table_file = sg%material_table_file
+         end if
+         if (given('cd_normal')) c%cd_normal = sg%cd_normal
+         if (given('cd_tangential')) c%cd_tangential = sg%cd_tangential
+         if (given('ca_normal')) c%ca_normal = sg%ca_normal
+         if (sg%mbl > 0) c%mbl = sg%mbl
+      end associate
+   contains
+      logical function given(name)
+         character(*), intent(in) :: name
+         given = self%is_given(trim(g), name)
+      end function given
+   end function segment_case
 end module xcable_io_config

@@ -20,7 +20,29 @@ module xcable_scene_scene
    use xcable_loads_factory, only: case_loads
    implicit none
    private
-   public :: scene_type, scene_from_config, scene_grid, set_break
+   public :: scene_type, section_type, scene_from_config, scene_grid, set_break
+
+   !> One segment of the line, between arc lengths s_start and s_end from end a: its own
+   !> material, weight, stiffnesses, loads and breaking load. A line of one segment has one
+   !> section, whose values are also the scene's own (law, mass, weight, ei, gip, loads).
+   type :: section_type
+      !> Its arc lengths from end a, m.
+      real(dp) :: s_start = 0, s_end = 0
+      !> Its nodes, end nodes included (0: a share of the line's by length; scene_grid).
+      integer :: nodes = 0
+      !> Mass and weight (net of the loads' lift) per unstretched length, kg/m and N/m.
+      real(dp) :: mass = 0, weight = 0
+      !> Bending and torsional stiffness, N m^2.
+      real(dp) :: ei = 0, gip = 0
+      !> Internal damping of the law, N s.
+      real(dp) :: damping = 0
+      !> Minimum breaking load, N (0: none).
+      real(dp) :: mbl = 0
+      !> Tension-strain law (with the compression option applied).
+      class(material_law), allocatable :: law
+      !> Distributed loads on it (none: not allocated).
+      type(load_slot), allocatable :: loads(:)
+   end type section_type
 
    !> A scene.
    type :: scene_type
@@ -53,6 +75,8 @@ module xcable_scene_scene
       logical :: break_at_a = .false., break_at_b = .false.
       !> Distributed loads (none: not allocated). The weight above is net of their lift.
       type(load_slot), allocatable :: loads(:)
+      !> The segments of the line from end a (one for a uniform line: the values above).
+      type(section_type), allocatable :: sections(:)
    contains
       !> Whether the break splits the cable in two.
       procedure :: interior_break
@@ -75,33 +99,42 @@ contains
       type(scene_type), intent(out) :: scene
       !> Error (stat_input) naming what is inconsistent.
       type(error_type), allocatable, intent(out) :: error
-      real(dp), parameter :: pi = acos(-1.0_dp)
-      real(dp) :: area, ei, ea
+      type(case_config) :: seg
       integer :: k
       scene%source = config%source
-      area = config%area
-      if (area == 0) area = 0.25_dp*pi*config%diameter**2
-      ei = config%bending_stiffness
-      if (ei == 0) ei = config%young*pi*config%diameter**4/64
-      ea = config%ea
-      if (ea == 0) ea = config%young*area
-      call new_case_law(config, ea, scene%law, error)
-      if (allocated(error)) then
-         call prefix_error(error, config%source//': &material: ')
-         return
-      end if
-      scene%length = config%length
-      scene%mass = config%density*area
-      scene%gravity = config%gravity
-      scene%weight = scene%mass*config%gravity
-      scene%ei = ei
-      scene%gip = config%gip
-      if (scene%gip == 0) scene%gip = ei/1.4_dp
-      ! Distributed loads, one line each; their lift (buoyancy) comes off the weight.
-      call case_loads(config, area, scene%loads)
-      do k = 1, size(scene%loads)
-         scene%weight = scene%weight - scene%loads(k)%load%lift()
+      allocate (scene%sections(config%segments_of_line()))
+      do k = 1, size(scene%sections)
+         seg = config%segment_case(k)
+         call build_section(seg, scene%sections(k), error)
+         if (allocated(error)) then
+            if (config%segment_count == 0) then
+               call prefix_error(error, config%source//': &material: ')
+            else
+               call prefix_error(error, config%source//': &segment_'//str(k)//': ')
+            end if
+            return
+         end if
+         if (k > 1) scene%sections(k)%s_start = scene%sections(k - 1)%s_end
+         scene%sections(k)%s_end = scene%sections(k)%s_start + seg%length
+         if (config%segment_count > 0) scene%sections(k)%nodes = config%segments(k)%nodes
       end do
+      scene%length = scene%sections(size(scene%sections))%s_end
+      if (config%segment_count == 0) scene%length = config%length
+      scene%gravity = config%gravity
+      ! The scene's own material is its first section's (the whole line's without segments).
+      associate (first => scene%sections(1))
+         allocate (scene%law, source=first%law)
+         scene%mass = first%mass
+         scene%weight = first%weight
+         scene%ei = first%ei
+         scene%gip = first%gip
+         if (allocated(first%loads)) then
+            allocate (scene%loads(size(first%loads)))
+            do k = 1, size(first%loads)
+               allocate (scene%loads(k)%load, source=first%loads(k)%load)
+            end do
+         end if
+      end associate
 
       call new_end(config%end_a, 'end_a', scene%end_a, error)
       if (allocated(error)) then
@@ -138,11 +171,45 @@ contains
       scene%t_break = config%t_break
       scene%by_tension = config%break_enabled .and. trim(config%break_criterion) == 'tension'
       if (scene%by_tension) then
-         scene%mbl = config%mbl
+         scene%mbl = minval(scene%sections%mbl)
       else if (config%break_enabled) then
          call set_break(scene, config%s_break, config%break_time, error)
       end if
    end subroutine scene_from_config
+
+   !> One section from the case as its segment sees it (zero area, EI or EA derived as the
+   !> reader does): its law, mass, weight net of its loads' lift, stiffnesses, damping, loads
+   !> and breaking load; its arc lengths are set by the caller.
+   subroutine build_section(config, section, error)
+      !> The case as the segment sees it (case_config%segment_case).
+      type(case_config), intent(in) :: config
+      !> The section.
+      type(section_type), intent(out) :: section
+      !> Error from the law.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      real(dp) :: area, ea
+      integer :: k
+      area = config%area
+      if (area == 0) area = 0.25_dp*pi*config%diameter**2
+      section%ei = config%bending_stiffness
+      if (section%ei == 0) section%ei = config%young*pi*config%diameter**4/64
+      ea = config%ea
+      if (ea == 0) ea = config%young*area
+      call new_case_law(config, ea, section%law, error)
+      if (allocated(error)) return
+      section%mass = config%density*area
+      section%weight = section%mass*config%gravity
+      section%gip = config%gip
+      if (section%gip == 0) section%gip = section%ei/1.4_dp
+      section%damping = config%damping
+      section%mbl = config%mbl
+      ! Distributed loads, one line each; their lift (buoyancy) comes off the weight.
+      call case_loads(config, area, section%loads)
+      do k = 1, size(section%loads)
+         section%weight = section%weight - section%loads(k)%load%lift()
+      end do
+   end subroutine build_section
 
    !> The break of a scene: at arc length s_break (m; negative: L, the end b) from end a, starting
    !> at time (s), with the scene's ramp t_break. Error (stat_input) for a break at an end that is

@@ -66,9 +66,15 @@ module xcable_loads_load
       procedure :: static_form => load_static_form
    end type cable_load
 
-   !> A slot of an array of loads.
+   !> A slot of an array of loads: the load, and the part of the line it acts on (the cells
+   !> whose middle lies in s_from <= s < s_to, arc length from end a of the whole line, m; the
+   !> whole line by default). A line of segments has one slot per load and segment.
    type :: load_slot
       class(cable_load), allocatable :: load
+      real(dp) :: s_from = -huge(1.0_dp), s_to = huge(1.0_dp)
+   contains
+      !> Whether the load acts on the cell between arc lengths sa and sb.
+      procedure :: acts_on => slot_acts_on
    end type load_slot
 
    abstract interface
@@ -224,7 +230,20 @@ contains
       text = ''
    end function load_measure_note
 
-   !> The names of the lengths the loads measure (one per load that measures one).
+   !> Whether the slot's load acts on the cell between arc lengths sa and sb (m): its middle in
+   !> s_from <= s < s_to.
+   elemental logical function slot_acts_on(self, sa, sb)
+      !> The slot.
+      class(load_slot), intent(in) :: self
+      !> The cell's arc lengths from end a, m.
+      real(dp), intent(in) :: sa, sb
+      real(dp) :: mid
+      mid = 0.5_dp*(sa + sb)
+      slot_acts_on = mid >= self%s_from .and. mid < self%s_to
+   end function slot_acts_on
+
+   !> The names of the lengths the loads measure (one per name: the slots of one load on
+   !> several segments measure into one value).
    function measure_names(loads) result(names)
       !> The loads.
       type(load_slot), intent(in) :: loads(:)
@@ -232,29 +251,51 @@ contains
       integer :: i
       allocate (names(0))
       do i = 1, size(loads)
-         if (len(loads(i)%load%measure_name()) > 0) names = [names, loads(i)%load%measure_name()]
+         if (len(loads(i)%load%measure_name()) == 0) cycle
+         if (any(names == loads(i)%load%measure_name())) cycle
+         names = [character(len=32) :: names, loads(i)%load%measure_name()]
       end do
    end function measure_names
 
    !> The loads' measures (in the order of measure_names) on a cable with nodes r (dimension,
-   !> n) and cells of unstretched lengths ds, added to values.
-   subroutine load_measures(loads, r, ds, values)
+   !> n) and cells of unstretched lengths ds, added to values. s: the nodes' arc lengths from
+   !> end a (m), for loads that act on part of the line (not present: every load on every cell).
+   subroutine load_measures(loads, r, ds, values, s)
       !> The loads.
       type(load_slot), intent(in) :: loads(:)
       !> Node positions (dimension, n), m, and unstretched cell lengths (n - 1), m.
       real(dp), intent(in) :: r(:, :), ds(:)
       !> The measures, m (added to).
       real(dp), intent(inout) :: values(:)
+      !> Arc lengths of the nodes, m.
+      real(dp), intent(in), optional :: s(:)
+      character(len=32), allocatable :: names(:)
       integer :: i, j, c
-      j = 0
+      names = measure_names(loads)
       do i = 1, size(loads)
          if (len(loads(i)%load%measure_name()) == 0) cycle
-         j = j + 1
+         j = name_index(names, loads(i)%load%measure_name())
          do c = 1, size(ds)
+            if (present(s)) then
+               if (.not. loads(i)%acts_on(s(c), s(c + 1))) cycle
+            end if
             values(j) = values(j) + loads(i)%load%cell_measure(r(:, c), r(:, c + 1), ds(c))
          end do
       end do
    end subroutine load_measures
+
+   !> Index of name in names (0: not there).
+   pure integer function name_index(names, name)
+      character(len=*), intent(in) :: names(:), name
+      integer :: k
+      name_index = 0
+      do k = 1, size(names)
+         if (trim(names(k)) == trim(name)) then
+            name_index = k
+            return
+         end if
+      end do
+   end function name_index
 
    !> What the loads say about their measures at the start (values in the order of
    !> measure_names) of a cable of unstretched length (m): one line each, appended to notes.
@@ -266,11 +307,17 @@ contains
       !> Lines so far ('' : none).
       character(:), allocatable, intent(inout) :: notes
       character(:), allocatable :: line
+      character(len=32), allocatable :: names(:)
+      logical, allocatable :: noted(:)
       integer :: i, j
-      j = 0
+      names = measure_names(loads)
+      allocate (noted(size(names)))
+      noted = .false.
       do i = 1, size(loads)
          if (len(loads(i)%load%measure_name()) == 0) cycle
-         j = j + 1
+         j = name_index(names, loads(i)%load%measure_name())
+         if (noted(j)) cycle
+         noted(j) = .true.
          line = loads(i)%load%measure_note(values(j), length)
          if (len(line) == 0) cycle
          if (len(notes) > 0) notes = notes//new_line('a')

@@ -92,4 +92,85 @@ contains
          self%mass(2, k - 1) = self%mass(2, k - 1) + w
       end do
    end subroutine rod_init
+
+   !> A line of segments: the sections' cells and materials; the mass matrix rebuilt with each
+   !> cell's mass, the node weights and EIs from the cells beside each node.
+   module subroutine rod_set_sections(self, last, laws, mass, weight, ei, damping)
+      !> Piece.
+      class(rod_piece), intent(inout) :: self
+      !> Last cell of each section (the last one n - 1).
+      integer, intent(in) :: last(:)
+      !> The sections' laws.
+      type(rod_section), intent(in) :: laws(:)
+      !> Per section: mass and weight per length, EI, damping.
+      real(dp), intent(in) :: mass(:), weight(:), ei(:), damping(:)
+      integer :: n, j, k, c
+      real(dp) :: w, mu, mc(self%n - 1), wc(self%n - 1), eic(self%n - 1), mk
+      n = self%n
+      if (allocated(self%sections)) deallocate (self%sections)
+      allocate (self%sections(size(last)))
+      if (allocated(self%cell_sec)) deallocate (self%cell_sec)
+      allocate (self%cell_sec(n - 1))
+      do j = 1, size(last)
+         self%sections(j)%first = 1
+         if (j > 1) self%sections(j)%first = last(j - 1) + 1
+         self%sections(j)%last = last(j)
+         allocate (self%sections(j)%law, source=laws(j)%law)
+         self%sections(j)%mass = mass(j)
+         self%sections(j)%weight = weight(j)
+         self%sections(j)%ei = ei(j)
+         self%sections(j)%damping = damping(j)
+         self%cell_sec(self%sections(j)%first:last(j)) = j
+         mc(self%sections(j)%first:last(j)) = mass(j)
+         wc(self%sections(j)%first:last(j)) = weight(j)
+         eic(self%sections(j)%first:last(j)) = ei(j)
+      end do
+      ! The first section's values in the scalars (what a uniform piece reads).
+      if (allocated(self%law)) deallocate (self%law)
+      allocate (self%law, source=laws(1)%law)
+      self%mass_per_length = mass(1)
+      self%weight = weight(1)
+      self%ei = ei(1)
+      self%damping = damping(1)
+      ! Node weights: half of each adjacent cell's.
+      if (allocated(self%node_w)) deallocate (self%node_w)
+      if (allocated(self%node_ei)) deallocate (self%node_ei)
+      allocate (self%node_w(n), self%node_ei(n))
+      self%node_w = 0
+      self%node_w(1:n - 1) = self%node_w(1:n - 1) + 0.5_dp*wc*self%ds
+      self%node_w(2:n) = self%node_w(2:n) + 0.5_dp*wc*self%ds
+      ! EI of an interior node: its two half-cells' EI weighted by their lengths (the bending
+      ! energy EI kappa^2 h_k / 2 shared between the two cells); at the ends the end cell's.
+      self%node_ei(1) = eic(1)
+      self%node_ei(n) = eic(n - 1)
+      do k = 2, n - 1
+         if (eic(k - 1) == eic(k)) then
+            self%node_ei(k) = eic(k)
+         else
+            self%node_ei(k) = (eic(k - 1)*self%ds(k - 1) + eic(k)*self%ds(k))/(self%ds(k - 1) + self%ds(k))
+         end if
+      end do
+      ! The mass matrix of rod_init with each cell's mass.
+      mu = self%mu
+      self%mass = 0
+      do c = 1, n - 1
+         self%mass(0, c) = self%mass(0, c) + (1 - mu)*0.5_dp*mc(c)*self%ds(c)
+         self%mass(0, c + 1) = self%mass(0, c + 1) + (1 - mu)*0.5_dp*mc(c)*self%ds(c)
+      end do
+      self%mass(0, 1) = self%mass(0, 1) + self%end_a%point_mass()
+      self%mass(0, n) = self%mass(0, n) + self%end_b%point_mass()
+      self%mass(1, 1:n - 1) = 0.25_dp*mu*mc*self%ds
+      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mc*self%ds
+      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mc*self%ds
+      do k = 2, n - 1
+         mk = (mc(k - 1)*self%ds(k - 1) + mc(k)*self%ds(k))/(self%ds(k - 1) + self%ds(k))
+         w = self%mu2*mk*self%dual(k)/16
+         self%mass(0, k - 1) = self%mass(0, k - 1) + w
+         self%mass(0, k) = self%mass(0, k) + 4*w
+         self%mass(0, k + 1) = self%mass(0, k + 1) + w
+         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
+         self%mass(1, k) = self%mass(1, k) - 2*w
+         self%mass(2, k - 1) = self%mass(2, k - 1) + w
+      end do
+   end subroutine rod_set_sections
 end submodule xcable_model_rod_init

@@ -60,9 +60,17 @@ contains
       end do
       do c = 1, self%n - 1
          strain(c) = self%l1(c) - 1
-         tension(c) = self%law%tension(strain(c))
-         if (present(v) .and. self%damping > 0) tension(c) = damped_tension(self%law, strain(c), tension(c), &
-            self%damping*dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c)))
+         if (allocated(self%sections)) then
+            associate (sec => self%sections(self%cell_sec(c)))
+               tension(c) = sec%law%tension(strain(c))
+               if (present(v) .and. sec%damping > 0) tension(c) = damped_tension(sec%law, strain(c), tension(c), &
+                  sec%damping*dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c)))
+            end associate
+         else
+            tension(c) = self%law%tension(strain(c))
+            if (present(v) .and. self%damping > 0) tension(c) = damped_tension(self%law, strain(c), tension(c), &
+               self%damping*dot_product(self%e1(:, c), v(:, c + 1) - v(:, c))/(self%ds(c)*self%l1(c)))
+         end if
          ! Sn along the paper's normal n = -perp(t): EI Omega' + (1 + eps) Sn = 0.
          shear(c) = (moment_node(c + 1) - moment_node(c))/(self%ds(c)*self%l1(c))
       end do

@@ -33,7 +33,7 @@ module xcable_driver_rod_run
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_core_strings, only: str, quantity
-   use xcable_scene_scene, only: scene_type, scene_grid
+   use xcable_scene_scene, only: scene_type, scene_grid, section_at
    use xcable_loads_load, only: measure_names, load_measures, note_measures
    use xcable_model_rod, only: rod_piece, collapsed_length, rod_problem, rod_kl, rod_ku, perp, cross2, bend_energy, bend_moment, &
                                bend_curvature, cell_rotations, small_strain_step
@@ -44,7 +44,7 @@ module xcable_driver_rod_run
    use xcable_ends_force, only: force_end
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve, largest_magnitude
    use xcable_solver_banded, only: band_matrix
-   use xcable_model_rod_statics, only: rod_static_state, solve_rod_statics
+   use xcable_model_rod_statics, only: rod_static_state, solve_rod_statics, piece_sections
    use xcable_driver_records, only: run_history, run_summary, static_info, run_observer, n_energy, n_fields, &
                                  n_end_quantities, static_figures, slack_tension_fraction, note_min_strain, &
                                  n_fields3, field3_names, n_end_quantities_y
@@ -564,7 +564,7 @@ module xcable_driver_rod_run
       !> within the bracket of the steps tried, until F is within rupture_tolerance mbl of mbl
       !> (or max_rupture_aims steps were tried): watch%found, its time, cell and tension. A step
       !> that does not pass mbl is kept, and the largest tension so far updated.
-      module subroutine watch_step(self, h, r_old, r_new, ds, law, retry)
+      module subroutine watch_step(self, h, r_old, r_new, ds, law, retry, tensions)
          !> Run (its watch).
          type(rod_run), intent(inout) :: self
          !> The step, s.
@@ -577,6 +577,9 @@ module xcable_driver_rod_run
          class(material_law), intent(in) :: law
          !> Whether the step is to be taken again with watch%h_aim.
          logical, intent(out) :: retry
+         !> A line of segments: the cells' tensions at the old and new level (N) and the factor
+         !> mbl / (the cell's segment's MBL) (columns 1 to 3, n - 1 rows).
+         real(dp), intent(in), optional :: tensions(:, :)
       end subroutine watch_step
 
       !> Step control after an accepted step of h_try: the time moves on (onto

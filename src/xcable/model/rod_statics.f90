@@ -24,19 +24,20 @@ module xcable_model_rod_statics
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
    use xcable_core_strings, only: str
-   use xcable_scene_scene, only: scene_type
+   use xcable_scene_scene, only: scene_type, section_cells
    use xcable_loads_load, only: load_slot, loads_in_statics, any_static_form
-   use xcable_model_rod, only: rod_problem, rod_kl, rod_ku, collapsed_length
+   use xcable_model_rod, only: rod_problem, rod_piece, rod_section, rod_kl, rod_ku, collapsed_length
    use xcable_ends_fixed, only: fixed_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
    use xcable_solver_banded, only: band_matrix
    use xcable_material_law, only: material_law, secant_stiffness
    use xcable_material_tension_only, only: tension_only_law, uncut_law
-   use xcable_theory_closed_forms, only: catenary_from_force, catenary_between, catenary_summary
+   use xcable_theory_closed_forms, only: catenary_from_force, catenary_between, catenary_summary, catenary_segment, &
+                                         segments_from_force
    implicit none
    private
-   public :: rod_static_state, solve_rod_statics, static_tolerance, sag_below_chord
+   public :: rod_static_state, solve_rod_statics, static_tolerance, sag_below_chord, piece_sections
 
    !> Scaled update at which the static solve stops.
    real(dp), parameter :: static_tolerance = 1.0e-10_dp
@@ -537,7 +538,8 @@ contains
          type(error_type), allocatable, intent(out) :: err
          real(dp) :: n0(2), pa(2), pb(2), load(2), ss(n)
          real(dp), allocatable :: eps(:), ten(:), rr(:, :)
-         logical :: held_a, held_b
+         logical :: held_a, held_b, segmented
+         segmented = size(scene%sections) > 1
          allocate (eps(n), ten(n), rr(2, n))
          held_a = problem%piece%end_a%held()
          held_b = problem%piece%end_b%held()
@@ -545,12 +547,16 @@ contains
          if (held_a .and. held_b) then
             pa = problem%piece%end_a%position(0.0_dp)
             pb = problem%piece%end_b%position(0.0_dp)
-            call catenary_between(scene%law, scene%weight, scene%length, pa, pb, n0, err)
+            if (segmented) then
+               call catenary_between(scene%law, scene%weight, scene%length, pa, pb, n0, err, scene_segments(scene))
+            else
+               call catenary_between(scene%law, scene%weight, scene%length, pa, pb, n0, err)
+            end if
             if (allocated(err)) then
                call prefix_error(err, scene%source//': statics: ')
                return
             end if
-            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten, guess_panels)
+            call guess_from_force(n0, pa, ss, state%r)
          else if (held_a) then
             ! The internal force at s = L is the load of end b (its force and the point mass's weight).
             load = problem%piece%end_b%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_b%point_mass()]
@@ -559,7 +565,7 @@ contains
                call state_end_load(problem%piece%end_b, problem%piece%end_a%position(0.0_dp), .true., load)
             n0 = load - [0.0_dp, scene%weight*scene%length]
             pa = problem%piece%end_a%position(0.0_dp)
-            call catenary_from_force(scene%law, scene%weight, n0, pa, ss, state%r, eps, ten, guess_panels)
+            call guess_from_force(n0, pa, ss, state%r)
          else if (held_b) then
             ! The internal force at s = 0 balances the load of end a.
             load = problem%piece%end_a%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_a%point_mass()]
@@ -567,8 +573,7 @@ contains
                call state_end_load(problem%piece%end_a, problem%piece%end_b%position(0.0_dp), .false., load)
             n0 = -load
             pb = problem%piece%end_b%position(0.0_dp)
-            call catenary_from_force(scene%law, scene%weight, n0, [0.0_dp, 0.0_dp], ss, rr, eps, ten, &
-                                     guess_panels)
+            call guess_from_force(n0, [0.0_dp, 0.0_dp], ss, rr)
             state%r(1, :) = rr(1, :) - rr(1, n) + pb(1)
             state%r(2, :) = rr(2, :) - rr(2, n) + pb(2)
          else
@@ -576,6 +581,19 @@ contains
                              'no static position', stat_input)
          end if
       end subroutine first_guess
+
+      !> The catenary from the force n0 at s = 0 through r0 at the points ss, on a line of
+      !> segments segment by segment (the first guess).
+      subroutine guess_from_force(n0, r0, ss, r)
+         real(dp), intent(in) :: n0(2), r0(2), ss(:)
+         real(dp), intent(out) :: r(:, :)
+         real(dp) :: eps(size(ss)), ten(size(ss))
+         if (size(scene%sections) > 1) then
+            call segments_from_force(scene_segments(scene), n0, r0, ss, r, eps, ten, guess_panels)
+         else
+            call catenary_from_force(scene%law, scene%weight, n0, r0, ss, r, eps, ten, guess_panels)
+         end if
+      end subroutine guess_from_force
 
       !> Height of the highest floor of the loads (a seabed's bottom) under the horizontal point
       !> x, m (-huge: none).
@@ -768,4 +786,44 @@ contains
          text = text//loads(i)%load%name()
       end do
    end function load_names
+
+   !> A planar piece on a line of segments: its sections from the scene's (rod_piece
+   !> set_sections), those with cells on the piece (its nodes' arc lengths s). Nothing for a
+   !> scene of one segment.
+   subroutine piece_sections(piece, scene)
+      !> Piece, initialised on its part of the line.
+      type(rod_piece), intent(inout) :: piece
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      integer, allocatable :: last(:), keep(:)
+      type(rod_section), allocatable :: laws(:)
+      integer :: j, prev
+      if (size(scene%sections) <= 1) return
+      last = section_cells(scene, piece%s)
+      allocate (keep(0))
+      prev = 0
+      do j = 1, size(last)
+         if (last(j) > prev) keep = [keep, j]
+         prev = max(prev, last(j))
+      end do
+      allocate (laws(size(keep)))
+      do j = 1, size(keep)
+         allocate (laws(j)%law, source=scene%sections(keep(j))%law)
+      end do
+      call piece%set_sections(last(keep), laws, scene%sections(keep)%mass, scene%sections(keep)%weight, &
+                              scene%sections(keep)%ei, scene%sections(keep)%damping)
+   end subroutine piece_sections
+
+   !> The catenary segments of a scene's sections (for the first guess).
+   function scene_segments(scene) result(segments)
+      type(scene_type), intent(in) :: scene
+      type(catenary_segment), allocatable :: segments(:)
+      integer :: j
+      allocate (segments(size(scene%sections)))
+      do j = 1, size(scene%sections)
+         allocate (segments(j)%law, source=scene%sections(j)%law)
+         segments(j)%weight = scene%sections(j)%weight
+         segments(j)%length = scene%sections(j)%s_end - scene%sections(j)%s_start
+      end do
+   end function scene_segments
 end module xcable_model_rod_statics

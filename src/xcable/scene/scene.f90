@@ -20,7 +20,7 @@ module xcable_scene_scene
    use xcable_loads_factory, only: case_loads
    implicit none
    private
-   public :: scene_type, section_type, scene_from_config, scene_grid, set_break
+   public :: scene_type, section_type, scene_from_config, scene_grid, set_break, section_cells, section_at
 
    !> One segment of the line, between arc lengths s_start and s_end from end a: its own
    !> material, weight, stiffnesses, loads and breaking load. A line of one segment has one
@@ -100,7 +100,7 @@ contains
       !> Error (stat_input) naming what is inconsistent.
       type(error_type), allocatable, intent(out) :: error
       type(case_config) :: seg
-      integer :: k
+      integer :: k, j
       scene%source = config%source
       allocate (scene%sections(config%segments_of_line()))
       do k = 1, size(scene%sections)
@@ -122,19 +122,38 @@ contains
       if (config%segment_count == 0) scene%length = config%length
       scene%gravity = config%gravity
       ! The scene's own material is its first section's (the whole line's without segments).
+      ! On a line of segments the scene's mass and weight are the means over the line (what a
+      ! uniform first guess takes), and its loads those of every section, each on its part.
       associate (first => scene%sections(1))
          allocate (scene%law, source=first%law)
          scene%mass = first%mass
          scene%weight = first%weight
          scene%ei = first%ei
          scene%gip = first%gip
-         if (allocated(first%loads)) then
-            allocate (scene%loads(size(first%loads)))
-            do k = 1, size(first%loads)
-               allocate (scene%loads(k)%load, source=first%loads(k)%load)
-            end do
+         if (size(scene%sections) == 1) then
+            if (allocated(first%loads)) then
+               allocate (scene%loads(size(first%loads)))
+               do k = 1, size(first%loads)
+                  allocate (scene%loads(k)%load, source=first%loads(k)%load)
+               end do
+            end if
          end if
       end associate
+      if (size(scene%sections) > 1) then
+         scene%mass = sum(scene%sections%mass*(scene%sections%s_end - scene%sections%s_start))/scene%length
+         scene%weight = sum(scene%sections%weight*(scene%sections%s_end - scene%sections%s_start))/scene%length
+         allocate (scene%loads(0))
+         do k = 1, size(scene%sections)
+            associate (sec => scene%sections(k))
+               if (.not. allocated(sec%loads)) cycle
+               do j = 1, size(sec%loads)
+                  scene%loads = [scene%loads, sec%loads(j)]
+                  if (k > 1) scene%loads(size(scene%loads))%s_from = sec%s_start
+                  if (k < size(scene%sections)) scene%loads(size(scene%loads))%s_to = sec%s_end
+               end do
+            end associate
+         end do
+      end if
 
       call new_end(config%end_a, 'end_a', scene%end_a, error)
       if (allocated(error)) then
@@ -171,7 +190,9 @@ contains
       scene%t_break = config%t_break
       scene%by_tension = config%break_enabled .and. trim(config%break_criterion) == 'tension'
       if (scene%by_tension) then
-         scene%mbl = minval(scene%sections%mbl)
+         ! The line's MBL, or on a line of segments the smallest a segment gives.
+         scene%mbl = config%mbl
+         if (size(scene%sections) > 1) scene%mbl = minval(scene%sections%mbl, mask=scene%sections%mbl > 0)
       else if (config%break_enabled) then
          call set_break(scene, config%s_break, config%break_time, error)
       end if
@@ -244,6 +265,9 @@ contains
    !> Node arc lengths: uniform on [0, L], or, with a break inside the cable,
    !> uniform on each side of it with the break point a node (the nodes split
    !> in proportion to the lengths of the two sides, at least two cells each).
+   !> On a line of segments every joint is a node too: each part between two
+   !> joints (or a joint and the break) is uniform, with the cells of its segment
+   !> (nodes given per segment) or a share of all cells by length.
    subroutine scene_grid(scene, nodes, s, break_node)
       !> Scene.
       type(scene_type), intent(in) :: scene
@@ -257,6 +281,12 @@ contains
       allocate (s(nodes))
       cells = nodes - 1
       break_node = 0
+      if (allocated(scene%sections)) then
+         if (size(scene%sections) > 1) then
+            call segment_grid(scene, nodes, s, break_node)
+            return
+         end if
+      end if
       if (scene%interior_break() .and. cells >= 4) then
          cells_a = min(max(nint(cells*scene%s_break/scene%length), 2), cells - 2)
          break_node = cells_a + 1
@@ -272,4 +302,101 @@ contains
          end do
       end if
    end subroutine scene_grid
+
+   !> The section at arc length s from end a (m): the first whose end lies beyond s.
+   pure integer function section_at(scene, s)
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      !> Arc length, m.
+      real(dp), intent(in) :: s
+      do section_at = 1, size(scene%sections) - 1
+         if (s < scene%sections(section_at)%s_end) return
+      end do
+      section_at = size(scene%sections)
+   end function section_at
+
+   !> The last cell of each section on the node arc lengths s (scene_grid's) of the part of
+   !> the line s(1) .. s(n): 0 for a section before the part, n - 1 for one beyond it.
+   pure function section_cells(scene, s) result(last)
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      !> Node arc lengths of the piece, m.
+      real(dp), intent(in) :: s(:)
+      integer :: last(size(scene%sections))
+      integer :: j, c
+      do j = 1, size(scene%sections)
+         last(j) = 0
+         do c = 1, size(s) - 1
+            if (0.5_dp*(s(c) + s(c + 1)) < scene%sections(j)%s_end) last(j) = c
+         end do
+      end do
+      last(size(last)) = size(s) - 1
+   end function section_cells
+
+   !> scene_grid on a line of segments: the parts between the joints and the break.
+   subroutine segment_grid(scene, nodes, s, break_node)
+      type(scene_type), intent(in) :: scene
+      integer, intent(in) :: nodes
+      real(dp), intent(inout) :: s(:)
+      integer, intent(out) :: break_node
+      real(dp), allocatable :: bounds(:), part(:)
+      integer, allocatable :: cells(:), owner(:)
+      integer :: m, j, k, node, spare, big
+      real(dp) :: tol
+      tol = 1.0e-9_dp*scene%length
+      bounds = [scene%sections%s_start, scene%length]
+      owner = [(j, j=1, size(scene%sections))]
+      break_node = 0
+      ! The break splits the part it falls in (at a joint it is that joint).
+      if (scene%interior_break()) then
+         if (all(abs(bounds - scene%s_break) > tol)) then
+            do j = 1, size(owner)
+               if (scene%s_break > bounds(j) .and. scene%s_break < bounds(j + 1)) exit
+            end do
+            bounds = [bounds(1:j), scene%s_break, bounds(j + 1:)]
+            owner = [owner(1:j), owner(j:)]
+         end if
+      end if
+      m = size(bounds) - 1
+      part = bounds(2:m + 1) - bounds(1:m)
+      allocate (cells(m))
+      if (all(scene%sections%nodes > 0)) then
+         ! The segments' own cells; a part of a segment its share by length.
+         do j = 1, m
+            associate (sec => scene%sections(owner(j)))
+               cells(j) = max(1, nint((sec%nodes - 1)*part(j)/(sec%s_end - sec%s_start)))
+            end associate
+         end do
+         do j = 1, m - 1
+            if (owner(j) == owner(j + 1)) then
+               cells(j + 1) = max(1, scene%sections(owner(j))%nodes - 1 - cells(j))
+            end if
+         end do
+      else
+         do j = 1, m
+            cells(j) = max(2, nint((nodes - 1)*part(j)/scene%length))
+         end do
+      end if
+      ! The total to nodes - 1: the largest parts give or take the difference.
+      spare = (nodes - 1) - sum(cells)
+      do while (spare /= 0)
+         big = maxloc(part/cells, 1)
+         if (spare < 0) big = maxloc(merge(cells, 0, cells > 2), 1)
+         if (cells(big) + sign(1, spare) < 1) exit
+         cells(big) = cells(big) + sign(1, spare)
+         spare = spare - sign(1, spare)
+      end do
+      node = 1
+      s(1) = 0
+      do j = 1, m
+         do k = 1, cells(j)
+            s(node + k) = bounds(j) + part(j)*real(k, dp)/cells(j)
+         end do
+         node = node + cells(j)
+         s(node) = bounds(j + 1)
+         if (scene%interior_break()) then
+            if (abs(bounds(j + 1) - scene%s_break) <= tol) break_node = node
+         end if
+      end do
+   end subroutine segment_grid
 end module xcable_scene_scene

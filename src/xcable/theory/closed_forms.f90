@@ -10,7 +10,14 @@ module xcable_theory_closed_forms
    private
    public :: catenary_shape, catenary_summary, horizontal_force
    public :: wave_speed, riemann_speed, gauss_legendre, wall_drop_time, wall_incoming_strain
-   public :: catenary_from_force, catenary_between
+   public :: catenary_from_force, catenary_between, catenary_segment, segments_from_force
+
+   !> A segment of a line for the catenary of a line of segments: its law, weight per
+   !> unstretched length (N/m) and unstretched length (m).
+   type :: catenary_segment
+      class(material_law), allocatable :: law
+      real(dp) :: weight = 0, length = 0
+   end type catenary_segment
 
    !> Gauss-Legendre points per panel.
    integer, parameter :: n_gauss = 8
@@ -174,12 +181,60 @@ contains
       end do
    end subroutine catenary_from_force
 
+   !> catenary_from_force on a line of segments, from the internal force n0 at s = 0 (each
+   !> segment with its own law and weight; the force continuous at a joint): the positions,
+   !> strains and tensions at the points s (increasing, s(1) = 0; a point on a joint takes
+   !> the strain of the segment before it).
+   subroutine segments_from_force(segments, n0, r0, s, r, eps, tension, panels)
+      !> The segments from s = 0.
+      type(catenary_segment), intent(in) :: segments(:)
+      !> Internal force at s = 0 (x, z), N; position at s = 0, m.
+      real(dp), intent(in) :: n0(2), r0(2)
+      !> Points, m.
+      real(dp), intent(in) :: s(:)
+      !> Positions (2, size(s)), m.
+      real(dp), intent(out) :: r(:, :)
+      !> Strain and tension (N) at the points.
+      real(dp), intent(out) :: eps(:), tension(:)
+      !> Gauss-Legendre panels between two points (catenary_from_force).
+      integer, intent(in), optional :: panels
+      real(dp) :: start, nj(2), rj(2)
+      real(dp), allocatable :: sl(:), rl(:, :), el(:), tl(:)
+      integer :: j, k, first, last, m
+      start = 0
+      nj = n0
+      rj = r0
+      first = 1
+      do j = 1, size(segments)
+         ! The points of segment j: first .. last.
+         last = first - 1
+         do k = first, size(s)
+            if (s(k) > start + segments(j)%length .and. j < size(segments)) exit
+            last = k
+         end do
+         m = last - first + 1
+         sl = [0.0_dp, s(first:last) - start, segments(j)%length]
+         allocate (rl(2, m + 2), el(m + 2), tl(m + 2))
+         call catenary_from_force(segments(j)%law, segments(j)%weight, nj, rj, max(sl, 0.0_dp), rl, el, tl, panels)
+         if (m > 0) then
+            r(:, first:last) = rl(:, 2:m + 1)
+            eps(first:last) = el(2:m + 1)
+            tension(first:last) = tl(2:m + 1)
+         end if
+         rj = rl(:, m + 2)
+         nj = nj + [0.0_dp, segments(j)%weight*segments(j)%length]
+         start = start + segments(j)%length
+         first = last + 1
+         deallocate (rl, el, tl)
+      end do
+   end subroutine segments_from_force
+
    !> The extensible catenary hanging between two points: the internal force
    !> n0 at s = 0 such that R(L) = rb when R(0) = ra (a damped Newton
    !> iteration on n0 with central-difference derivatives, from the
    !> inextensible catenary or, for a taut line, a straight line). The ends may
    !> be at different heights; the line may be slack or taut.
-   subroutine catenary_between(law, weight, length, ra, rb, n0, error)
+   subroutine catenary_between(law, weight, length, ra, rb, n0, error, segments)
       !> Tension-strain law.
       class(material_law), intent(in) :: law
       !> Weight per unstretched length, N/m.
@@ -192,6 +247,9 @@ contains
       real(dp), intent(out) :: n0(2)
       !> Error when no catenary is found.
       type(error_type), allocatable, intent(out) :: error
+      !> A line of segments (then law, weight and length are those of its first guess: a law, the
+      !> mean weight and the whole length).
+      type(catenary_segment), intent(in), optional :: segments(:)
       real(dp) :: d(2), dist, chord, a, lo, hi, h0, res(2), jac(2, 2), step(2), trial(2), rt(2), hstep, nrm, nrm_t
       real(dp) :: rp(2), rm(2), eps_zero, lam
       integer :: it, j, ls
@@ -281,7 +339,11 @@ contains
          real(dp), intent(in) :: force0(2)
          real(dp), intent(out) :: m(2)
          real(dp) :: rr(2, 2), ee(2), tt(2)
-         call catenary_from_force(law, weight, force0, ra, [0.0_dp, length], rr, ee, tt)
+         if (present(segments)) then
+            call segments_from_force(segments, force0, ra, [0.0_dp, length], rr, ee, tt)
+         else
+            call catenary_from_force(law, weight, force0, ra, [0.0_dp, length], rr, ee, tt)
+         end if
          m = rr(:, 2) - rb
       end subroutine mismatch
 

@@ -52,6 +52,7 @@ contains
       call self%pieces(1)%problem%piece%init(self%s, scene%mass, scene%weight, scene%ei, scene%gravity, options%mu, &
                                               scene%law, scene%end_a, scene%end_b, max(scene%tension, 1.0_dp), options%mu2, &
                                               options%damping)
+      call piece_sections(self%pieces(1)%problem%piece, scene)
       if (allocated(scene%loads)) self%pieces(1)%problem%piece%loads = scene%loads
       static_newton = options%newton
       call solve_rod_statics(scene, self%pieces(1)%problem, static_newton, self%static, error)
@@ -63,23 +64,39 @@ contains
       end if
       ! The static state must stay within the law's documented range.
       associate (r => self%static%r, piece => self%pieces(1)%problem%piece)
-         if (maxval(norm2(r(:, 2:n) - r(:, 1:n - 1), 1)/piece%ds - 1) > piece%law%strain_max) then
-            call fatal_error(error, scene%source//': the static state needs strain '// &
-                             str(maxval(norm2(r(:, 2:n) - r(:, 1:n - 1), 1)/piece%ds - 1))// &
-                             ', above the range of the law (&material strain_max = '//str(piece%law%strain_max)// &
-                             '): the ends are too far apart or the loads too large', stat_input)
-            return
-         end if
+         do c = 1, n - 1
+            if (norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1 > cell_strain_max(piece, c)) then
+               call fatal_error(error, scene%source//': the static state needs strain '// &
+                                str(norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1)//' at s = '// &
+                                str(0.5_dp*(piece%s(c) + piece%s(c + 1)))//' m, above the range of the law ('// &
+                                trim(law_group(scene, piece, c))//' strain_max = '//str(cell_strain_max(piece, c))// &
+                                '): the ends are too far apart or the loads too large', stat_input)
+               return
+            end if
+         end do
       end associate
       ! Row scale: the largest static tension (1 N at least).
       associate (piece => self%pieces(1)%problem%piece)
-         piece%tension_ref = max(maxval(abs(piece%law%tension(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1) &
-                                                                  /piece%ds - 1))), 1.0_dp)
-         c_max = 0
-         do c = 1, n - 1
-            c_max = max(c_max, wave_speed(piece%law, piece%mass_per_length, norm2(self%static%r(:, c + 1) - self%static%r(:, c)) &
-                                          /piece%ds(c) - 1))
-         end do
+         if (allocated(piece%sections)) then
+            piece%tension_ref = 1
+            c_max = 0
+            do c = 1, n - 1
+               associate (sec => piece%sections(piece%cell_sec(c)), &
+                          eps => norm2(self%static%r(:, c + 1) - self%static%r(:, c))/piece%ds(c) - 1)
+                  piece%tension_ref = max(piece%tension_ref, abs(sec%law%tension(eps)))
+                  c_max = max(c_max, wave_speed(sec%law, sec%mass, eps))
+               end associate
+            end do
+         else
+            piece%tension_ref = max(maxval(abs(piece%law%tension(norm2(self%static%r(:, 2:n) - &
+                                                                       self%static%r(:, 1:n - 1), 1)/piece%ds - 1))), &
+                                    1.0_dp)
+            c_max = 0
+            do c = 1, n - 1
+               c_max = max(c_max, wave_speed(piece%law, piece%mass_per_length, &
+                                             norm2(self%static%r(:, c + 1) - self%static%r(:, c))/piece%ds(c) - 1))
+            end do
+         end if
          ds_max = maxval(piece%ds)
       end associate
       if (options%dt > 0) then
@@ -97,7 +114,9 @@ contains
          block
             real(dp) :: cell_tension(n - 1)
             integer :: c_low
-            cell_tension = piece%law%tension(norm2(self%static%r(:, 2:n) - self%static%r(:, 1:n - 1), 1)/piece%ds - 1)
+            do c = 1, n - 1
+               cell_tension(c) = piece%cell_tension(c, norm2(self%static%r(:, c + 1) - self%static%r(:, c))/piece%ds(c) - 1)
+            end do
             c_low = minloc(cell_tension, 1)
             self%static_min_tension = cell_tension(c_low)
             self%static_min_tension_s = 0.5_dp*(self%s(c_low) + self%s(c_low + 1))
@@ -160,4 +179,30 @@ contains
       self%info%newton_iterations = self%static%newton_iterations
       call static_figures(self%info)
    end subroutine static_fields
+
+   !> The largest strain of the law of cell c.
+   pure real(dp) function cell_strain_max(piece, c)
+      type(rod_piece), intent(in) :: piece
+      integer, intent(in) :: c
+      if (allocated(piece%sections)) then
+         cell_strain_max = piece%sections(piece%cell_sec(c))%law%strain_max
+      else
+         cell_strain_max = piece%law%strain_max
+      end if
+   end function cell_strain_max
+
+   !> The group that gives the law of cell c: '&material' or '&segment_k'.
+   function law_group(scene, piece, c) result(group)
+      type(scene_type), intent(in) :: scene
+      type(rod_piece), intent(in) :: piece
+      integer, intent(in) :: c
+      character(len=16) :: group
+      integer :: j
+      group = '&material'
+      if (size(scene%sections) <= 1) return
+      do j = 1, size(scene%sections)
+         if (0.5_dp*(piece%s(c) + piece%s(c + 1)) < scene%sections(j)%s_end) exit
+      end do
+      write (group, '(a,i0)') '&segment_', min(j, size(scene%sections))
+   end function law_group
 end submodule xcable_driver_rod_run_prepare

@@ -137,11 +137,11 @@ contains
          associate (r => run%pieces(1)%r, v => run%pieces(1)%v, k => run%break_node, &
                     piece => run%pieces(1)%problem%piece)
             e = r(:, k + 1) - r(:, k)
-            f = piece%law%tension(norm2(e)/piece%ds(k) - 1)*e/norm2(e)
-            ten = 0.5_dp*(norm2(f) + piece%law%tension(norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
+            f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
+            ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
             run%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
             e = r(:, k) - r(:, k - 1)
-            f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
+            f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
             run%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
          end associate
       end if
@@ -149,7 +149,7 @@ contains
          run%history%measures(:, i) = 0
          do p = 1, size(run%pieces)
             associate (piece => run%pieces(p)%problem%piece)
-               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, run%history%measures(:, i))
+               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, run%history%measures(:, i), piece%s)
             end associate
          end do
       end if
@@ -188,9 +188,9 @@ contains
       n = piece%n
       do j = 1, min(3, n - 1)
          c = merge(j, n - j, side == 1)
-         cells(j) = piece%law%tension(norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1)
+         cells(j) = piece%cell_tension(c, norm2(r(:, c + 1) - r(:, c))/piece%ds(c) - 1)
       end do
-      t_end = max(end_value(cells(1:min(3, n - 1)), 1), piece%law%tension(-0.99_dp))
+      t_end = max(end_value(cells(1:min(3, n - 1)), 1), piece%cell_tension(merge(1, n - 1, side == 1), -0.99_dp))
    end function end_tension
 
    !> Fields at time ts inside the step just accepted (from self%t to the new
@@ -560,12 +560,12 @@ contains
             do k = 1, n
                col = cols(k)
                if (k == 1) then
-                  fields(col, 1) = max(end_value(ten, 1), piece%law%tension(-0.99_dp))
+                  fields(col, 1) = max(end_value(ten, 1), piece%cell_tension(1, -0.99_dp))
                   fields(col, 2) = end_value(shear, 1)
                   fields(col, 3) = max(end_value(eps, 1), -0.99_dp)
                   e = r(:, 2) - r(:, 1)
                else if (k == n) then
-                  fields(col, 1) = max(end_value(ten, 2), piece%law%tension(-0.99_dp))
+                  fields(col, 1) = max(end_value(ten, 2), piece%cell_tension(n - 1, -0.99_dp))
                   fields(col, 2) = end_value(shear, 2)
                   fields(col, 3) = max(end_value(eps, 2), -0.99_dp)
                   e = r(:, n) - r(:, n - 1)

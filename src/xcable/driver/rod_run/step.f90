@@ -93,7 +93,7 @@ contains
    !> within the bracket of the steps tried, until F is within rupture_tolerance mbl of mbl
    !> (or max_rupture_aims steps were tried): watch%found, its time, cell and tension. A step
    !> that does not pass mbl is kept, and the largest tension so far updated.
-   module subroutine watch_step(self, h, r_old, r_new, ds, law, retry)
+   module subroutine watch_step(self, h, r_old, r_new, ds, law, retry, tensions)
       !> Run (its watch).
       type(rod_run), intent(inout) :: self
       !> The step, s.
@@ -106,13 +106,23 @@ contains
       class(material_law), intent(in) :: law
       !> Whether the step is to be taken again with watch%h_aim.
       logical, intent(out) :: retry
+      !> A line of segments: the cells' tensions at the old and new level (N, (n - 1, 2)) in
+      !> place of the law's, and the factor mbl / (the cell's segment's MBL) on each (n - 1; 0:
+      !> a segment that does not part), in column 3.
+      real(dp), intent(in), optional :: tensions(:, :)
       real(dp) :: t_old(size(ds)), t_new(size(ds)), frac, f
       integer :: c, m
       m = size(ds)
-      do c = 1, m
-         t_old(c) = law%tension(norm2(r_old(:, c + 1) - r_old(:, c))/ds(c) - 1)
-         t_new(c) = law%tension(norm2(r_new(:, c + 1) - r_new(:, c))/ds(c) - 1)
-      end do
+      if (present(tensions)) then
+         ! Each cell's share of its own MBL, in units of watch%mbl.
+         t_old = tensions(:, 1)*tensions(:, 3)
+         t_new = tensions(:, 2)*tensions(:, 3)
+      else
+         do c = 1, m
+            t_old(c) = law%tension(norm2(r_old(:, c + 1) - r_old(:, c))/ds(c) - 1)
+            t_new(c) = law%tension(norm2(r_new(:, c + 1) - r_new(:, c))/ds(c) - 1)
+         end do
+      end if
       retry = .false.
       associate (w => self%watch)
          c = maxloc(t_new, 1)
@@ -165,6 +175,7 @@ contains
             w%time = self%t + h
             w%cell = c
             w%tension = f
+            if (present(tensions)) w%tension = tensions(c, 2)
             w%s = 0.5_dp*(self%s(c) + self%s(c + 1))
             w%cells = t_new
          end if
@@ -523,7 +534,7 @@ contains
    module subroutine accept(self, h)
       type(rod_run), intent(inout) :: self
       real(dp), intent(in) :: h
-      integer :: p, n
+      integer :: p, n, j
       real(dp), allocatable :: r1(:, :), v1(:, :), dv(:, :), mdv(:, :)
       real(dp) :: theta, dphi, f(2)
       theta = self%options%theta
@@ -543,7 +554,20 @@ contains
                self%load_work = self%load_work + displacement_work(n, piece%load_node, r1, run_piece%r)
                ! Internal damping: each cell dissipates ds c (eps1 - eps0)^2 / dt; a rope that
                ! cannot push, ds (N - q) (eps1 - eps0) (slack_cell_force).
-               if (piece%damping > 0) then
+               if (allocated(piece%sections)) then
+                  do j = 1, size(piece%sections)
+                     associate (sec => piece%sections(j), a => piece%sections(j)%first, b => piece%sections(j)%last)
+                        if (sec%damping <= 0) cycle
+                        if (sec%law%strain_slack > -huge(1.0_dp)) then
+                           self%dissipation = self%dissipation + sum(piece%ds(a:b)*slack_dissipation(sec%law, &
+                                              piece%l0(a:b) - 1, piece%l1(a:b) - 1, sec%damping, h, small_strain_step))
+                        else
+                           self%dissipation = self%dissipation + sec%damping*sum(piece%ds(a:b)*(piece%l1(a:b) - &
+                                                                                               piece%l0(a:b))**2)/h
+                        end if
+                     end associate
+                  end do
+               else if (piece%damping > 0) then
                   if (piece%law%strain_slack > -huge(1.0_dp)) then
                      self%dissipation = self%dissipation + sum(piece%ds*slack_dissipation(piece%law, piece%l0 - 1, &
                                                                piece%l1 - 1, piece%damping, h, small_strain_step))
@@ -655,8 +679,13 @@ contains
          x = reshape(self%pieces(1)%r, [2*n])
          allocate (res(2*n))
          call piece%static_system(x, self%t, res, unused, .false.)
-         w_a = 0.5_dp*piece%weight*piece%ds(kb - 1)
-         w_b = 0.5_dp*piece%weight*piece%ds(kb)
+         if (allocated(piece%sections)) then
+            w_a = 0.5_dp*piece%sections(piece%cell_sec(kb - 1))%weight*piece%ds(kb - 1)
+            w_b = 0.5_dp*piece%sections(piece%cell_sec(kb))%weight*piece%ds(kb)
+         else
+            w_a = 0.5_dp*piece%weight*piece%ds(kb - 1)
+            w_b = 0.5_dp*piece%weight*piece%ds(kb)
+         end if
          m_b = bend_moment(piece, kb, piece%th1(kb))
          self%cut_force(:, 1) = piece%force(:, kb - 1) + [0.0_dp, w_a]
          self%cut_force(:, 2) = -piece%force(:, kb) + [0.0_dp, w_b]
@@ -734,6 +763,8 @@ contains
             self%pieces(2)%problem%piece%loads = whole%loads
          end if
       end associate
+      call piece_sections(self%pieces(1)%problem%piece, self%scene)
+      call piece_sections(self%pieces(2)%problem%piece, self%scene)
       self%pieces(1)%r = old(1)%r(:, 1:kb)
       self%pieces(1)%v = old(1)%v(:, 1:kb)
       self%pieces(1)%column = old(1)%column(1:kb)
@@ -791,8 +822,26 @@ contains
       type(rod_run), intent(inout) :: run
       real(dp), intent(in) :: h
       logical, intent(out) :: retry
+      real(dp), allocatable :: tensions(:, :), r1(:, :)
+      integer :: c, j
       associate (piece => run%pieces(1)%problem%piece)
-         call watch_step(run, h, run%pieces(1)%r, reshape(run%pieces(1)%x, [2, piece%n]), piece%ds, piece%law, retry)
+         if (size(run%scene%sections) > 1) then
+            ! A line of segments: each cell against its own segment's MBL.
+            r1 = reshape(run%pieces(1)%x, [2, piece%n])
+            allocate (tensions(piece%n - 1, 3))
+            do c = 1, piece%n - 1
+               tensions(c, 1) = piece%cell_tension(c, norm2(run%pieces(1)%r(:, c + 1) - run%pieces(1)%r(:, c)) &
+                                                      /piece%ds(c) - 1)
+               tensions(c, 2) = piece%cell_tension(c, norm2(r1(:, c + 1) - r1(:, c))/piece%ds(c) - 1)
+               j = section_at(run%scene, 0.5_dp*(piece%s(c) + piece%s(c + 1)))
+               tensions(c, 3) = 0
+               if (run%scene%sections(j)%mbl > 0) tensions(c, 3) = run%watch%mbl/run%scene%sections(j)%mbl
+            end do
+            call watch_step(run, h, run%pieces(1)%r, r1, piece%ds, piece%law, retry, tensions)
+         else
+            call watch_step(run, h, run%pieces(1)%r, reshape(run%pieces(1)%x, [2, piece%n]), piece%ds, piece%law, &
+                            retry)
+         end if
       end associate
       if (retry) run%pieces(1)%work%usable = .false.
    end subroutine planar_watch

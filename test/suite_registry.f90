@@ -132,6 +132,31 @@ contains
       end select
    end function scene_config
 
+   !> The case c as a line of three segments (3, 4 and 3 m of its 10 m): the first with c's
+   !> law, three times as dense and twice as stiff in bending; the second a linear rope of EA
+   !> 2e5 N with damping 100 N s and a larger drag; the third the tanh law on a thinner line.
+   !> Every joint a node of the 21. (A segment that cannot push is left to suite segments:
+   !> the statics of a free end hanging onto the bottom with compression = 'none' fails, with
+   !> or without segments.)
+   function in_segments(c0) result(c)
+      type(case_config), intent(in) :: c0
+      type(case_config) :: c
+      c = c0
+      c%segment_count = 3
+      c%segments(1:3)%length = [3.0_dp, 4.0_dp, 3.0_dp]
+      c%segments(1)%density = 3*c%density
+      c%segments(1)%bending_stiffness = 2*acos(-1.0_dp)*c%young*c%diameter**4/64
+      c%segments(2)%law = 'linear'
+      c%segments(2)%ea = 2.0e5_dp
+      c%segments(2)%damping = 100
+      c%segments(2)%cd_normal = 2.5_dp
+      c%segments(3)%law = 'tanh'
+      c%segments(3)%diameter = 0.8_dp*c%diameter
+      c%given = c%given//' segment_1%length segment_1%density segment_1%bending_stiffness segment_2%length '// &
+                'segment_2%law segment_2%ea segment_2%damping segment_2%cd_normal '// &
+                'segment_3%length segment_3%law segment_3%diameter'
+   end function in_segments
+
    !> The variants of an end kind that change its equations.
    function variants(kind) result(v)
       character(*), intent(in) :: kind
@@ -172,12 +197,22 @@ contains
          vs = variants(trim(kinds(i)))
          do k = 1, size(vs)
             do j = 1, size(laws)
-               do m = 1, 4
+               do m = 1, 5
                   associate (comp => merge('none', 'law ', m == 2), damp => merge(300.0_dp, 0.0_dp, m == 3))
-                     call one_case(scene_config(trim(kinds(i)), trim(vs(k)), trim(laws(j)), trim(comp), damp, m == 4), &
-                                   trim(kinds(i))//' '//trim(vs(k))//', law '//trim(laws(j))//', compression '// &
-                                   trim(comp)//', damping '//str(damp)//merge(', in water', '          ', m == 4), &
-                                   drift, jac, jac_static, error)
+                     if (m == 5) then
+                        ! A line of three segments (the law's, a linear rope that cannot push, a
+                        ! lighter tanh rope), in water on the seabed.
+                        call one_case(in_segments(scene_config(trim(kinds(i)), trim(vs(k)), trim(laws(j)), &
+                                                               'law', 0.0_dp, .true.)), &
+                                      trim(kinds(i))//' '//trim(vs(k))//', law '//trim(laws(j))//', in three '// &
+                                      'segments, in water', drift, jac, jac_static, error)
+                     else
+                        call one_case(scene_config(trim(kinds(i)), trim(vs(k)), trim(laws(j)), trim(comp), damp, &
+                                                   m == 4), &
+                                      trim(kinds(i))//' '//trim(vs(k))//', law '//trim(laws(j))//', compression '// &
+                                      trim(comp)//', damping '//str(damp)//merge(', in water', '          ', m == 4), &
+                                      drift, jac, jac_static, error)
+                     end if
                   end associate
                   if (allocated(error)) return
                   worst_drift = max(worst_drift, drift)
@@ -264,9 +299,9 @@ contains
       start = 0
       do i = 1, len(text) + 1
          if (i > len(text)) then
-            if (start > 0) words = [words, text(start:i - 1)]
+            if (start > 0) words = [character(len=16) :: words, text(start:i - 1)]
          else if (text(i:i) == ' ' .or. text(i:i) == ',') then
-            if (start > 0) words = [words, text(start:i - 1)]
+            if (start > 0) words = [character(len=16) :: words, text(start:i - 1)]
             start = 0
          else if (start == 0) then
             start = i

@@ -102,6 +102,9 @@ contains
       type(error_type), allocatable, intent(out) :: error
       real(dp) :: span0, span1, sag, angle, mid, r0, r1, span2
       integer :: it, n
+      !> The piece's own laws while their compressive branch stands in (uncut_laws): 0 the
+      !> piece's, 1.. its sections'.
+      type(rod_section), allocatable :: own_laws(:)
       !> Whether a solve reached a state with a collapsed cell (refused by check_fold).
       logical :: saw_collapse
       n = problem%piece%n
@@ -158,15 +161,11 @@ contains
          call loads_in_statics(problem%piece%loads, .true., secant_stiffness(problem%piece%law), scene%weight)
          ! First with the law's compressive branch (uncut_law), then with the law itself.
          block
-            class(material_law), allocatable :: own, uncut
             logical :: was_cut
-            call uncut_law(problem%piece%law, uncut, was_cut)
-            call move_alloc(problem%piece%law, own)
-            call move_alloc(uncut, problem%piece%law)
+            call uncut_laws(was_cut)
             call solve_now(error, static_friction_iterations)
             if (allocated(error)) call friction_continuation(error)
-            deallocate (problem%piece%law)
-            call move_alloc(own, problem%piece%law)
+            call own_laws_back()
             if (.not. allocated(error) .and. was_cut) call solve_now(error, static_friction_iterations)
          end block
          if (.not. allocated(error)) call finish()
@@ -177,6 +176,39 @@ contains
       call finish()
 
    contains
+
+      !> The piece's laws (its sections' too) replaced by their compressive branch continued
+      !> (uncut_law) until own_laws_back; cut: whether any was a law that cannot push.
+      subroutine uncut_laws(cut)
+         logical, intent(out) :: cut
+         class(material_law), allocatable :: uncut
+         logical :: was_cut
+         integer :: j, m
+         m = 0
+         if (allocated(problem%piece%sections)) m = size(problem%piece%sections)
+         allocate (own_laws(0:m))
+         call uncut_law(problem%piece%law, uncut, cut)
+         call move_alloc(problem%piece%law, own_laws(0)%law)
+         call move_alloc(uncut, problem%piece%law)
+         do j = 1, m
+            call uncut_law(problem%piece%sections(j)%law, uncut, was_cut)
+            cut = cut .or. was_cut
+            call move_alloc(problem%piece%sections(j)%law, own_laws(j)%law)
+            call move_alloc(uncut, problem%piece%sections(j)%law)
+         end do
+      end subroutine uncut_laws
+
+      !> The piece's own laws back (after uncut_laws).
+      subroutine own_laws_back()
+         integer :: j
+         deallocate (problem%piece%law)
+         call move_alloc(own_laws(0)%law, problem%piece%law)
+         do j = 1, size(own_laws) - 1
+            deallocate (problem%piece%sections(j)%law)
+            call move_alloc(own_laws(j)%law, problem%piece%sections(j)%law)
+         end do
+         deallocate (own_laws)
+      end subroutine own_laws_back
 
       !> When Newton fails from the state without the static friction to the state with it: from
       !> the former again, the friction in steps of its share, each from the last state found, the
@@ -341,24 +373,11 @@ contains
       !> the way), and Newton for the rope itself starts from that state.
       subroutine relax_rope(err)
          type(error_type), allocatable, intent(out) :: err
-         class(material_law), allocatable :: own
          logical :: rope
-         rope = .false.
-         select type (law => problem%piece%law)
-         type is (tension_only_law)
-            rope = .true.
-         end select
-         if (rope) then
-            call move_alloc(problem%piece%law, own)
-            select type (law => own)
-            type is (tension_only_law)
-               allocate (problem%piece%law, source=law%base)
-            end select
-         end if
+         call uncut_laws(rope)
          call relax(err)
-         if (.not. allocated(own)) return
-         deallocate (problem%piece%law)
-         call move_alloc(own, problem%piece%law)
+         call own_laws_back()
+         if (.not. rope) return
          if (allocated(err)) return
          call solve_now(err)
          if (.not. allocated(err)) return

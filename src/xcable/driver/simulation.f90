@@ -23,7 +23,7 @@ module xcable_driver_simulation
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input
    use xcable_core_strings, only: str, real_text, quantity
    use xcable_io_config, only: case_config, end_config
-   use xcable_scene_scene, only: scene_type, scene_from_config, set_break
+   use xcable_scene_scene, only: scene_type, scene_from_config, set_break, section_at
    use xcable_driver_rod_run, only: rod_run, rod_run_options, cable_model, planar_model, pause_none, pause_termination, &
                                     tension_watch, rupture_tolerance
    use xcable_box_run, only: box_run
@@ -292,8 +292,11 @@ contains
       real(dp) :: static_max
       integer :: kb, n
       static_max = max(self%rod%static_max_tension, self%rod%info%max_tension)
+      if (size(scene%sections) > 1) then
+         call segment_static_check(error)
+         if (allocated(error)) return
       ! Within the search's tolerance of mbl counts as reaching it (rod_run, watch_step).
-      if (static_max >= (1 - rupture_tolerance)*scene%mbl) then
+      else if (static_max >= (1 - rupture_tolerance)*scene%mbl) then
          call fatal_error(error, config%source//': &rupture: mbl = '//real_text(scene%mbl)//': at or below the '// &
                           'largest static tension, '//quantity(static_max, 'N')//': the line would part in statics; '// &
                           'give an mbl above it', stat_input)
@@ -328,6 +331,31 @@ contains
       call prepare_rod(self, config, scene, error)
       if (allocated(error)) return
       self%rod%rupture = found
+
+   contains
+
+      !> A line of segments: each cell's static tension against its own segment's MBL.
+      subroutine segment_static_check(err)
+         type(error_type), allocatable, intent(out) :: err
+         integer :: c, j
+         real(dp) :: t
+         associate (r => self%rod%static%r, s => self%rod%s)
+            do c = 1, size(s) - 1
+               j = section_at(scene, 0.5_dp*(s(c) + s(c + 1)))
+               associate (sec => scene%sections(j))
+                  if (sec%mbl <= 0) cycle
+                  t = sec%law%tension(norm2(r(:, c + 1) - r(:, c))/(s(c + 1) - s(c)) - 1)
+                  if (t >= (1 - rupture_tolerance)*sec%mbl) then
+                     call fatal_error(err, config%source//': &segment_'//str(j)//': mbl = '//real_text(sec%mbl)// &
+                                      ': at or below the segment''s static tension, '//quantity(t, 'N')//' at s = '// &
+                                      quantity(0.5_dp*(s(c) + s(c + 1)), 'm')//': the line would part in statics; '// &
+                                      'give an mbl above it', stat_input)
+                     return
+                  end if
+               end associate
+            end do
+         end associate
+      end subroutine segment_static_check
    end subroutine find_break
 
    !> The break node of a break by tension: of the two nodes of the first cell to reach the MBL

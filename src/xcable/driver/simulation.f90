@@ -504,7 +504,7 @@ contains
    !> What the rod model computes for a scene.
    function terms_of(scene) result(terms)
       type(scene_type), intent(in) :: scene
-      character(:), allocatable :: terms
+      character(:), allocatable :: terms, name
       integer :: k
       terms = 'rod: strain bending'
       if (scene%gravity > 0) terms = terms//' gravity'
@@ -517,13 +517,23 @@ contains
                                                     scene%end_a%kind() == scene%end_b%kind())) &
          terms = terms//' end_'//scene%end_b%kind()
       if (scene%breaks) terms = terms//' break'
-      if (index(scene%law%name(), 'without compression') > 0) terms = terms//' tension_only'
-      if (scene%law%name() == 'table' .or. index(scene%law%name(), 'table ') == 1) terms = terms//' table_law'
+      ! (On a line of segments, each term once: that of any segment.)
+      do k = 1, size(scene%sections)
+         name = scene%sections(k)%law%name()
+         if (index(name, 'without compression') > 0) call add('tension_only')
+         if (name == 'table' .or. index(name, 'table ') == 1) call add('table_law')
+      end do
+      if (size(scene%sections) > 1) terms = terms//' segments'
       if (allocated(scene%loads)) then
          do k = 1, size(scene%loads)
-            terms = terms//' '//scene%loads(k)%load%name()
+            call add(scene%loads(k)%load%name())
          end do
       end if
+   contains
+      subroutine add(term)
+         character(*), intent(in) :: term
+         if (index(terms//' ', ' '//term//' ') == 0) terms = terms//' '//term
+      end subroutine add
    end function terms_of
 
    !> The dynamics.

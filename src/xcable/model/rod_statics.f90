@@ -801,7 +801,9 @@ contains
       integer :: i
       text = ''
       do i = 1, size(loads)
-         if (i > 1) text = text//', '
+         ! (A load on several segments once.)
+         if (index(', '//text//', ', ', '//loads(i)%load%name()//', ') > 0) cycle
+         if (len(text) > 0) text = text//', '
          text = text//loads(i)%load%name()
       end do
    end function load_names

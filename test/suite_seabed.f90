@@ -10,6 +10,8 @@ module suite_seabed
    use xcable_core_strings, only: str
    use xcable_loads_seabed, only: seabed_load
    use xcable_driver_simulation, only: simulation
+   use xcable_model_rod, only: rod_kl, rod_ku
+   use xcable_fdcheck, only: check_jacobian
    use xcable_fixtures, only: run_text, column_text
    use xcable_driver_records, only: run_observer, static_info
    use, intrinsic :: iso_fortran_env, only: output_unit
@@ -41,7 +43,11 @@ contains
                new_unittest('oc3_hywind_mooring_stiffness_published', test_oc3_hywind), &
                new_unittest('ledger_of_a_line_dropped_on_the_bottom', test_ledger), &
                new_unittest('line_towed_along_the_bottom', test_towed), &
-               new_unittest('line_too_long_to_be_taut_explained', test_too_long)]
+               new_unittest('line_too_long_to_be_taut_explained', test_too_long), &
+               new_unittest('bathymetry_of_a_plane_is_the_plane', test_bathymetry_plane), &
+               new_unittest('bathymetry_across_the_line_3d', test_bathymetry_3d), &
+               new_unittest('bathymetry_with_a_bend_ledger_and_derivatives', test_bathymetry_bend), &
+               new_unittest('bathymetry_bad_input_refused', test_bathymetry_bad)]
    end subroutine collect_seabed
 
    subroutine keep_static(self, info, error)
@@ -671,4 +677,212 @@ contains
       call run_text(path, common//"&end_b kind = 'fixed', x = 230.0, z = -10.0 /", sim, keep, failed)
       call check(error, .not. allocated(failed), 'the case itself fails')
    end subroutine test_too_long
+
+   !> The chain of input/chain_mooring_heave.nml (its seabed 60 m down rising 2 % along x,
+   !> friction) heaved for 6 s, with the plane given as &seabed depth and slope_x, and as a
+   !> bathymetry file of that plane (a 4 x 2 grid: its facets are the plane). The static
+   !> tensions agree to the bit, the end tensions over the run to 6.2e-10 of the largest (the
+   !> facet's plane is the same plane to round-off, which the stiff contact and the friction
+   !> regularised over 0.01 m/s amplify).
+   subroutine test_bathymetry_plane(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: plane, grid
+      type(static_keeper) :: obs_plane, obs_grid
+      real(dp) :: dt_static, dt_run
+      integer :: n
+      call write_grid('build/test_bathymetry_plane.dat', [-100.0_dp, 0.0_dp, 120.0_dp, 300.0_dp], &
+                      [-50.0_dp, 50.0_dp], reshape([62.0_dp, 60.0_dp, 57.6_dp, 54.0_dp, &
+                                                    62.0_dp, 60.0_dp, 57.6_dp, 54.0_dp], [4, 2]))
+      call run_text(path, chain_text("depth = 60.0, slope_x = 0.02"), plane, obs_plane, error)
+      if (allocated(error)) return
+      call run_text(path, chain_text("bathymetry_file = 'build/test_bathymetry_plane.dat'"), grid, obs_grid, error)
+      if (allocated(error)) return
+      n = plane%rod%history%n
+      call check(error, grid%rod%history%n == n, 'the runs took different steps')
+      if (allocated(error)) return
+      dt_static = maxval(abs(obs_grid%tension - obs_plane%tension))/maxval(obs_plane%tension)
+      dt_run = maxval(abs(grid%rod%history%ends(5, 1:2, 0:n) - plane%rod%history%ends(5, 1:2, 0:n)))/ &
+               maxval(plane%rod%history%ends(5, 1:2, 0:n))
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'the plane as a bathymetry: static tensions', dt_static, &
+         ', end tensions over 6 s', dt_run, ' of the largest'
+      call check(error, dt_static < 1.0e-12_dp .and. dt_run < 3.0e-9_dp, 'the bathymetry of a plane is not the '// &
+                 'plane: '//str(dt_static)//' (statics), '//str(dt_run)//' (run)')
+   end subroutine test_bathymetry_plane
+
+   !> The 3-D model: a 33 m line between two anchors on a bottom that slopes across it (along y,
+   !> dz/dy = 0.1), lying partly on it, at y = 5 m. As a bathymetry (a 2 x 3 grid) and as
+   !> &seabed slope_y: the same static state.
+   subroutine test_bathymetry_3d(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: plane, grid
+      type(static_keeper) :: obs_plane, obs_grid
+      real(dp) :: dx
+      character(len=*), parameter :: head = "&cable length = 33, diameter = 0.05, density = 3000, "// &
+                                            "bending_stiffness = 10 /"//new_line('a')// &
+                                            "&material law = 'linear', ea = 1e6 /"//new_line('a')// &
+                                            "&fluid density = 1025, surface_z = 10 /"//new_line('a')
+      character(len=*), parameter :: tail = "&end_a kind = 'fixed', x = 0, y = 5, z = -9 /"//new_line('a')// &
+                                            "&end_b kind = 'fixed', x = 30, y = 5, z = -4 /"//new_line('a')// &
+                                            "&numerics model = '3d', nodes = 81, dt = 1e-3, t_end = 1e-3 /"// &
+                                            new_line('a')//"&output interval = 0, quiet = .true. /"
+      call write_grid('build/test_bathymetry_3d.dat', [-10.0_dp, 50.0_dp], [-10.0_dp, 0.0_dp, 20.0_dp], &
+                      reshape([11.0_dp, 11.0_dp, 10.0_dp, 10.0_dp, 8.0_dp, 8.0_dp], [2, 3]))
+      call run_text(path, head//"&seabed depth = 10, slope_y = 0.1, stiffness = 1e8 /"//new_line('a')//tail, plane, &
+                    obs_plane, error)
+      if (allocated(error)) return
+      call run_text(path, head//"&seabed bathymetry_file = 'build/test_bathymetry_3d.dat', stiffness = 1e8 /"// &
+                    new_line('a')//tail, grid, obs_grid, error)
+      if (allocated(error)) return
+      dx = max(maxval(abs(obs_grid%x - obs_plane%x)), maxval(abs(obs_grid%z - obs_plane%z)))
+      write (output_unit, '(4x,a,es9.2,a,f7.3,a)') 'a bottom sloping across the line, 3-D: bathymetry against '// &
+         'the plane', dx, ' m; grounded', grounded(plane), ' m'
+      call check(error, grounded(plane) > 5, 'the line does not lie on the bottom')
+      if (allocated(error)) return
+      call check(error, dx < 1.0e-9_dp, 'the bathymetry across the line is not the plane: '//str(dx)//' m')
+   end subroutine test_bathymetry_3d
+
+   !> A bottom with a bend: flat 20 m down up to x = 15 m, then rising at 1 in 5 (a 2-point grid
+   !> in y). A 30 m line held at end a 2 m above the flat, pulled level by 2000 N at end b (the
+   !> statics: the slope lifts its far part), then let go (the pull ramped to zero over 0.2 s):
+   !> it falls onto the flat and the slope and slides down over the bend, with friction. The
+   !> ledger closes, and the step's analytic Jacobian at the end agrees with central
+   !> differences (a state whose cells lie on the facets; as in suite registry, the contact's
+   !> damping a tenth of the default, its slope jumping where a cell's end touches, and the slip
+   !> regularised over 0.5 m/s, wide against the differences' steps).
+   subroutine test_bathymetry_bend(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      real(dp) :: drift, worst, lifted
+      real(dp), allocatable :: x(:)
+      integer :: n, k, np
+      call write_grid('build/test_bathymetry_bend.dat', [0.0_dp, 15.0_dp, 60.0_dp], [-10.0_dp, 10.0_dp], &
+                      reshape([20.0_dp, 20.0_dp, 11.0_dp, 20.0_dp, 20.0_dp, 11.0_dp], [3, 2]))
+      call run_text(path, "&cable length = 30, diameter = 0.05, density = 2000, bending_stiffness = 10 /"// &
+                    new_line('a')//"&material law = 'linear', ea = 1e6 /"//new_line('a')// &
+                    "&seabed bathymetry_file = 'build/test_bathymetry_bend.dat', stiffness = 1e7, damping = 3e4, "// &
+                    "mu_axial = 0.6, mu_lateral = 0.6, slip_velocity = 0.5 /"//new_line('a')// &
+                    "&end_a kind = 'fixed', x = 0, z = -18 /"//new_line('a')// &
+                    "&end_b kind = 'force', force_x = 2000, force_z = 0, history = 'ramp', ramp_time = 0.2 /"// &
+                    new_line('a')//"&numerics nodes = 61, dt = 0.002, t_end = 2, newton_tol = 1e-12 /"// &
+                    new_line('a')//"&output interval = 0, quiet = .true., energy = .true. /", sim, obs, error)
+      if (allocated(error)) return
+      ! At rest the far end lies on the slope, lifted above z = -18.
+      lifted = maxval(obs%z) + 18
+      associate (hist => sim%rod%history)
+         n = hist%n
+         drift = maxval(abs(hist%energy(7, 0:n) - hist%energy(7, 0)))/maxval(abs(hist%energy(1:6, 0:n)))
+      end associate
+      ! The step from the final state, at a perturbed guess.
+      associate (run => sim%rod%pieces(1))
+         np = size(run%v, 2)
+         run%problem%t0 = sim%rod%t
+         run%problem%dt = 0.002_dp
+         run%problem%theta = 0.5_dp
+         call run%problem%piece%prepare_step(run%r, run%v)
+         x = reshape(run%r + 0.002_dp*run%v, [2*np])
+         do k = 1, size(x)
+            x(k) = x(k) + 1.0e-3_dp*sin(0.7_dp*k)
+         end do
+         call check_jacobian(run%problem, x, rod_kl, rod_ku, spread(1.0e-6_dp, 1, 2*np), 1.0e-6_dp, worst, error)
+      end associate
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,f7.3,a,es9.2,a,es9.2,a,f7.3,a)') 'a bottom with a bend: the slope lifts the line by', &
+         lifted, ' m at rest; ledger drift', drift, ', Jacobian', worst, ' of the row scale; grounded', &
+         grounded(sim), ' m at the end'
+      call check(error, lifted > 0.5_dp, 'the slope does not carry the line at rest: '//str(lifted)//' m')
+      if (allocated(error)) return
+      call check(error, grounded(sim) > 20, 'the line did not fall onto the bottom')
+      if (allocated(error)) return
+      call check(error, drift < 1.0e-13_dp, 'the ledger drifts by '//str(drift))
+   end subroutine test_bathymetry_bend
+
+   !> The grounded length at the end of a run, m.
+   real(dp) function grounded(sim)
+      type(simulation), intent(in) :: sim
+      integer :: k
+      grounded = -1
+      do k = 1, size(sim%rod%summary%measure_names)
+         if (sim%rod%summary%measure_names(k) == 'grounded_length') grounded = sim%rod%history%measures(k, &
+                                                                                                  sim%rod%history%n)
+      end do
+   end function grounded
+
+   !> A bathymetry file that is missing, out of order, short of a row, or given with the
+   !> plane's depth; an anchor below the bathymetry: each refused with its reason.
+   subroutine test_bathymetry_bad(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(static_keeper) :: obs
+      character(len=64) :: files(4)
+      character(len=80) :: expect(5)
+      integer :: i
+      call write_grid('build/test_bathymetry_bad1.dat', [0.0_dp, 15.0_dp, 10.0_dp], [-10.0_dp, 10.0_dp], &
+                      reshape([20.0_dp, 20.0_dp, 11.0_dp, 20.0_dp, 20.0_dp, 11.0_dp], [3, 2]))
+      call write_grid('build/test_bathymetry_bad2.dat', [0.0_dp, 15.0_dp, 60.0_dp], [-10.0_dp, 10.0_dp], &
+                      reshape([20.0_dp, 20.0_dp, 11.0_dp, 20.0_dp, 20.0_dp, 11.0_dp], [3, 2]), short=.true.)
+      files = [character(len=64) :: 'build/no_such_bathymetry.dat', 'build/test_bathymetry_bad1.dat', &
+               'build/test_bathymetry_bad2.dat', 'build/test_bathymetry_bend.dat']
+      expect = [character(len=80) :: 'no such file', 'the x lines must increase strictly', &
+                'expected a y line and 3 depths (row 2 of 2)', 'a bathymetry replaces the plane', &
+                'the fixed end is below the seabed (z = -20']
+      do i = 1, 5
+         block
+            character(:), allocatable :: seabed
+            seabed = "&seabed bathymetry_file = '"//trim(files(min(i, 4)))//"'"
+            if (i == 4) seabed = seabed//", depth = 20"
+            call run_text(path, "&cable length = 40 /"//new_line('a')//seabed//" /"//new_line('a')// &
+                          "&end_a kind = 'fixed', x = 0, z = "//merge('-21', '-19', i == 5)//" /"//new_line('a')// &
+                          "&end_b kind = 'fixed', x = 32, z = -2 /"//new_line('a')// &
+                          "&output interval = 0, quiet = .true. /", sim, obs, error)
+         end block
+         if (.not. allocated(error)) then
+            call check(error, .false., 'case '//str(i)//' was not refused')
+            return
+         end if
+         write (output_unit, '(4x,a)') trim(error%message)
+         if (index(error%message, trim(expect(i))) == 0) then
+            error%message = 'case '//str(i)//': not the expected reason "'//trim(expect(i))//'": '//error%message
+            return
+         end if
+         deallocate (error)
+      end do
+   end subroutine test_bathymetry_bad
+
+   !> The chain of input/chain_mooring_heave.nml with the given &seabed bottom, 6 s of its heave.
+   function chain_text(bottom) result(text)
+      character(*), intent(in) :: bottom
+      character(:), allocatable :: text
+      text = "&cable length = 250.0, diameter = 0.13688, density = 7850.0, bending_stiffness = 1.0 /"//new_line('a')// &
+             "&material law = 'linear', ea = 4.9446e8, compression = 'none' /"//new_line('a')// &
+             "&fluid density = 1025.0, cd_normal = 1.333, cd_tangential = 0.64, ca_normal = 1.0 /"//new_line('a')// &
+             "&seabed "//bottom//", mu_axial = 0.7, mu_lateral = 1.0 /"//new_line('a')// &
+             "&end_a kind = 'fixed', x = 0.0, z = -60.0 /"//new_line('a')// &
+             "&end_b kind = 'motion', x = 230.0, z = -10.0, motion = 'harmonic', amplitude = 3.0, period = 12.0, "// &
+             "direction_x = 0.0, direction_z = 1.0, ramp_time = 4.0 /"//new_line('a')// &
+             "&numerics nodes = 101, courant = 4.0, t_end = 6.0 /"//new_line('a')// &
+             "&output interval = 0, quiet = .true. /"
+   end function chain_text
+
+   !> A bathymetry file in MoorDyn's format: x lines gx, y lines gy, depths d(x, y) (m, positive
+   !> down); short: the last row left out.
+   subroutine write_grid(file, gx, gy, d, short)
+      character(*), intent(in) :: file
+      real(dp), intent(in) :: gx(:), gy(:), d(:, :)
+      logical, intent(in), optional :: short
+      integer :: unit, j, rows
+      rows = size(gy)
+      if (present(short)) then
+         if (short) rows = rows - 1
+      end if
+      open (newunit=unit, file=file, status='replace', action='write')
+      write (unit, '(a)') '----- MoorDyn Bathymetry Input File ----'
+      write (unit, '(a,i0)') 'nGridX ', size(gx)
+      write (unit, '(a,i0)') 'nGridY ', size(gy)
+      write (unit, '(8x,*(1x,es24.16))') gx
+      do j = 1, rows
+         write (unit, '(*(1x,es24.16))') gy(j), d(:, j)
+      end do
+      close (unit)
+   end subroutine write_grid
 end module suite_seabed

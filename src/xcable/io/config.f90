@@ -6,6 +6,7 @@
 module xcable_io_config
    use xcable_core_kinds, only: dp
    use xcable_material_law, only: paper_tanh_coefficients
+   use xcable_numerics_facets, only: facet_at
    implicit none
    private
    public :: case_config, end_config, segment_config, max_table_points, max_segments
@@ -133,6 +134,11 @@ module xcable_io_config
       !> &seabed static_friction: the statics' friction along the bottom, fully mobilised towards
       !> end a or end b (the anchor), or 'none'.
       character(len=16) :: static_friction = 'none'
+      !> &seabed bathymetry_file: a grid of depths (MoorDyn's bathymetry file) in place of the plane
+      !> ('' : none); read into bathymetry_x, bathymetry_y (grid lines, m) and bathymetry_depth
+      !> (depths below z = 0 at the grid points, m; (x, y)).
+      character(len=512) :: bathymetry_file = ''
+      real(dp), allocatable :: bathymetry_x(:), bathymetry_y(:), bathymetry_depth(:, :)
       ! &segment_1 ... &segment_8
       !> Number of segments given (0: the line is one segment, &cable and &material).
       integer :: segment_count = 0
@@ -218,6 +224,10 @@ module xcable_io_config
       procedure :: is_planar
       !> The model that runs: '2d' or '3d'.
       procedure :: model_to_run
+      !> Whether the case has a seabed (&seabed depth > 0 or a bathymetry).
+      procedure :: has_seabed
+      !> Height of the seabed under a horizontal point, m.
+      procedure :: seabed_z
       !> Number of segments of the line (1 without &segment_ groups).
       procedure :: segments_of_line
       !> The case seen by one segment: its values in &cable, &material and &fluid.
@@ -265,6 +275,28 @@ contains
          model = merge('2d', '3d', self%is_planar())
       end select
    end function model_to_run
+
+   !> Whether the case has a seabed: &seabed depth > 0, or a bathymetry read from its file.
+   pure logical function has_seabed(self)
+      !> The case.
+      class(case_config), intent(in) :: self
+      has_seabed = self%seabed_depth > 0 .or. allocated(self%bathymetry_depth)
+   end function has_seabed
+
+   !> Height of the seabed under the horizontal point (x, y), m: the plane of &seabed depth,
+   !> slope_x and slope_y, or the bathymetry's facets.
+   pure real(dp) function seabed_z(self, x, y)
+      !> The case.
+      class(case_config), intent(in) :: self
+      !> The point, m.
+      real(dp), intent(in) :: x, y
+      real(dp) :: sx, sy
+      if (allocated(self%bathymetry_depth)) then
+         call facet_at(self%bathymetry_x, self%bathymetry_y, -self%bathymetry_depth, x, y, seabed_z, sx, sy)
+      else
+         seabed_z = -self%seabed_depth + self%seabed_slope_x*x + self%seabed_slope_y*y
+      end if
+   end function seabed_z
 
    !> Number of segments of the line: segment_count, or 1 without &segment_ groups.
    pure integer function segments_of_line(self)

@@ -277,14 +277,18 @@ contains
       character(len=*), intent(inout) :: msg
       real(dp) :: depth, slope_x, slope_y, stiffness, damping, mu_axial, mu_lateral, slip_velocity
       character(len=16) :: static_friction
-      namelist /seabed/ depth, slope_x, slope_y, stiffness, damping, mu_axial, mu_lateral, slip_velocity, static_friction
+      character(len=512) :: bathymetry_file
+      namelist /seabed/ depth, slope_x, slope_y, stiffness, damping, mu_axial, mu_lateral, slip_velocity, &
+         static_friction, bathymetry_file
       depth = c%seabed_depth; slope_x = c%seabed_slope_x; slope_y = c%seabed_slope_y
       stiffness = c%seabed_stiffness; damping = c%seabed_damping; mu_axial = c%mu_axial
       mu_lateral = c%mu_lateral; slip_velocity = c%slip_velocity; static_friction = c%static_friction
+      bathymetry_file = c%bathymetry_file
       read (unit, nml=seabed, iostat=ios, iomsg=msg)
       if (ios /= 0) return
       c%seabed_depth = depth; c%seabed_slope_x = slope_x; c%seabed_slope_y = slope_y
       c%seabed_stiffness = stiffness; c%seabed_damping = damping; c%mu_axial = mu_axial
       c%mu_lateral = mu_lateral; c%slip_velocity = slip_velocity; c%static_friction = static_friction
+      c%bathymetry_file = bathymetry_file
    end subroutine read_seabed
 end module xcable_io_input

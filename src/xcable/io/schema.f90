@@ -189,6 +189,11 @@ contains
       call add(t, 'seabed', 'slip_velocity', 'real', 'm/s', '0.01', &
                'slip speed below which friction grows with the slip instead of being full: mu N v / sqrt(v^2 + '// &
                'slip_velocity^2)', 0.0_dp, 1.0e3_dp, lower_open=.true.)
+      call add(t, 'seabed', 'bathymetry_file', 'string', '-', "''", &
+               "a grid of depths in MoorDyn's bathymetry format (a title line, nGridX n, nGridY m, the n x "// &
+               'lines, then m lines of y and n depths, m below z = 0) in place of the plane of depth, slope_x and '// &
+               'slope_y: the bottom is made of flat triangles between the grid points, flat beyond the grid', &
+               length=512)
       call add(t, 'seabed', 'static_friction', 'string', '-', "'none'", &
                "friction in the statics: 'none', or 'end_a' / 'end_b': mu_axial times the contact force along "// &
                "the grounded line towards that end (the anchor), as if the line had been laid from the anchor "// &

@@ -34,6 +34,7 @@ module xcable_loads_seabed
    use xcable_io_config, only: case_config
    use xcable_loads_load, only: cable_load
    use xcable_numerics_vector3, only: outer
+   use xcable_numerics_facets, only: facet_at
    implicit none
    private
    public :: seabed_load, seabed_from_case
@@ -52,6 +53,10 @@ module xcable_loads_seabed
    type, extends(cable_load) :: seabed_load
       !> Depth under z = 0 at the origin (m) and slopes dz/dx, dz/dy.
       real(dp) :: depth = 0, slope_x = 0, slope_y = 0
+      !> A bathymetry (in place of the plane): grid lines along x and y (m) and the bottom's
+      !> height z on them (m), as flat facets (numerics/facets.f90); a cell takes the facet
+      !> under its middle. Not allocated: the plane.
+      real(dp), allocatable :: grid_x(:), grid_y(:), grid_z(:, :)
       !> Contact stiffness (N/m^2) and damping (N s/m^2) per unstretched length.
       real(dp) :: stiffness = 0, damping = 0
       !> Friction coefficients along and across the line; slip speed of the regularisation, m/s.
@@ -85,7 +90,7 @@ module xcable_loads_seabed
 
 contains
 
-   !> The seabed of a case (&seabed depth > 0), none otherwise.
+   !> The seabed of a case (&seabed depth > 0 or a bathymetry_file), none otherwise.
    subroutine seabed_from_case(config, area, load)
       !> Validated case.
       type(case_config), intent(in) :: config
@@ -93,7 +98,7 @@ contains
       real(dp), intent(in) :: area
       !> The seabed, or unallocated.
       class(cable_load), allocatable, intent(out) :: load
-      if (config%seabed_depth <= 0) return
+      if (.not. config%has_seabed()) return
       allocate (load, source=seabed_load(depth=config%seabed_depth, slope_x=config%seabed_slope_x, &
                                          slope_y=config%seabed_slope_y, &
                                          stiffness=config%seabed_stiffness*config%diameter, &
@@ -101,6 +106,11 @@ contains
                                          mu_lateral=config%mu_lateral, slip_velocity=config%slip_velocity))
       select type (load)
       type is (seabed_load)
+         if (allocated(config%bathymetry_x)) then
+            load%grid_x = config%bathymetry_x
+            load%grid_y = config%bathymetry_y
+            load%grid_z = -config%bathymetry_depth
+         end if
          if (trim(config%static_friction) == 'end_a') load%static_towards = -1
          if (trim(config%static_friction) == 'end_b') load%static_towards = 1
       end select
@@ -139,25 +149,51 @@ contains
    pure real(dp) function seabed_bottom(self, p)
       class(seabed_load), intent(in) :: self
       real(dp), intent(in) :: p(:)
-      seabed_bottom = -self%depth + self%slope_x*p(1)
-      if (size(p) >= 2) seabed_bottom = seabed_bottom + self%slope_y*p(2)
+      real(dp) :: depth, sx, sy
+      call local_plane(self, [p, 0.0_dp], depth, sx, sy)
+      seabed_bottom = -depth + sx*p(1)
+      if (size(p) >= 2) seabed_bottom = seabed_bottom + sy*p(2)
    end function seabed_bottom
 
+   !> The plane of the bottom at the horizontal point of x (x, z or x, y, z): the seabed's own,
+   !> or the bathymetry's facet under it, as z = -depth + sx x + sy y.
+   pure subroutine local_plane(self, x, depth, sx, sy)
+      class(seabed_load), intent(in) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(out) :: depth, sx, sy
+      real(dp) :: px, py, z0
+      if (.not. allocated(self%grid_z)) then
+         depth = self%depth
+         sx = self%slope_x
+         sy = self%slope_y
+         return
+      end if
+      px = x(1)
+      py = 0
+      if (size(x) >= 3) py = x(2)
+      call facet_at(self%grid_x, self%grid_y, self%grid_z, px, py, z0, sx, sy)
+      if (size(x) < 3) sy = 0
+      depth = -(z0 - sx*px - sy*py)
+   end subroutine local_plane
+
    !> The plane's unit normal (up) in dimension nd (2: x, z; 3: x, y, z) and the depth of the
-   !> origin's projection: d(r) = offset - n.r.
-   pure subroutine plane(self, nd, n, offset)
+   !> origin's projection: d(r) = offset - n.r; at the point x (a cell's middle: a bathymetry's
+   !> facet under it).
+   pure subroutine plane(self, nd, n, offset, x)
       class(seabed_load), intent(in) :: self
       integer, intent(in) :: nd
       real(dp), intent(out) :: n(nd), offset
-      real(dp) :: nu
+      real(dp), intent(in) :: x(nd)
+      real(dp) :: nu, depth, sx, sy
+      call local_plane(self, x, depth, sx, sy)
       if (nd == 2) then
-         nu = sqrt(1 + self%slope_x**2)
-         n = [-self%slope_x, 1.0_dp]/nu
+         nu = sqrt(1 + sx**2)
+         n = [-sx, 1.0_dp]/nu
       else
-         nu = sqrt(1 + self%slope_x**2 + self%slope_y**2)
-         n = [-self%slope_x, -self%slope_y, 1.0_dp]/nu
+         nu = sqrt(1 + sx**2 + sy**2)
+         n = [-sx, -sy, 1.0_dp]/nu
       end if
-      offset = -self%depth/nu
+      offset = -depth/nu
    end subroutine plane
 
    !> Mean penetration P and contact fraction phi of a straight cell with its ends' penetrations
@@ -208,7 +244,7 @@ contains
       integer :: i, j
       dg_dw = 0
       dg_da = 0
-      call plane(self, size(e), n, offset)
+      call plane(self, size(e), n, offset, x)
       dm = offset - dot_product(n, x)
       delta = 0.5_dp*ds*dot_product(n, e)
       ad = abs(delta)
@@ -269,7 +305,7 @@ contains
       df_dx = 0
       df_de = 0
       df_dw = 0
-      call plane(self, nd, n, offset)
+      call plane(self, nd, n, offset, x)
       dm = offset - dot_product(n, x)
       delta = 0.5_dp*ds*dot_product(n, e)
       call penetration(dm, delta, p, dp_dm, dp_dd, phi, dphi_dm, dphi_dd)
@@ -370,7 +406,7 @@ contains
       class(seabed_load), intent(in) :: self
       real(dp), intent(in) :: r1(:), r2(:), ds
       real(dp) :: n(size(r1)), offset, p, d1, d2, phi, d3, d4
-      call plane(self, size(r1), n, offset)
+      call plane(self, size(r1), n, offset, 0.5_dp*(r1 + r2))
       call penetration(offset - 0.5_dp*dot_product(n, r1 + r2), 0.5_dp*dot_product(n, r2 - r1), p, d1, d2, phi, d3, d4)
       seabed_cell_measure = ds*phi
    end function seabed_cell_measure

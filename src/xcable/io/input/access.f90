@@ -88,6 +88,7 @@ contains
       case ('seabed%mu_lateral'); call move(c%mu_lateral, v, store)
       case ('seabed%slip_velocity'); call move(c%slip_velocity, v, store)
       case ('seabed%static_friction'); call move(c%static_friction, v, store)
+      case ('seabed%bathymetry_file'); call move(c%bathymetry_file, v, store)
       case ('static%tension'); call move(c%tension, v, store)
       case ('rupture%enabled'); call move(c%break_enabled, v, store)
       case ('rupture%s_break'); call move(c%s_break, v, store)

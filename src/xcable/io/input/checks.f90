@@ -11,6 +11,7 @@ module xcable_io_input_checks
    use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word, next_item, shown
+   use xcable_io_input_bathymetry, only: load_bathymetry
    use xcable_io_input_tables, only: check_column, check_material_table, load_material_table, load_table, &
                                      time_order
    use xcable_io_input_echo, only: value_text
@@ -69,6 +70,8 @@ contains
       call load_table(c, 'end_b', e, error)
       if (allocated(error)) return
       c%end_b = e
+      call load_bathymetry(c, error)
+      if (allocated(error)) return
       ! The law first: its table file is read only for law = 'table' (checked after the ranges).
       call check_entry(c, t(find_entry(t, 'material', 'law')), error)
       if (allocated(error)) return
@@ -304,12 +307,20 @@ contains
       end if
 
       ! The seabed: held ends and anchors above it, the water's surface above it where the line is.
-      if (c%seabed_depth > 0) then
+      if (c%has_seabed()) then
          call above_seabed(c%end_a, 'end_a', error)
          if (allocated(error)) return
          call above_seabed(c%end_b, 'end_b', error)
          if (allocated(error)) return
-         if (c%fluid_density > 0 .and. c%surface_z < -c%seabed_depth) then
+         if (allocated(c%bathymetry_depth)) then
+            if (c%fluid_density > 0 .and. c%surface_z < -maxval(c%bathymetry_depth)) then
+               call fatal_error(error, c%source//': &fluid: surface_z = '//real_text(c%surface_z)//': below the '// &
+                                'deepest point of the bathymetry (z = '//real_text(-maxval(c%bathymetry_depth))// &
+                                ', &seabed bathymetry_file = '''//trim(c%bathymetry_file)//'''); the water''s level '// &
+                                'must lie above the bottom', stat_input)
+               return
+            end if
+         else if (c%fluid_density > 0 .and. c%surface_z < -c%seabed_depth) then
             call fatal_error(error, c%source//': &fluid: surface_z = '//real_text(c%surface_z)//': below the seabed '// &
                              '(z = '//real_text(-c%seabed_depth)//' at x = y = 0, &seabed depth = '// &
                              real_text(c%seabed_depth)//'); the water''s level must lie above the bottom', stat_input)
@@ -317,7 +328,7 @@ contains
          end if
       end if
       ! Friction in the statics needs a bottom and a friction coefficient along the line.
-      if (trim(c%static_friction) /= 'none' .and. (c%seabed_depth <= 0 .or. c%mu_axial <= 0)) then
+      if (trim(c%static_friction) /= 'none' .and. (.not. c%has_seabed() .or. c%mu_axial <= 0)) then
          call fatal_error(error, c%source//": &seabed: static_friction = '"//trim(c%static_friction)//"': friction "// &
                           'in the statics needs a seabed (depth > 0, now '//real_text(c%seabed_depth)// &
                           ') and a friction coefficient along the line (mu_axial > 0, now '//real_text(c%mu_axial)// &
@@ -399,10 +410,17 @@ contains
          real(dp) :: bottom
          ! The kinds placed at a point x, y, z (a held end's position, a spring's anchor).
          if (.not. is_word(e%kind, kinds_using('z'))) return
-         bottom = -c%seabed_depth + c%seabed_slope_x*e%x + c%seabed_slope_y*e%y
-         if (e%z < bottom - 1.0e-3_dp) call fatal_error(error, c%source//': &'//group//': z = '//real_text(e%z)// &
-            ': the '//trim(e%kind)//' end is below the seabed (z = '//real_text(bottom)//' there, &seabed depth = '// &
-            real_text(c%seabed_depth)//'); place it on or above the bottom', stat_input)
+         bottom = c%seabed_z(e%x, e%y)
+         if (e%z >= bottom - 1.0e-3_dp) return
+         if (allocated(c%bathymetry_depth)) then
+            call fatal_error(error, c%source//': &'//group//': z = '//real_text(e%z)//': the '//trim(e%kind)// &
+                             ' end is below the seabed (z = '//real_text(bottom)//' there, &seabed bathymetry_file '// &
+                             '= '''//trim(c%bathymetry_file)//'''); place it on or above the bottom', stat_input)
+         else
+            call fatal_error(error, c%source//': &'//group//': z = '//real_text(e%z)//': the '//trim(e%kind)// &
+                             ' end is below the seabed (z = '//real_text(bottom)//' there, &seabed depth = '// &
+                             real_text(c%seabed_depth)//'); place it on or above the bottom', stat_input)
+         end if
       end subroutine above_seabed
    end subroutine check_scene
 

@@ -317,17 +317,17 @@ contains
          if (sg%mbl > 0) c%mbl = sg%mbl
          ! What &cable derives (the area from the diameter, EI from young and the diameter, GIp
          ! from EI, the linear law's EA from young and the area; 0 in the file, the derived
-         ! value after derive_defaults) a segment that gives what it comes from, but not the
-         ! derived value itself, derives from its own values: 0 here, derived by the section.
+         ! value after derive_defaults or in the echo of the case) a segment that gives what it
+         ! comes from, but not the derived value itself, derives from its own values: 0 here,
+         ! derived by the section.
          if (.not. given('area') .and. given('diameter') .and. &
-             derived('cable', 'area', self%area, 0.25_dp*pi*self%diameter**2)) c%area = 0
+             derived(self%area, 0.25_dp*pi*self%diameter**2)) c%area = 0
          if (.not. given('bending_stiffness') .and. (given('diameter') .or. given('young')) .and. &
-             derived('cable', 'bending_stiffness', self%bending_stiffness, self%young*pi*self%diameter**4/64)) &
-            c%bending_stiffness = 0
+             derived(self%bending_stiffness, self%young*pi*self%diameter**4/64)) c%bending_stiffness = 0
          if (.not. given('gip') .and. c%bending_stiffness /= self%bending_stiffness .and. &
-             derived('cable', 'gip', self%gip, self%bending_stiffness/(1 + poisson))) c%gip = 0
+             derived(self%gip, self%bending_stiffness/(1 + poisson))) c%gip = 0
          if (.not. given('ea') .and. (given('young') .or. given('area') .or. given('diameter')) .and. &
-             derived('material', 'ea', self%ea, self%young*self%area)) c%ea = 0
+             derived(self%ea, self%young*self%area)) c%ea = 0
       end associate
    contains
       logical function given(name)
@@ -335,12 +335,11 @@ contains
          given = self%is_given(trim(g), name)
       end function given
 
-      !> Whether the line's value of a variable is its default or derived one: not given, and
-      !> 0 or the value derived from the line's others.
-      logical function derived(group, name, value, from_others)
-         character(*), intent(in) :: group, name
+      !> Whether the line's value of a variable is the derived one: 0, or what the line's other
+      !> values give (to the bit: a value given that happens to be it is taken as derived).
+      logical function derived(value, from_others)
          real(dp), intent(in) :: value, from_others
-         derived = .not. self%is_given(group, name) .and. (value == 0 .or. value == from_others)
+         derived = value == 0 .or. value == from_others
       end function derived
    end function segment_case
 end module xcable_io_config

@@ -229,6 +229,11 @@ contains
       type(error_type), allocatable, intent(out) :: error
       call expect_refusal(error, '&segment_1 length = -20 /'//nl//'&segment_2 length = 80 /'//nl, &
                           [character(40) :: path, '&segment_1', 'length = -20', 'in [0.01, 100000]'])
+      if (allocated(error)) return
+      ! Before the sum is checked against &cable length.
+      call expect_refusal(error, '&cable length = 60 /'//nl//'&segment_1 length = 0 /'//nl// &
+                          '&segment_2 length = 80 /'//nl, &
+                          [character(40) :: path, '&segment_1', 'length = 0', 'in [0.01, 100000]'])
    end subroutine test_length_range
 
    !> Given, &cable length must be the sum of the lengths (to 1e-9 of it).

@@ -319,7 +319,8 @@ contains
          end if
          mine = group_entries(t, group)
          do i = 1, size(mine)
-            if (t(mine(i))%name == 'law') cycle
+            ! (The law above, the length and nodes with the layout.)
+            if (is_word(t(mine(i))%name, 'law length nodes')) cycle
             call check_entry(c, t(mine(i)), error)
             if (allocated(error)) return
          end do

@@ -236,7 +236,7 @@ contains
                           [character(40) :: path, '&segment_1', 'length = 0', 'in [0.01, 100000]'])
    end subroutine test_length_range
 
-   !> Given, &cable length must be the sum of the lengths (to 1e-9 of it).
+   !> Given, &cable length must be the sum of the lengths (to 1e-9 of it); not given, it is.
    subroutine test_length_sum(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config) :: c
@@ -247,6 +247,13 @@ contains
       if (allocated(error)) return
       call write_text(path, '&cable length = 60.00000000001 /'//nl//two)
       call read_config(path, c, error)
+      if (allocated(error)) return
+      ! Not given, it is their sum before the checks that take it (s_break at most L).
+      call write_text(path, '&segment_1 length = 50 /'//nl//'&segment_2 length = 150 /'//nl// &
+                      '&rupture s_break = 120 /'//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      call check(error, c%length == 200 .and. c%s_break == 120, '&cable length is not the sum of the segments''')
    end subroutine test_length_sum
 
    subroutine test_nodes_some(error)

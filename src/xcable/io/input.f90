@@ -49,7 +49,8 @@ contains
    end subroutine read_config
 
    !> Read a case without validating its values: scan the file (groups,
-   !> names, value types), read the groups that are present, record which
+   !> names, value types), count the segments (refusing a gap in their
+   !> numbering), read the groups that are present, record which
    !> variables are given (config%given), put the words of string variables
    !> in lower case and count the inline table rows.
    subroutine read_values(path, config, error)

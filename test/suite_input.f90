@@ -14,6 +14,7 @@ module suite_input
    use xcable_solver_newton, only: newton_options
    use xcable_box_dynamics, only: dynamics_options
    use xcable_fixtures, only: write_text
+   use suite_input_segments, only: collect_input_segments
    implicit none
    private
    public :: collect_input
@@ -27,6 +28,7 @@ contains
 
    subroutine collect_input(tests)
       type(unittest_type), allocatable, intent(out) :: tests(:)
+      type(unittest_type), allocatable :: segment_tests(:)
       tests = [new_unittest('paper_cases', test_paper_cases), &
                new_unittest('defaults_without_groups', test_defaults), &
                new_unittest('misspelled_variable', test_misspelled), &
@@ -88,6 +90,9 @@ contains
                new_unittest('material_table_file_malformed', test_material_table_file_malformed), &
                new_unittest('damping_out_of_range', test_damping), &
                new_unittest('real_text_shortest_round_trip', test_real_text)]
+      ! The segments' input (&segment_1 ... &segment_8).
+      call collect_input_segments(segment_tests)
+      tests = [tests, segment_tests]
    end subroutine collect_input
 
    !> real_text (the namelist echo's numbers): the text reads back to exactly x, and with one

@@ -595,6 +595,41 @@ from slow_315kN; add '&fluid density = 1025, surface_z = -50 /'; add '&seabed de
 begin 'air with the box scheme' 'box' 'no fluid loads'
 from slow_315kN; add '&fluid air_density = 1.2 /'; edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
 
+# --- a line of segments (&segment_1 ... &segment_8) ------------------------------------------
+# chain_mooring_heave: &cable length = 250, &numerics nodes = 101, &rupture enabled = .false.
+begin 'a segment numbered with a gap' '&segment_2 given without &segment_1' 'without a gap'
+from chain_mooring_heave; add '&segment_2 length = 250 /'; check
+begin 'a segment without its length' '&segment_2' 'length not given'
+from chain_mooring_heave; add '&segment_1 length = 250 /'; add '&segment_2 diameter = 0.05 /'; check
+begin 'a segment length that is not a number' '&segment_1' 'length = NaN' 'finite'
+from chain_mooring_heave; add '&segment_1 length = NaN /'; check
+begin 'segment lengths that are not &cable length' '&cable' 'length = 250' '100 + 100 = 200' 'must be their sum'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 100 /'; check
+begin 'nodes in one segment of two' '&segment_2' 'nodes not given' 'every segment'
+from chain_mooring_heave; add '&segment_1 length = 100, nodes = 41 /'; add '&segment_2 length = 150 /'; check
+begin 'segment nodes against &numerics nodes' '&numerics' 'nodes = 101' '41 + 81 - 1 joints = 121' 'give nodes = 121'
+from chain_mooring_heave; add '&segment_1 length = 100, nodes = 41 /'; add '&segment_2 length = 150, nodes = 81 /'; check
+begin 'too few nodes for three segments' '&numerics' 'nodes = 6' 'at least 2*3 + 1 = 7'
+from chain_mooring_heave; edit 's/nodes = 101/nodes = 6/'; add '&segment_1 length = 100 /'; add '&segment_2 length = 100 /'
+add '&segment_3 length = 50 /'; check
+begin 'a segment diameter in millimetres' '&segment_1' 'diameter = 76' 'in metres'
+from chain_mooring_heave; add '&segment_1 length = 100, diameter = 76 /'; add '&segment_2 length = 150 /'; check
+begin 'an unknown law in a segment' '&segment_2' "law = 'chain'" "'tanh', 'linear', 'table'"
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add "&segment_2 length = 150, law = 'chain' /"; check
+begin "a segment's table file missing" '&segment_2' "table_file = 'no_such_law.txt'" 'no such file'
+from chain_mooring_heave; add '&segment_1 length = 100 /'
+add "&segment_2 length = 150, law = 'table', table_file = 'no_such_law.txt' /"; check
+begin 'segments with the box scheme' '&numerics' "scheme = 'box'" 'one uniform cable'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
+edit 's/^&numerics /\&numerics scheme = '"'"'box'"'"', /'; check
+begin "a segment's MBL on a line that does not break" '&segment_1' 'mbl = 5e6' "criterion = 'tension'"
+from chain_mooring_heave; add '&segment_1 length = 100, mbl = 5e6 /'; add '&segment_2 length = 150 /'; check
+begin 'a break by tension without an MBL for every segment' '&segment_2' 'mbl = 0 and &rupture mbl = not given'
+from chain_mooring_heave; add '&segment_1 length = 100, mbl = 5e6 /'; add '&segment_2 length = 150 /'
+edit "s/^&rupture  enabled = .false. \//\&rupture criterion = 'tension' \//"; check
+begin 'a ninth segment' 'unknown group &segment_9' '&segment_1 ... &segment_8'
+from chain_mooring_heave; add '&segment_9 length = 250 /'; check
+
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'
 from fast_180kN; edit 's/tension = 180000/tension 180000/'; check

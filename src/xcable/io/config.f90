@@ -307,14 +307,18 @@ contains
 
    !> The case as segment k sees it: &cable, &material and &fluid with the segment's values
    !> where its group gives them, its length in length and its breaking load in mbl (the
-   !> line's &rupture mbl where it gives none). Without segments (segment_count = 0), k = 1
-   !> is the case itself.
+   !> line's &rupture mbl where it gives none). A value the line derives from others (area,
+   !> EI, GIp, EA) is 0 (derived again, by the section) where the segment gives what it is
+   !> derived from. Without segments (segment_count = 0), k = 1 is the case itself.
    function segment_case(self, k) result(c)
       !> The case.
       class(case_config), intent(in) :: self
       !> Segment, 1 .. segments_of_line().
       integer, intent(in) :: k
       type(case_config) :: c
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      !> Poisson ratio of the default GIp = EI / (1 + nu), as io/input/checks.f90 derives it.
+      real(dp), parameter :: poisson = 0.4_dp
       character(len=16) :: g
       c = self
       if (self%segment_count == 0) return
@@ -343,11 +347,31 @@ contains
          if (given('cd_tangential')) c%cd_tangential = sg%cd_tangential
          if (given('ca_normal')) c%ca_normal = sg%ca_normal
          if (sg%mbl > 0) c%mbl = sg%mbl
+         ! What &cable derives (the area from the diameter, EI from young and the diameter, GIp
+         ! from EI, the linear law's EA from young and the area; 0 in the file, the derived
+         ! value after derive_defaults or in the echo of the case) a segment that gives what it
+         ! comes from, but not the derived value itself, derives from its own values: 0 here,
+         ! derived by the section.
+         if (.not. given('area') .and. given('diameter') .and. &
+             derived(self%area, 0.25_dp*pi*self%diameter**2)) c%area = 0
+         if (.not. given('bending_stiffness') .and. (given('diameter') .or. given('young')) .and. &
+             derived(self%bending_stiffness, self%young*pi*self%diameter**4/64)) c%bending_stiffness = 0
+         if (.not. given('gip') .and. c%bending_stiffness /= self%bending_stiffness .and. &
+             derived(self%gip, self%bending_stiffness/(1 + poisson))) c%gip = 0
+         if (.not. given('ea') .and. (given('young') .or. given('area') .or. given('diameter')) .and. &
+             derived(self%ea, self%young*self%area)) c%ea = 0
       end associate
    contains
       logical function given(name)
          character(*), intent(in) :: name
          given = self%is_given(trim(g), name)
       end function given
+
+      !> Whether the line's value of a variable is the derived one: 0, or what the line's other
+      !> values give (to the bit: a value given that happens to be it is taken as derived).
+      logical function derived(value, from_others)
+         real(dp), intent(in) :: value, from_others
+         derived = value == 0 .or. value == from_others
+      end function derived
    end function segment_case
 end module xcable_io_config

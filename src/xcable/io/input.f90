@@ -12,7 +12,7 @@
 !> naming the file, the group, the variable, its value and what is allowed.
 !>
 !> The namelist reads need compile-time lists of variables (read_groups,
-!> read_end) and the generic code needs a way from a schema entry to its
+!> read_end, read_segment) and the generic code needs a way from a schema entry to its
 !> component of case_config (access); the suite input checks both against
 !> the schema for every entry.
 !>
@@ -23,8 +23,8 @@
 module xcable_io_input
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
-   use xcable_io_config, only: case_config, end_config, max_table_points
-   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, known_fields
+   use xcable_io_config, only: case_config, end_config, segment_config, max_table_points
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, known_fields, segment_of, segment_group
    use xcable_io_input_scanner, only: count_table_rows, line_len, load_lines, lower_words, scan_groups
    use xcable_io_input_echo, only: config_text, value_text
    use xcable_io_input_checks, only: derive_defaults, max_time_steps, validate
@@ -49,7 +49,8 @@ contains
    end subroutine read_config
 
    !> Read a case without validating its values: scan the file (groups,
-   !> names, value types), read the groups that are present, record which
+   !> names, value types), count the segments (refusing a gap in their
+   !> numbering), read the groups that are present, record which
    !> variables are given (config%given), put the words of string variables
    !> in lower case and count the inline table rows.
    subroutine read_values(path, config, error)
@@ -76,6 +77,17 @@ contains
       if (allocated(error)) return
       ! A break only when asked for: &rupture given (its enabled then defaults to .true.).
       config%break_enabled = any(groups == 'rupture' .and. present_group)
+      ! The segments, numbered from end a without a gap: as many as the highest number given.
+      do i = 1, size(groups)
+         if (present_group(i)) config%segment_count = max(config%segment_count, segment_of(groups(i)))
+      end do
+      do i = 1, config%segment_count
+         if (any(groups == segment_group(i) .and. present_group)) cycle
+         call fatal_error(error, path//': &'//trim(segment_group(config%segment_count))//' given without &'// &
+                          trim(segment_group(i))//': the segments are numbered from end a, 1, 2, ... without a '// &
+                          'gap; give &'//trim(segment_group(i))//' or renumber', stat_input)
+         return
+      end do
       call read_groups(path, config, groups, present_group, error)
       if (allocated(error)) return
       config%given = ''
@@ -166,6 +178,10 @@ contains
             read (unit, nml=numerics, iostat=ios, iomsg=msg)
          case ('output')
             read (unit, nml=output, iostat=ios, iomsg=msg)
+         case ('segment_1', 'segment_2', 'segment_3', 'segment_4', 'segment_5', 'segment_6', 'segment_7', 'segment_8')
+            ! A segment's p starts from &material's (read before it): p(2) = ... changes one coefficient.
+            c%segments(segment_of(group_names(ig)))%p = p
+            call read_segment(unit, segment_of(group_names(ig)), c%segments(segment_of(group_names(ig))), ios, msg)
          case default
             ios = 1
             msg = 'no namelist read for this group (a schema group missing in read_groups)'
@@ -240,6 +256,69 @@ contains
       e%table_time = table_time; e%table_x = table_x; e%table_z = table_z; e%table_file = table_file
       e%table_y = table_y
    end subroutine read_end
+
+   !> Read &segment_k into one segment (the namelist groups have the names &segment_1 ...
+   !> &segment_8 and the same variables).
+   subroutine read_segment(unit, k, seg, ios, msg)
+      !> Open namelist file, rewound.
+      integer, intent(in) :: unit
+      !> Segment, 1 .. max_segments.
+      integer, intent(in) :: k
+      !> The segment: defaults in, values given out.
+      type(segment_config), intent(inout) :: seg
+      !> iostat of the read.
+      integer, intent(out) :: ios
+      !> iomsg of the read.
+      character(len=*), intent(inout) :: msg
+      real(dp) :: length, diameter, density, young, area, bending_stiffness, gip, p(5), ea, strain_max, damping, &
+                  cd_normal, cd_tangential, ca_normal, mbl
+      real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
+      character(len=16) :: law, compression
+      character(len=512) :: table_file
+      integer :: nodes
+      namelist /segment_1/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_2/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_3/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_4/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_5/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_6/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_7/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      namelist /segment_8/ length, diameter, density, young, area, bending_stiffness, gip, law, p, ea, table_strain, &
+         table_tension, table_file, strain_max, compression, damping, cd_normal, cd_tangential, ca_normal, nodes, mbl
+      length = seg%length; diameter = seg%diameter; density = seg%density; young = seg%young; area = seg%area
+      bending_stiffness = seg%bending_stiffness; gip = seg%gip; law = seg%law; p = seg%p; ea = seg%ea
+      table_strain = seg%material_table_strain; table_tension = seg%material_table_tension
+      table_file = seg%material_table_file; strain_max = seg%strain_max; compression = seg%compression
+      damping = seg%damping; cd_normal = seg%cd_normal; cd_tangential = seg%cd_tangential; ca_normal = seg%ca_normal
+      nodes = seg%nodes; mbl = seg%mbl
+      select case (k)
+      case (1); read (unit, nml=segment_1, iostat=ios, iomsg=msg)
+      case (2); read (unit, nml=segment_2, iostat=ios, iomsg=msg)
+      case (3); read (unit, nml=segment_3, iostat=ios, iomsg=msg)
+      case (4); read (unit, nml=segment_4, iostat=ios, iomsg=msg)
+      case (5); read (unit, nml=segment_5, iostat=ios, iomsg=msg)
+      case (6); read (unit, nml=segment_6, iostat=ios, iomsg=msg)
+      case (7); read (unit, nml=segment_7, iostat=ios, iomsg=msg)
+      case (8); read (unit, nml=segment_8, iostat=ios, iomsg=msg)
+      case default
+         ios = 1
+         msg = 'no namelist read for this segment (max_segments above 8 in io/config.f90)'
+      end select
+      if (ios /= 0) return
+      seg%length = length; seg%diameter = diameter; seg%density = density; seg%young = young; seg%area = area
+      seg%bending_stiffness = bending_stiffness; seg%gip = gip; seg%law = law; seg%p = p; seg%ea = ea
+      seg%material_table_strain = table_strain; seg%material_table_tension = table_tension
+      seg%material_table_file = table_file; seg%strain_max = strain_max; seg%compression = compression
+      seg%damping = damping; seg%cd_normal = cd_normal; seg%cd_tangential = cd_tangential; seg%ca_normal = ca_normal
+      seg%nodes = nodes; seg%mbl = mbl
+   end subroutine read_segment
 
    !> Read &fluid (its density has the name of &cable's, so it has its own scope).
    subroutine read_fluid(unit, c, ios, msg)

@@ -14,17 +14,24 @@
 !> a run without changing what it computes (progress lines, limits of wall
 !> time, checkpoints) is marked resume_may_differ: a checkpoint is accepted
 !> by `xcable --resume` when every other variable is as it was.
+!>
+!> The groups &segment_1 ... &segment_8 are made from the entries of &cable,
+!> &material and &fluid (add_segments: a copy of each entry that describes the
+!> line, with its twin group named): a variable added there for a segment to
+!> take needs its name in add_segments' list, a component of segment_config, a
+!> line of access_segment and of read_segment, and one in segment_case.
 module xcable_io_schema
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: real_text
-   use xcable_io_config, only: max_table_points
+   use xcable_io_config, only: max_table_points, max_segments
    use xcable_material_factory, only: law_names
    use xcable_ends_registry, only: end_kind, end_kind_list, end_kind_names, kinds_using
    implicit none
    private
    public :: schema_entry, schema_table, schema_groups, find_entry, group_entries
    public :: schema_text, write_schema, allowed_text, bound_text, known_fields, is_table
+   public :: segment_of, segment_group, group_list
 
    !> Snapshot fields that &output fields may name.
    character(len=*), parameter :: known_fields(8) = &
@@ -67,6 +74,9 @@ module xcable_io_schema
       !> Whether the value may differ between a run and its `xcable --resume` (it steers the run,
       !> not what it computes: left out of the namelist fingerprint a checkpoint is checked against).
       logical :: resume_may_differ = .false.
+      !> The group whose value a variable of &segment_k takes when the segment does not give
+      !> it ('cable', 'material' or 'fluid'; '' : a variable of its own).
+      character(len=16) :: twin = ''
       !> Meaning, one line.
       character(len=320) :: doc = ''
    end type schema_entry
@@ -198,6 +208,8 @@ contains
                "friction in the statics: 'none', or 'end_a' / 'end_b': mu_axial times the contact force along "// &
                "the grounded line towards that end (the anchor), as if the line had been laid from the anchor "// &
                "and pulled taut; it fades where the cell's strain falls to zero", length=16, choices='none end_a end_b')
+      ! &segment_1 ... &segment_8: copies of the entries of &cable, &material and &fluid
+      call add_segments(t)
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &
@@ -372,6 +384,110 @@ contains
       t = t(1:filled)
    end subroutine build_table
 
+   !> The groups &segment_1 ... &segment_8, all alike: the segment's length, the variables of
+   !> &cable, &material and &fluid that describe the line itself (copies of their entries,
+   !> with their ranges and words; not given, the twin group's value), its nodes and its
+   !> minimum breaking load.
+   subroutine add_segments(t)
+      !> The table, with &cable, &material and &fluid; the segments appended.
+      type(schema_entry), allocatable, intent(inout) :: t(:)
+      character(len=*), parameter :: twins = 'cable%diameter cable%density cable%young cable%area '// &
+                                           'cable%bending_stiffness cable%gip material%law material%p material%ea '// &
+                                           'material%table_strain material%table_tension material%table_file '// &
+                                           'material%strain_max material%compression material%damping '// &
+                                           'fluid%cd_normal fluid%cd_tangential fluid%ca_normal'
+      type(schema_entry), allocatable :: base(:)
+      type(schema_entry) :: e
+      character(len=16) :: group
+      integer :: k, i
+      base = t(1:filled)
+      do k = 1, max_segments
+         group = segment_group(k)
+         e = base(find_entry(base, 'cable', 'length'))
+         call add(t, group, 'length', 'real', 'm', '0', 'unstretched length of the segment; the lengths add up to '// &
+                  '&cable length (which is their sum when not given)', e%lower, e%upper, default_means='must be given')
+         do i = 1, size(base)
+            if (index(' '//twins//' ', ' '//trim(base(i)%group)//'%'//trim(base(i)%name)//' ') == 0) cycle
+            e = base(i)
+            e%twin = e%group
+            e%group = group
+            ! The defaults of segment_config: 0, '' or no rows (the twin group's value is taken).
+            select case (e%type)
+            case ('string')
+               e%default = "''"
+            case default
+               e%default = '0'
+               if (e%count == 5) e%default = '0, 0, 0, 0, 0'
+               if (is_table(e)) e%default = ''
+            end select
+            e%doc = 'as &'//trim(e%twin)//' '//trim(e%name)//', for this segment'
+            if (e%name == 'p') e%doc = trim(e%doc)//' (an element given replaces that element of &material p)'
+            if (e%name == 'table_file') e%doc = trim(e%doc)//' (read as the &material table_file is)'
+            call append(t, e)
+         end do
+         call add(t, group, 'nodes', 'integer', '-', '0', 'nodes of the segment, its two end nodes included (a '// &
+                  'joint is a node of both segments); given in every segment or in none: the line has their sum '// &
+                  'less the joints', 2.0_dp, 100001.0_dp, zero_means='a share of &numerics nodes by length')
+         call add(t, group, 'mbl', 'real', 'N', '0', "minimum breaking load of the segment (&rupture criterion "// &
+                  "'tension'): the line parts where and when a cell of this segment first reaches it", &
+                  0.0_dp, 1.0e12_dp, lower_open=.true., zero_means='&rupture mbl')
+      end do
+   end subroutine add_segments
+
+   !> The name of the group of segment k: 'segment_k'.
+   pure function segment_group(k) result(group)
+      !> Segment, 1 .. max_segments.
+      integer, intent(in) :: k
+      character(len=16) :: group
+      write (group, '(a,i0)') 'segment_', k
+   end function segment_group
+
+   !> The segment a group describes: k for 'segment_k', 0 for any other group.
+   pure integer function segment_of(group)
+      !> Group name, lower case.
+      character(*), intent(in) :: group
+      integer :: k
+      segment_of = 0
+      do k = 1, max_segments
+         if (trim(group) == trim(segment_group(k))) then
+            segment_of = k
+            return
+         end if
+      end do
+   end function segment_of
+
+   !> Group names as '&a, &b, &segment_1 ... &segment_8' (a run of more than two numbered
+   !> groups as its first and last), each after a prefix, with a separator.
+   function group_list(names, open, close, separator) result(s)
+      !> Group names, blank-padded.
+      character(len=*), intent(in) :: names(:)
+      !> What goes before and after each name ('&' and '', or '`&' and '`').
+      character(*), intent(in) :: open, close
+      !> Between two names (', ').
+      character(*), intent(in) :: separator
+      character(:), allocatable :: s
+      integer :: i, j
+      s = ''
+      i = 1
+      do while (i <= size(names))
+         j = i
+         if (segment_of(names(i)) == 1) then
+            do while (j < size(names))
+               if (segment_of(names(j + 1)) /= segment_of(names(j)) + 1) exit
+               j = j + 1
+            end do
+         end if
+         if (len(s) > 0) s = s//separator
+         if (j - i >= 2) then
+            s = s//open//trim(names(i))//close//' ... '//open//trim(names(j))//close
+         else
+            s = s//open//trim(names(i))//close
+            j = i
+         end if
+         i = j + 1
+      end do
+   end function group_list
+
    !> Append an entry. A number is bounded when lower and upper are given.
    subroutine add(t, group, name, type, unit, default, doc, lower, upper, count, length, choices, word_list, &
                   lower_open, upper_from, zero_means, default_means, note, resume_may_differ, own_kinds_only)
@@ -418,6 +534,15 @@ contains
       if (present(note)) e%note = note
       if (present(resume_may_differ)) e%resume_may_differ = resume_may_differ
       if (present(own_kinds_only)) e%own_kinds_only = own_kinds_only
+      call append(t, e)
+   end subroutine add
+
+   !> Append an entry made whole.
+   subroutine append(t, e)
+      !> The table.
+      type(schema_entry), allocatable, intent(inout) :: t(:)
+      !> The entry.
+      type(schema_entry), intent(in) :: e
       if (filled == size(t)) then
          block
             type(schema_entry), allocatable :: bigger(:)
@@ -428,7 +553,7 @@ contains
       end if
       filled = filled + 1
       t(filled) = e
-   end subroutine add
+   end subroutine append
 
    !> Blank-separated words as 'a, b or c'.
    function words_or(words) result(text)
@@ -592,14 +717,13 @@ contains
          groups = schema_groups(t)
          ig = 1
          do while (ig <= size(groups))
-            ! Groups with the same variables (&end_a, &end_b) share their rows.
-            heading = '`&'//trim(groups(ig))//'`'
+            ! Groups with the same variables (&end_a, &end_b; &segment_1 ... &segment_8) share their rows.
             jg = ig
             do while (jg < size(groups))
                if (.not. same_variables(t, groups(ig), groups(jg + 1))) exit
                jg = jg + 1
-               heading = heading//', `&'//trim(groups(jg))//'`'
             end do
+            heading = group_list(groups(ig:jg), '`&', '`', ', ')
             mine = group_entries(t, groups(ig))
             do i = 1, size(mine)
                if (i > 1) heading = ''
@@ -651,6 +775,7 @@ contains
       if (len_trim(e%zero_means) > 0 .and. (e%default == '0' .or. e%default == "''")) &
          default = default//' ('//trim(e%zero_means)//')'
       if (len_trim(e%default_means) > 0) default = default//' ('//trim(e%default_means)//')'
+      if (len_trim(e%twin) > 0) default = '&'//trim(e%twin)//"'s value"
       allowed = allowed_text(e)
       if (len_trim(e%choices) > 0) then
          if (e%word_list) then

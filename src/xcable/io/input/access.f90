@@ -3,8 +3,8 @@
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_access
    use xcable_core_kinds, only: dp
-   use xcable_io_config, only: case_config, end_config
-   use xcable_io_schema, only: schema_entry
+   use xcable_io_config, only: case_config, end_config, segment_config
+   use xcable_io_schema, only: schema_entry, segment_of
    implicit none
    private
    public :: access, config_value, get_value
@@ -51,6 +51,10 @@ contains
          call access_end(c%end_b, e%name, v, store)
          return
       end select
+      if (segment_of(e%group) > 0) then
+         call access_segment(c%segments(segment_of(e%group)), e%name, v, store)
+         return
+      end if
       select case (trim(e%group)//'%'//trim(e%name))
       case ('cable%length'); call move(c%length, v, store)
       case ('cable%diameter'); call move(c%diameter, v, store)
@@ -165,6 +169,43 @@ contains
          v%found = .false.
       end select
    end subroutine access_end
+
+   !> `access` for the variables of &segment_1 ... &segment_8.
+   subroutine access_segment(g, name, v, store)
+      !> The segment.
+      type(segment_config), intent(inout) :: g
+      !> Variable name.
+      character(*), intent(in) :: name
+      !> Its value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      select case (name)
+      case ('length'); call move(g%length, v, store)
+      case ('diameter'); call move(g%diameter, v, store)
+      case ('density'); call move(g%density, v, store)
+      case ('young'); call move(g%young, v, store)
+      case ('area'); call move(g%area, v, store)
+      case ('bending_stiffness'); call move(g%bending_stiffness, v, store)
+      case ('gip'); call move(g%gip, v, store)
+      case ('law'); call move(g%law, v, store)
+      case ('p'); call move(g%p, v, store)
+      case ('ea'); call move(g%ea, v, store)
+      case ('table_strain'); call move_rows(g%material_table_strain, g%material_table_rows, v, store)
+      case ('table_tension'); call move_rows(g%material_table_tension, g%material_table_rows, v, store)
+      case ('table_file'); call move(g%material_table_file, v, store)
+      case ('strain_max'); call move(g%strain_max, v, store)
+      case ('compression'); call move(g%compression, v, store)
+      case ('damping'); call move(g%damping, v, store)
+      case ('cd_normal'); call move(g%cd_normal, v, store)
+      case ('cd_tangential'); call move(g%cd_tangential, v, store)
+      case ('ca_normal'); call move(g%ca_normal, v, store)
+      case ('nodes'); call move(g%nodes, v, store)
+      case ('mbl'); call move(g%mbl, v, store)
+      case default
+         v%found = .false.
+      end select
+   end subroutine access_segment
 
    !> A real scalar.
    subroutine move_real(x, v, store)

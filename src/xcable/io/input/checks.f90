@@ -8,12 +8,13 @@ module xcable_io_input_checks
    use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names, kinds_using
-   use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text
+   use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text, group_list, &
+                               segment_group, segment_of
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word, next_item, shown
    use xcable_io_input_bathymetry, only: load_bathymetry
-   use xcable_io_input_tables, only: check_column, check_material_table, load_material_table, load_table, &
-                                     time_order
+   use xcable_io_input_tables, only: check_column, check_material_table, load_material_table, load_segment_table, &
+                                     load_table, time_order
    use xcable_io_input_echo, only: value_text
    implicit none
    private
@@ -34,13 +35,22 @@ contains
 
    !> The values whose 0 means "derived from others": the area from the
    !> diameter, EI from young and the diameter, EA of the linear law from young
-   !> and the area; and a negative s_break, the end b (s = L). Called by
-   !> validate and by setup_case, so that a case built in code (tests,
-   !> examples) gets them as a namelist does.
+   !> and the area; and a negative s_break, the end b (s = L). On a line of
+   !> segments, &cable length not given is the sum of their lengths, and
+   !> &numerics nodes not given, when every segment gives its nodes, their sum
+   !> less the joints. Called by validate and by setup_case, so that a case
+   !> built in code (tests, examples) gets them as a namelist does.
    pure subroutine derive_defaults(c)
       !> Case; derived values replace zeros.
       type(case_config), intent(inout) :: c
       real(dp), parameter :: pi = acos(-1.0_dp)
+      integer :: n
+      n = c%segment_count
+      if (n > 0) then
+         if (.not. c%is_given('cable', 'length')) c%length = sum(c%segments(1:n)%length)
+         if (all(c%segments(1:n)%nodes > 0) .and. .not. c%is_given('numerics', 'nodes')) &
+            c%nodes = sum(c%segments(1:n)%nodes) - (n - 1)
+      end if
       if (c%area == 0) c%area = 0.25_dp*pi*c%diameter**2
       if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
       if (c%gip == 0) c%gip = c%bending_stiffness/(1 + default_poisson)
@@ -79,31 +89,21 @@ contains
          call load_material_table(c, error)
          if (allocated(error)) return
       end if
+      ! The segments' lengths and nodes first: &cable length and &numerics nodes may follow from them.
+      call check_segment_layout(c, t, error)
+      if (allocated(error)) return
       do i = 1, size(t)
+         ! (The segments' variables are checked with their segment, below.)
+         if (segment_of(t(i)%group) > 0) cycle
          call check_entry(c, t(i), error)
          if (allocated(error)) return
       end do
       call check_material_table(c, error)
       if (allocated(error)) return
-      ! Lower bounds (issue 6, bad-input fuzzing): a value that is positive but
-      ! tiny (1e-300) passed "> 0" and gave a zero mass, an infinite wave
-      ! speed, a zero step or a singular Jacobian; the schema's ranges are
-      ! generous physical ones. The tanh law's coefficients have ranges of
-      ! their own.
-      if (c%law == 'tanh') then
-         call coefficient(1, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
-         call coefficient(2, 0.0_dp, 1.0e6_dp, .true.); if (allocated(error)) return
-         call coefficient(3, -1.0e3_dp, 1.0e3_dp, .false.); if (allocated(error)) return
-         call coefficient(5, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
-      end if
-      ! An EI given is in range (above); one derived from young and d may not be:
-      ! EI far below 1e-6 N m^2 leaves the moment balance empty at double precision.
-      if (c%bending_stiffness == 0 .and. c%young*pi*c%diameter**4/64 < 1.0e-6_dp) then
-         call fatal_error(error, c%source//': &cable: young = '//real_text(c%young)//', diameter = '// &
-                          real_text(c%diameter)//': give a bending stiffness E pi d^4 / 64 = '// &
-                          str(c%young*pi*c%diameter**4/64)//' N m^2, below 1e-6; set bending_stiffness', stat_input)
-         return
-      end if
+      call check_law_values(c, 'material', 'cable', error)
+      if (allocated(error)) return
+      call check_segment_values(c, t, error)
+      if (allocated(error)) return
       call derive_defaults(c)
       ! (Fortran does not short-circuit .and.: the division only where the divisor is positive.)
       if (c%t_end > max_time_steps*max(c%dt, 0.0_dp) .and. c%dt > 0) then
@@ -133,6 +133,35 @@ contains
          if (dot <= slash) dot = len(c%source) + 1
          c%file = 'results/'//c%source(slash + 1:dot - 1)//'.h5'
       end if
+   end subroutine validate
+
+   !> The checks of a law's values beyond the schema's ranges: the tanh law's coefficients,
+   !> and an EI derived from young and the diameter. Lower bounds (issue 6, bad-input
+   !> fuzzing): a value that is positive but tiny (1e-300) passed "> 0" and gave a zero mass,
+   !> an infinite wave speed, a zero step or a singular Jacobian; the schema's ranges are
+   !> generous physical ones. The tanh law's coefficients have ranges of their own.
+   subroutine check_law_values(c, material_group, cable_group, error)
+      !> The case, or the case as a segment sees it (case_config%segment_case).
+      type(case_config), intent(in) :: c
+      !> The groups named in messages: 'material' and 'cable', or the segment's twice.
+      character(*), intent(in) :: material_group, cable_group
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      if (c%law == 'tanh') then
+         call coefficient(1, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
+         call coefficient(2, 0.0_dp, 1.0e6_dp, .true.); if (allocated(error)) return
+         call coefficient(3, -1.0e3_dp, 1.0e3_dp, .false.); if (allocated(error)) return
+         call coefficient(5, 0.0_dp, 1.0e12_dp, .true.); if (allocated(error)) return
+      end if
+      ! An EI given is in range (above); one derived from young and d may not be:
+      ! EI far below 1e-6 N m^2 leaves the moment balance empty at double precision.
+      if (c%bending_stiffness == 0 .and. c%young*pi*c%diameter**4/64 < 1.0e-6_dp) then
+         call fatal_error(error, c%source//': &'//cable_group//': young = '//real_text(c%young)//', diameter = '// &
+                          real_text(c%diameter)//': give a bending stiffness E pi d^4 / 64 = '// &
+                          str(c%young*pi*c%diameter**4/64)//' N m^2, below 1e-6; set bending_stiffness', stat_input)
+         return
+      end if
 
    contains
 
@@ -146,16 +175,185 @@ contains
          logical, intent(in) :: open
          if (open) then
             if (c%p(k) > lower .and. c%p(k) <= upper) return
-            call fatal_error(error, c%source//': &material: p('//str(k)//') = '//real_text(c%p(k))// &
+            call fatal_error(error, c%source//': &'//material_group//': p('//str(k)//') = '//real_text(c%p(k))// &
                              ': must be > '//real_text(lower)//' and <= '//real_text(upper)//' for the tanh law', &
                              stat_input)
          else
             if (c%p(k) >= lower .and. c%p(k) <= upper) return
-            call fatal_error(error, c%source//': &material: p('//str(k)//') = '//real_text(c%p(k))// &
+            call fatal_error(error, c%source//': &'//material_group//': p('//str(k)//') = '//real_text(c%p(k))// &
                              ': must be in ['//real_text(lower)//', '//real_text(upper)//'] for the tanh law', stat_input)
          end if
       end subroutine coefficient
-   end subroutine validate
+   end subroutine check_law_values
+
+   !> The layout of a line of segments (&segment_1 ... &segment_n, numbered without a gap, which
+   !> the reader checks): the rod scheme; every segment's length given and in range, and their
+   !> sum &cable length (which is set to it when not given); nodes given in every segment
+   !> (&numerics nodes then their sum less the joints) or in none (at least two cells a
+   !> segment); a segment's breaking load only for a break by tension.
+   subroutine check_segment_layout(c, t, error)
+      !> The case; &cable length and &numerics nodes set from the segments when not given.
+      type(case_config), intent(inout) :: c
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: prefix, terms, groups
+      character(len=16) :: group
+      real(dp) :: total
+      integer :: n, k, given_nodes, line_nodes
+      n = c%segment_count
+      if (n == 0) return
+      groups = group_list([(segment_group(k), k=1, n)], '&', '', ', ')
+      if (trim(c%scheme) == 'box') then
+         call fatal_error(error, c%source//": &numerics: scheme = 'box' with "//groups//': the box scheme '// &
+                          "has one uniform cable; allowed: scheme = 'rod' for a line of segments", stat_input)
+         return
+      end if
+      do k = 1, n
+         group = segment_group(k)
+         prefix = c%source//': &'//trim(group)//': '
+         if (.not. c%is_given(trim(group), 'length')) then
+            call fatal_error(error, prefix//'length not given: every segment needs its unstretched length '// &
+                             '(m, in [0.01, 100000])', stat_input)
+            return
+         end if
+         call check_entry(c, t(find_entry(t, group, 'length')), error)
+         if (allocated(error)) return
+         call check_entry(c, t(find_entry(t, group, 'nodes')), error)
+         if (allocated(error)) return
+         if (c%is_given(trim(group), 'mbl') .and. c%segments(k)%mbl > 0 .and. &
+             .not. (c%break_enabled .and. trim(c%break_criterion) == 'tension')) then
+            terms = "criterion = '"//trim(c%break_criterion)//"'"
+            if (.not. c%break_enabled) terms = 'the line does not break (no &rupture, or enabled = .false.)'
+            call fatal_error(error, prefix//'mbl = '//real_text(c%segments(k)%mbl)//": a segment's breaking "// &
+                             "load is for &rupture criterion = 'tension', and here "//terms//"; give &rupture "// &
+                             "criterion = 'tension', or leave mbl out", stat_input)
+            return
+         end if
+      end do
+
+      total = sum(c%segments(1:n)%length)
+      if (c%is_given('cable', 'length')) then
+         if (abs(total - c%length) > 1.0e-9_dp*c%length) then
+            terms = ''
+            do k = 1, n
+               if (k > 1) terms = terms//' + '
+               terms = terms//real_text(c%segments(k)%length)
+            end do
+            call fatal_error(error, c%source//': &cable: length = '//real_text(c%length)//': the lengths of '// &
+                             groups//' add up to '//terms//' = '//real_text(total)//'; must be their sum, or '// &
+                             'leave &cable length out (it is then their sum)', stat_input)
+            return
+         end if
+      else
+         c%length = total
+      end if
+
+      given_nodes = 0
+      do k = 1, n
+         if (c%is_given(trim(segment_group(k)), 'nodes')) given_nodes = given_nodes + 1
+      end do
+      if (given_nodes > 0 .and. given_nodes < n) then
+         do k = 1, n
+            if (.not. c%is_given(trim(segment_group(k)), 'nodes')) exit
+         end do
+         call fatal_error(error, c%source//': &'//trim(segment_group(k))//': nodes not given, while '// &
+                          str(given_nodes)//' of the '//str(n)//' segments give theirs: give nodes in every '// &
+                          'segment, or in none (&numerics nodes are then shared by length)', stat_input)
+         return
+      end if
+      if (given_nodes == n) then
+         line_nodes = sum(c%segments(1:n)%nodes) - (n - 1)
+         terms = ''
+         do k = 1, n
+            if (k > 1) terms = terms//' + '
+            terms = terms//str(c%segments(k)%nodes)
+         end do
+         terms = terms//' - '//str(n - 1)//' joints = '//str(line_nodes)
+         if (line_nodes < 3 .or. line_nodes > 100001) then
+            call fatal_error(error, c%source//': '//groups//': nodes = '//terms//' nodes on the line; must be '// &
+                             'from 3 to 100001', stat_input)
+            return
+         end if
+         if (c%is_given('numerics', 'nodes') .and. c%nodes /= line_nodes) then
+            call fatal_error(error, c%source//': &numerics: nodes = '//str(c%nodes)//': the segments give '// &
+                             terms//' (a joint is a node of both segments); give nodes = '//str(line_nodes)// &
+                             ', or leave &numerics nodes out', stat_input)
+            return
+         end if
+         c%nodes = line_nodes
+      else if (c%nodes < 2*n + 1) then
+         call fatal_error(error, c%source//': &numerics: nodes = '//str(c%nodes)//': too few for '//str(n)// &
+                          ' segments, each of which takes at least 2 cells of its own; must be at least 2*'// &
+                          str(n)//' + 1 = '//str(2*n + 1)//', or give nodes in every segment', stat_input)
+         return
+      end if
+   end subroutine check_segment_layout
+
+   !> Each segment's variables against their schema entries (the ranges and words of their
+   !> twins in &cable, &material and &fluid), its table law's rows (read from its table_file
+   !> as &material's are), and the checks of &material's values run on the case as the
+   !> segment sees it (case_config%segment_case), the messages naming &segment_k.
+   subroutine check_segment_values(c, t, error)
+      !> The case; a segment's table_file read into its rows.
+      type(case_config), intent(inout) :: c
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: seen
+      integer, allocatable :: mine(:)
+      character(len=16) :: group
+      character(:), allocatable :: what
+      logical :: own_table
+      integer :: k, i
+      do k = 1, c%segment_count
+         group = segment_group(k)
+         ! Its law first: its table file is read only for the law 'table'.
+         call check_entry(c, t(find_entry(t, group, 'law')), error)
+         if (allocated(error)) return
+         own_table = c%is_given(trim(group), 'table_strain') .or. c%is_given(trim(group), 'table_tension') .or. &
+                     c%is_given(trim(group), 'table_file')
+         seen = c%segment_case(k)
+         if (seen%law == 'table' .and. c%is_given(trim(group), 'table_file')) then
+            call load_segment_table(c, k, error)
+            if (allocated(error)) return
+         end if
+         mine = group_entries(t, group)
+         do i = 1, size(mine)
+            ! (The law above, the length and nodes with the layout.)
+            if (is_word(t(mine(i))%name, 'law length nodes')) cycle
+            call check_entry(c, t(mine(i)), error)
+            if (allocated(error)) return
+         end do
+         seen = c%segment_case(k)
+         ! A law of its own other than 'table' has no table: the line's rows are not its.
+         if (c%is_given(trim(group), 'law') .and. seen%law /= 'table' .and. .not. own_table) then
+            seen%material_table_rows = 0
+            seen%material_table_file = ''
+         end if
+         call check_material_table(seen, error, trim(group))
+         if (allocated(error)) return
+         call check_law_values(seen, trim(group), trim(group), error)
+         if (allocated(error)) return
+         if (c%fluid_density == 0 .and. c%air_density == 0) then
+            what = ''
+            if (c%is_given(trim(group), 'ca_normal') .and. seen%ca_normal /= 0) &
+               what = 'ca_normal = '//real_text(seen%ca_normal)
+            if (c%is_given(trim(group), 'cd_tangential') .and. seen%cd_tangential /= 0) &
+               what = 'cd_tangential = '//real_text(seen%cd_tangential)
+            if (c%is_given(trim(group), 'cd_normal') .and. seen%cd_normal /= 0) &
+               what = 'cd_normal = '//real_text(seen%cd_normal)
+            if (len(what) > 0) then
+               call fatal_error(error, c%source//': &'//trim(group)//': '//what//': drag or added-mass '// &
+                                'coefficients without a fluid (&fluid density = 0 and air_density = 0); give '// &
+                                '&fluid density (> 0: 1025 for sea water) or air_density (1.225)', stat_input)
+               return
+            end if
+         end if
+      end do
+   end subroutine check_segment_values
 
    !> Check one variable against its schema entry: a number against its
    !> range (0 allowed where it stands for a derived value; an upper bound
@@ -180,6 +378,10 @@ contains
                           ': a variable of the schema that the reader does not know (io/input.f90 access)', stat_input)
          return
       end if
+      ! A segment's variables: only those of the segments given, and a variable that takes its
+      ! twin group's value only when given.
+      if (segment_of(e%group) > c%segment_count) return
+      if (len_trim(e%twin) > 0 .and. .not. c%is_given(trim(e%group), trim(e%name))) return
       prefix = c%source//': &'//trim(e%group)//': '
       select case (e%type)
       case ('real', 'integer')
@@ -261,6 +463,7 @@ contains
       character(:), allocatable :: position, broken, held
       type(end_config) :: e
       logical :: held_a, held_b
+      integer :: k
 
       e = c%end_a
       call check_end(c, 'end_a', e, c%end_b, error)
@@ -368,7 +571,19 @@ contains
                              "time are not used; leave them out, or give criterion = 'time'", stat_input)
             return
          end if
-         if (.not. c%is_given('rupture', 'mbl') .or. c%mbl <= 0) then
+         if (c%segment_count > 0 .and. .not. (c%is_given('rupture', 'mbl') .and. c%mbl > 0)) then
+            ! On a line of segments: a breaking load for every segment, its own or the line's.
+            position = 'not given'
+            if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
+            do k = 1, c%segment_count
+               if (c%segments(k)%mbl > 0) cycle
+               call fatal_error(error, c%source//': &'//trim(segment_group(k))//": mbl = 0 and &rupture mbl = "// &
+                                position//": criterion = 'tension' needs the minimum breaking load of every segment, a "// &
+                                'tension above 0 N: give mbl in &'//trim(segment_group(k))//' or &rupture mbl', &
+                                stat_input)
+               return
+            end do
+         else if (.not. c%is_given('rupture', 'mbl') .or. c%mbl <= 0) then
             position = 'not given'
             if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
             call fatal_error(error, c%source//": &rupture: mbl = "//position//": criterion = 'tension' needs the "// &

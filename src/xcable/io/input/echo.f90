@@ -5,7 +5,7 @@ module xcable_io_input_echo
    use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind
-   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries, segment_of
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word
    implicit none
@@ -148,7 +148,8 @@ contains
    !> symmetric case (both ends fixed, no position given for end b), end b's
    !> position only when given; not the position of an end whose kind does not use it (free,
    !> force, mass), nor a variable of own_kinds_only for another kind;
-   !> no table without rows, and no table_file unless given.
+   !> no table without rows, and no table_file unless given; of &segment_k only the
+   !> variables given, for the segments given.
    logical function echoed(c, e, position_b)
       !> The case.
       type(case_config), intent(in) :: c
@@ -157,6 +158,23 @@ contains
       !> Whether a position of end b was given (given_position_b).
       logical, intent(in) :: position_b
       echoed = .true.
+      ! &segment_k: the segments given, and of each the variables given (the others take the
+      ! line's values): a case without segments has the echo it had before them.
+      if (segment_of(e%group) > 0) then
+         echoed = segment_of(e%group) <= c%segment_count
+         if (.not. echoed) return
+         associate (g => c%segments(segment_of(e%group)))
+            select case (e%name)
+            case ('table_strain', 'table_tension')
+               echoed = g%material_table_rows > 0
+            case ('table_file')
+               echoed = len_trim(g%material_table_file) > 0
+            case default
+               echoed = c%is_given(trim(e%group), trim(e%name))
+            end select
+         end associate
+         return
+      end if
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
       ! &rupture: criterion and mbl for a break by tension, s_break and time for one by time

@@ -6,8 +6,8 @@ module xcable_io_input_scanner
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: str, to_lower
-   use xcable_io_config, only: case_config
-   use xcable_io_schema, only: schema_entry, find_entry, group_entries
+   use xcable_io_config, only: case_config, max_segments
+   use xcable_io_schema, only: schema_entry, find_entry, group_entries, group_list, segment_group
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use xcable_io_input_access, only: access, config_value
    implicit none
@@ -38,7 +38,7 @@ contains
    !> its first column (an end's table_time, the material's table_strain),
    !> which the other columns must match (an end's table_y may be left out).
    subroutine count_table_rows(c, t, counts, error)
-      !> The case; table_rows of each end and material_table_rows set.
+      !> The case; table_rows of each end and material_table_rows (the line's and each segment's) set.
       type(case_config), intent(inout) :: c
       !> The schema.
       type(schema_entry), intent(in) :: t(:)
@@ -48,6 +48,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       character(len=*), parameter :: end_columns(3) = [character(len=10) :: 'table_time', 'table_x', 'table_z']
       character(len=*), parameter :: material_columns(2) = [character(len=13) :: 'table_strain', 'table_tension']
+      integer :: k
       call inline_rows(c, t, counts, 'end_a', end_columns, c%end_a%table_rows, error)
       if (allocated(error)) return
       call optional_column('end_a', c%end_a%table_rows)
@@ -57,6 +58,12 @@ contains
       call optional_column('end_b', c%end_b%table_rows)
       if (allocated(error)) return
       call inline_rows(c, t, counts, 'material', material_columns, c%material_table_rows, error)
+      if (allocated(error)) return
+      do k = 1, max_segments
+         call inline_rows(c, t, counts, trim(segment_group(k)), material_columns, &
+                          c%segments(k)%material_table_rows, error)
+         if (allocated(error)) return
+      end do
    contains
       !> An end's table_y (3-D model): left out, or one value a row.
       subroutine optional_column(group, rows)
@@ -250,13 +257,13 @@ contains
                group = word_at(lines(i), j + 1)
                if (len(group) == 0) then
                   call fatal_error(error, path//': line '//str(i)//': "&" without a group name; allowed: '// &
-                                   join_names(group_names, '&'), stat_input)
+                                   group_list(group_names, '&', '', ', '), stat_input)
                   return
                end if
                ig = findloc_name(group_names, group)
                if (ig == 0) then
                   call fatal_error(error, path//': line '//str(i)//': unknown group &'//group// &
-                                   '; allowed: '//join_names(group_names, '&'), stat_input)
+                                   '; allowed: '//group_list(group_names, '&', '', ', '), stat_input)
                   return
                end if
                if (present_group(ig)) then
@@ -297,7 +304,7 @@ contains
       end if
       if (.not. any(present_group)) then
          call fatal_error(error, path//': no namelist group found; expected some of '// &
-                          join_names(group_names, '&'), stat_input)
+                          group_list(group_names, '&', '', ', '), stat_input)
       end if
 
    contains

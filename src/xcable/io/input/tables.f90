@@ -10,7 +10,7 @@ module xcable_io_input_tables
    use xcable_io_input_scanner, only: inline_rows, line_len, load_lines, next_item, shown, shown_length
    implicit none
    private
-   public :: check_column, check_material_table, load_material_table, load_table, time_order
+   public :: check_column, check_material_table, load_material_table, load_segment_table, load_table, time_order
 
    !> Why the columns of the tables must increase (ends of the messages on their order).
    character(len=*), parameter :: time_order = 'the times must increase strictly', &
@@ -62,24 +62,55 @@ contains
       type(case_config), intent(inout) :: c
       !> Error naming the case file, the table file and its line.
       type(error_type), allocatable, intent(out) :: error
+      call load_law_table(c%source//': &material: ', c%material_table_file, c%material_table_strain, &
+                          c%material_table_tension, c%material_table_rows, error)
+   end subroutine load_material_table
+
+   !> Read the table_file of &segment_k, if given, into the segment's rows of the table law,
+   !> as load_material_table reads &material's.
+   subroutine load_segment_table(c, k, error)
+      !> The case; the segment's table rows filled from the file.
+      type(case_config), intent(inout) :: c
+      !> Segment, 1 .. segment_count.
+      integer, intent(in) :: k
+      !> Error naming the case file, the segment's group, the table file and its line.
+      type(error_type), allocatable, intent(out) :: error
+      associate (g => c%segments(k))
+         call load_law_table(c%source//': &segment_'//str(k)//': ', g%material_table_file, g%material_table_strain, &
+                             g%material_table_tension, g%material_table_rows, error)
+      end associate
+   end subroutine load_segment_table
+
+   !> Read the rows of a table law from its file ('' : none): strain and tension a line.
+   subroutine load_law_table(group_prefix, file, strain, tension, rows, error)
+      !> Start of every message: the case file and the group ('case.nml: &material: ').
+      character(*), intent(in) :: group_prefix
+      !> The table file.
+      character(*), intent(in) :: file
+      !> The strains and tensions; filled from the file.
+      real(dp), intent(inout) :: strain(:), tension(:)
+      !> Rows given inline in; rows read out.
+      integer, intent(inout) :: rows
+      !> Error naming the case file, the table file and its line.
+      type(error_type), allocatable, intent(out) :: error
       real(dp), allocatable :: values(:, :)
       integer, allocatable :: lines(:)
       character(:), allocatable :: prefix
-      integer :: rows
+      integer :: n
 
-      if (len_trim(c%material_table_file) == 0) return
-      prefix = c%source//": &material: table_file = '"//trim(c%material_table_file)//"': "
-      call read_table_file(prefix, trim(c%material_table_file), 'table_strain', c%material_table_rows, 2, 2, &
-                           'strain and tension', values, lines, rows, error)
+      if (len_trim(file) == 0) return
+      prefix = group_prefix//"table_file = '"//trim(file)//"': "
+      call read_table_file(prefix, trim(file), 'table_strain', rows, 2, 2, &
+                           'strain and tension', values, lines, n, error)
       if (allocated(error)) return
-      call check_column(prefix, 'strain', values(1:rows, 1), strain_order, error, lines(1:rows))
+      call check_column(prefix, 'strain', values(1:n, 1), strain_order, error, lines(1:n))
       if (allocated(error)) return
-      call check_column(prefix, 'tension', values(1:rows, 2), tension_order, error, lines(1:rows))
+      call check_column(prefix, 'tension', values(1:n, 2), tension_order, error, lines(1:n))
       if (allocated(error)) return
-      c%material_table_strain(1:rows) = values(1:rows, 1)
-      c%material_table_tension(1:rows) = values(1:rows, 2)
-      c%material_table_rows = rows
-   end subroutine load_material_table
+      strain(1:n) = values(1:n, 1)
+      tension(1:n) = values(1:n, 2)
+      rows = n
+   end subroutine load_law_table
 
    !> Read a table file (of an end or of the material): min_columns to
    !> size(values, 2) numbers a line, the same number on every line, '#'
@@ -229,14 +260,17 @@ contains
    !> The rows of the table law: only for law = 'table', and there given
    !> (inline or from table_file), at least 2, with strains and tensions
    !> strictly increasing (a table_file is read into the rows before, by load_material_table).
-   subroutine check_material_table(c, error)
+   subroutine check_material_table(c, error, group)
       !> The case (law word and rows checked against the schema).
       type(case_config), intent(in) :: c
       !> Error naming file, group, variable, value and what is allowed.
       type(error_type), allocatable, intent(out) :: error
+      !> The group named in messages (default 'material'; 'segment_k' for the case as a segment sees it).
+      character(*), intent(in), optional :: group
       character(:), allocatable :: prefix, rows, law
       integer :: k, n
       prefix = c%source//': &material: '
+      if (present(group)) prefix = c%source//': &'//group//': '
       n = c%material_table_rows
       law = "law = '"//trim(c%law)//"'"
       if (c%law /= 'table') then

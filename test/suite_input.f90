@@ -531,7 +531,7 @@ contains
          "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
          "   current_z = 0, surface_z = 0, air_density = 0 /"//nl // &
          "&seabed depth = 0, slope_x = 0, slope_y = 0, stiffness = 3e6, damping = 300000, mu_axial = 0,"//nl // &
-         "   mu_lateral = 0, slip_velocity = 0.01, static_friction = 'none' /"//nl // &
+         "   mu_lateral = 0, slip_velocity = 0.01, bathymetry_file = '', static_friction = 'none' /"//nl // &
          "! &end_a: the table was read from table_file = '"//table_path//"'"//nl // &
          "&end_a kind = 'motion', x = 0, y = 0, z = 0, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
          "   history = 'constant', ramp_time = 0, motion = 'table', amplitude = 0, period = 1, phase = 0,"//nl // &
@@ -566,7 +566,7 @@ contains
          "&fluid density = 0, cd_normal = 0, cd_tangential = 0, ca_normal = 0, current_x = 0, current_y = 0,"//nl // &
          "   current_z = 0, surface_z = 0, air_density = 0 /"//nl // &
          "&seabed depth = 0, slope_x = 0, slope_y = 0, stiffness = 3e6, damping = 300000, mu_axial = 0,"//nl // &
-         "   mu_lateral = 0, slip_velocity = 0.01, static_friction = 'none' /"//nl // &
+         "   mu_lateral = 0, slip_velocity = 0.01, bathymetry_file = '', static_friction = 'none' /"//nl // &
          "&static tension = 150000 /"//nl // &
          "&end_a kind = 'fixed', x = 0, y = 0, z = 0, force_x = 0, force_y = 0, force_z = 0, torque = 0,"//nl // &
          "   history = 'constant', ramp_time = 0, motion = 'harmonic', amplitude = 0, period = 1, phase = 0,"//nl // &

@@ -7,7 +7,7 @@ set output 'bergdahl_wave.png'
 set multiplot layout 2,1 title "Lindahl's chain (Bergdahl et al. 2016), R = 0.2 m: top tension, the last three measured cycles"
 set xlabel 'time on the measured record (s)'
 set ylabel 'tension (N)'
-set key top left
+set key top left Left reverse
 set grid
 set title 'T = 1.25 s'
 plot 'data/bergdahl_wave_T1p25.tsv' using 1:2 with lines lw 1.5 lc rgb '#c0392b' title 'measured', \
@@ -22,7 +22,7 @@ set terminal pngcairo size 700,640 font ',11'
 set title 'Mean cycle maximum of the top tension: xcable against the article'
 set xlabel 'measured (N)'
 set ylabel 'xcable (N)'
-set key top left
+set key top left Left reverse
 set size square
 set xrange [20:85]
 set yrange [20:85]

@@ -43,11 +43,13 @@ Scene (x along the line, z up, still water level z = 0, tank floor z = -3 m):
 xcable's top tension is /history/end_b/tension (the end cell's tension carried to the end).
 
 Usage:
-  python3 bench/experiment/bergdahl.py wave  [--nodes 201] [--dt 2.5e-4] [--period 1.25 3.5]
-  python3 bench/experiment/bergdahl.py table [--nodes 201] [--dt 2.5e-4] [--periods ...] [--radii ...]
-  python3 bench/experiment/bergdahl.py figure
-Common options: --exe bin/xcable, --work DIR (runs kept there, reused when present),
---ca-volume, --jobs N.
+  python3 bergdahl.py wave  [--period 1.25 3.5] [--resolution NODES:DT ...]   (each resolution)
+  python3 bergdahl.py table [--periods ...] [--radii ...] [--resolution NODES:DT]  (the last one)
+  cd bench/experiment && gnuplot bergdahl.gp   (figures from the --tsv data)
+Common options: --exe bin/xcable, --work DIR (runs kept there, reused when present; default
+bench/experiment/runs), --jobs N (2), --settle N (2 cycles after the start), --assess N (5 cycles
+compared), --tsv DIR (figure data). Sensitivities (not the scene): --ca-volume,
+--seabed-stiffness PA, --friction MU, --damping C (material, N s; Moody's input has 2).
 """
 
 import argparse
@@ -84,6 +86,7 @@ KBOT = 3.0e9                      # Pa (per m of penetration, per m of diameter)
 CBOT = 2.0 * math.sqrt(KBOT * DIAM * MASS) / DIAM   # critical ratio 1, per m of diameter
 MU = 0.3
 VSLIP = 0.01
+DAMPING = 0.0                     # N s, material (Kelvin-Voigt); Moody's input has xi = 2 N s
 ANCHOR = (0.0, -3.0)
 FAIRLEAD = (32.554, 0.3)
 
@@ -129,7 +132,7 @@ def write_case(work, name, period, radius, nodes, dt, t_end, ca, ramp_cycles=2.0
         f.write(f"""! Bergdahl et al. (2016), doi:10.3390/jmse4010005: Lindahl's 33 m chain, T = {period} s, R = {radius} m
 &cable    length = {LENGTH}, diameter = {DIAM}, density = {STEEL}, area = {AREA:.10e},
           bending_stiffness = 1e-6, gravity = {G} /
-&material law = 'linear', ea = {EA}, compression = 'none' /
+&material law = 'linear', ea = {EA}, compression = 'none', damping = {DAMPING} /
 &fluid    density = {RHO_W}, cd_normal = {CDN}, cd_tangential = {CDT:.10f}, ca_normal = {ca:.10f},
           surface_z = 0, air_density = 0 /
 &seabed   depth = {DEPTH}, stiffness = {KBOT}, damping = {CBOT:.6e}, mu_axial = {MU}, mu_lateral = {MU},
@@ -195,7 +198,10 @@ class Case:
         self.t_end = self.start + assess * period
         self.ca = ca
         self.name = (f'{tag}T{period:.2f}_R{radius:.3f}_n{nodes}_dt{dt:.4g}'
-                     + ('_cavol' if ca == CA_VOLUME else '')).replace('.', 'p')
+                     + ('_cavol' if ca == CA_VOLUME else '')
+                     + (f'_k{KBOT:.0e}' if KBOT != 3.0e9 else '')
+                     + (f'_mu{MU:g}' if MU != 0.3 else '')
+                     + (f'_c{DAMPING:g}' if DAMPING != 0 else '')).replace('.', 'p')
         self.nml = os.path.join(work, self.name + '.nml')
         self.h5 = os.path.join(work, self.name + '.h5')
 
@@ -316,7 +322,7 @@ def write_wave_tsv(args, cases):
         back = math.ceil((ts[-1] - shift - c.t_end) / c.period + 1e-9) * c.period
         with open(os.path.join(args.tsv, f'bergdahl_wave_T{c.period:.2f}.tsv'.replace('.', 'p', 1)), 'w') as f:
             f.write(f'# Bergdahl et al. (2016) T = {c.period} s, R = 0.2 m: time on the measured record (s), measured '
-                    f'tension (N), xcable (nodes {c.nodes}, dt {c.dt} s) moved by {shift:.3f} s less {back:.2f} s\n')
+                    f'tension (N), xcable (nodes {c.nodes}, dt {c.dt} s) at its time t - {shift:.3f} s - ({back:.2f} s)\n')
             for a, b in zip(ts, np.interp(ts, te, ye)):
                 f.write(f'{a:.4f}\t{b:.4f}\t{np.interp(a - shift - back, t, y):.4f}\n')
 
@@ -349,6 +355,7 @@ def cmd_table(args):
 
 
 def main():
+    global KBOT, CBOT, MU, DAMPING
     ap = argparse.ArgumentParser(description=__doc__, formatter_class=argparse.RawDescriptionHelpFormatter)
     ap.add_argument('command', choices=['wave', 'table'])
     ap.add_argument('--exe', default=os.path.join(ROOT, 'bin', 'xcable'))
@@ -364,7 +371,14 @@ def main():
     ap.add_argument('--periods', nargs='+', type=float, default=list(PERIODS), help='table: periods')
     ap.add_argument('--radii', nargs='+', type=float, default=list(RADII), help='table: radii')
     ap.add_argument('--tsv', default=None, help='directory for the figure data')
+    ap.add_argument('--seabed-stiffness', type=float, default=KBOT,
+                    help='sensitivity: seabed stiffness (Pa), its damping kept at the critical ratio')
+    ap.add_argument('--friction', type=float, default=MU, help='sensitivity: seabed friction coefficient')
+    ap.add_argument('--damping', type=float, default=DAMPING,
+                    help="sensitivity: material damping (N s), Moody's input has xi = 2")
     args = ap.parse_args()
+    KBOT, MU, DAMPING = args.seabed_stiffness, args.friction, args.damping
+    CBOT = 2.0 * math.sqrt(KBOT * DIAM * MASS) / DIAM
     os.makedirs(args.work, exist_ok=True)
     {'wave': cmd_wave, 'table': cmd_table}[args.command](args)
 

@@ -32,7 +32,9 @@ contains
                new_unittest('model_3d_planar_segments_equal_2d', test_3d_planar), &
                new_unittest('model_3d_segments_turned_equal_2d', test_3d_turned), &
                new_unittest('model_3d_ledger_with_a_segment_that_cannot_push', test_3d_ledger), &
-               new_unittest('model_3d_segments_jacobians', test_3d_jacobian)]
+               new_unittest('model_3d_segments_jacobians', test_3d_jacobian), &
+               new_unittest('model_3d_break_at_the_segment_mbl_equals_2d', test_3d_mbl), &
+               new_unittest('model_3d_static_friction_on_segments_equals_2d', test_3d_friction)]
    end subroutine collect_segments
 
    !> 50 m of a heavy stiff segment (area 0.01 m^2, 8000 kg/m^3: 784.8 N/m, EA 5e8 N) from end
@@ -592,4 +594,118 @@ contains
       write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'three segments in water in 3-D: Jacobian deviations', &
          worst_step, ' (step), ', worst_static, ' (statics) of the row scale'
    end subroutine test_3d_jacobian
+   !> test_mbl's case 1 (the chain's MBL reached first) with model = '2d' and '3d', on to 0.2 s:
+   !> the 3-D run parts in the chain where the planar run does (the same node, the time to
+   !> 1e-12 s), into two pieces with their own sections (the chain; the
+   !> chain's rest and the rope), whose states at 0.2 s are the planar ones (positions to 1e-12
+   !> of the largest coordinate).
+   subroutine test_3d_mbl(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim(2)
+      type(case_config) :: c
+      real(dp) :: dr, scale
+      integer :: m, p, k, n
+      do m = 1, 2
+         c = chain_rope_config(101)
+         c%model = merge('2d', '3d', m == 1)
+         c%end_b%kind = 'motion'
+         c%end_b%motion = 'harmonic'
+         c%end_b%amplitude = 3
+         c%end_b%period = 8
+         c%end_b%direction_x = end_b(1)/norm2(end_b)
+         c%end_b%direction_z = end_b(2)/norm2(end_b)
+         c%break_enabled = .true.
+         c%break_criterion = 'tension'
+         c%t_end = 0.2_dp
+         c%interval = 0
+         c%newton_tol = 1.0e-12_dp
+         c%mbl = 6.0e4_dp
+         c%segments(2)%mbl = 1.0e7_dp
+         c%given = c%given//' segment_2%mbl'
+         call sim(m)%prepare(c, error)
+         if (allocated(error)) return
+         call sim(m)%run(error=error)
+         if (allocated(error)) return
+      end do
+      call check(error, size(sim(2)%rod3%pieces) == 2, 'the 3-D line did not part inside: '// &
+                 str(size(sim(2)%rod3%pieces))//' pieces')
+      if (allocated(error)) return
+      call check(error, size(sim(2)%rod3%pieces(1)%run%problem%piece%sections) == 1 .and. &
+                 size(sim(2)%rod3%pieces(2)%run%problem%piece%sections) == 2, 'the 3-D pieces have '// &
+                 str(size(sim(2)%rod3%pieces(1)%run%problem%piece%sections))//' and '// &
+                 str(size(sim(2)%rod3%pieces(2)%run%problem%piece%sections))//' sections, not 1 and 2')
+      if (allocated(error)) return
+      dr = 0
+      scale = 0
+      do p = 1, 2
+         associate (r2 => sim(1)%rod%pieces(p)%r, x3 => sim(2)%rod3%pieces(p)%run%x)
+            n = size(r2, 2)
+            do k = 1, n
+               dr = max(dr, abs(x3(3*k - 2) - r2(1, k)), abs(x3(3*k - 1)), abs(x3(3*k) - r2(2, k)))
+            end do
+            scale = max(scale, maxval(abs(r2)))
+         end associate
+      end do
+      dr = dr/scale
+      write (output_unit, '(4x,a,f8.2,a,f8.2,a,es9.2,a,es9.2,a)') 'the chain''s MBL in 3-D: parts at s =', &
+         sim(2)%rod%scene%s_break, ' m (2-D:', sim(1)%rod%scene%s_break, ' m), times', &
+         abs(sim(2)%rod%scene%break_time - sim(1)%rod%scene%break_time), ' s apart; positions at 0.2 s', dr, &
+         ' of the largest'
+      call check(error, sim(2)%rod%scene%s_break == sim(1)%rod%scene%s_break .and. &
+                 abs(sim(2)%rod%scene%break_time - sim(1)%rod%scene%break_time) < 1.0e-12_dp, 'the 3-D line parts '// &
+                 'at s = '//str(sim(2)%rod%scene%s_break)//' m, t = '//str(sim(2)%rod%scene%break_time)// &
+                 ' s, the planar one at s = '//str(sim(1)%rod%scene%s_break)//' m, t = '// &
+                 str(sim(1)%rod%scene%break_time)//' s')
+      if (allocated(error)) return
+      ! Measured: times 7.1e-14 s apart, positions 3.3e-13.
+      call check(error, dr < 1.0e-12_dp, 'after the break the 3-D pieces differ from the planar ones by '//str(dr))
+   end subroutine test_3d_mbl
+   !> A line of three segments in water lying on the bottom with the statics' friction (&seabed
+   !> static_friction = 'end_a', mu_axial 1: it takes the grounded line's tension to zero), a
+   !> heavy chain at each end and a rope that cannot push (compression = 'none') between them,
+   !> each segment's seabed on its own cells: the 3-D statics find the planar static state
+   !> (positions to 1e-12 of the largest coordinate, tensions to 1e-9 of the largest; measured
+   !> 8.9e-17 and 2.8e-11). (They start from it: Newton takes it also without each section's
+   !> compressive branch standing in, which the 3-D statics do as the planar uncut_laws.)
+   subroutine test_3d_friction(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim2, sim3
+      type(case_config) :: c
+      real(dp) :: dr, dt
+      c = statics_config(201)
+      c%law = 'linear'
+      c%ea = 1.0e8_dp
+      c%diameter = 0.1_dp
+      c%density = 2000
+      c%bending_stiffness = 1.0e-3_dp
+      c%fluid_density = 1025
+      c%surface_z = 10
+      c%seabed_depth = 40
+      c%seabed_stiffness = 1.0e10_dp
+      c%mu_axial = 1
+      c%static_friction = 'end_a'
+      c%end_a%z = -40
+      c%end_b%x = 80
+      c%end_b%z = 0
+      c%segment_count = 3
+      c%segments(1:3)%length = [10.0_dp, 50.0_dp, 40.0_dp]
+      c%segments(1)%density = 7000
+      c%segments(2)%ea = 2.0e7_dp
+      c%segments(2)%compression = 'none'
+      c%segments(3)%density = 7000
+      c%length = 100
+      c%given = 'end_a%z end_b%x end_b%z segment_1%length segment_1%density segment_2%length segment_2%ea '// &
+                'segment_2%compression segment_3%length segment_3%density'
+      c%model = '2d'
+      call sim2%prepare(c, error)
+      if (allocated(error)) return
+      c%model = '3d'
+      call sim3%prepare(c, error)
+      if (allocated(error)) return
+      call state_difference(sim2, sim3, sim2%rod%static%r, sim3%rod3%pieces(1)%run%x, 0.0_dp, dr, dt)
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a)') 'three segments on the bottom with static friction, 3-D '// &
+         'statics against 2-D: positions', dr, ', tensions', dt, ' of the largest'
+      call check(error, dr < 1.0e-12_dp .and. dt < 1.0e-9_dp, 'the 3-D statics with friction differ from the '// &
+                 'planar: positions '//str(dr)//', tensions '//str(dt))
+   end subroutine test_3d_friction
 end module suite_segments

@@ -46,7 +46,8 @@ module xcable_driver_rod3d_drive
    use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_driver_rod3d_run, only: rod3d_run
-   use xcable_model_rod3d, only: rod3d_piece, bend_moment3 => bend_moment, bend_energy3 => bend_energy
+   use xcable_model_rod3d, only: rod3d_piece, rod3d_section, bend_moment3 => bend_moment, bend_energy3 => bend_energy
+   use xcable_scene_scene, only: scene_type, section_cells, section_at
    use xcable_numerics_vector3, only: cross3
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
@@ -61,7 +62,7 @@ module xcable_driver_rod3d_drive
    public :: rod3d_drive, n_fields3, field3_names
    ! For the submodule driver/rod3d_drive/statics.f90 (gfortran 12 makes a module's private
    ! procedures local symbols that its submodules cannot link to).
-   public :: state_fields
+   public :: state_fields, piece_sections3
 
    !> One 3-D piece of cable in a run.
    type :: piece3
@@ -189,9 +190,28 @@ contains
       type(rod_run), intent(inout) :: run
       real(dp), intent(in) :: h
       logical, intent(out) :: retry
-      associate (r3 => self%pieces(1)%run, n => self%pieces(1)%run%problem%piece%n)
-         call watch_step(run, h, reshape(r3%x_old(1:3*n), [3, n]), reshape(r3%x(1:3*n), [3, n]), &
-                         r3%problem%piece%ds, r3%problem%piece%law, retry)
+      real(dp), allocatable :: tensions(:, :), r0(:, :), r1(:, :)
+      integer :: c, j
+      associate (r3 => self%pieces(1)%run, n => self%pieces(1)%run%problem%piece%n, &
+                 piece => self%pieces(1)%run%problem%piece)
+         if (size(run%scene%sections) > 1) then
+            ! A line of segments: each cell against its own segment's MBL (as the planar run's
+            ! planar_watch, driver/rod_run/step.f90).
+            r0 = reshape(r3%x_old(1:3*n), [3, n])
+            r1 = reshape(r3%x(1:3*n), [3, n])
+            allocate (tensions(n - 1, 3))
+            do c = 1, n - 1
+               tensions(c, 1) = piece%cell_tension(c, norm2(r0(:, c + 1) - r0(:, c))/piece%ds(c) - 1)
+               tensions(c, 2) = piece%cell_tension(c, norm2(r1(:, c + 1) - r1(:, c))/piece%ds(c) - 1)
+               j = section_at(run%scene, 0.5_dp*(piece%s(c) + piece%s(c + 1)))
+               tensions(c, 3) = 0
+               if (run%scene%sections(j)%mbl > 0) tensions(c, 3) = run%watch%mbl/run%scene%sections(j)%mbl
+            end do
+            call watch_step(run, h, r0, r1, piece%ds, piece%law, retry, tensions)
+         else
+            call watch_step(run, h, reshape(r3%x_old(1:3*n), [3, n]), reshape(r3%x(1:3*n), [3, n]), &
+                            piece%ds, piece%law, retry)
+         end if
       end associate
       if (retry) call self%pieces(1)%run%reject()
    end subroutine drive_watch
@@ -493,7 +513,8 @@ contains
                end do
                if (allocated(h%measures)) then
                   if (p == 1) h%measures(:, i) = 0
-                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, h%measures(:, i))
+                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, h%measures(:, i), &
+                                     piece%s)
                end if
                rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
                call note_min_strain(rod%summary, piece%l1, self%pieces(p)%column, rod%s_out, rod%t)
@@ -509,12 +530,13 @@ contains
             associate (piece => self%pieces(1)%run%problem%piece, x => self%pieces(1)%run%x, &
                        v => self%pieces(1)%run%v, k => rod%break_node)
                e = x(3*k + 1:3*k + 3) - x(3*k - 2:3*k)
-               f = piece%law%tension(norm2(e)/piece%ds(k) - 1)*e/norm2(e)
-               ten = 0.5_dp*(norm2(f) + piece%law%tension(norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3))/piece%ds(k - 1) - 1))
+               f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
+               ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)) &
+                                                                  /piece%ds(k - 1) - 1))
                h%ends(:, 3, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
                h%ends_y(:, 3, i) = [x(3*k - 1), v(2, k), f(2)]
                e = x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)
-               f = -piece%law%tension(norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
+               f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
                h%ends(:, 4, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
                h%ends_y(:, 4, i) = [x(3*k - 1), v(2, k), f(2)]
             end associate
@@ -551,9 +573,9 @@ contains
       m = min(3, piece%n - 1)
       do j = 1, m
          c = merge(j, piece%n - j, side == 1)
-         cells(j) = piece%law%tension(piece%l1(c) - 1)
+         cells(j) = piece%cell_tension(c, piece%l1(c) - 1)
       end do
-      end_tension = max(end_value(cells(1:m), 1), piece%law%tension(-0.99_dp))
+      end_tension = max(end_value(cells(1:m), 1), piece%cell_tension(merge(1, piece%n - 1, side == 1), -0.99_dp))
    end function end_tension
 
    !> The break. At a held end: the end lets go with the support's force.
@@ -582,8 +604,8 @@ contains
       associate (run => self%pieces(1)%run, piece => self%pieces(1)%run%problem%piece)
          allocate (res(size(run%x)))
          call piece%static_system(run%x, rod%t, res, unused, .false.)
-         self%cut_force(:, 1) = piece%force(:, kb - 1) + [0.0_dp, 0.0_dp, 0.5_dp*piece%weight*piece%ds(kb - 1)]
-         self%cut_force(:, 2) = -piece%force(:, kb) + [0.0_dp, 0.0_dp, 0.5_dp*piece%weight*piece%ds(kb)]
+         self%cut_force(:, 1) = piece%force(:, kb - 1) + [0.0_dp, 0.0_dp, 0.5_dp*cell_weight(piece, kb - 1)*piece%ds(kb - 1)]
+         self%cut_force(:, 2) = -piece%force(:, kb) + [0.0_dp, 0.0_dp, 0.5_dp*cell_weight(piece, kb)*piece%ds(kb)]
          ! The couple about the normal of the node's cells (none on a straight node: axis -y).
          axis = cross3(piece%e1(:, kb - 1), piece%e1(:, kb))
          if (norm2(axis) > 0) then
@@ -597,7 +619,7 @@ contains
          self%cut_axis(:, 1) = axis
          self%cut_axis(:, 2) = axis
          tau = piece%twist_rates(run%x)
-         self%cut_torque = piece%gip*[tau(kb - 1), tau(kb)]
+         self%cut_torque = [piece%gip_at(kb - 1)*tau(kb - 1), piece%gip_at(kb)*tau(kb)]
          run%end_work = run%end_work - bend_energy3(piece, kb, piece%th1(kb))
       end associate
       call release(self, rod, error)
@@ -614,6 +636,50 @@ contains
       call set_cut_force(self%pieces(1)%run%problem%piece%end_b, self%cut_force(:, 1))
       call set_cut_force(self%pieces(2)%run%problem%piece%end_a, self%cut_force(:, 2))
    end subroutine split
+
+   !> Weight per length of cell c, N/m (a line of segments: its section's).
+   pure real(dp) function cell_weight(piece, c)
+      type(rod3d_piece), intent(in) :: piece
+      integer, intent(in) :: c
+      if (allocated(piece%sections)) then
+         cell_weight = piece%sections(piece%cell_sec(c))%weight
+      else
+         cell_weight = piece%weight
+      end if
+   end function cell_weight
+
+   !> A 3-D piece on a line of segments: its sections from the scene's (rod3d_piece
+   !> set_sections), those with cells on the piece (its nodes' arc lengths s), as the planar
+   !> run's piece_sections (model/rod_statics.f90). Nothing for a scene of one segment.
+   subroutine piece_sections3(piece, scene)
+      !> Piece, initialised on its part of the line.
+      type(rod3d_piece), intent(inout) :: piece
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      integer, allocatable :: last(:), keep(:)
+      type(rod3d_section), allocatable :: sections(:)
+      integer :: j, prev
+      if (size(scene%sections) <= 1) return
+      last = section_cells(scene, piece%s)
+      allocate (keep(0))
+      prev = 0
+      do j = 1, size(last)
+         if (last(j) > prev) keep = [keep, j]
+         prev = max(prev, last(j))
+      end do
+      allocate (sections(size(keep)))
+      do j = 1, size(keep)
+         associate (sec => scene%sections(keep(j)))
+            allocate (sections(j)%law, source=sec%law)
+            sections(j)%mass = sec%mass
+            sections(j)%weight = sec%weight
+            sections(j)%ei = sec%ei
+            sections(j)%gip = sec%gip
+            sections(j)%damping = sec%damping
+         end associate
+      end do
+      call piece%set_sections(last(keep), sections)
+   end subroutine piece_sections3
 
    !> The starting force of a cut end (a force_end) set to f (x, y, z).
    subroutine set_cut_force(end, f)
@@ -688,6 +754,8 @@ contains
                                   whole%damping)
                end if
                if (allocated(error)) return
+               ! A line of segments: each piece its sections (the laws of the whole).
+               call piece_sections3(piece, rod%scene)
                if (allocated(whole%loads)) piece%loads = whole%loads
                piece%load_factor = whole%load_factor
                call run%init(old(1)%run%options%tolerance)

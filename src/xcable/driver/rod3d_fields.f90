@@ -66,15 +66,25 @@ contains
             t2 = tan(0.5_dp*th(k))
             kap(:, k) = 2*t2/piece%dual_length(k)*c
             ! The moment dB/dth = 2 EI t (1 + t^2) / h along the curvature vector.
-            mom(:, k) = 2*piece%ei*t2*(1 + t2*t2)/piece%dual_length(k)*c
+            mom(:, k) = 2*piece%ei_at(k)*t2*(1 + t2*t2)/piece%dual_length(k)*c
          end if
       end do
       do j = 1, n - 1
          eps(j) = l(j) - 1
-         ten(j) = piece%law%tension(eps(j))
-         if (piece%damping > 0) ten(j) = damped_tension(piece%law, eps(j), ten(j), &
-                                                        piece%damping*dot_product(e(:, j), v(:, j + 1) - v(:, j))/ &
-                                                        (piece%ds(j)*l(j)))
+         if (allocated(piece%sections)) then
+            ! A line of segments: the cell's own law and damping.
+            associate (sec => piece%sections(piece%cell_sec(j)))
+               ten(j) = sec%law%tension(eps(j))
+               if (sec%damping > 0) ten(j) = damped_tension(sec%law, eps(j), ten(j), &
+                                                            sec%damping*dot_product(e(:, j), v(:, j + 1) - v(:, j))/ &
+                                                            (piece%ds(j)*l(j)))
+            end associate
+         else
+            ten(j) = piece%law%tension(eps(j))
+            if (piece%damping > 0) ten(j) = damped_tension(piece%law, eps(j), ten(j), &
+                                                           piece%damping*dot_product(e(:, j), v(:, j + 1) - v(:, j))/ &
+                                                           (piece%ds(j)*l(j)))
+         end if
          dm = (mom(:, j + 1) - mom(:, j))/(piece%ds(j)*l(j))
          sn(j) = -dot_product(dm, bc(:, j))
          sb(j) = dot_product(dm, nc(:, j))
@@ -82,7 +92,7 @@ contains
       tau = piece%twist_rates(x)
       do k = 1, n
          if (k == 1) then
-            fields(k, 1) = max(end_value(ten, 1), piece%law%tension(-0.99_dp))
+            fields(k, 1) = max(end_value(ten, 1), piece%cell_tension(1, -0.99_dp))
             fields(k, 2) = end_value(sn, 1)
             fields(k, 3) = max(end_value(eps, 1), -0.99_dp)
             extra(k, 5) = end_value(sb, 1)
@@ -90,7 +100,7 @@ contains
             nk = nc(:, 1)
             extra(k, 4) = tau(1)
          else if (k == n) then
-            fields(k, 1) = max(end_value(ten, 2), piece%law%tension(-0.99_dp))
+            fields(k, 1) = max(end_value(ten, 2), piece%cell_tension(n - 1, -0.99_dp))
             fields(k, 2) = end_value(sn, 2)
             fields(k, 3) = max(end_value(eps, 2), -0.99_dp)
             extra(k, 5) = end_value(sb, 2)

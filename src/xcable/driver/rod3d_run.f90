@@ -166,7 +166,7 @@ contains
       real(dp), intent(in) :: dt, theta
       real(dp), allocatable :: r0(:, :), r1(:, :), v1(:, :)
       real(dp) :: eps0, eps1, dv(3)
-      integer :: n, k, c
+      integer :: n, k, c, j
       associate (piece => self%problem%piece, x0 => self%x_old)
          n = piece%n
          r0 = reshape(x0(1:3*n), [3, n])
@@ -184,17 +184,36 @@ contains
          call book_end(1)
          call book_end(n)
          self%load_work = self%load_work + sum(piece%load_node*(r1 - r0))
-         ! Damping and numerical dissipation (theta > 1/2).
-         do c = 1, n - 1
-            eps0 = piece%l0(c) - 1
-            eps1 = piece%l1(c) - 1
-            if (piece%law%strain_slack > -huge(1.0_dp)) then
-               self%dissipated = self%dissipated + piece%ds(c)*slack_dissipation(piece%law, eps0, eps1, &
-                                                                                  piece%damping, dt, small_strain_step)
-            else
-               self%dissipated = self%dissipated + piece%damping*piece%ds(c)*(eps1 - eps0)**2/dt
-            end if
-         end do
+         ! Damping and numerical dissipation (theta > 1/2); on a line of segments each section
+         ! with its law and damping.
+         if (allocated(piece%sections)) then
+            do j = 1, size(piece%sections)
+               associate (sec => piece%sections(j))
+                  do c = sec%first, sec%last
+                     eps0 = piece%l0(c) - 1
+                     eps1 = piece%l1(c) - 1
+                     if (sec%law%strain_slack > -huge(1.0_dp)) then
+                        self%dissipated = self%dissipated + piece%ds(c)*slack_dissipation(sec%law, eps0, eps1, &
+                                                                                           sec%damping, dt, &
+                                                                                           small_strain_step)
+                     else
+                        self%dissipated = self%dissipated + sec%damping*piece%ds(c)*(eps1 - eps0)**2/dt
+                     end if
+                  end do
+               end associate
+            end do
+         else
+            do c = 1, n - 1
+               eps0 = piece%l0(c) - 1
+               eps1 = piece%l1(c) - 1
+               if (piece%law%strain_slack > -huge(1.0_dp)) then
+                  self%dissipated = self%dissipated + piece%ds(c)*slack_dissipation(piece%law, eps0, eps1, &
+                                                                                     piece%damping, dt, small_strain_step)
+               else
+                  self%dissipated = self%dissipated + piece%damping*piece%ds(c)*(eps1 - eps0)**2/dt
+               end if
+            end do
+         end if
          ! State-dependent ends (springs): what their damping took.
          if (piece%end_a%state_dependent()) call end_damping(piece%end_a, 1)
          if (piece%end_b%state_dependent()) call end_damping(piece%end_b, n)

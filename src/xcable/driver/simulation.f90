@@ -186,12 +186,6 @@ contains
       self%rod3 = fresh_rod3
       ! (Again on the second call of a break by tension: the first may have turned to 2-D.)
       self%model = config%model_to_run()
-      if (self%model == '3d' .and. size(scene%sections) > 1) then
-         call fatal_error(error, config%source//': &segment_1: a line of segments runs in the planar model only (for '// &
-                          'now): its ends, loads and motions must lie in one vertical plane (model = ''auto'' or ''2d'')', &
-                          stat_input)
-         return
-      end if
       ! model = 'auto' and a scene in one vertical plane that is not x-z: the 2-D run of the scene
       ! turned into x-z, its results turned back (driver/rod_run.f90, plane_azimuth).
       if (self%model == '3d' .and. trim(config%model) == 'auto') then

@@ -88,7 +88,7 @@ module xcable_model_rod3d
    use xcable_numerics_vector3, only: outer3, identity3, cross3
    implicit none
    private
-   public :: rod3d_piece, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
+   public :: rod3d_piece, rod3d_section, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
    public :: paper_euler_parameters, couple_plane, bend_energy, bend_moment, small_strain_step
    ! For the submodules in model/rod3d/ (see the wrappers at the end).
    public :: rod3d_unpack, rod3d_node_weight, rod3d_assemble
@@ -106,6 +106,16 @@ module xcable_model_rod3d
    real(dp), parameter :: small_rotation = 1.0e-4_dp
    !> Cell rotations in a step below this drop the third-order bracket of the discrete gradient.
    real(dp), parameter :: bracket_rotation = 1.0e-8_dp
+
+   !> One section of a 3-D piece on a line of segments: its cells (piece-local) and its material.
+   type :: rod3d_section
+      !> First and last cell.
+      integer :: first = 1, last = 0
+      !> Tension-strain law.
+      class(material_law), allocatable :: law
+      !> Mass and weight per unstretched length, kg/m and N/m; EI and GIp, N m^2; damping c, N s.
+      real(dp) :: mass = 0, weight = 0, ei = 0, gip = 0, damping = 0
+   end type rod3d_section
 
    !> One piece of cable between two ends, in 3-D.
    type :: rod3d_piece
@@ -149,7 +159,24 @@ module xcable_model_rod3d
       !> The twist angle psi_1 is held at when no end holds the twist (the rigid spin), rad: 0, or
       !> for a piece cut from a twisted cable its first node's angle at the cut.
       real(dp) :: psi_anchor = 0
+      !> A line of segments (set_sections; not allocated: one uniform material, the scalars
+      !> mass_per_length, weight, ei, gip, damping and law above, which then are the first
+      !> section's): the sections, the section of each cell, per node its weight (N) and EI (N
+      !> m^2: the mean of its two cells' weighted by their lengths), and per cell its GIp (N m^2).
+      type(rod3d_section), allocatable :: sections(:)
+      integer, allocatable :: cell_sec(:)
+      real(dp), allocatable :: node_w(:), node_ei(:), cell_gip(:)
    contains
+      !> A line of segments: the sections' cells and materials.
+      procedure :: set_sections => rod3d_set_sections
+      !> The tension of cell c at a strain, N.
+      procedure :: cell_tension => rod3d_cell_tension
+      !> Whether the law of any cell has a kink (a rope that cannot push).
+      procedure :: has_kink => rod3d_has_kink
+      !> EI of node k, N m^2.
+      procedure :: ei_at => rod3d_ei_at
+      !> GIp of cell c, N m^2.
+      procedure :: gip_at => rod3d_gip_at
       !> Set the distributed loads; error for a load without a 3-D form.
       procedure :: set_loads => rod3d_set_loads
       !> Set up grid, material and work arrays.
@@ -215,6 +242,19 @@ module xcable_model_rod3d
          !> Weight of the second-difference kinetic energy; Kelvin-Voigt damping c, N s (0 if absent).
          real(dp), intent(in), optional :: mu2, damping
       end subroutine rod3d_init
+
+      !> A line of segments: section j holds the cells last(j - 1) + 1 .. last(j) with the law,
+      !> mass (kg/m), weight (N/m), EI and GIp (N m^2) and damping (N s) of sections(j). The
+      !> piece keeps the grid and ends of init; the mass matrix is rebuilt with each cell's mass
+      !> (as the planar rod's set_sections), the scalars become the first section's.
+      module subroutine rod3d_set_sections(self, last, sections)
+         !> Piece.
+         class(rod3d_piece), intent(inout) :: self
+         !> Last cell of each section (the last one n - 1).
+         integer, intent(in) :: last(:)
+         !> The sections' materials (their first and last are set here).
+         type(rod3d_section), intent(in) :: sections(:)
+      end subroutine rod3d_set_sections
 
       !> Residual (and Jacobian) of the static equilibrium at time t: the exact gradient of U.
       module subroutine rod3d_static_system(self, x, t, residual, jacobian, with_jacobian)
@@ -352,11 +392,26 @@ contains
       real(dp), intent(in) :: update(:)
       !> Tolerance on the scaled update (scale of the positions: length_ref).
       real(dp), intent(in) :: tolerance
+      real(dp), allocatable :: du(:, :)
+      integer :: j, a, b
       trusted = .true.
-      if (.not. self%piece%law%strain_slack > -huge(1.0_dp)) return
-      trusted = .not. may_cross_kink(self%piece%law%strain_slack, self%piece%l1, self%piece%ds, &
-                                     reshape(update(1:3*self%piece%n), [3, self%piece%n]), &
-                                     tolerance*self%piece%length_ref)
+      if (.not. allocated(self%piece%sections)) then
+         if (.not. self%piece%law%strain_slack > -huge(1.0_dp)) return
+         trusted = .not. may_cross_kink(self%piece%law%strain_slack, self%piece%l1, self%piece%ds, &
+                                        reshape(update(1:3*self%piece%n), [3, self%piece%n]), &
+                                        tolerance*self%piece%length_ref)
+         return
+      end if
+      ! A line of segments: each section whose law has a kink, on its own cells.
+      if (.not. self%piece%has_kink()) return
+      du = reshape(update(1:3*self%piece%n), [3, self%piece%n])
+      do j = 1, size(self%piece%sections)
+         a = self%piece%sections(j)%first
+         b = self%piece%sections(j)%last
+         if (.not. self%piece%sections(j)%law%strain_slack > -huge(1.0_dp)) cycle
+         if (may_cross_kink(self%piece%sections(j)%law%strain_slack, self%piece%l1(a:b), self%piece%ds(a:b), &
+                            du(:, a:b + 1), tolerance*self%piece%length_ref)) trusted = .false.
+      end do
    end function rod3d_problem_estimate_trusted
 
    !> Number of unknowns (four per node).
@@ -391,7 +446,7 @@ contains
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_energy = 2*self%ei*fast_tan(0.5_dp*th)**2/self%dual_length(k)
+      bend_energy = energy_of(self%ei_at(k), self%dual_length(k), th)
    end function bend_energy
 
    !> dB/dth, N m.
@@ -399,25 +454,35 @@ contains
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      real(dp) :: t
-      t = fast_tan(0.5_dp*th)
-      bend_moment = 2*self%ei*t*(1 + t*t)/self%dual_length(k)
+      bend_moment = moment_of(self%ei_at(k), self%dual_length(k), th)
    end function bend_moment
 
-   !> d2B/dth2, N m.
-   pure real(dp) function bend_stiffness(self, k, th)
-      class(rod3d_piece), intent(in) :: self
-      integer, intent(in) :: k
-      real(dp), intent(in) :: th
+   !> 2 EI tan^2(th / 2) / h, J: bend_energy of a node of EI ei and length h.
+   pure real(dp) function energy_of(ei, h, th)
+      real(dp), intent(in) :: ei, h, th
+      energy_of = 2*ei*fast_tan(0.5_dp*th)**2/h
+   end function energy_of
+
+   !> dB/dth of a node of EI ei and length h, N m.
+   pure real(dp) function moment_of(ei, h, th)
+      real(dp), intent(in) :: ei, h, th
       real(dp) :: t
       t = fast_tan(0.5_dp*th)
-      bend_stiffness = self%ei*(1 + t*t)*(1 + 3*t*t)/self%dual_length(k)
-   end function bend_stiffness
+      moment_of = 2*ei*t*(1 + t*t)/h
+   end function moment_of
 
-   !> [B(th1) - B(th0)] / (th1 - th0) and its derivative in th1 (Taylor forms when close).
-   pure subroutine bend_divided(self, k, th0, th1, m, dm)
-      class(rod3d_piece), intent(in) :: self
-      integer, intent(in) :: k
+   !> d2B/dth2 of a node of EI ei and length h, N m.
+   pure real(dp) function stiffness_of(ei, h, th)
+      real(dp), intent(in) :: ei, h, th
+      real(dp) :: t
+      t = fast_tan(0.5_dp*th)
+      stiffness_of = ei*(1 + t*t)*(1 + 3*t*t)/h
+   end function stiffness_of
+
+   !> [B(th1) - B(th0)] / (th1 - th0) and its derivative in th1 (Taylor forms when close), of a
+   !> node of EI ei and length hk.
+   pure subroutine bend_divided(ei, hk, th0, th1, m, dm)
+      real(dp), intent(in) :: ei, hk
       real(dp), intent(in) :: th0, th1
       real(dp), intent(out) :: m, dm
       real(dp) :: h, mid, t, third
@@ -425,14 +490,67 @@ contains
       if (abs(h) < small_rotation) then
          mid = 0.5_dp*(th0 + th1)
          t = fast_tan(0.5_dp*mid)
-         third = self%ei*(1 + t*t)*t*(4 + 6*t*t)/self%dual_length(k)
-         m = bend_moment(self, k, mid) + third*h*h/24
-         dm = 0.5_dp*bend_stiffness(self, k, mid) + third*h/12
+         third = ei*(1 + t*t)*t*(4 + 6*t*t)/hk
+         m = moment_of(ei, hk, mid) + third*h*h/24
+         dm = 0.5_dp*stiffness_of(ei, hk, mid) + third*h/12
       else
-         m = (bend_energy(self, k, th1) - bend_energy(self, k, th0))/h
-         dm = (bend_moment(self, k, th1) - m)/h
+         m = (energy_of(ei, hk, th1) - energy_of(ei, hk, th0))/h
+         dm = (moment_of(ei, hk, th1) - m)/h
       end if
    end subroutine bend_divided
+
+   !> EI of node k, N m^2 (a line of segments: the length-weighted mean of its cells').
+   pure real(dp) function rod3d_ei_at(self, k) result(ei)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Node.
+      integer, intent(in) :: k
+      if (allocated(self%node_ei)) then
+         ei = self%node_ei(k)
+      else
+         ei = self%ei
+      end if
+   end function rod3d_ei_at
+
+   !> GIp of cell c, N m^2 (a line of segments: its section's).
+   pure real(dp) function rod3d_gip_at(self, c) result(gip)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Cell.
+      integer, intent(in) :: c
+      if (allocated(self%cell_gip)) then
+         gip = self%cell_gip(c)
+      else
+         gip = self%gip
+      end if
+   end function rod3d_gip_at
+
+   !> The tension of cell c at a strain (its section's law), N.
+   pure real(dp) function rod3d_cell_tension(self, c, strain) result(tension)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      !> Cell.
+      integer, intent(in) :: c
+      !> Strain.
+      real(dp), intent(in) :: strain
+      if (allocated(self%sections)) then
+         tension = self%sections(self%cell_sec(c))%law%tension(strain)
+      else
+         tension = self%law%tension(strain)
+      end if
+   end function rod3d_cell_tension
+
+   !> Whether the law of any cell has a kink (strain_slack: a rope that cannot push).
+   pure logical function rod3d_has_kink(self) result(kink)
+      !> Piece.
+      class(rod3d_piece), intent(in) :: self
+      integer :: j
+      kink = self%law%strain_slack > -huge(1.0_dp)
+      if (.not. allocated(self%sections)) return
+      do j = 1, size(self%sections)
+         if (self%sections(j)%law%strain_slack > -huge(1.0_dp)) kink = .true.
+      end do
+   end function rod3d_has_kink
 
    !> Cell vectors e_c, their lengths and the turning angles of the interior nodes.
    pure subroutine rod3d_geometry(self, r, e, l, th)
@@ -513,7 +631,27 @@ contains
       end function rotation
    end subroutine rod3d_turning_folds
 
-   !> Weight of node k (cable share and point mass), N.
+   !> Weight of node k (cable share and point mass), N, on a line of segments too.
+   pure real(dp) function any_node_weight(self, k)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      if (allocated(self%node_w)) then
+         any_node_weight = section_node_weight(self, k)
+      else
+         any_node_weight = node_weight(self, k)
+      end if
+   end function any_node_weight
+
+   !> Weight of node k of a line of segments (its cells' halves and point mass), N.
+   pure real(dp) function section_node_weight(self, k)
+      class(rod3d_piece), intent(in) :: self
+      integer, intent(in) :: k
+      section_node_weight = self%node_w(k)
+      if (k == 1) section_node_weight = section_node_weight + self%gravity*self%end_a%point_mass()
+      if (k == self%n) section_node_weight = section_node_weight + self%gravity*self%end_b%point_mass()
+   end function section_node_weight
+
+   !> Weight of node k of a uniform piece (cable share and point mass), N.
    pure real(dp) function node_weight(self, k)
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
@@ -585,8 +723,8 @@ contains
       type(band_matrix), intent(inout) :: jacobian
       !> Whether to form the Jacobian.
       logical, intent(in) :: with_jacobian
-      integer :: c, n, k, i, j
-      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), r(3, self%n), psi(self%n), f, fp, fpp
+      integer :: n, k, j
+      real(dp) :: r(3, self%n), psi(self%n)
       n = self%n
       call unpack(x, r, psi)
       call cell_vectors(n, r, self%ds, self%e1, self%l1)
@@ -600,28 +738,70 @@ contains
          self%th1(1) = 0
          self%th1(n) = 0
       end if
-      do c = 1, n - 1
+      if (allocated(self%sections)) then
+         ! A line of segments: each section's cells with its law and damping.
+         do j = 1, size(self%sections)
+            call step_cells(self, self%sections(j)%law, self%sections(j)%damping, dt, with_jacobian, &
+                            self%sections(j)%first, self%sections(j)%last)
+         end do
+         if (with_jacobian) then
+            do k = 2, n - 1
+               call step_bending_jacobian(self, k, self%node_ei(k))
+            end do
+         else
+            do k = 2, n - 1
+               call step_bending(self, k, self%node_ei(k))
+            end do
+         end if
+      else
+         call step_cells(self, self%law, self%damping, dt, with_jacobian, 1, n - 1)
+         if (with_jacobian) then
+            do k = 2, n - 1
+               call step_bending_jacobian(self, k, self%ei)
+            end do
+         else
+            do k = 2, n - 1
+               call step_bending(self, k, self%ei)
+            end do
+         end if
+      end if
+      call add_couples(self, t0, t0 + dt, .true., with_jacobian)
+      call apply_loads(self, x, dt, theta, with_jacobian)
+      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
+   end subroutine rod3d_step_system
+
+   !> The cells c1 .. c2 of a step with the law and damping c (N s): their forces (the discrete
+   !> gradient of the strain energy, and the damping) and, with the Jacobian, their blocks.
+   subroutine step_cells(self, law, damping, dt, with_jacobian, c1, c2)
+      class(rod3d_piece), intent(inout) :: self
+      class(material_law), intent(in) :: law
+      real(dp), intent(in) :: damping, dt
+      logical, intent(in) :: with_jacobian
+      integer, intent(in) :: c1, c2
+      integer :: c, i, j
+      real(dp) :: q, dq, lsum, eps0, eps1, h, mid, wsum(3), f, fp, fpp
+      do c = c1, c2
          associate (e0 => self%e0(:, c), e1 => self%e1(:, c), l0 => self%l0(c), l1 => self%l1(c))
             eps0 = l0 - 1
             eps1 = l1 - 1
             h = eps1 - eps0
-            if (self%law%strain_slack > -huge(1.0_dp)) then
+            if (law%strain_slack > -huge(1.0_dp)) then
                ! A rope that cannot push: q and dq with the damping on the taut part.
-               call slack_cell_force(self%law, eps0, eps1, self%damping, dt, small_strain_step, q, dq)
+               call slack_cell_force(law, eps0, eps1, damping, dt, small_strain_step, q, dq)
             else if (abs(h) < small_strain_step) then
                mid = 0.5_dp*(eps0 + eps1)
                ! f, f', f'' at mid in one call (the tanh law: one tanh and one cosh, the same bits).
-               call self%law%tension_stiffness_slope(mid, f, fp, fpp)
+               call law%tension_stiffness_slope(mid, f, fp, fpp)
                q = f + fpp*h*h/24
                dq = 0.5_dp*fp + fpp*h/12
             else
-               call self%law%strain_energy_change_tension(eps0, eps1, q, f)
+               call law%strain_energy_change_tension(eps0, eps1, q, f)
                q = q/h
                dq = (f - q)/h
             end if
-            if (.not. self%law%strain_slack > -huge(1.0_dp)) then
-               q = q + self%damping*h/dt
-               dq = dq + self%damping/dt
+            if (.not. law%strain_slack > -huge(1.0_dp)) then
+               q = q + damping*h/dt
+               dq = dq + damping/dt
             end if
             lsum = l0 + l1
             wsum = e0 + e1
@@ -637,27 +817,17 @@ contains
             end if
          end associate
       end do
-      if (with_jacobian) then
-         do k = 2, n - 1
-            call step_bending_jacobian(self, k)
-         end do
-      else
-         do k = 2, n - 1
-            call step_bending(self, k)
-         end do
-      end if
-      call add_couples(self, t0, t0 + dt, .true., with_jacobian)
-      call apply_loads(self, x, dt, theta, with_jacobian)
-      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
-   end subroutine rod3d_step_system
+   end subroutine step_cells
 
    !> Node k's bending force in a step, values only (the step_bending_jacobian's forces to the
    !> same bits): B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) +
    !> Jb (b1 - b0), Ja carrying the mean of the changes of a at b0 and at b1, Jb that of the
    !> changes of b at a0 and at a1, each about the Jacobian at the mid vectors.
-   subroutine step_bending(self, k)
+   subroutine step_bending(self, k, ei)
       class(rod3d_piece), intent(inout) :: self
       integer, intent(in) :: k
+      !> The node's EI, N m^2.
+      real(dp), intent(in) :: ei
       real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
       real(dp) :: ja(3, 3), jb(3, 3)
       integer :: i
@@ -670,7 +840,7 @@ contains
       call rotation_vector_r(a, b0, phi_a1b0)
       call rotation_vector_r(a0, b, phi_a0b1)
       q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
-      coef = bend_coefficient_r(self, k, phi0(1)**2 + phi0(2)**2 + phi0(3)**2, q1)
+      coef = bend_coefficient_r(ei, self%dual_length(k), phi0(1)**2 + phi0(2)**2 + phi0(3)**2, q1)
       psum = (phi1 + phi0)*coef
       ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
       call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp, ja)
@@ -686,9 +856,11 @@ contains
    !> operations, so the same bits); their derivatives with respect to the new a and b are written
    !> out: those of the rotation vectors (rotation_vector_r), of the bending coefficient, and of
    !> each discrete Jacobian's force J^T p (discrete_force_derivatives).
-   subroutine step_bending_jacobian(self, k)
+   subroutine step_bending_jacobian(self, k, ei)
       class(rod3d_piece), intent(inout) :: self
       integer, intent(in) :: k
+      !> The node's EI, N m^2.
+      real(dp), intent(in) :: ei
       real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, q0, coef, dcoef, psum(3)
       real(dp) :: ja(3, 3), jb(3, 3), j1a(3, 3), j1b(3, 3), jab0(3, 3), ja0b(3, 3), dpa(3, 3), dpb(3, 3), dq(6)
       real(dp) :: ja_mid(3, 3), jb_mid(3, 3), delta_a(3), delta_b(3), dfa_da(3, 3), dfa_db(3, 3), dfb_db(3, 3), dfb_da(3, 3)
@@ -703,7 +875,7 @@ contains
       call rotation_vector_r(a0, b, phi_a0b1, jy=ja0b)
       q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
       q0 = phi0(1)**2 + phi0(2)**2 + phi0(3)**2
-      call bend_coefficient_derivative(self, k, q0, q1, coef, dcoef)
+      call bend_coefficient_derivative(ei, self%dual_length(k), q0, q1, coef, dcoef)
       psum = (phi1 + phi0)*coef
       delta_a = ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp
       delta_b = ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp
@@ -734,13 +906,12 @@ contains
    end subroutine step_bending_jacobian
 
    !> bend_coefficient_r (the same operations) and its derivative in q1.
-   pure subroutine bend_coefficient_derivative(self, k, q0, q1, coef, dcoef)
-      class(rod3d_piece), intent(in) :: self
-      integer, intent(in) :: k
+   pure subroutine bend_coefficient_derivative(ei, hk, q0, q1, coef, dcoef)
+      real(dp), intent(in) :: ei, hk
       real(dp), intent(in) :: q0, q1
       real(dp), intent(out) :: coef, dcoef
       real(dp) :: th0, th1, m, dm, big
-      big = 2*self%ei/self%dual_length(k)
+      big = 2*ei/hk
       th0 = sqrt(q0)
       th1 = sqrt(q1)
       if (th0 + th1 < 1.0e-3_dp) then
@@ -749,7 +920,7 @@ contains
          dcoef = (1.0_dp/24.0_dp + (2*q1 + q0)*(17.0_dp/2880.0_dp) &
                   + ((q1*q1 + q0*q0) + (q1 + q0)*2*q1)*(31.0_dp/40320.0_dp))*big
       else
-         call bend_divided(self, k, th0, th1, m, dm)
+         call bend_divided(ei, hk, th0, th1, m, dm)
          coef = m/(th0 + th1)
          dcoef = (dm - coef)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))
       end if
@@ -996,19 +1167,18 @@ contains
 
    !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k from q0 = th0^2 and q1 = th1^2: a polynomial
    !> in q near the straight state, from the divided difference in th otherwise.
-   pure real(dp) function bend_coefficient_r(self, k, q0, q1) result(coef)
-      class(rod3d_piece), intent(in) :: self
-      integer, intent(in) :: k
+   pure real(dp) function bend_coefficient_r(ei, hk, q0, q1) result(coef)
+      real(dp), intent(in) :: ei, hk
       real(dp), intent(in) :: q0, q1
       real(dp) :: th0, th1, m, dm, big
-      big = 2*self%ei/self%dual_length(k)
+      big = 2*ei/hk
       th0 = sqrt(q0)
       th1 = sqrt(q1)
       if (th0 + th1 < 1.0e-3_dp) then
          coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
                  + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
       else
-         call bend_divided(self, k, th0, th1, m, dm)
+         call bend_divided(ei, hk, th0, th1, m, dm)
          coef = m/(th0 + th1)
       end if
    end function bend_coefficient_r
@@ -1039,10 +1209,17 @@ contains
          residual(3*c - 2:3*c) = residual(3*c - 2:3*c) - self%force(:, c)
          residual(3*c + 1:3*c + 3) = residual(3*c + 1:3*c + 3) + self%force(:, c)
       end do
-      do k = 1, n
-         residual(3*k) = residual(3*k) + node_weight(self, k)
-         residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
-      end do
+      if (allocated(self%node_w)) then
+         do k = 1, n
+            residual(3*k) = residual(3*k) + section_node_weight(self, k)
+            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
+         end do
+      else
+         do k = 1, n
+            residual(3*k) = residual(3*k) + node_weight(self, k)
+            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
+         end do
+      end if
       if (dynamic) then
          t_new = t1 + t2
          residual(1:3) = residual(1:3) - 0.5_dp*(self%end_a%applied_force3(t1) + self%end_a%applied_force3(t_new))
@@ -1067,11 +1244,19 @@ contains
       if (state_b) call end_state(self%end_b, self%r0(:, n), r(:, n), residual(3*n - 2:3*n), jac_b)
       residual = residual*scale
       ! Twist rows (quasi-static, at the new time): dU/dpsi_k minus the applied torques.
-      do c = 1, n - 1
-         tau = (psi(c + 1) - psi(c))/self%ds(c)
-         residual(3*n + c) = residual(3*n + c) - self%gip*tau*twist_scale
-         residual(3*n + c + 1) = residual(3*n + c + 1) + self%gip*tau*twist_scale
-      end do
+      if (allocated(self%cell_gip)) then
+         do c = 1, n - 1
+            tau = (psi(c + 1) - psi(c))/self%ds(c)
+            residual(3*n + c) = residual(3*n + c) - self%cell_gip(c)*tau*twist_scale
+            residual(3*n + c + 1) = residual(3*n + c + 1) + self%cell_gip(c)*tau*twist_scale
+         end do
+      else
+         do c = 1, n - 1
+            tau = (psi(c + 1) - psi(c))/self%ds(c)
+            residual(3*n + c) = residual(3*n + c) - self%gip*tau*twist_scale
+            residual(3*n + c + 1) = residual(3*n + c + 1) + self%gip*tau*twist_scale
+         end do
+      end if
       residual(3*n + 1) = residual(3*n + 1) + self%end_a%applied_torque(t_new)*twist_scale
       residual(4*n) = residual(4*n) - self%end_b%applied_torque(t_new)*twist_scale
       if (anchor_a .and. held_a) residual(3*n + 1) = psi(1)
@@ -1087,12 +1272,21 @@ contains
       call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
                                self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self), &
                                self%skew_block, self%skewed)
-      do c = 1, n - 1
-         call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
-         call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
-         call add_twist(3*n + c + 1, 3*n + c, -self%gip/self%ds(c)*twist_scale)
-         call add_twist(3*n + c + 1, 3*n + c + 1, self%gip/self%ds(c)*twist_scale)
-      end do
+      if (allocated(self%cell_gip)) then
+         do c = 1, n - 1
+            call add_twist(3*n + c, 3*n + c, self%cell_gip(c)/self%ds(c)*twist_scale)
+            call add_twist(3*n + c, 3*n + c + 1, -self%cell_gip(c)/self%ds(c)*twist_scale)
+            call add_twist(3*n + c + 1, 3*n + c, -self%cell_gip(c)/self%ds(c)*twist_scale)
+            call add_twist(3*n + c + 1, 3*n + c + 1, self%cell_gip(c)/self%ds(c)*twist_scale)
+         end do
+      else
+         do c = 1, n - 1
+            call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
+            call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
+            call add_twist(3*n + c + 1, 3*n + c, -self%gip/self%ds(c)*twist_scale)
+            call add_twist(3*n + c + 1, 3*n + c + 1, self%gip/self%ds(c)*twist_scale)
+         end do
+      end if
       do b = 1, 3
          do a = 1, 3
             if (state_a) call add_twist(a, b, -jac_a(a, b)*scale)
@@ -1270,7 +1464,7 @@ contains
       class(rod3d_piece), intent(in) :: self
       !> Node.
       integer, intent(in) :: k
-      rod3d_node_weight = node_weight(self, k)
+      rod3d_node_weight = any_node_weight(self, k)
    end function rod3d_node_weight
 
    !> assemble, for the submodules (the statics).

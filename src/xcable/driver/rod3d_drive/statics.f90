@@ -17,11 +17,12 @@ contains
       !> The angle (rad) the planar run's scene was turned by about the vertical through pivot (x, y)
       !> to lie in x-z (driver/simulation.f90; default 0: not turned). Its static state is turned back.
       real(dp), intent(in), optional :: azimuth, pivot(2)
-      integer :: n, k
-      real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2), phi
-      real(dp), allocatable :: guess(:)
+      integer :: n, k, c, j
+      real(dp) :: ya, yb, length, extra(rod%n_out, n_fields3), pa(2), d2, d3(2), phi, c_max
+      real(dp), allocatable :: guess(:), cell_ten(:)
+      type(rod3d_section), allocatable :: own_laws(:)
       class(material_law), allocatable :: own, uncut
-      logical :: static_form, was_cut
+      logical :: static_form, was_cut, cut
       n = rod%options%nodes
       allocate (self%pieces(1))
       self%pieces(1)%column = rod%pieces(1)%column
@@ -35,6 +36,8 @@ contains
             call prefix_error(error, scene%source//': &cable: ')
             return
          end if
+         ! A line of segments: the sections of the planar piece (each segment's material).
+         call piece_sections3(piece, scene)
          if (allocated(scene%loads)) then
             call piece%set_loads(scene%loads, error)
             if (allocated(error)) then
@@ -89,6 +92,16 @@ contains
             call uncut_law(piece%law, uncut, was_cut)
             call move_alloc(piece%law, own)
             call move_alloc(uncut, piece%law)
+            ! A line of segments: every section's law (the planar statics' uncut_laws).
+            if (allocated(piece%sections)) then
+               allocate (own_laws(size(piece%sections)))
+               do j = 1, size(piece%sections)
+                  call uncut_law(piece%sections(j)%law, uncut, cut)
+                  was_cut = was_cut .or. cut
+                  call move_alloc(piece%sections(j)%law, own_laws(j)%law)
+                  call move_alloc(uncut, piece%sections(j)%law)
+               end do
+            end if
          end if
          call run%statics(0.0_dp, error)
          if (.not. allocated(error)) call check_static3(piece, run%x, error)
@@ -100,6 +113,12 @@ contains
          if (static_form) then
             deallocate (piece%law)
             call move_alloc(own, piece%law)
+            if (allocated(own_laws)) then
+               do j = 1, size(own_laws)
+                  deallocate (piece%sections(j)%law)
+                  call move_alloc(own_laws(j)%law, piece%sections(j)%law)
+               end do
+            end if
             if (.not. allocated(error) .and. was_cut) call run%statics(0.0_dp, error)
             if (allocated(error)) call prefix_error(error, 'with the static friction on the seabed: ')
          end if
@@ -140,16 +159,37 @@ contains
          call note_min_strain(rod%summary, piece%l1, self%pieces(1)%column, rod%s_out, 0.0_dp)
          rod%summary%max_strain = maxval(piece%l1) - 1
          ! The static state's compression, for the warning (the planar run's fields held the first guess's).
-         rod%static_min_tension = minval(piece%law%tension(piece%l1(1:n - 1) - 1))
-         k = minloc(piece%law%tension(piece%l1(1:n - 1) - 1), 1)
+         if (allocated(piece%sections)) then
+            ! A line of segments: each cell's own law.
+            allocate (cell_ten(n - 1))
+            do c = 1, n - 1
+               cell_ten(c) = piece%cell_tension(c, piece%l1(c) - 1)
+            end do
+            rod%static_min_tension = minval(cell_ten)
+            k = minloc(cell_ten, 1)
+            rod%static_max_tension = maxval(abs(cell_ten))
+         else
+            rod%static_min_tension = minval(piece%law%tension(piece%l1(1:n - 1) - 1))
+            k = minloc(piece%law%tension(piece%l1(1:n - 1) - 1), 1)
+            rod%static_max_tension = maxval(abs(piece%law%tension(piece%l1(1:n - 1) - 1)))
+         end if
          rod%static_min_tension_s = 0.5_dp*(rod%s(k) + rod%s(k + 1))
-         rod%static_max_tension = maxval(abs(piece%law%tension(piece%l1(1:n - 1) - 1)))
          ! The step from the 3-D static state's strains (the planar preparation's strains are
          ! those of the scene without what leaves its plane: a current across it strains the line
          ! more, its waves are faster, and a step from the planar strains has a larger Courant
          ! number than the one reported).
-         call step_from_static3(rod, maxval(wave_speed(piece%law, piece%mass_per_length, piece%l1(1:n - 1) - 1)), &
-                                maxval(piece%ds), error)
+         if (allocated(piece%sections)) then
+            ! A line of segments: each cell's wave speed from its own law and mass.
+            c_max = 0
+            do c = 1, n - 1
+               associate (sec => piece%sections(piece%cell_sec(c)))
+                  c_max = max(c_max, wave_speed(sec%law, sec%mass, piece%l1(c) - 1))
+               end associate
+            end do
+         else
+            c_max = maxval(wave_speed(piece%law, piece%mass_per_length, piece%l1(1:n - 1) - 1))
+         end if
+         call step_from_static3(rod, c_max, maxval(piece%ds), error)
       end associate
    end subroutine drive_prepare
 

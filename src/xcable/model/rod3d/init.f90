@@ -78,6 +78,11 @@ contains
       self%load_block = 0
       self%skew_block = 0
       if (allocated(self%loads)) deallocate (self%loads)
+      if (allocated(self%sections)) deallocate (self%sections)
+      if (allocated(self%cell_sec)) deallocate (self%cell_sec)
+      if (allocated(self%node_w)) deallocate (self%node_w)
+      if (allocated(self%node_ei)) deallocate (self%node_ei)
+      if (allocated(self%cell_gip)) deallocate (self%cell_gip)
       self%r0 = 0; self%v0 = 0; self%mv0 = 0; self%e0 = 0; self%l0 = 1; self%th0 = 0
       self%e1 = 0; self%l1 = 1; self%th1 = 0; self%force = 0; self%force_node = 0; self%v1 = 0; self%block = 0
       ! The planar rod's mass matrix, for each component.
@@ -98,4 +103,89 @@ contains
          self%mass(2, k - 1) = self%mass(2, k - 1) + w
       end do
    end subroutine rod3d_init
+
+   !> A line of segments: the sections' cells and materials; the mass matrix rebuilt with each
+   !> cell's mass, the node weights and EIs from the cells beside each node, as the planar rod's
+   !> set_sections (model/rod/init.f90), so that a planar line of segments gives its numbers.
+   module subroutine rod3d_set_sections(self, last, sections)
+      !> Piece.
+      class(rod3d_piece), intent(inout) :: self
+      !> Last cell of each section (the last one n - 1).
+      integer, intent(in) :: last(:)
+      !> The sections' materials (their first and last are set here).
+      type(rod3d_section), intent(in) :: sections(:)
+      integer :: n, j, k, c
+      real(dp) :: w, mu, mc(self%n - 1), wc(self%n - 1), eic(self%n - 1), mk
+      n = self%n
+      if (allocated(self%sections)) deallocate (self%sections)
+      if (allocated(self%cell_sec)) deallocate (self%cell_sec)
+      if (allocated(self%cell_gip)) deallocate (self%cell_gip)
+      allocate (self%sections(size(last)), self%cell_sec(n - 1), self%cell_gip(n - 1))
+      do j = 1, size(last)
+         allocate (self%sections(j)%law, source=sections(j)%law)
+         self%sections(j)%mass = sections(j)%mass
+         self%sections(j)%weight = sections(j)%weight
+         self%sections(j)%ei = sections(j)%ei
+         self%sections(j)%gip = sections(j)%gip
+         self%sections(j)%damping = sections(j)%damping
+         self%sections(j)%first = 1
+         if (j > 1) self%sections(j)%first = last(j - 1) + 1
+         self%sections(j)%last = last(j)
+         associate (a => self%sections(j)%first, b => last(j))
+            self%cell_sec(a:b) = j
+            mc(a:b) = sections(j)%mass
+            wc(a:b) = sections(j)%weight
+            eic(a:b) = sections(j)%ei
+            self%cell_gip(a:b) = sections(j)%gip
+         end associate
+      end do
+      ! The first section's values in the scalars (what a uniform piece reads).
+      if (allocated(self%law)) deallocate (self%law)
+      allocate (self%law, source=sections(1)%law)
+      self%mass_per_length = sections(1)%mass
+      self%weight = sections(1)%weight
+      self%ei = sections(1)%ei
+      self%gip = sections(1)%gip
+      self%damping = sections(1)%damping
+      ! Node weights: half of each adjacent cell's.
+      if (allocated(self%node_w)) deallocate (self%node_w)
+      if (allocated(self%node_ei)) deallocate (self%node_ei)
+      allocate (self%node_w(n), self%node_ei(n))
+      self%node_w = 0
+      self%node_w(1:n - 1) = self%node_w(1:n - 1) + 0.5_dp*wc*self%ds
+      self%node_w(2:n) = self%node_w(2:n) + 0.5_dp*wc*self%ds
+      ! EI of an interior node: its two half-cells' EI weighted by their lengths; at the ends the
+      ! end cell's.
+      self%node_ei(1) = eic(1)
+      self%node_ei(n) = eic(n - 1)
+      do k = 2, n - 1
+         if (eic(k - 1) == eic(k)) then
+            self%node_ei(k) = eic(k)
+         else
+            self%node_ei(k) = (eic(k - 1)*self%ds(k - 1) + eic(k)*self%ds(k))/(self%ds(k - 1) + self%ds(k))
+         end if
+      end do
+      ! The mass matrix of rod3d_init with each cell's mass.
+      mu = self%mu
+      self%mass = 0
+      do c = 1, n - 1
+         self%mass(0, c) = self%mass(0, c) + (1 - mu)*0.5_dp*mc(c)*self%ds(c)
+         self%mass(0, c + 1) = self%mass(0, c + 1) + (1 - mu)*0.5_dp*mc(c)*self%ds(c)
+      end do
+      self%mass(0, 1) = self%mass(0, 1) + self%end_a%point_mass()
+      self%mass(0, n) = self%mass(0, n) + self%end_b%point_mass()
+      self%mass(1, 1:n - 1) = 0.25_dp*mu*mc*self%ds
+      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mc*self%ds
+      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mc*self%ds
+      do k = 2, n - 1
+         mk = (mc(k - 1)*self%ds(k - 1) + mc(k)*self%ds(k))/(self%ds(k - 1) + self%ds(k))
+         w = self%mu2*mk*self%dual_length(k)/16
+         self%mass(0, k - 1) = self%mass(0, k - 1) + w
+         self%mass(0, k) = self%mass(0, k) + 4*w
+         self%mass(0, k + 1) = self%mass(0, k + 1) + w
+         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
+         self%mass(1, k) = self%mass(1, k) - 2*w
+         self%mass(2, k - 1) = self%mass(2, k - 1) + w
+      end do
+   end subroutine rod3d_set_sections
 end submodule xcable_model_rod3d_init

@@ -34,6 +34,7 @@ contains
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
       integer :: c, i, n
+      logical :: ranged
       real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3), &
                   xm(3), dx_coef, df_dx(3, 3)
       self%load_node = 0
@@ -44,11 +45,16 @@ contains
       self%load_block = 0
       self%skewed = any_skew(self%loads)
       if (self%skewed) self%skew_block = 0
+      ! Loads on part of the line (a line of segments: each segment's on its own cells).
+      ranged = any(self%loads%s_from > -huge(1.0_dp) .or. self%loads%s_to < huge(1.0_dp))
       do c = 1, n - 1
          r1 = reshape(x(3*c - 2:3*c + 3), [3, 2])
          call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
                               e, w, a, de_coef, xm, dx_coef)
          do i = 1, size(self%loads)
+            if (ranged) then
+               if (.not. self%loads(i)%acts_on(self%s(c), self%s(c + 1))) cycle
+            end if
             call self%loads(i)%load%cell_force3(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
             f = self%load_factor*f
             self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
@@ -65,6 +71,9 @@ contains
          if (.not. self%skewed) cycle
          do i = 1, size(self%loads)
             if (.not. self%loads(i)%load%has_skew()) cycle
+            if (ranged) then
+               if (.not. self%loads(i)%acts_on(self%s(c), self%s(c + 1))) cycle
+            end if
             call self%loads(i)%load%cell_skew(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
             f = self%load_factor*f
             self%load_node(:, c) = self%load_node(:, c) + self%ds(c)*f

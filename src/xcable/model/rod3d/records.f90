@@ -17,10 +17,17 @@ contains
       call rod3d_unpack(x, r, psi)
       call self%geometry(r, e, l, th)
       en = 0
-      do c = 1, self%n - 1
-         en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
-         en(5) = en(5) + 0.5_dp*self%gip*(psi(c + 1) - psi(c))**2/self%ds(c)
-      end do
+      if (allocated(self%sections)) then
+         do c = 1, self%n - 1
+            en(1) = en(1) + self%ds(c)*self%sections(self%cell_sec(c))%law%strain_energy(l(c) - 1)
+            en(5) = en(5) + 0.5_dp*self%cell_gip(c)*(psi(c + 1) - psi(c))**2/self%ds(c)
+         end do
+      else
+         do c = 1, self%n - 1
+            en(1) = en(1) + self%ds(c)*self%law%strain_energy(l(c) - 1)
+            en(5) = en(5) + 0.5_dp*self%gip*(psi(c + 1) - psi(c))**2/self%ds(c)
+         end do
+      end if
       do k = 1, self%n
          en(2) = en(2) + 0.5_dp*self%mass(0, k)*dot_product(v(:, k), v(:, k))
          en(4) = en(4) + rod3d_node_weight(self, k)*r(3, k)

@@ -79,7 +79,11 @@ contains
       call self%geometry(r, self%e1, self%l1, self%th1)
       self%block = 0
       do c = 1, n - 1
-         call self%law%tension_stiffness(self%l1(c) - 1, f, fp)
+         if (allocated(self%sections)) then
+            call self%sections(self%cell_sec(c))%law%tension_stiffness(self%l1(c) - 1, f, fp)
+         else
+            call self%law%tension_stiffness(self%l1(c) - 1, f, fp)
+         end if
          tc = self%e1(:, c)/self%l1(c)
          self%force(:, c) = f*tc
          if (with_jacobian) self%block(:, :, 0, c) = fp*outer3(tc, tc) + f/self%l1(c)*(identity3() - outer3(tc, tc))
@@ -94,7 +98,7 @@ contains
          na = sqrt(dot3(a, a))
          nb = sqrt(dot3(b, b))
          cosine = dot3(a, b)/(na*nb)
-         coef = (-4*self%ei/self%dual_length(k))/((1.0_dp + cosine)*(1.0_dp + cosine))
+         coef = (-4*self%ei_at(k)/self%dual_length(k))/((1.0_dp + cosine)*(1.0_dp + cosine))
          call add_node_bending(self, k, (b/(na*nb) - a*(cosine/(na*na)))*coef, &
                                (a/(na*nb) - b*(cosine/(nb*nb)))*coef, &
                                with_jacobian)

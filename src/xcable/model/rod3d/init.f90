@@ -1,6 +1,7 @@
 !> The set-up of a 3-D piece (rod3d_init): grid, material, ends, work arrays and the mass matrix.
 !> (A submodule of model/rod3d.f90.)
 submodule (xcable_model_rod3d) xcable_model_rod3d_init
+   use xcable_model_sections, only: joint_ei, cell_mass_matrix
    implicit none
 
 contains
@@ -114,8 +115,8 @@ contains
       integer, intent(in) :: last(:)
       !> The sections' materials (their first and last are set here).
       type(rod3d_section), intent(in) :: sections(:)
-      integer :: n, j, k, c
-      real(dp) :: w, mu, mc(self%n - 1), wc(self%n - 1), eic(self%n - 1), mk
+      integer :: n, j
+      real(dp) :: mc(self%n - 1), wc(self%n - 1), eic(self%n - 1)
       n = self%n
       if (allocated(self%sections)) deallocate (self%sections)
       if (allocated(self%cell_sec)) deallocate (self%cell_sec)
@@ -156,36 +157,9 @@ contains
       self%node_w(2:n) = self%node_w(2:n) + 0.5_dp*wc*self%ds
       ! EI of an interior node: its two half-cells' EI weighted by their lengths; at the ends the
       ! end cell's.
-      self%node_ei(1) = eic(1)
-      self%node_ei(n) = eic(n - 1)
-      do k = 2, n - 1
-         if (eic(k - 1) == eic(k)) then
-            self%node_ei(k) = eic(k)
-         else
-            self%node_ei(k) = (eic(k - 1)*self%ds(k - 1) + eic(k)*self%ds(k))/(self%ds(k - 1) + self%ds(k))
-         end if
-      end do
+      call joint_ei(n, self%ds, eic, self%node_ei)
       ! The mass matrix of rod3d_init with each cell's mass.
-      mu = self%mu
-      self%mass = 0
-      do c = 1, n - 1
-         self%mass(0, c) = self%mass(0, c) + (1 - mu)*0.5_dp*mc(c)*self%ds(c)
-         self%mass(0, c + 1) = self%mass(0, c + 1) + (1 - mu)*0.5_dp*mc(c)*self%ds(c)
-      end do
-      self%mass(0, 1) = self%mass(0, 1) + self%end_a%point_mass()
-      self%mass(0, n) = self%mass(0, n) + self%end_b%point_mass()
-      self%mass(1, 1:n - 1) = 0.25_dp*mu*mc*self%ds
-      self%mass(0, 1:n - 1) = self%mass(0, 1:n - 1) + 0.25_dp*mu*mc*self%ds
-      self%mass(0, 2:n) = self%mass(0, 2:n) + 0.25_dp*mu*mc*self%ds
-      do k = 2, n - 1
-         mk = (mc(k - 1)*self%ds(k - 1) + mc(k)*self%ds(k))/(self%ds(k - 1) + self%ds(k))
-         w = self%mu2*mk*self%dual_length(k)/16
-         self%mass(0, k - 1) = self%mass(0, k - 1) + w
-         self%mass(0, k) = self%mass(0, k) + 4*w
-         self%mass(0, k + 1) = self%mass(0, k + 1) + w
-         self%mass(1, k - 1) = self%mass(1, k - 1) - 2*w
-         self%mass(1, k) = self%mass(1, k) - 2*w
-         self%mass(2, k - 1) = self%mass(2, k - 1) + w
-      end do
+      call cell_mass_matrix(n, self%ds, self%dual_length, mc, self%mu, self%mu2, self%end_a%point_mass(), &
+                            self%end_b%point_mass(), self%mass)
    end subroutine rod3d_set_sections
 end submodule xcable_model_rod3d_init

@@ -47,7 +47,7 @@ module xcable_driver_rod3d_drive
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece, rod3d_section, bend_moment3 => bend_moment, bend_energy3 => bend_energy
-   use xcable_scene_scene, only: scene_type, section_cells, section_at
+   use xcable_scene_scene, only: scene_type, section_cells, sections_on, section_at
    use xcable_numerics_vector3, only: cross3
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_force, only: force_end
@@ -658,15 +658,10 @@ contains
       type(scene_type), intent(in) :: scene
       integer, allocatable :: last(:), keep(:)
       type(rod3d_section), allocatable :: sections(:)
-      integer :: j, prev
+      integer :: j
       if (size(scene%sections) <= 1) return
       last = section_cells(scene, piece%s)
-      allocate (keep(0))
-      prev = 0
-      do j = 1, size(last)
-         if (last(j) > prev) keep = [keep, j]
-         prev = max(prev, last(j))
-      end do
+      keep = sections_on(scene, piece%s)
       allocate (sections(size(keep)))
       do j = 1, size(keep)
          associate (sec => scene%sections(keep(j)))

@@ -24,7 +24,7 @@ module xcable_model_rod_statics
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input, stat_numerics
    use xcable_core_strings, only: str
-   use xcable_scene_scene, only: scene_type, section_cells
+   use xcable_scene_scene, only: scene_type, section_cells, sections_on
    use xcable_loads_load, only: load_slot, loads_in_statics, any_static_form
    use xcable_model_rod, only: rod_problem, rod_piece, rod_section, rod_kl, rod_ku, collapsed_length
    use xcable_ends_fixed, only: fixed_end
@@ -818,15 +818,10 @@ contains
       type(scene_type), intent(in) :: scene
       integer, allocatable :: last(:), keep(:)
       type(rod_section), allocatable :: laws(:)
-      integer :: j, prev
+      integer :: j
       if (size(scene%sections) <= 1) return
       last = section_cells(scene, piece%s)
-      allocate (keep(0))
-      prev = 0
-      do j = 1, size(last)
-         if (last(j) > prev) keep = [keep, j]
-         prev = max(prev, last(j))
-      end do
+      keep = sections_on(scene, piece%s)
       allocate (laws(size(keep)))
       do j = 1, size(keep)
          allocate (laws(j)%law, source=scene%sections(keep(j))%law)

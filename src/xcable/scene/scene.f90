@@ -20,7 +20,7 @@ module xcable_scene_scene
    use xcable_loads_factory, only: case_loads
    implicit none
    private
-   public :: scene_type, section_type, scene_from_config, scene_grid, set_break, section_cells, section_at
+   public :: scene_type, section_type, scene_from_config, scene_grid, set_break, section_cells, section_at, sections_on
 
    !> One segment of the line, between arc lengths s_start and s_end from end a: its own
    !> material, weight, stiffnesses, loads and breaking load. A line of one segment has one
@@ -332,6 +332,24 @@ contains
       end do
       last(size(last)) = size(s) - 1
    end function section_cells
+
+   !> The sections with cells on the part of the line whose nodes have the arc lengths s, in
+   !> order (section_cells' last cells of them increase strictly).
+   pure function sections_on(scene, s) result(keep)
+      !> Scene.
+      type(scene_type), intent(in) :: scene
+      !> Node arc lengths of the piece, m.
+      real(dp), intent(in) :: s(:)
+      integer, allocatable :: keep(:), last(:)
+      integer :: j, prev
+      last = section_cells(scene, s)
+      allocate (keep(0))
+      prev = 0
+      do j = 1, size(last)
+         if (last(j) > prev) keep = [keep, j]
+         prev = max(prev, last(j))
+      end do
+   end function sections_on
 
    !> scene_grid on a line of segments: the parts between the joints and the break.
    subroutine segment_grid(scene, nodes, s, break_node)

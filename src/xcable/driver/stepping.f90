@@ -18,7 +18,12 @@
 !> history and the summary that both models write.
 !>
 !> The planar rod's pieces are the model planar_model (driver/rod_run.f90 and
-!> its submodules); the 3-D rod's are rod3d_drive (driver/rod3d_drive.f90). A new discretisation is one more extension of
+!> its submodules); the 3-D rod's are rod3d_drive (driver/rod3d_drive.f90);
+!> the paper's box scheme is box_model (box/model.f90), which brings its own
+!> step plan, rejection words, snapshot times and summary through the
+!> bindings plan, advance, reject_step, snapshot_at and finish (their
+!> defaults are plan_step, advance_time, reject_attempt, the due time and the
+!> run's summary). A new discretisation is one more extension of
 !> cable_model; the loop does not change.
 module xcable_driver_stepping
    use xcable_core_kinds, only: dp, i8

@@ -253,7 +253,8 @@ contains
          rejected_here = rejected_here + 1
          if (rejected > max_rejections) then
             call fatal_error(error, 'step control: '//str(rejected)//' rejected attempts by t = '// &
-                             str(run%t)//' s (the limit is 1000 + the '//str(nint(min(max_rejections - 1000, 2.0e9_dp)))// &
+                             str(run%t)//' s (the limit is 1000 + the '// &
+                             str(nint(min(max_rejections - 1000, 2.0e9_dp)))// &
                              ' requested steps): the step stays far below dt = '//str(self%options%dt)// &
                              ' s; last: '//reason, stat_numerics)
             return
@@ -262,9 +263,9 @@ contains
          h = 0.5_dp*h
          n_good = 0
          if (h < self%options%dt*self%options%min_step_fraction) &
-            call fatal_error(error, 'step control: step fell below '//str(self%options%dt*self%options%min_step_fraction)// &
-                             ' s at t = '//str(run%t)//' s after '//str(rejected_here)//' rejected attempts; last: ' &
-                             //reason, stat_numerics)
+            call fatal_error(error, 'step control: step fell below '// &
+                             str(self%options%dt*self%options%min_step_fraction)//' s at t = '//str(run%t)// &
+                             ' s after '//str(rejected_here)//' rejected attempts; last: '//reason, stat_numerics)
       end associate
    end subroutine box_reject_step
 
@@ -404,11 +405,13 @@ contains
             f = model%law%tension(ya(i_eps))
             c2 = ya(i_b0)**2 - ya(i_b3)**2
             s2 = 2*ya(i_b0)*ya(i_b3)
-            run%history%ends(:, 1, i) = [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, f, -(f*s2 + ya(i_sn)*c2), -(f*c2 - ya(i_sn)*s2)]
+            run%history%ends(:, 1, i) = [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, f, -(f*s2 + ya(i_sn)*c2), &
+                                         -(f*c2 - ya(i_sn)*s2)]
             call fixed_frame_velocity(yb, vel_x, vel_z)
             f = model%law%tension(yb(i_eps))
             run%history%ends(:, 2, i) = [history%end_position(:, i), vel_x, vel_z, f, &
-                                         rupture_factor(history%time(i), self%options%t_break)*[self%force_h, self%force_v]]
+                                         rupture_factor(history%time(i), self%options%t_break)* &
+                                         [self%force_h, self%force_v]]
          end associate
          if (self%options%energy) then
             run%history%energy(1:5, i) = history%energy(1:5, i)

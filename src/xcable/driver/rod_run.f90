@@ -303,6 +303,19 @@ module xcable_driver_rod_run
       !> was stored), and back into a run prepared from the same case (errors stat_input).
       procedure(model_save), deferred :: save_state
       procedure(model_load), deferred :: load_state
+      !> The step to try from run%t and the time it lands on (see plan_step, the default: the
+      !> step control's step, shortened to land on t_end or the break). A model with a step
+      !> plan of its own (the box scheme's whole steps in each snapshot interval) gives it here.
+      procedure :: plan => model_plan
+      !> The time moves on after an accepted step of h_try (see advance_time, the default).
+      procedure :: advance => model_advance
+      !> The step control after a rejected attempt (see reject_attempt, the default).
+      procedure :: reject_step => model_reject_step
+      !> The time a snapshot due at ts is reported at (the default: ts).
+      procedure :: snapshot_at => model_snapshot_at
+      !> The summary at the end of the run (the default: the run's own, rod_run%finish, with
+      !> the model's end_info).
+      procedure :: finish => model_finish
    end type cable_model
 
    abstract interface
@@ -817,6 +830,79 @@ module xcable_driver_rod_run
    end interface
 
 contains
+
+   !> The step control's plan of the next step (plan_step): the default of cable_model%plan.
+   subroutine model_plan(self, run, h_try, t_stop, landing, error)
+      !> Model.
+      class(cable_model), intent(inout) :: self
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Step to try and where the run lands (s); whether the step was shortened to land there.
+      real(dp), intent(out) :: h_try, t_stop
+      logical, intent(out) :: landing
+      !> Error when the step no longer advances the time.
+      type(error_type), allocatable, intent(out) :: error
+      call plan_step(run, h_try, t_stop, landing, error)
+   end subroutine model_plan
+
+   !> The time moves on after an accepted step (advance_time): the default of cable_model%advance.
+   subroutine model_advance(self, run, h_try, t_stop, landing)
+      !> Model.
+      class(cable_model), intent(inout) :: self
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> The step taken and the time it was to land on (plan), s; whether it was shortened to land there.
+      real(dp), intent(in) :: h_try, t_stop
+      logical, intent(in) :: landing
+      call advance_time(run, h_try, t_stop, landing)
+   end subroutine model_advance
+
+   !> The step control after a rejected attempt (reject_attempt): the default of
+   !> cable_model%reject_step.
+   subroutine model_reject_step(self, run, reason, retry, error)
+      !> Model.
+      class(cable_model), intent(inout) :: self
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Why the attempt was rejected.
+      character(*), intent(in) :: reason
+      !> Whether to retry the same step.
+      logical, intent(in) :: retry
+      !> Error when the step control gives up.
+      type(error_type), allocatable, intent(out) :: error
+      call reject_attempt(run, reason, retry, error)
+   end subroutine model_reject_step
+
+   !> The time of a snapshot due at ts: ts, the default of cable_model%snapshot_at.
+   real(dp) function model_snapshot_at(self, run, ts) result(t)
+      !> Model.
+      class(cable_model), intent(in) :: self
+      !> Run.
+      type(rod_run), intent(in) :: run
+      !> Time the snapshot is due at, s.
+      real(dp), intent(in) :: ts
+      t = ts
+   end function model_snapshot_at
+
+   !> The run's summary with the kind of each end from the model (end_info): the default of
+   !> cable_model%finish.
+   subroutine model_finish(self, run)
+      !> Model.
+      class(cable_model), intent(inout) :: self
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      character(len=16), allocatable :: kinds(:)
+      logical, allocatable :: held(:)
+      character(:), allocatable :: kind
+      integer :: j, n_slots
+      n_slots = size(run%history%end_labels)
+      allocate (kinds(n_slots), held(n_slots))
+      do j = 1, n_slots
+         call self%end_info(run, j, kind, held(j))
+         kinds(j) = kind
+      end do
+      call run%finish(kinds, held)
+   end subroutine model_finish
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings.

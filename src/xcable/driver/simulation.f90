@@ -163,7 +163,7 @@ contains
       self%model = config%model_to_run()
       select case (self%scheme)
       case ('box')
-         call self%box%prepare(config, error)
+         call self%box%prepare(config, self%rod, error)
          self%terms = 'box scheme (eqs. 18-25): strain bending gravity; end b released by the ramp'
       case default
          call scene_from_config(config, scene, error)
@@ -540,10 +540,6 @@ contains
       type(error_type), allocatable, intent(out) :: error
       class(cable_model), pointer :: model
       integer :: pause
-      if (self%scheme == 'box') then
-         call self%box%run(observer, error)
-         return
-      end if
       model => self%model_of()
       if (.not. allocated(self%checkpoints%path)) then
          call run_dynamics(self%rod, model, observer, error)
@@ -565,13 +561,15 @@ contains
       call finish_dynamics(self%rod, model)
    end subroutine sim_run
 
-   !> The model of the cable that the step loop drives (rod scheme): the 3-D rod for model
-   !> '3d', else the planar rod.
+   !> The model of the cable that the step loop drives: the box scheme's (scheme 'box'), the
+   !> 3-D rod for model '3d', else the planar rod.
    function sim_model_of(self) result(model)
       !> Simulation (prepared).
       class(simulation), intent(inout), target :: self
       class(cable_model), pointer :: model
-      if (self%model == '3d') then
+      if (self%scheme == 'box') then
+         model => self%box%stepper
+      else if (self%model == '3d') then
          model => self%rod3
       else
          model => self%planar
@@ -719,11 +717,7 @@ contains
    function sim_output_s(self) result(s)
       class(simulation), intent(in) :: self
       real(dp), allocatable :: s(:)
-      if (self%scheme == 'box') then
-         s = self%box%s
-      else
-         s = self%rod%s_out
-      end if
+      s = self%rod%s_out
    end function sim_output_s
 
    function sim_piece_starts(self) result(starts)
@@ -739,42 +733,25 @@ contains
       class(simulation), intent(in) :: self
       real(dp), intent(out) :: dt
       integer, intent(out) :: steps
-      if (self%scheme == 'box') then
-         dt = self%box%dynamics%dt
-         steps = ceiling(self%box%dynamics%t_end/dt)
-      else
-         dt = self%rod%dt
-         steps = ceiling(self%rod%options%t_end/dt)
-      end if
+      dt = self%rod%dt
+      steps = ceiling(self%rod%options%t_end/dt)
    end subroutine sim_time_step
 
    function sim_history(self) result(p)
       class(simulation), intent(in), target :: self
       type(run_history), pointer :: p
-      if (self%scheme == 'box') then
-         p => self%box%history
-      else
-         p => self%rod%history
-      end if
+      p => self%rod%history
    end function sim_history
 
    function sim_summary(self) result(p)
       class(simulation), intent(in), target :: self
       type(run_summary), pointer :: p
-      if (self%scheme == 'box') then
-         p => self%box%summary
-      else
-         p => self%rod%summary
-      end if
+      p => self%rod%summary
    end function sim_summary
 
    function sim_static(self) result(p)
       class(simulation), intent(in), target :: self
       type(static_info), pointer :: p
-      if (self%scheme == 'box') then
-         p => self%box%info
-      else
-         p => self%rod%info
-      end if
+      p => self%rod%info
    end function sim_static
 end module xcable_driver_simulation

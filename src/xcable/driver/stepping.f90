@@ -18,14 +18,18 @@
 !> history and the summary that both models write.
 !>
 !> The planar rod's pieces are the model planar_model (driver/rod_run.f90 and
-!> its submodules); the 3-D rod's are rod3d_drive (driver/rod3d_drive.f90). A new discretisation is one more extension of
+!> its submodules); the 3-D rod's are rod3d_drive (driver/rod3d_drive.f90);
+!> the paper's box scheme is box_model (box/model.f90), which brings its own
+!> step plan, rejection words, snapshot times and summary through the
+!> bindings plan, advance, reject_step, snapshot_at and finish (their
+!> defaults are plan_step, advance_time, reject_attempt, the due time and the
+!> run's summary). A new discretisation is one more extension of
 !> cable_model; the loop does not change.
 module xcable_driver_stepping
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, prefix_error
    use xcable_driver_rod_run, only: rod_run, cable_model, run_progress, pause_none, pause_checkpoint, &
-                                    pause_termination, max_steps, wall_limit, plan_step, reject_attempt, advance_time, &
-                                    ends_change, snapshot_time
+                                    pause_termination, max_steps, wall_limit, ends_change, snapshot_time
    use xcable_driver_records, only: run_observer, n_fields, n_fields3, field3_names
    use xcable_system_posix, only: termination_requested
    implicit none
@@ -134,12 +138,12 @@ contains
          ! A pause, where the state is that of an accepted step (or of the start).
          pause = checkpoint_pause(run, wall)
          if (pause /= pause_none) return
-         call plan_step(run, h_try, t_stop, landing, error)
+         call model%plan(run, h_try, t_stop, landing, error)
          if (allocated(error)) exit
          call model%attempt(run, h_try, iterations, retry_same, step_error)
          if (allocated(step_error)) then
             call model%reject(run)
-            call reject_attempt(run, step_error%message, retry_same, error)
+            call model%reject_step(run, step_error%message, retry_same, error)
             deallocate (step_error)
             if (allocated(error)) exit
             cycle
@@ -153,7 +157,7 @@ contains
          call model%accept(run, h_try)
          call emit_snapshots(run, model, observer, run%t + h_try, .false., error)
          if (allocated(error)) exit
-         call advance_time(run, h_try, t_stop, landing)
+         call model%advance(run, h_try, t_stop, landing)
          call append_record(run, model, iterations, run%progress%rejected_here, h_try)
          run%progress%rejected_here = 0
          if (run%watch%found) exit
@@ -178,18 +182,8 @@ contains
       type(rod_run), intent(inout) :: run
       !> Model of its cable.
       class(cable_model), intent(inout) :: model
-      character(len=16), allocatable :: kinds(:)
-      logical, allocatable :: held(:)
-      character(:), allocatable :: kind
-      integer :: j, n_slots
       if (.not. allocated(run%history%end_labels)) return
-      n_slots = size(run%history%end_labels)
-      allocate (kinds(n_slots), held(n_slots))
-      do j = 1, n_slots
-         call model%end_info(run, j, kind, held(j))
-         kinds(j) = kind
-      end do
-      call run%finish(kinds, held)
+      call model%finish(run)
       call model%conclude(run)
    end subroutine finish_dynamics
 
@@ -217,8 +211,9 @@ contains
          call model%snapshot(run, t_new, ts, static, fields, extra, with_extra)
          run%progress%snapshot_index = run%progress%snapshot_index + 1
          if (.not. present(observer)) cycle
-         call observer%snapshot(ts, fields, error)
-         if (.not. allocated(error) .and. with_extra) call observer%snapshot_extra(ts, field3_names, extra, error)
+         call observer%snapshot(model%snapshot_at(run, ts), fields, error)
+         if (.not. allocated(error) .and. with_extra) &
+            call observer%snapshot_extra(model%snapshot_at(run, ts), field3_names, extra, error)
          if (allocated(error)) then
             call prefix_error(error, 'output: ')
             return

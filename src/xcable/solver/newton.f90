@@ -23,8 +23,9 @@
 !> residual along the last update; a problem with kinks (a rope that cannot
 !> push) says where that may fail (`estimate_trusted`), and there only the
 !> update itself is tested. The defaults are the classical
-!> iteration; run_rupture sets the time-stepping values (estimate_error,
-!> max_contraction 0.5, refresh_contraction 0.05, no final residual).
+!> iteration; a time step (the box scheme's model, the rods' step control)
+!> sets estimate_error, max_contraction 0.5, refresh_contraction 0.05 and no
+!> final residual.
 module xcable_solver_newton
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_numerics

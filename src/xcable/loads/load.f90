@@ -269,12 +269,28 @@ contains
       real(dp), intent(inout) :: values(:)
       !> Arc lengths of the nodes, m.
       real(dp), intent(in), optional :: s(:)
-      character(len=32), allocatable :: names(:)
-      integer :: i, j, c
-      names = measure_names(loads)
+      integer :: slot(size(loads)), i, j, k, c, count
+      ! Each measuring slot's place in measure_names: that of the first slot with its name (no
+      ! list of names built: this runs at every record).
+      count = 0
       do i = 1, size(loads)
+         slot(i) = 0
          if (len(loads(i)%load%measure_name()) == 0) cycle
-         j = name_index(names, loads(i)%load%measure_name())
+         do k = 1, i - 1
+            if (slot(k) == 0) cycle
+            if (loads(k)%load%measure_name() == loads(i)%load%measure_name()) then
+               slot(i) = slot(k)
+               exit
+            end if
+         end do
+         if (slot(i) == 0) then
+            count = count + 1
+            slot(i) = count
+         end if
+      end do
+      do i = 1, size(loads)
+         if (slot(i) == 0) cycle
+         j = slot(i)
          do c = 1, size(ds)
             if (present(s)) then
                if (.not. loads(i)%acts_on(s(c), s(c + 1))) cycle

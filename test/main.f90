@@ -29,6 +29,7 @@ program xcable_tests
    use suite_slack, only: collect_slack
    use suite_rupture, only: collect_rupture
    use suite_segments, only: collect_segments
+   use suite_points, only: collect_points
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -62,7 +63,8 @@ program xcable_tests
              new_testsuite('tan', collect_tan), &
              new_testsuite('slack', collect_slack), &
              new_testsuite('rupture', collect_rupture), &
-             new_testsuite('segments', collect_segments)]
+             new_testsuite('segments', collect_segments), &
+             new_testsuite('points', collect_points)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

@@ -674,6 +674,7 @@ contains
          end associate
       end do
       call piece%set_sections(last(keep), sections)
+      if (allocated(scene%points)) call piece%set_points(scene%points)
    end subroutine piece_sections3
 
    !> The starting force of a cut end (a force_end) set to f (x, y, z).

@@ -9,7 +9,7 @@ module xcable_io_config
    use xcable_numerics_facets, only: facet_at
    implicit none
    private
-   public :: case_config, end_config, segment_config, max_table_points, max_segments
+   public :: case_config, end_config, segment_config, point_config, max_table_points, max_segments, max_points
 
    !> Longest inline table (law tables and end histories).
    integer, parameter :: max_table_points = 1000
@@ -78,6 +78,17 @@ module xcable_io_config
       real(dp) :: mbl = 0
    end type segment_config
 
+   !> Most bodies on a line (&point_1 ... &point_8).
+   integer, parameter :: max_points = 8
+
+   !> A body at a joint of two segments (&point_k): a clump weight or a buoy.
+   type :: point_config
+      !> The joint: the end of &segment_joint, where &segment_joint+1 starts.
+      integer :: joint = 0
+      !> Mass, kg; displaced volume, m^3; added-mass and drag coefficients; projected area, m^2.
+      real(dp) :: mass = 0, volume = 0, ca = 0, cd = 0, area = 0
+   end type point_config
+
    !> A case.
    type :: case_config
       !> Namelist file the case came from.
@@ -144,6 +155,11 @@ module xcable_io_config
       integer :: segment_count = 0
       !> The segments, from end a; only 1 .. segment_count are used.
       type(segment_config) :: segments(max_segments)
+      ! &point_1 ... &point_8
+      !> Number of bodies given (numbered without a gap).
+      integer :: point_count = 0
+      !> The bodies; only 1 .. point_count are used.
+      type(point_config) :: points(max_points)
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp

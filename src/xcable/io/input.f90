@@ -23,8 +23,9 @@
 module xcable_io_input
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
-   use xcable_io_config, only: case_config, end_config, segment_config, max_table_points
-   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, known_fields, segment_of, segment_group
+   use xcable_io_config, only: case_config, end_config, segment_config, point_config, max_table_points
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, known_fields, segment_of, segment_group, &
+                               point_of, point_group
    use xcable_io_input_scanner, only: count_table_rows, line_len, load_lines, lower_words, scan_groups
    use xcable_io_input_echo, only: config_text, value_text
    use xcable_io_input_checks, only: derive_defaults, max_time_steps, validate
@@ -86,6 +87,17 @@ contains
          call fatal_error(error, path//': &'//trim(segment_group(config%segment_count))//' given without &'// &
                           trim(segment_group(i))//': the segments are numbered from end a, 1, 2, ... without a '// &
                           'gap; give &'//trim(segment_group(i))//' or renumber', stat_input)
+         return
+      end do
+      ! The bodies at the joints, numbered alike.
+      do i = 1, size(groups)
+         if (present_group(i)) config%point_count = max(config%point_count, point_of(groups(i)))
+      end do
+      do i = 1, config%point_count
+         if (any(groups == point_group(i) .and. present_group)) cycle
+         call fatal_error(error, path//': &'//trim(point_group(config%point_count))//' given without &'// &
+                          trim(point_group(i))//': the points are numbered 1, 2, ... without a gap; give &'// &
+                          trim(point_group(i))//' or renumber', stat_input)
          return
       end do
       call read_groups(path, config, groups, present_group, error)
@@ -182,6 +194,8 @@ contains
             ! A segment's p starts from &material's (read before it): p(2) = ... changes one coefficient.
             c%segments(segment_of(group_names(ig)))%p = p
             call read_segment(unit, segment_of(group_names(ig)), c%segments(segment_of(group_names(ig))), ios, msg)
+         case ('point_1', 'point_2', 'point_3', 'point_4', 'point_5', 'point_6', 'point_7', 'point_8')
+            call read_point(unit, point_of(group_names(ig)), c%points(point_of(group_names(ig))), ios, msg)
          case default
             ios = 1
             msg = 'no namelist read for this group (a schema group missing in read_groups)'
@@ -319,6 +333,46 @@ contains
       seg%damping = damping; seg%cd_normal = cd_normal; seg%cd_tangential = cd_tangential; seg%ca_normal = ca_normal
       seg%nodes = nodes; seg%mbl = mbl
    end subroutine read_segment
+
+   !> Read &point_k into one body (the groups &point_1 ... &point_8 have the same variables).
+   subroutine read_point(unit, k, pt, ios, msg)
+      !> Open namelist file, rewound.
+      integer, intent(in) :: unit
+      !> Point, 1 .. max_points.
+      integer, intent(in) :: k
+      !> The body: defaults in, values given out.
+      type(point_config), intent(inout) :: pt
+      !> iostat of the read.
+      integer, intent(out) :: ios
+      !> iomsg of the read.
+      character(len=*), intent(inout) :: msg
+      real(dp) :: mass, volume, ca, cd, area
+      integer :: joint
+      namelist /point_1/ joint, mass, volume, ca, cd, area
+      namelist /point_2/ joint, mass, volume, ca, cd, area
+      namelist /point_3/ joint, mass, volume, ca, cd, area
+      namelist /point_4/ joint, mass, volume, ca, cd, area
+      namelist /point_5/ joint, mass, volume, ca, cd, area
+      namelist /point_6/ joint, mass, volume, ca, cd, area
+      namelist /point_7/ joint, mass, volume, ca, cd, area
+      namelist /point_8/ joint, mass, volume, ca, cd, area
+      joint = pt%joint; mass = pt%mass; volume = pt%volume; ca = pt%ca; cd = pt%cd; area = pt%area
+      select case (k)
+      case (1); read (unit, nml=point_1, iostat=ios, iomsg=msg)
+      case (2); read (unit, nml=point_2, iostat=ios, iomsg=msg)
+      case (3); read (unit, nml=point_3, iostat=ios, iomsg=msg)
+      case (4); read (unit, nml=point_4, iostat=ios, iomsg=msg)
+      case (5); read (unit, nml=point_5, iostat=ios, iomsg=msg)
+      case (6); read (unit, nml=point_6, iostat=ios, iomsg=msg)
+      case (7); read (unit, nml=point_7, iostat=ios, iomsg=msg)
+      case (8); read (unit, nml=point_8, iostat=ios, iomsg=msg)
+      case default
+         ios = 1
+         msg = 'no namelist read for this point (max_points above 8 in io/config.f90)'
+      end select
+      if (ios /= 0) return
+      pt%joint = joint; pt%mass = mass; pt%volume = volume; pt%ca = ca; pt%cd = cd; pt%area = area
+   end subroutine read_point
 
    !> Read &fluid (its density has the name of &cable's, so it has its own scope).
    subroutine read_fluid(unit, c, ios, msg)

@@ -24,14 +24,14 @@ module xcable_io_schema
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: real_text
-   use xcable_io_config, only: max_table_points, max_segments
+   use xcable_io_config, only: max_table_points, max_segments, max_points
    use xcable_material_factory, only: law_names
    use xcable_ends_registry, only: end_kind, end_kind_list, end_kind_names, kinds_using
    implicit none
    private
    public :: schema_entry, schema_table, schema_groups, find_entry, group_entries
    public :: schema_text, write_schema, allowed_text, bound_text, known_fields, is_table
-   public :: segment_of, segment_group, group_list
+   public :: segment_of, segment_group, group_list, point_of, point_group
 
    !> Snapshot fields that &output fields may name.
    character(len=*), parameter :: known_fields(8) = &
@@ -210,6 +210,8 @@ contains
                "and pulled taut; it fades where the cell's strain falls to zero", length=16, choices='none end_a end_b')
       ! &segment_1 ... &segment_8: copies of the entries of &cable, &material and &fluid
       call add_segments(t)
+      ! &point_1 ... &point_8: bodies at the joints
+      call add_points(t)
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &
@@ -434,6 +436,52 @@ contains
       end do
    end subroutine add_segments
 
+   !> The groups &point_1 ... &point_8, all alike: a body (clump weight, buoy) at a joint of two
+   !> segments.
+   subroutine add_points(t)
+      !> The table; the points appended.
+      type(schema_entry), allocatable, intent(inout) :: t(:)
+      character(len=16) :: group
+      integer :: k
+      do k = 1, max_points
+         group = point_group(k)
+         call add(t, group, 'joint', 'integer', '-', '0', 'the joint the body sits on: the end of &segment_joint, '// &
+                  'where &segment_joint+1 starts (a node of the line)', 1.0_dp, real(max_segments - 1, dp), &
+                  default_means='must be given')
+         call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
+                  'down on the joint', 0.0_dp, 1.0e9_dp)
+         call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &
+                  'density g volume up on the joint, taken fully submerged', 0.0_dp, 1.0e6_dp)
+         call add(t, group, 'ca', 'real', '-', '0', 'added-mass coefficient: ca &fluid density volume more '// &
+                  'inertia, in every direction', 0.0_dp, 100.0_dp)
+         call add(t, group, 'cd', 'real', '-', '0', 'drag coefficient on area: the force 1/2 &fluid density cd '// &
+                  'area |w| w against the velocity w relative to the current, in every direction', 0.0_dp, 100.0_dp)
+         call add(t, group, 'area', 'real', 'm^2', '0', 'projected area of the body for its drag', 0.0_dp, 1.0e6_dp)
+      end do
+   end subroutine add_points
+
+   !> The name of the group of point k: 'point_k'.
+   pure function point_group(k) result(group)
+      !> Point, 1 .. max_points.
+      integer, intent(in) :: k
+      character(len=16) :: group
+      write (group, '(a,i0)') 'point_', k
+   end function point_group
+
+   !> The point a group describes: k for 'point_k', 0 for any other group.
+   pure integer function point_of(group)
+      !> Group name, lower case.
+      character(*), intent(in) :: group
+      integer :: k
+      point_of = 0
+      do k = 1, max_points
+         if (trim(group) == trim(point_group(k))) then
+            point_of = k
+            return
+         end if
+      end do
+   end function point_of
+
    !> The name of the group of segment k: 'segment_k'.
    pure function segment_group(k) result(group)
       !> Segment, 1 .. max_segments.
@@ -474,6 +522,11 @@ contains
          if (segment_of(names(i)) == 1) then
             do while (j < size(names))
                if (segment_of(names(j + 1)) /= segment_of(names(j)) + 1) exit
+               j = j + 1
+            end do
+         else if (point_of(names(i)) == 1) then
+            do while (j < size(names))
+               if (point_of(names(j + 1)) /= point_of(names(j)) + 1) exit
                j = j + 1
             end do
          end if

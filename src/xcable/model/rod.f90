@@ -58,6 +58,7 @@ module xcable_model_rod
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem
    use xcable_loads_load, only: load_slot, cell_kinematics, any_skew
+   use xcable_loads_point, only: point_body
    use xcable_model_rod_kernels, only: perp, cross2, outer, identity2, geometry_of, turning_angles, &
                                        cell_rotations_of, geometry_cells, add_jacobian, cell_terms, &
                                        moment_gradient_of, node_residuals, small_strain_step, small_rotation
@@ -175,9 +176,16 @@ module xcable_model_rod
       type(rod_section), allocatable :: sections(:)
       integer, allocatable :: cell_sec(:)
       real(dp), allocatable :: node_w(:), node_ei(:)
+      !> Bodies at nodes (clump weights, buoys: set_points; not allocated: none), the node of
+      !> each, and the derivative (x, z) of each one's drag in the last evaluation, N/m.
+      type(point_body), allocatable :: points(:)
+      integer, allocatable :: point_node(:)
+      real(dp), allocatable :: point_jac(:, :, :)
    contains
       !> A line of segments: the sections' cells and materials.
       procedure :: set_sections => rod_set_sections
+      !> Bodies at the joints (after set_sections).
+      procedure :: set_points => rod_set_points
       !> The tension of cell c at a strain, N.
       procedure :: cell_tension => rod_cell_tension
       !> Whether the law of any cell has a kink (a rope that cannot push).
@@ -267,6 +275,15 @@ module xcable_model_rod
          !> Per section: mass and weight per length, EI, damping.
          real(dp), intent(in) :: mass(:), weight(:), ei(:), damping(:)
       end subroutine rod_set_sections
+
+      !> Bodies at nodes (after set_sections): each on the node at its arc length, if the piece
+      !> has one there; its inertia in the mass matrix, its weight in the node's, its drag a load.
+      module subroutine rod_set_points(self, points)
+         !> Piece.
+         class(rod_piece), intent(inout) :: self
+         !> The line's bodies.
+         type(point_body), intent(in) :: points(:)
+      end subroutine rod_set_points
 
       !> The force the support exerts on end node k (1 or n) to keep the balance of
       !> that node: for statics (dt = 0) -(N_k - N_k-1) + w_k e_z - F_k, for a step
@@ -1044,6 +1061,43 @@ contains
       real(dp), intent(in) :: x(:)
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
+      call cell_loads(self, x, dt, theta, with_jacobian)
+      if (allocated(self%points)) call point_loads(self, x, dt)
+   end subroutine apply_loads
+
+   !> The drag of the bodies at nodes on load_node (which cell_loads cleared, or which holds the
+   !> zeros of init when there are no cell loads: cleared here), and its derivative (x, z) in
+   !> point_jac.
+   subroutine point_loads(self, x, dt)
+      class(rod_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt
+      integer :: i, k
+      real(dp) :: f(3), jac(3, 3), x1(3)
+      logical :: cleared
+      cleared = allocated(self%loads)
+      if (cleared) cleared = size(self%loads) > 0
+      if (.not. cleared) self%load_node = 0
+      do i = 1, size(self%points)
+         if (.not. self%points(i)%has_drag()) cycle
+         k = self%point_node(i)
+         x1 = [x(2*k - 1), 0.0_dp, x(2*k)]
+         if (dt > 0) then
+            call self%points(i)%drag(dt, [self%r0(1, k), 0.0_dp, self%r0(2, k)], x1, f, jac)
+         else
+            call self%points(i)%drag(dt, x1, x1, f, jac)
+         end if
+         self%load_node(:, k) = self%load_node(:, k) + self%load_factor*f([1, 3])
+         self%point_jac(:, :, i) = self%load_factor*jac([1, 3], [1, 3])
+      end do
+   end subroutine point_loads
+
+   !> The distributed loads along the cells (apply_loads).
+   subroutine cell_loads(self, x, dt, theta, with_jacobian)
+      class(rod_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt, theta
+      logical, intent(in) :: with_jacobian
       integer :: c, i, n
       real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), de_coef, kin(2, 2), &
                   xm(2), dx_coef, df_dx(2, 2)
@@ -1095,7 +1149,7 @@ contains
             self%skew_block(:, :, 1, c) = self%skew_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
          end do
       end do
-   end subroutine apply_loads
+   end subroutine cell_loads
 
    !> Bending energy of interior node k at turning angle th: B = 2 EI tan^2(th / 2) / h_k,
    !> that is EI kappa^2 h_k / 2 with the discrete curvature kappa = 2 tan(th / 2) / h_k
@@ -1333,6 +1387,14 @@ contains
                         held_a, held_b, dynamic, self%block_scaled, self%mass_scaled)
       if (state_a) call add_end_block(jacobian, 0, jac_a, scale)
       if (state_b) call add_end_block(jacobian, 2*n - 2, jac_b, scale)
+      ! Bodies at nodes: their drag's derivative (its force is in load_node).
+      if (allocated(self%points)) then
+         do c = 1, size(self%points)
+            k = self%point_node(c)
+            if ((k == 1 .and. held_a) .or. (k == n .and. held_b)) cycle
+            call add_end_block(jacobian, 2*(k - 1), self%point_jac(:, :, c), scale)
+         end do
+      end if
       ! Distributed loads: node c and node c+1 each get -F_c / 2 (and -G_c, +G_c of unequal shares).
       if (allocated(self%loads)) then
          if (size(self%loads) > 0) then

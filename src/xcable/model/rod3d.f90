@@ -85,6 +85,7 @@ module xcable_model_rod3d
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem
    use xcable_loads_load, only: load_slot, cell_kinematics, any_skew
+   use xcable_loads_point, only: point_body
    use xcable_numerics_vector3, only: outer3, identity3, cross3
    implicit none
    private
@@ -166,9 +167,16 @@ module xcable_model_rod3d
       type(rod3d_section), allocatable :: sections(:)
       integer, allocatable :: cell_sec(:)
       real(dp), allocatable :: node_w(:), node_ei(:), cell_gip(:)
+      !> Bodies at nodes (clump weights, buoys: set_points; not allocated: none), the node of
+      !> each, and the derivative of each one's drag in the last evaluation, N/m.
+      type(point_body), allocatable :: points(:)
+      integer, allocatable :: point_node(:)
+      real(dp), allocatable :: point_jac(:, :, :)
    contains
       !> A line of segments: the sections' cells and materials.
       procedure :: set_sections => rod3d_set_sections
+      !> Bodies at the joints (after set_sections).
+      procedure :: set_points => rod3d_set_points
       !> The tension of cell c at a strain, N.
       procedure :: cell_tension => rod3d_cell_tension
       !> Whether the law of any cell has a kink (a rope that cannot push).
@@ -271,6 +279,15 @@ module xcable_model_rod3d
          !> Whether to form the Jacobian.
          logical, intent(in) :: with_jacobian
       end subroutine rod3d_static_system
+
+      !> Bodies at nodes (after set_sections): each on the node at its arc length, if the piece
+      !> has one there; its inertia in the mass matrix, its weight in the node's, its drag a load.
+      module subroutine rod3d_set_points(self, points)
+         !> Piece.
+         class(rod3d_piece), intent(inout) :: self
+         !> The line's bodies.
+         type(point_body), intent(in) :: points(:)
+      end subroutine rod3d_set_points
 
       !> Set the distributed loads (their lift must already be off the weight given to init).
       module subroutine rod3d_set_loads(self, loads, error)
@@ -1293,6 +1310,18 @@ contains
             if (state_b) call add_twist(3*(n - 1) + a, 3*(n - 1) + b, -jac_b(a, b)*scale)
          end do
       end do
+      ! Bodies at nodes: their drag's derivative (its force is in load_node).
+      if (allocated(self%points)) then
+         do c = 1, size(self%points)
+            k = self%point_node(c)
+            if ((k == 1 .and. held_a) .or. (k == n .and. held_b)) cycle
+            do b = 1, 3
+               do a = 1, 3
+                  call add_twist(3*(k - 1) + a, 3*(k - 1) + b, -self%point_jac(a, b, c)*scale)
+               end do
+            end do
+         end do
+      end if
       if (anchor_a) call set_row(3*n + 1, [3*n + 1], [1.0_dp])
       if (anchor_b) call set_row(4*n, [4*n], [1.0_dp])
       if (held_a) then

@@ -828,18 +828,27 @@ contains
       end do
       call piece%set_sections(last(keep), laws, scene%sections(keep)%mass, scene%sections(keep)%weight, &
                               scene%sections(keep)%ei, scene%sections(keep)%damping)
+      if (allocated(scene%points)) call piece%set_points(scene%points)
    end subroutine piece_sections
 
    !> The catenary segments of a scene's sections (for the first guess).
    function scene_segments(scene) result(segments)
       type(scene_type), intent(in) :: scene
       type(catenary_segment), allocatable :: segments(:)
-      integer :: j
+      integer :: j, k
       allocate (segments(size(scene%sections)))
       do j = 1, size(scene%sections)
          allocate (segments(j)%law, source=scene%sections(j)%law)
          segments(j)%weight = scene%sections(j)%weight
          segments(j)%length = scene%sections(j)%s_end - scene%sections(j)%s_start
+      end do
+      ! The bodies at the joints: the vertical force jumps by their weight.
+      if (.not. allocated(scene%points)) return
+      do k = 1, size(scene%points)
+         do j = 1, size(scene%sections) - 1
+            if (abs(scene%points(k)%s - scene%sections(j)%s_end) <= 1.0e-9_dp*scene%length) &
+               segments(j)%end_weight = segments(j)%end_weight + scene%points(k)%net_weight()
+         end do
       end do
    end function scene_segments
 end module xcable_model_rod_statics

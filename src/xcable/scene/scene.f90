@@ -17,6 +17,7 @@ module xcable_scene_scene
    use xcable_ends_end_condition, only: end_condition
    use xcable_ends_factory, only: new_end
    use xcable_loads_load, only: load_slot
+   use xcable_loads_point, only: point_body
    use xcable_loads_factory, only: case_loads
    implicit none
    private
@@ -77,6 +78,8 @@ module xcable_scene_scene
       type(load_slot), allocatable :: loads(:)
       !> The segments of the line from end a (one for a uniform line: the values above).
       type(section_type), allocatable :: sections(:)
+      !> Bodies at joints of the segments (&point_k: clump weights, buoys), from end a.
+      type(point_body), allocatable :: points(:)
    contains
       !> Whether the break splits the cable in two.
       procedure :: interior_break
@@ -154,6 +157,23 @@ contains
             end associate
          end do
       end if
+
+      ! Bodies at the joints: in the water (the fluid's density and current) if there is water.
+      allocate (scene%points(config%point_count))
+      do k = 1, config%point_count
+         associate (p => scene%points(k), pc => config%points(k))
+            write (p%label, '(a,i0)') 'point_', k
+            p%s = scene%sections(pc%joint)%s_end
+            p%mass = pc%mass
+            p%volume = pc%volume
+            p%ca = pc%ca
+            p%cd = pc%cd
+            p%area = pc%area
+            p%gravity = config%gravity
+            p%density = max(config%fluid_density, 0.0_dp)
+            if (p%density > 0) p%current = [config%current_x, config%current_y, config%current_z]
+         end associate
+      end do
 
       call new_end(config%end_a, 'end_a', scene%end_a, error)
       if (allocated(error)) then

@@ -13,10 +13,11 @@ module xcable_theory_closed_forms
    public :: catenary_from_force, catenary_between, catenary_segment, segments_from_force
 
    !> A segment of a line for the catenary of a line of segments: its law, weight per
-   !> unstretched length (N/m) and unstretched length (m).
+   !> unstretched length (N/m) and unstretched length (m), and the weight of a body at its end
+   !> (N, down; negative for a buoy), where the vertical force jumps by it.
    type :: catenary_segment
       class(material_law), allocatable :: law
-      real(dp) :: weight = 0, length = 0
+      real(dp) :: weight = 0, length = 0, end_weight = 0
    end type catenary_segment
 
    !> Gauss-Legendre points per panel.
@@ -222,7 +223,7 @@ contains
             tension(first:last) = tl(2:m + 1)
          end if
          rj = rl(:, m + 2)
-         nj = nj + [0.0_dp, segments(j)%weight*segments(j)%length]
+         nj = nj + [0.0_dp, segments(j)%weight*segments(j)%length + segments(j)%end_weight]
          start = start + segments(j)%length
          first = last + 1
          deallocate (rl, el, tl)

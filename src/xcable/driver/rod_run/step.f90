@@ -396,6 +396,7 @@ contains
          if (allocated(rod%loads)) then
             if (size(rod%loads) > 0) return
          end if
+         if (allocated(rod%points)) return
          if (n < 2*window_margin + 4) return
          first = n + 1
          last = 0

@@ -3,8 +3,8 @@
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_access
    use xcable_core_kinds, only: dp
-   use xcable_io_config, only: case_config, end_config, segment_config
-   use xcable_io_schema, only: schema_entry, segment_of
+   use xcable_io_config, only: case_config, end_config, segment_config, point_config
+   use xcable_io_schema, only: schema_entry, segment_of, point_of
    implicit none
    private
    public :: access, config_value, get_value
@@ -53,6 +53,10 @@ contains
       end select
       if (segment_of(e%group) > 0) then
          call access_segment(c%segments(segment_of(e%group)), e%name, v, store)
+         return
+      end if
+      if (point_of(e%group) > 0) then
+         call access_point(c%points(point_of(e%group)), e%name, v, store)
          return
       end if
       select case (trim(e%group)//'%'//trim(e%name))
@@ -206,6 +210,28 @@ contains
          v%found = .false.
       end select
    end subroutine access_segment
+
+   !> `access` for the variables of &point_1 ... &point_8.
+   subroutine access_point(g, name, v, store)
+      !> The point.
+      type(point_config), intent(inout) :: g
+      !> Variable name.
+      character(*), intent(in) :: name
+      !> Its value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      select case (name)
+      case ('joint'); call move(g%joint, v, store)
+      case ('mass'); call move(g%mass, v, store)
+      case ('volume'); call move(g%volume, v, store)
+      case ('ca'); call move(g%ca, v, store)
+      case ('cd'); call move(g%cd, v, store)
+      case ('area'); call move(g%area, v, store)
+      case default
+         v%found = .false.
+      end select
+   end subroutine access_point
 
    !> A real scalar.
    subroutine move_real(x, v, store)

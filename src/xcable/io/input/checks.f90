@@ -9,7 +9,7 @@ module xcable_io_input_checks
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names, kinds_using
    use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text, group_list, &
-                               segment_group, segment_of
+                               segment_group, segment_of, point_group, point_of
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word, next_item, shown
    use xcable_io_input_bathymetry, only: load_bathymetry
@@ -94,7 +94,7 @@ contains
       if (allocated(error)) return
       do i = 1, size(t)
          ! (The segments' variables are checked with their segment, below.)
-         if (segment_of(t(i)%group) > 0) cycle
+         if (segment_of(t(i)%group) > 0 .or. point_of(t(i)%group) > 0) cycle
          call check_entry(c, t(i), error)
          if (allocated(error)) return
       end do
@@ -103,6 +103,8 @@ contains
       call check_law_values(c, 'material', 'cable', error)
       if (allocated(error)) return
       call check_segment_values(c, t, error)
+      if (allocated(error)) return
+      call check_points(c, t, error)
       if (allocated(error)) return
       call derive_defaults(c)
       ! (Fortran does not short-circuit .and.: the division only where the divisor is positive.)
@@ -290,6 +292,63 @@ contains
          return
       end if
    end subroutine check_segment_layout
+
+   !> The bodies at the joints (&point_1 ... &point_n, numbered without a gap, which the reader
+   !> checks): each on a joint of the line's segments, one body per joint, its variables in their
+   !> ranges; a volume only in water, a drag coefficient only with an area.
+   subroutine check_points(c, t, error)
+      !> The case.
+      type(case_config), intent(inout) :: c
+      !> The schema.
+      type(schema_entry), intent(in) :: t(:)
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: prefix
+      character(len=16) :: group
+      integer :: k, i, j
+      do k = 1, c%point_count
+         group = point_group(k)
+         prefix = c%source//': &'//trim(group)//': '
+         if (.not. c%is_given(trim(group), 'joint')) then
+            call fatal_error(error, prefix//'joint not given: a point sits on a joint of two segments; give joint = '// &
+                             'k for the end of &segment_k', stat_input)
+            return
+         end if
+         j = c%points(k)%joint
+         if (c%segment_count < 2) then
+            call fatal_error(error, prefix//'joint = '//str(j)//': the line has no joint (it is one segment); a point '// &
+                             'sits on a joint of two segments: give the line as &segment_1, &segment_2, ...', stat_input)
+            return
+         end if
+         if (j < 1 .or. j > c%segment_count - 1) then
+            call fatal_error(error, prefix//'joint = '//str(j)//': the line has '//str(c%segment_count)// &
+                             ' segments; allowed: 1 .. '//str(c%segment_count - 1)//' (joint k is the end of '// &
+                             '&segment_k)', stat_input)
+            return
+         end if
+         do i = 1, size(t)
+            if (trim(t(i)%group) /= trim(group)) cycle
+            call check_entry(c, t(i), error)
+            if (allocated(error)) return
+         end do
+         do i = 1, k - 1
+            if (c%points(i)%joint /= j) cycle
+            call fatal_error(error, prefix//'joint = '//str(j)//': &'//trim(point_group(i))//' sits on it already; '// &
+                             'allowed: one point per joint (give their mass, volume and area together)', stat_input)
+            return
+         end do
+         if (c%points(k)%volume > 0 .and. c%fluid_density <= 0) then
+            call fatal_error(error, prefix//'volume = '//real_text(c%points(k)%volume)//': buoyancy needs water; '// &
+                             'give &fluid density, or volume = 0', stat_input)
+            return
+         end if
+         if (c%points(k)%cd > 0 .and. c%points(k)%area <= 0) then
+            call fatal_error(error, prefix//'cd = '//real_text(c%points(k)%cd)//' without an area: the drag acts '// &
+                             'on area; give area > 0, or cd = 0', stat_input)
+            return
+         end if
+      end do
+   end subroutine check_points
 
    !> Each segment's variables against their schema entries (the ranges and words of their
    !> twins in &cable, &material and &fluid), its table law's rows (read from its table_file

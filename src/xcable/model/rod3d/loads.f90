@@ -33,6 +33,37 @@ contains
       real(dp), intent(in) :: x(:)
       real(dp), intent(in) :: dt, theta
       logical, intent(in) :: with_jacobian
+      call cell_loads(self, x, dt, theta, with_jacobian)
+      if (allocated(self%points)) call point_loads(self, x, dt)
+   end subroutine apply_loads
+
+   !> The drag of the bodies at nodes on load_node, and its derivative in point_jac (scaled by
+   !> load_factor like the cells' loads).
+   subroutine point_loads(self, x, dt)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt
+      integer :: i, k
+      real(dp) :: f(3), jac(3, 3)
+      do i = 1, size(self%points)
+         if (.not. self%points(i)%has_drag()) cycle
+         k = self%point_node(i)
+         if (dt > 0) then
+            call self%points(i)%drag(dt, self%r0(:, k), x(3*k - 2:3*k), f, jac)
+         else
+            call self%points(i)%drag(dt, x(3*k - 2:3*k), x(3*k - 2:3*k), f, jac)
+         end if
+         self%load_node(:, k) = self%load_node(:, k) + self%load_factor*f
+         self%point_jac(:, :, i) = self%load_factor*jac
+      end do
+   end subroutine point_loads
+
+   !> The distributed loads along the cells (apply_loads).
+   subroutine cell_loads(self, x, dt, theta, with_jacobian)
+      class(rod3d_piece), intent(inout) :: self
+      real(dp), intent(in) :: x(:)
+      real(dp), intent(in) :: dt, theta
+      logical, intent(in) :: with_jacobian
       integer :: c, i, n
       logical :: ranged
       real(dp) :: e(3), w(3), a(3), f(3), df_de(3, 3), df_dw(3, 3), df_da(3, 3), r1(3, 2), de_coef, kin(3, 3), &
@@ -85,7 +116,7 @@ contains
             self%skew_block(:, :, 1, c) = self%skew_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
          end do
       end do
-   end subroutine apply_loads
+   end subroutine cell_loads
 
    !> The applied couples of the ends on the end cells. A couple C about the
    !> unit axis a (end_condition%couple_axis: -y for the planar input's couple,

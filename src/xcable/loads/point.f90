@@ -1,0 +1,100 @@
+!> A body at a node of the line: a clump weight or a buoy at a joint of two
+!> segments (&point_k joint). It is the point of a mooring network in its
+!> simplest place, between two line ends of one line; the same body will sit
+!> where several lines meet.
+!>
+!> The body has a mass m, a displaced volume V, an added-mass coefficient Ca
+!> and a drag coefficient Cd on a projected area A, all isotropic (MoorDyn's
+!> point has the same five). In water of density rho, with gravity g and a
+!> uniform current U, it adds to its node
+!>
+!>     inertia  m + Ca rho V              (the node's mass matrix, every direction)
+!>     weight   (m - rho V) g             (down; negative for a buoy)
+!>     drag     -1/2 rho Cd A |w| w,      w = V_node - U
+!>
+!> The buoyancy takes the body as fully submerged wherever it is (a named
+!> approximation: a buoy at the water surface is not modelled). Over a time
+!> step the drag acts on the step's mean velocity (R^n+1 - R^n) / dt, like
+!> the cells' drag, so that the work it does over the step is the force times
+!> the displacement; in statics w = -U. The weight is part of the node's
+!> weight (its potential g z in the ledger), the inertia part of the mass
+!> matrix (its kinetic energy), and the drag's work is booked with the other
+!> loads'.
+module xcable_loads_point
+   use xcable_core_kinds, only: dp
+   implicit none
+   private
+   public :: point_body
+
+   !> A body at a node.
+   type :: point_body
+      !> Arc length of its node from end a (unstretched), m.
+      real(dp) :: s = 0
+      !> Mass, kg; displaced volume, m^3; added-mass coefficient; drag coefficient; projected
+      !> area for the drag, m^2.
+      real(dp) :: mass = 0, volume = 0, ca = 0, cd = 0, area = 0
+      !> Water density, kg/m^3 (0: no water); gravity, m/s^2; the current (x, y, z), m/s.
+      real(dp) :: density = 0, gravity = 0, current(3) = 0
+      !> Its name in messages ('point_1').
+      character(len=16) :: label = ''
+   contains
+      !> Mass with the added mass, kg.
+      procedure :: inertia
+      !> Weight less buoyancy, N (positive down).
+      procedure :: net_weight
+      !> Whether it has drag.
+      procedure :: has_drag
+      !> Drag force on its node over a step or at rest, with its derivative.
+      procedure :: drag
+   end type point_body
+
+contains
+
+   !> m + Ca rho V, kg.
+   pure real(dp) function inertia(self)
+      class(point_body), intent(in) :: self
+      inertia = self%mass + self%ca*self%density*self%volume
+   end function inertia
+
+   !> (m - rho V) g, N.
+   pure real(dp) function net_weight(self)
+      class(point_body), intent(in) :: self
+      net_weight = (self%mass - self%density*self%volume)*self%gravity
+   end function net_weight
+
+   !> Whether 1/2 rho Cd A > 0.
+   pure logical function has_drag(self)
+      class(point_body), intent(in) :: self
+      has_drag = self%density*self%cd*self%area > 0
+   end function has_drag
+
+   !> The drag on the node, N, and its derivative with respect to the node's new position x1,
+   !> N/m: in a step (dt > 0) on the mean velocity (x1 - x0) / dt, at rest (dt = 0) in the current.
+   pure subroutine drag(self, dt, x0, x1, f, df_dx1)
+      !> The body.
+      class(point_body), intent(in) :: self
+      !> Time step, s (0: statics).
+      real(dp), intent(in) :: dt
+      !> Positions of the node at the start and the end of the step, m.
+      real(dp), intent(in) :: x0(3), x1(3)
+      !> Force, N; d f / d x1, N/m.
+      real(dp), intent(out) :: f(3), df_dx1(3, 3)
+      real(dp) :: w(3), speed, c
+      integer :: a
+      c = 0.5_dp*self%density*self%cd*self%area
+      if (dt > 0) then
+         w = (x1 - x0)/dt - self%current
+      else
+         w = -self%current
+      end if
+      speed = norm2(w)
+      f = -c*speed*w
+      df_dx1 = 0
+      if (dt <= 0 .or. speed <= 0) return
+      ! d(|w| w)/dw = |w| I + w w^T / |w|; dw/dx1 = I / dt.
+      do a = 1, 3
+         df_dx1(:, a) = -c*w*w(a)/(speed*dt)
+         df_dx1(a, a) = df_dx1(a, a) - c*speed/dt
+      end do
+   end subroutine drag
+end module xcable_loads_point

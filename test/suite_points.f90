@@ -1,0 +1,410 @@
+!> Bodies at the joints of a line of segments (issue "Moorings": clump weights and buoys,
+!> &point_k): the chain and rope line of suite_segments with a clump, and in water with a buoy,
+!> against the elastic catenary of each segment in closed form with the vertical force jumping
+!> by the body's net weight at the joint (its own formulas here), with the order of
+!> convergence; the 3-D model turned out of the x-z plane against the planar one; the energy
+!> ledger with the body's added mass and drag in a current; the step's and the statics'
+!> Jacobians against central differences; and the bad input.
+module suite_points
+   use xcable_core_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check
+   use xcable_core_strings, only: str
+   use xcable_io_config, only: case_config
+   use xcable_driver_simulation, only: simulation
+   use suite_segments, only: chain_rope_config
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   implicit none
+   private
+   public :: collect_points
+
+   !> The chain and rope line of chain_rope_config: lengths (m), areas (m^2), EA (N), end b (m).
+   real(dp), parameter :: seg_length(2) = [50.0_dp, 150.0_dp], seg_area(2) = [0.01_dp, 0.005_dp], &
+                          seg_ea(2) = [5.0e8_dp, 2.0e7_dp], end_b(2) = [170.0_dp, 90.0_dp], g = 9.81_dp
+
+contains
+
+   subroutine collect_points(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('clump_and_buoy_catenary_closed_form', test_closed_form), &
+               new_unittest('model_3d_points_turned_equal_2d', test_3d_turned), &
+               new_unittest('ledger_with_a_buoy_in_a_current', test_ledger), &
+               new_unittest('points_jacobians', test_jacobians), &
+               new_unittest('points_bad_input_refused', test_bad_input)]
+   end subroutine collect_points
+
+   !> The chain and rope line with a body at its joint: case 1 a clump of 300 kg in air; case 2
+   !> in sea water (1025 kg/m^3; the rope 1100 kg/m^3) a buoy of 100 kg displacing 0.8 m^3.
+   function body_config(nodes, case) result(c)
+      integer, intent(in) :: nodes, case
+      type(case_config) :: c
+      c = chain_rope_config(nodes)
+      c%point_count = 1
+      c%points(1)%joint = 1
+      c%given = c%given//' point_1%joint point_1%mass'
+      if (case == 1) then
+         c%points(1)%mass = 300
+      else
+         c%points(1)%mass = 100
+         c%points(1)%volume = 0.8_dp
+         c%segments(2)%density = 1100
+         c%fluid_density = 1025
+         c%surface_z = 200
+         c%given = c%given//' point_1%volume'
+      end if
+   end function body_config
+
+   !> Weights per length (N/m) and the body's net weight (N) of body_config's case.
+   subroutine case_weights(case, w, wp)
+      integer, intent(in) :: case
+      real(dp), intent(out) :: w(2), wp
+      if (case == 1) then
+         w = [8000, 1000]*seg_area*g
+         wp = 300*g
+      else
+         w = ([8000, 1100] - 1025)*seg_area*g
+         wp = (100 - 1025*0.8_dp)*g
+      end if
+   end subroutine case_weights
+
+   !> Position at arc length s of the elastic catenary of the two linear segments with the force
+   !> (H, V0) = y at s = 0: each segment from its start s0 adds
+   !>   x: H (s - s0) / EA + H / w (asinh(V / H) - asinh(V_0 / H)),
+   !>   z: (V_0 (s - s0) + w (s - s0)^2 / 2) / EA + H / w (sqrt(1 + (V / H)^2) - sqrt(1 + (V_0 / H)^2)),
+   !> V_0 and V the vertical force at s0 and s; past the joint V_0 = V0 + w_1 L_1 + W_p.
+   function point_at(y, s, w, wp) result(p)
+      real(dp), intent(in) :: y(2), s, w(2), wp
+      real(dp) :: p(2), s0, va, vb, ds
+      integer :: j
+      p = 0
+      s0 = 0
+      va = y(2)
+      do j = 1, 2
+         ds = min(s, s0 + seg_length(j)) - s0
+         if (ds <= 0) exit
+         vb = va + w(j)*ds
+         p(1) = p(1) + y(1)*ds/seg_ea(j) + y(1)/w(j)*(asinh(vb/y(1)) - asinh(va/y(1)))
+         p(2) = p(2) + (va*ds + 0.5_dp*w(j)*ds**2)/seg_ea(j) + y(1)/w(j)*(sqrt(1 + (vb/y(1))**2) - sqrt(1 + (va/y(1))**2))
+         s0 = s0 + seg_length(j)
+         va = va + w(j)*seg_length(j) + wp
+      end do
+   end function point_at
+
+   !> (H, V0) that takes the catenary to end b: Newton with central differences, halving the step.
+   subroutine exact_force(w, wp, y)
+      real(dp), intent(in) :: w(2), wp
+      real(dp), intent(out) :: y(2)
+      real(dp) :: r(2), jac(2, 2), dy(2), det, step(2)
+      integer :: it, j, ls
+      y = [0.5_dp*sum(w*seg_length), -0.2_dp*sum(w*seg_length)]
+      do it = 1, 100
+         r = point_at(y, sum(seg_length), w, wp) - end_b
+         if (norm2(r) < 1.0e-11_dp) exit
+         do j = 1, 2
+            dy = 0
+            dy(j) = 1.0e-6_dp*max(1.0_dp, abs(y(j)))
+            jac(:, j) = (point_at(y + dy, sum(seg_length), w, wp) - point_at(y - dy, sum(seg_length), w, wp))/(2*dy(j))
+         end do
+         det = jac(1, 1)*jac(2, 2) - jac(1, 2)*jac(2, 1)
+         step = [jac(2, 2)*r(1) - jac(1, 2)*r(2), -jac(2, 1)*r(1) + jac(1, 1)*r(2)]/det
+         do ls = 1, 30
+            if (y(1) - step(1) > 0) then
+               if (norm2(point_at(y - step, sum(seg_length), w, wp) - end_b) < norm2(r)) exit
+            end if
+            step = 0.5_dp*step
+         end do
+         y = y - step
+      end do
+   end subroutine exact_force
+
+   !> The rod's statics on 201 and 401 nodes against the closed form, for the clump and the buoy:
+   !> the largest error of the nodes' positions (over the line's length) and of the cells'
+   !> tensions at their middles (over the largest tension); second order. The joint's vertical
+   !> force jumps by W_p: the two cells at the joint differ in tension as the closed form says.
+   subroutine test_closed_form(error)
+      type(error_type), allocatable, intent(out) :: error
+      integer, parameter :: ladder(2) = [201, 401]
+      type(simulation) :: sim
+      real(dp) :: y(2), w(2), wp, err_r(2), err_t(2), t_max, sm, t_exact, vm
+      integer :: i, k, n, case
+      do case = 1, 2
+         call case_weights(case, w, wp)
+         call exact_force(w, wp, y)
+         t_max = max(norm2(y), norm2([y(1), y(2) + sum(w*seg_length) + wp]))
+         do i = 1, 2
+            call sim%prepare(body_config(ladder(i), case), error)
+            if (allocated(error)) return
+            associate (r => sim%rod%static%r, s => sim%rod%s, piece => sim%rod%pieces(1)%problem%piece)
+               n = size(s)
+               err_r(i) = 0
+               err_t(i) = 0
+               do k = 1, n
+                  err_r(i) = max(err_r(i), norm2(r(:, k) - point_at(y, s(k), w, wp)))
+               end do
+               do k = 1, n - 1
+                  sm = 0.5_dp*(s(k) + s(k + 1))
+                  vm = y(2) + w(1)*min(sm, seg_length(1)) + w(2)*max(sm - seg_length(1), 0.0_dp)
+                  if (sm > seg_length(1)) vm = vm + wp
+                  t_exact = norm2([y(1), vm])
+                  err_t(i) = max(err_t(i), abs(piece%cell_tension(k, norm2(r(:, k + 1) - r(:, k))/piece%ds(k) - 1) - &
+                                               t_exact))
+               end do
+               err_t(i) = err_t(i)/t_max
+               err_r(i) = err_r(i)/sum(seg_length)
+            end associate
+            write (output_unit, '(4x,a,i2,a,i4,a,es9.2,a,es9.2,a)') 'body case', case, ', ', ladder(i), &
+               ' nodes: positions', err_r(i), ' of L, tensions', err_t(i), ' of the largest'
+         end do
+         write (output_unit, '(4x,a,f5.2,a,f5.2)') 'observed order: positions ', log(err_r(1)/err_r(2))/log(2.0_dp), &
+            ', tensions ', log(err_t(1)/err_t(2))/log(2.0_dp)
+         ! Measured (401 nodes): clump 1.1e-6 and 8.0e-6, buoy 2.3e-6 and 1.8e-5.
+         call check(error, err_r(2) < 6.0e-6_dp .and. err_t(2) < 5.0e-5_dp, 'the line with a body at its joint '// &
+                    'is off its closed form (case '//str(case)//'): positions '//str(err_r(2))//' of L, tensions '// &
+                    str(err_t(2))//' of the largest')
+         if (allocated(error)) return
+         call check(error, err_r(1)/err_r(2) > 3.0_dp .and. err_t(1)/err_t(2) > 1.8_dp, 'no second order (case '// &
+                    str(case)//'): positions '//str(err_r(1)/err_r(2))//', tensions '//str(err_t(1)/err_t(2)))
+         if (allocated(error)) return
+      end do
+   end subroutine test_closed_form
+
+   !> The buoy case in water with a current of 0.3 m/s along x, drag on the lines and on the
+   !> buoy (cd 0.8 on 1.2 m^2), its added mass (ca 0.5), heaved at end b (1 m, period 2 s) for
+   !> 0.5 s, Newton to 1e-12, the ledger on.
+   function heave_config(nodes, model) result(c)
+      integer, intent(in) :: nodes
+      character(*), intent(in) :: model
+      type(case_config) :: c
+      c = body_config(nodes, 2)
+      c%model = model
+      c%segments(1)%bending_stiffness = 200
+      c%points(1)%cd = 0.8_dp
+      c%points(1)%area = 1.2_dp
+      c%points(1)%ca = 0.5_dp
+      c%cd_normal = 1.2_dp
+      c%cd_tangential = 0.01_dp
+      c%ca_normal = 1
+      c%current_x = 0.3_dp
+      c%end_b%kind = 'motion'
+      c%end_b%motion = 'harmonic'
+      c%end_b%amplitude = 1
+      c%end_b%period = 2
+      c%end_b%direction_x = 0
+      c%end_b%direction_z = 1
+      c%t_end = 0.5_dp
+      c%interval = 0
+      c%energy = .true.
+      c%newton_tol = 1.0e-12_dp
+      c%given = c%given//' segment_1%bending_stiffness point_1%cd point_1%area point_1%ca'
+   end function heave_config
+
+   !> The heaved buoy case turned about the vertical through end a by 30 degrees (the current
+   !> turned with it), model = '3d', against the planar run: the static state and the state after
+   !> 0.5 s, positions (turned back, and off the plane) over the largest coordinate, on the same
+   !> step.
+   subroutine test_3d_turned(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: angle = acos(-1.0_dp)/6
+      type(simulation) :: sim2, sim3
+      type(case_config) :: c
+      real(dp) :: dr_static, dr_end, dt2, dt3
+      integer :: k_steps
+      call sim2%prepare(heave_config(101, '2d'), error)
+      if (allocated(error)) return
+      c = heave_config(101, '3d')
+      c%end_b%x = end_b(1)*cos(angle)
+      c%end_b%y = end_b(1)*sin(angle)
+      c%current_x = 0.3_dp*cos(angle)
+      c%current_y = 0.3_dp*sin(angle)
+      c%given = c%given//' end_b%y fluid%current_y'
+      call sim3%prepare(c, error)
+      if (allocated(error)) return
+      call check(error, allocated(sim3%rod3%pieces(1)%run%problem%piece%points), 'the 3-D piece has no body')
+      if (allocated(error)) return
+      dr_static = difference(sim2%rod%static%r, sim3%rod3%pieces(1)%run%x)
+      call sim2%time_step(dt2, k_steps)
+      call sim3%time_step(dt3, k_steps)
+      call sim2%run(error=error)
+      if (allocated(error)) return
+      call sim3%run(error=error)
+      if (allocated(error)) return
+      dr_end = difference(sim2%rod%pieces(1)%r, sim3%rod3%pieces(1)%run%x)
+      write (output_unit, '(4x,a,2es9.2)') 'buoy turned by 30 degrees in 3-D against 2-D: static and after 0.5 s '// &
+         'positions', dr_static, dr_end
+      call check(error, abs(dt3 - dt2) <= 1.0e-12_dp*dt2, 'the turned 3-D run takes another step')
+      if (allocated(error)) return
+      ! Measured 1.7e-16 and 1.8e-13.
+      call check(error, max(dr_static, dr_end) < 5.0e-13_dp, 'the turned 3-D run with a buoy differs from the '// &
+                 'planar one: static '//str(dr_static)//', after 0.5 s '//str(dr_end))
+   contains
+      real(dp) function difference(r2, x3)
+         real(dp), intent(in) :: r2(:, :), x3(:)
+         real(dp) :: p(3)
+         integer :: k
+         difference = 0
+         do k = 1, size(r2, 2)
+            p = x3(3*k - 2:3*k)
+            difference = max(difference, abs(cos(angle)*p(1) + sin(angle)*p(2) - r2(1, k)), &
+                             abs(-sin(angle)*p(1) + cos(angle)*p(2)), abs(p(3) - r2(2, k)))
+         end do
+         difference = difference/maxval(abs(r2))
+      end function difference
+   end subroutine test_3d_turned
+
+   !> The heaved buoy case for 2 s, in 2-D and in 3-D: the ledger (with the buoy's kinetic
+   !> energy with its added mass, its weight less buoyancy in the potential, its drag's work with
+   !> the loads') closes to 1e-11 of the largest energy.
+   subroutine test_ledger(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=2), parameter :: models(2) = ['2d', '3d']
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp) :: drift
+      integer :: m, n
+      do m = 1, 2
+         c = heave_config(121, models(m))
+         c%t_end = 2
+         c%courant = 2
+         c%newton_tol = 1.0e-11_dp
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         call sim%run(error=error)
+         if (allocated(error)) return
+         associate (en => sim%rod%history%energy)
+            n = sim%rod%history%n
+            drift = maxval(abs(en(7, 0:n) - en(7, 0)))/maxval(abs(en(1:4, 0:n)))
+         end associate
+         write (output_unit, '(4x,a,a,a,es9.2,a)') 'buoy in a current, ', models(m), ': ledger drift', drift, &
+            ' of the largest energy'
+         ! Measured 1.4e-12 (2-D), 1.6e-12 (3-D).
+         call check(error, drift < 1.0e-11_dp, models(m)//': the ledger with a buoy drifts by '//str(drift))
+         if (allocated(error)) return
+      end do
+   end subroutine test_ledger
+
+   !> The Jacobians of the step (and of the statics) with the buoy's drag in the current and its
+   !> added mass, after 20 ms of a stirred motion, at a perturbed state, against central
+   !> differences: the planar rod and the 3-D rod turned out of the x-z plane.
+   subroutine test_jacobians(error)
+      use xcable_fdcheck, only: check_jacobian
+      use xcable_model_rod, only: rod_kl, rod_ku
+      use xcable_model_rod3d, only: rod3d_kl, rod3d_ku
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: angle = acos(-1.0_dp)/6
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp), allocatable :: x(:)
+      real(dp) :: worst2, worst3, worst3s
+      integer :: k, np
+      c = heave_config(41, '2d')
+      c%dt = 1.0e-3_dp
+      c%t_end = 0.02_dp
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      np = size(sim%rod%pieces(1)%v, 2)
+      do k = 2, np - 1
+         sim%rod%pieces(1)%v(:, k) = sim%rod%pieces(1)%v(:, k) + 0.3_dp*[sin(1.7_dp*k), cos(2.3_dp*k)]
+      end do
+      call sim%run(error=error)
+      if (allocated(error)) return
+      associate (run => sim%rod%pieces(1))
+         run%problem%t0 = sim%rod%t
+         run%problem%dt = c%dt
+         run%problem%theta = c%theta
+         call run%problem%piece%prepare_step(run%r, run%v)
+         x = reshape(run%r + c%dt*run%v, [2*np])
+         do k = 1, size(x)
+            x(k) = x(k) + 1.0e-3_dp*sin(0.7_dp*k)
+         end do
+         ! Measured 2.5e-9 (2-D step), 2.5e-9 (3-D step), 3.2e-9 (3-D statics) of the row scale.
+         call check_jacobian(run%problem, x, rod_kl, rod_ku, spread(1.0e-6_dp, 1, 2*np), 1.0e-8_dp, worst2, error)
+         if (allocated(error)) then
+            error%message = '2-D step: '//error%message
+            return
+         end if
+      end associate
+      c = heave_config(41, '3d')
+      c%end_b%x = end_b(1)*cos(angle)
+      c%end_b%y = end_b(1)*sin(angle)
+      c%current_y = 0.2_dp
+      c%given = c%given//' end_b%y fluid%current_y'
+      c%dt = 1.0e-3_dp
+      c%t_end = 0.02_dp
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      associate (run => sim%rod3%pieces(1)%run)
+         np = run%problem%piece%n
+         do k = 2, np - 1
+            run%v(:, k) = run%v(:, k) + 0.3_dp*[sin(1.7_dp*k), cos(2.3_dp*k), sin(0.9_dp*k)]
+         end do
+      end associate
+      call sim%run(error=error)
+      if (allocated(error)) return
+      associate (run => sim%rod3%pieces(1)%run)
+         run%problem%t0 = run%t
+         run%problem%dt = c%dt
+         run%problem%theta = c%theta
+         call run%problem%piece%prepare_step(reshape(run%x(1:3*np), [3, np]), run%v)
+         x = run%x
+         x(1:3*np) = x(1:3*np) + c%dt*reshape(run%v, [3*np])
+         do k = 1, size(x)
+            x(k) = x(k) + 1.0e-3_dp*sin(0.7_dp*k)
+         end do
+         call check_jacobian(run%problem, x, rod3d_kl, rod3d_ku, spread(1.0e-6_dp, 1, 4*np), 1.0e-8_dp, worst3, error)
+         if (allocated(error)) then
+            error%message = '3-D step: '//error%message
+            return
+         end if
+         run%problem%dt = 0
+         call check_jacobian(run%problem, x, rod3d_kl, rod3d_ku, spread(1.0e-6_dp, 1, 4*np), 1.0e-8_dp, worst3s, error)
+         if (allocated(error)) then
+            error%message = '3-D statics: '//error%message
+            return
+         end if
+      end associate
+      write (output_unit, '(4x,a,3es9.2,a)') 'buoy with drag: Jacobian deviations', worst2, worst3, worst3s, &
+         ' (2-D step, 3-D step, 3-D statics) of the row scale'
+   end subroutine test_jacobians
+
+   !> Bad &point_k input: each refused with exit code 2 by the reader, naming the group and the
+   !> variable.
+   subroutine test_bad_input(error)
+      use xcable_io_input, only: read_config
+      use xcable_core_error, only: stat_input
+      type(error_type), allocatable, intent(out) :: error
+      character(len=*), parameter :: line = "&segment_1 length = 50.0 / &segment_2 length = 150.0 / "
+      character(len=200) :: cases(7), expect(7)
+      type(case_config) :: c
+      type(error_type), allocatable :: err
+      integer :: i, unit
+      character(len=*), parameter :: path = 'build/suite_points_bad.nml'
+      cases(1) = line//"&point_1 mass = 10.0 /"
+      expect(1) = '&point_1: joint not given'
+      cases(2) = line//"&point_1 joint = 2, mass = 10.0 /"
+      expect(2) = '&point_1: joint = 2: the line has 2 segments'
+      cases(3) = "&point_1 joint = 1, mass = 10.0 /"
+      expect(3) = 'the line has no joint'
+      cases(4) = line//"&point_2 joint = 1, mass = 10.0 /"
+      expect(4) = '&point_2 given without &point_1'
+      cases(5) = line//"&point_1 joint = 1, mass = -10.0 /"
+      expect(5) = 'mass'
+      cases(6) = line//"&point_1 joint = 1, volume = 1.0 /"
+      expect(6) = 'buoyancy needs water'
+      cases(7) = line//"&point_1 joint = 1, mass = 5.0 / &point_2 joint = 1, mass = 5.0 /"
+      expect(7) = '&point_1 sits on it already'
+      do i = 1, size(cases)
+         open (newunit=unit, file=path, status='replace', action='write')
+         write (unit, '(a)') "&cable length = 200.0 / &end_a kind = 'fixed', x = 0.0, z = 0.0 / "// &
+            "&end_b kind = 'fixed', x = 170.0, z = 90.0 / "//trim(cases(i))
+         close (unit)
+         call read_config(path, c, err)
+         call check(error, allocated(err), 'case '//str(i)//' not refused: '//trim(cases(i)))
+         if (allocated(error)) return
+         call check(error, err%stat == stat_input .and. index(err%message, trim(expect(i))) > 0, 'case '//str(i)// &
+                    ': the message does not say "'//trim(expect(i))//'": '//err%message)
+         if (allocated(error)) return
+         deallocate (err)
+      end do
+      open (newunit=unit, file=path, status='old')
+      close (unit, status='delete')
+   end subroutine test_bad_input
+end module suite_points

@@ -630,6 +630,27 @@ edit "s/^&rupture  enabled = .false. \//\&rupture criterion = 'tension' \//"; ch
 begin 'a ninth segment' 'unknown group &segment_9' '&segment_1 ... &segment_8'
 from chain_mooring_heave; add '&segment_9 length = 250 /'; check
 
+# --- bodies at the joints (&point_1 ... &point_8) -----------------------------------------
+begin 'a point without its joint' '&point_1' 'joint not given'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'; add '&point_1 mass = 500 /'
+check
+begin 'a point on a joint the line does not have' '&point_1' 'joint = 2' 'allowed: 1 .. 1'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
+add '&point_1 joint = 2, mass = 500 /'; check
+begin 'a point on a line of one segment' '&point_1' 'joint = 1' 'no joint'
+from chain_mooring_heave; add '&point_1 joint = 1, mass = 500 /'; check
+begin 'two points on one joint' '&point_2' '&point_1 sits on it already'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
+add '&point_1 joint = 1, mass = 500 /'; add '&point_2 joint = 1, volume = 2 /'; check
+begin 'a negative clump mass' '&point_1' 'mass = -500'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
+add '&point_1 joint = 1, mass = -500 /'; check
+begin 'a drag coefficient without an area' '&point_1' 'cd = 1' 'give area > 0'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
+add '&point_1 joint = 1, mass = 500, cd = 1.0 /'; check
+begin 'a ninth point' 'unknown group &point_9' '&point_1 ... &point_8'
+from chain_mooring_heave; add '&point_9 joint = 1 /'; check
+
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'
 from fast_180kN; edit 's/tension = 180000/tension 180000/'; check

@@ -5,7 +5,7 @@ module xcable_io_input_echo
    use xcable_core_strings, only: str, real_text
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind
-   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries, segment_of
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries, segment_of, point_of
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word
    implicit none
@@ -149,7 +149,7 @@ contains
    !> position only when given; not the position of an end whose kind does not use it (free,
    !> force, mass), nor a variable of own_kinds_only for another kind;
    !> no table without rows, and no table_file unless given; of &segment_k only the
-   !> variables given, for the segments given.
+   !> variables given, for the segments given; &point_k for the points given.
    logical function echoed(c, e, position_b)
       !> The case.
       type(case_config), intent(in) :: c
@@ -173,6 +173,11 @@ contains
                echoed = c%is_given(trim(e%group), trim(e%name))
             end select
          end associate
+         return
+      end if
+      ! &point_k: the points given, every variable.
+      if (point_of(e%group) > 0) then
+         echoed = point_of(e%group) <= c%point_count
          return
       end if
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &

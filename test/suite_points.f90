@@ -12,6 +12,7 @@ module suite_points
    use xcable_io_config, only: case_config
    use xcable_driver_simulation, only: simulation
    use suite_segments, only: chain_rope_config
+   use suite_rod_statics, only: statics_config
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
@@ -29,6 +30,7 @@ contains
                new_unittest('model_3d_points_turned_equal_2d', test_3d_turned), &
                new_unittest('ledger_with_a_buoy_in_a_current', test_ledger), &
                new_unittest('points_jacobians', test_jacobians), &
+               new_unittest('body_at_a_free_end_closed_form', test_free_end), &
                new_unittest('points_bad_input_refused', test_bad_input)]
    end subroutine collect_points
 
@@ -365,6 +367,114 @@ contains
          ' (2-D step, 3-D step, 3-D statics) of the row scale'
    end subroutine test_jacobians
 
+   !> A body at the free end b of a line hanging from end a at the origin, in 2-D and in 3-D:
+   !> case 1 a uniform line (200 m, 0.01 m^2 at 8000 kg/m^3, linear EA 5e8 N) in air with a clump
+   !> of 300 kg, hanging straight down; case 2 the chain and rope line in sea water (the rope
+   !> 1100 kg/m^3) with a buoy of 1000 kg displacing 5 m^3 (40.2 kN up, more than the line's 34.8
+   !> kN wet weight), standing straight up. The tension is the body's net weight plus (minus) the
+   !> line's below (above), T(s) = |W_p + w_>(s)|, and the height z(s) = -+ (s + int_0^s T / EA);
+   !> a linear tension in each cell makes the rod exact up to round-off: positions to 1e-12 of L,
+   !> tensions to 1e-9 of the largest.
+   subroutine test_free_end(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=2), parameter :: models(2) = ['2d', '3d']
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp) :: w(2), len(2), ea(2), wp, sgn, err_r, err_t, t_max, z_exact, t_exact, sm, x_node(3)
+      integer :: case, m, k, n, j
+      do case = 1, 2
+         do m = 1, 2
+            if (case == 1) then
+               c = statics_config(101)
+               c%law = 'linear'
+               c%ea = seg_ea(1)
+               c%area = seg_area(1)
+               c%density = 8000
+               c%length = 200
+               c%bending_stiffness = 1
+               c%given = 'point_1%joint point_1%mass'
+               c%point_count = 1
+               c%points(1)%joint = 1
+               c%points(1)%mass = 300
+               len = [200.0_dp, 0.0_dp]
+               w = [8000*seg_area(1)*g, 0.0_dp]
+               ea = [seg_ea(1), 1.0_dp]
+               wp = 300*g
+               sgn = -1
+            else
+               c = chain_rope_config(101)
+               c%segments(2)%density = 1100
+               c%fluid_density = 1025
+               c%surface_z = 400
+               c%point_count = 1
+               c%points(1)%joint = 2
+               c%points(1)%mass = 1000
+               c%points(1)%volume = 5
+               c%given = 'segment_1%length segment_1%area segment_1%density segment_1%ea segment_2%length '// &
+                         'segment_2%area segment_2%density segment_2%ea point_1%joint point_1%mass point_1%volume'
+               len = seg_length
+               w = ([8000, 1100] - 1025)*seg_area*g
+               ea = seg_ea
+               wp = (1000 - 1025*5.0_dp)*g
+               sgn = 1
+            end if
+            c%model = models(m)
+            c%end_b%kind = 'free'
+            call sim%prepare(c, error)
+            if (allocated(error)) return
+            n = size(sim%rod%s)
+            err_r = 0
+            err_t = 0
+            t_max = abs(wp + sum(w*len))
+            do k = 1, n
+               if (m == 1) then
+                  x_node = [sim%rod%static%r(1, k), 0.0_dp, sim%rod%static%r(2, k)]
+               else
+                  x_node = sim%rod3%pieces(1)%run%x(3*k - 2:3*k)
+               end if
+               ! z(s): s plus the stretch int_0^s T / EA, T linear in each segment.
+               z_exact = 0
+               do j = 1, 2
+                  sm = min(sim%rod%s(k), sum(len(1:j))) - sum(len(1:j - 1))
+                  if (sm <= 0) cycle
+                  z_exact = z_exact + sm + sm*0.5_dp*(tension_at(sum(len(1:j - 1))) + &
+                                                     tension_at(sum(len(1:j - 1)) + sm))/ea(j)
+               end do
+               err_r = max(err_r, abs(x_node(3) - sgn*z_exact), abs(x_node(1)), abs(x_node(2)))
+            end do
+            do k = 1, n - 1
+               sm = 0.5_dp*(sim%rod%s(k) + sim%rod%s(k + 1))
+               t_exact = tension_at(sm)
+               if (m == 1) then
+                  associate (r => sim%rod%static%r, piece => sim%rod%pieces(1)%problem%piece)
+                     err_t = max(err_t, abs(piece%cell_tension(k, norm2(r(:, k + 1) - r(:, k))/piece%ds(k) - 1) - &
+                                            t_exact))
+                  end associate
+               else
+                  associate (x => sim%rod3%pieces(1)%run%x, piece => sim%rod3%pieces(1)%run%problem%piece)
+                     err_t = max(err_t, abs(piece%cell_tension(k, norm2(x(3*k + 1:3*k + 3) - x(3*k - 2:3*k))/ &
+                                                               piece%ds(k) - 1) - t_exact))
+                  end associate
+               end if
+            end do
+            err_r = err_r/sum(len)
+            err_t = err_t/t_max
+            write (output_unit, '(4x,a,i2,a,a,a,es9.2,a,es9.2,a)') 'body at a free end, case', case, ', ', models(m), &
+               ': positions', err_r, ' of L, tensions', err_t, ' of the largest'
+            call check(error, err_r < 1.0e-12_dp .and. err_t < 1.0e-9_dp, 'a body at a free end (case '//str(case)// &
+                       ', '//models(m)//'): positions '//str(err_r)//' of L, tensions '//str(err_t)//' of the largest')
+            if (allocated(error)) return
+         end do
+      end do
+   contains
+      !> |W_p + the line's weight from s to its end b|, N.
+      real(dp) function tension_at(s)
+         real(dp), intent(in) :: s
+         tension_at = abs(wp + w(1)*max(len(1) - s, 0.0_dp) + w(2)*max(len(1) + len(2) - max(s, len(1)), 0.0_dp))
+         if (len(2) == 0) tension_at = abs(wp + w(1)*(len(1) - s))
+      end function tension_at
+   end subroutine test_free_end
+
    !> Bad &point_k input: each refused with exit code 2 by the reader, naming the group and the
    !> variable.
    subroutine test_bad_input(error)
@@ -379,10 +489,10 @@ contains
       character(len=*), parameter :: path = 'build/suite_points_bad.nml'
       cases(1) = line//"&point_1 mass = 10.0 /"
       expect(1) = '&point_1: joint not given'
-      cases(2) = line//"&point_1 joint = 2, mass = 10.0 /"
-      expect(2) = '&point_1: joint = 2: the line has 2 segments'
+      cases(2) = line//"&point_1 joint = 3, mass = 10.0 /"
+      expect(2) = '&point_1: joint = 3: the line has 2 segment(s); allowed: 0 .. 2'
       cases(3) = "&point_1 joint = 1, mass = 10.0 /"
-      expect(3) = 'the line has no joint'
+      expect(3) = "that is end b, which is held (kind 'fixed')"
       cases(4) = line//"&point_2 joint = 1, mass = 10.0 /"
       expect(4) = '&point_2 given without &point_1'
       cases(5) = line//"&point_1 joint = 1, mass = -10.0 /"

@@ -634,11 +634,11 @@ from chain_mooring_heave; add '&segment_9 length = 250 /'; check
 begin 'a point without its joint' '&point_1' 'joint not given'
 from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'; add '&point_1 mass = 500 /'
 check
-begin 'a point on a joint the line does not have' '&point_1' 'joint = 2' 'allowed: 1 .. 1'
+begin 'a point on a joint the line does not have' '&point_1' 'joint = 3' 'allowed: 0 .. 2'
 from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
-add '&point_1 joint = 2, mass = 500 /'; check
-begin 'a point on a line of one segment' '&point_1' 'joint = 1' 'no joint'
-from chain_mooring_heave; add '&point_1 joint = 1, mass = 500 /'; check
+add '&point_1 joint = 3, mass = 500 /'; check
+begin 'a point on a held end' '&point_1' 'joint = 0' 'that is end a, which is held'
+from chain_mooring_heave; add '&point_1 joint = 0, mass = 500 /'; check
 begin 'two points on one joint' '&point_2' '&point_1 sits on it already'
 from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
 add '&point_1 joint = 1, mass = 500 /'; add '&point_2 joint = 1, volume = 2 /'; check

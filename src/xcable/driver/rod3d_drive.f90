@@ -659,7 +659,11 @@ contains
       integer, allocatable :: last(:), keep(:)
       type(rod3d_section), allocatable :: sections(:)
       integer :: j
-      if (size(scene%sections) <= 1) return
+      if (size(scene%sections) <= 1) then
+         ! A uniform line may carry a body at an end.
+         if (allocated(scene%points)) call piece%set_points(scene%points)
+         return
+      end if
       last = section_cells(scene, piece%s)
       keep = sections_on(scene, piece%s)
       allocate (sections(size(keep)))

@@ -83,8 +83,9 @@ module xcable_io_config
 
    !> A body at a joint of two segments (&point_k): a clump weight or a buoy.
    type :: point_config
-      !> The joint: the end of &segment_joint, where &segment_joint+1 starts.
-      integer :: joint = 0
+      !> The joint: k > 0 the end of &segment_k (where &segment_k+1 starts; the last is end b), 0 end
+      !> a (-1: not given).
+      integer :: joint = -1
       !> Mass, kg; displaced volume, m^3; added-mass and drag coefficients; projected area, m^2.
       real(dp) :: mass = 0, volume = 0, ca = 0, cd = 0, area = 0
    end type point_config

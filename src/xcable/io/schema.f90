@@ -445,9 +445,10 @@ contains
       integer :: k
       do k = 1, max_points
          group = point_group(k)
-         call add(t, group, 'joint', 'integer', '-', '0', 'the joint the body sits on: the end of &segment_joint, '// &
-                  'where &segment_joint+1 starts (a node of the line)', 1.0_dp, real(max_segments - 1, dp), &
-                  default_means='must be given')
+         call add(t, group, 'joint', 'integer', '-', '-1', 'the node the body sits on: k > 0 the end of '// &
+                  '&segment_k (where &segment_k+1 starts; the last one is end b, and a line without segments has '// &
+                  'joints 0 and 1), 0 end a; an end only if it is not held (free, force, mass or spring)', 0.0_dp, &
+                  real(max_segments, dp), default_means='must be given')
          call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
                   'down on the joint', 0.0_dp, 1.0e9_dp)
          call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &

@@ -578,16 +578,18 @@ contains
             call guess_from_force(n0, pa, ss, state%r)
          else if (held_a) then
             ! The internal force at s = L is the load of end b (its force and the point mass's weight).
-            load = problem%piece%end_b%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_b%point_mass()]
+            load = problem%piece%end_b%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_b%point_mass() + &
+                                                                     body_weight(scene%length)]
             ! An end on a spring: the load where the spring balances the catenary.
             if (problem%piece%end_b%state_dependent()) &
                call state_end_load(problem%piece%end_b, problem%piece%end_a%position(0.0_dp), .true., load)
-            n0 = load - [0.0_dp, scene%weight*scene%length]
+            n0 = load - [0.0_dp, scene%weight*scene%length + body_weight(-1.0_dp)]
             pa = problem%piece%end_a%position(0.0_dp)
             call guess_from_force(n0, pa, ss, state%r)
          else if (held_b) then
             ! The internal force at s = 0 balances the load of end a.
-            load = problem%piece%end_a%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_a%point_mass()]
+            load = problem%piece%end_a%applied_force(0.0_dp) - [0.0_dp, scene%gravity*problem%piece%end_a%point_mass() + &
+                                                                     body_weight(0.0_dp)]
             if (problem%piece%end_a%state_dependent()) &
                call state_end_load(problem%piece%end_a, problem%piece%end_b%position(0.0_dp), .false., load)
             n0 = -load
@@ -600,6 +602,24 @@ contains
                              'no static position', stat_input)
          end if
       end subroutine first_guess
+
+      !> The net weight of the bodies (scene%points) at arc length s (N), or with s < 0 of those
+      !> inside the line (not at its ends).
+      real(dp) function body_weight(s) result(w)
+         real(dp), intent(in) :: s
+         integer :: k
+         w = 0
+         if (.not. allocated(scene%points)) return
+         do k = 1, size(scene%points)
+            associate (p => scene%points(k))
+               if (s >= 0) then
+                  if (abs(p%s - s) <= 1.0e-9_dp*scene%length) w = w + p%net_weight()
+               else if (p%s > 1.0e-9_dp*scene%length .and. p%s < (1 - 1.0e-9_dp)*scene%length) then
+                  w = w + p%net_weight()
+               end if
+            end associate
+         end do
+      end function body_weight
 
       !> The catenary from the force n0 at s = 0 through r0 at the points ss, on a line of
       !> segments segment by segment (the first guess).
@@ -819,7 +839,11 @@ contains
       integer, allocatable :: last(:), keep(:)
       type(rod_section), allocatable :: laws(:)
       integer :: j
-      if (size(scene%sections) <= 1) return
+      if (size(scene%sections) <= 1) then
+         ! A uniform line may carry a body at an end.
+         if (allocated(scene%points)) call piece%set_points(scene%points)
+         return
+      end if
       last = section_cells(scene, piece%s)
       keep = sections_on(scene, piece%s)
       allocate (laws(size(keep)))

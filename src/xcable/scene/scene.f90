@@ -78,7 +78,8 @@ module xcable_scene_scene
       type(load_slot), allocatable :: loads(:)
       !> The segments of the line from end a (one for a uniform line: the values above).
       type(section_type), allocatable :: sections(:)
-      !> Bodies at joints of the segments (&point_k: clump weights, buoys), from end a.
+      !> Bodies at joints of the segments or at an end that is not held (&point_k: clump weights,
+      !> buoys).
       type(point_body), allocatable :: points(:)
    contains
       !> Whether the break splits the cable in two.
@@ -163,7 +164,8 @@ contains
       do k = 1, config%point_count
          associate (p => scene%points(k), pc => config%points(k))
             write (p%label, '(a,i0)') 'point_', k
-            p%s = scene%sections(pc%joint)%s_end
+            p%s = 0
+            if (pc%joint > 0) p%s = scene%sections(pc%joint)%s_end
             p%mass = pc%mass
             p%volume = pc%volume
             p%ca = pc%ca

@@ -294,8 +294,9 @@ contains
    end subroutine check_segment_layout
 
    !> The bodies at the joints (&point_1 ... &point_n, numbered without a gap, which the reader
-   !> checks): each on a joint of the line's segments, one body per joint, its variables in their
-   !> ranges; a volume only in water, a drag coefficient only with an area.
+   !> checks): each on a joint of the line's segments or on an end that is not held, one body per
+   !> joint, its variables in their ranges; a volume only in water, a drag coefficient only with
+   !> an area.
    subroutine check_points(c, t, error)
       !> The case.
       type(case_config), intent(inout) :: c
@@ -315,15 +316,22 @@ contains
             return
          end if
          j = c%points(k)%joint
-         if (c%segment_count < 2) then
-            call fatal_error(error, prefix//'joint = '//str(j)//': the line has no joint (it is one segment); a point '// &
-                             'sits on a joint of two segments: give the line as &segment_1, &segment_2, ...', stat_input)
+         if (trim(c%scheme) == 'box') then
+            call fatal_error(error, c%source//": &numerics: scheme = 'box' with &"//trim(group)//': the box scheme '// &
+                             "has no bodies on its line; allowed: scheme = 'rod'", stat_input)
             return
          end if
-         if (j < 1 .or. j > c%segment_count - 1) then
-            call fatal_error(error, prefix//'joint = '//str(j)//': the line has '//str(c%segment_count)// &
-                             ' segments; allowed: 1 .. '//str(c%segment_count - 1)//' (joint k is the end of '// &
-                             '&segment_k)', stat_input)
+         if (j < 0 .or. j > c%segments_of_line()) then
+            call fatal_error(error, prefix//'joint = '//str(j)//': the line has '//str(c%segments_of_line())// &
+                             ' segment(s); allowed: 0 .. '//str(c%segments_of_line())//' (0 is end a, k the end '// &
+                             'of &segment_k, '//str(c%segments_of_line())//' end b)', stat_input)
+            return
+         end if
+         if ((j == 0 .and. held_kind(c%end_a%kind)) .or. (j == c%segments_of_line() .and. held_kind(c%end_b%kind))) then
+            call fatal_error(error, prefix//'joint = '//str(j)//': that is end '//merge('a', 'b', j == 0)// &
+                             ", which is held (kind '"//trim(merge(c%end_a%kind, c%end_b%kind, j == 0))// &
+                             "'): its support carries the body; allowed: a point on a joint or on a free, "// &
+                             "force, mass or spring end", stat_input)
             return
          end if
          do i = 1, size(t)
@@ -349,6 +357,12 @@ contains
          end if
       end do
    end subroutine check_points
+
+   !> Whether an end kind holds its end's position (fixed, motion).
+   pure logical function held_kind(kind)
+      character(*), intent(in) :: kind
+      held_kind = trim(kind) == 'fixed' .or. trim(kind) == 'motion'
+   end function held_kind
 
    !> Each segment's variables against their schema entries (the ranges and words of their
    !> twins in &cable, &material and &fluid), its table law's rows (read from its table_file

@@ -462,13 +462,16 @@ contains
       call fatal_error(error, 'the box scheme writes no checkpoints and cannot resume', stat_input)
    end subroutine box_load_state
 
-   !> The box scheme's figures (summarise) and the run's summary from them, with its warnings.
-   subroutine box_finish(self, run)
+   !> The box scheme's figures (summarise) and the run's summary from them, with its warnings
+   !> (made: the driver's summary is not made).
+   subroutine box_finish(self, run, made)
       class(box_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
+      logical, intent(out) :: made
       type(run_summary) :: fresh
       real(dp) :: ds, c0
       integer :: n, np
+      made = .true.
       self%summary%rejected_steps = run%summary%rejected_steps
       self%summary%wall_time = run%wall_time()
       self%summary%time_reached = run%t

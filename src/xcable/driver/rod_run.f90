@@ -71,19 +71,6 @@ module xcable_driver_rod_run
    !> window that must stay quiet.
    real(dp), parameter :: quiet_fraction = 1.0e-5_dp, quiet_ulps = 16
    integer, parameter :: window_margin = 8, check_nodes = 2
-   !> Warning thresholds (documented in docs/user/results.md, "Warnings").
-   real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
-                                  warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp, &
-                                  warn_static_compression = 1.0e-6_dp
-   !> Resolution warnings: the largest turning of the static shape between neighbouring cells
-   !> (rad; where the shape turns by theta per cell, a cell's chord misses the arc by about
-   !> theta / 8 of its length: 1.2 % at 0.1) and the fewest cells
-   !> across a break's front (the length over which its force ramps down, c t_break).
-   real(dp), parameter, public :: warn_static_turn = 0.1_dp, min_front_cells = 4
-   !> A compression (a negative tension of the law) beyond this fraction of the largest static
-   !> tension is warned, with where and when.
-   real(dp), parameter, public :: warn_dynamic_compression = 0.01_dp
-
    !> The break by tension (&rupture criterion = 'tension'): a step whose largest cell tension
    !> passes mbl by more than rupture_tolerance mbl is taken again, shorter, aimed at the time
    !> where that cell's tension, linear between the step's two levels, reaches mbl; a step that
@@ -254,8 +241,6 @@ module xcable_driver_rod_run
    contains
       !> Statics, the time step and the pieces (before any output).
       procedure :: prepare => run_prepare
-      !> The summary at the end of the dynamics (driver/stepping.f90, finish_dynamics).
-      procedure :: finish => run_finish
       !> Wall time of the dynamics so far (all processes of a resumed run), s.
       procedure :: wall_time => run_wall_time
       !> The state between two steps to an archive, and back into a prepared run.
@@ -313,8 +298,8 @@ module xcable_driver_rod_run
       procedure :: reject_step => model_reject_step
       !> The time a snapshot due at ts is reported at (the default: ts).
       procedure :: snapshot_at => model_snapshot_at
-      !> The summary at the end of the run (the default: the run's own, rod_run%finish, with
-      !> the model's end_info).
+      !> A summary of the model's own at the end of the run (made: the default .false., the
+      !> driver's summary, driver/summary.f90, with the model's end_info).
       procedure :: finish => model_finish
    end type cable_model
 
@@ -706,13 +691,6 @@ module xcable_driver_rod_run
          type(rod_run), intent(inout) :: self
       end subroutine apply_split
 
-      !> Summary figures and warnings from the history.
-      module subroutine summarise(self, kinds, held)
-         type(rod_run), intent(inout) :: self
-         !> Kind of the end in each history slot, and whether it is held (the model's end_info).
-         character(len=*), intent(in) :: kinds(:)
-         logical, intent(in) :: held(:)
-      end subroutine summarise
       !> The planar model (planar_model; the bindings of cable_model, driver/stepping.f90's loop).
       !> The records of t = 0 and the static state (turned back into the scene's frame for a
       !> scene run turned into x-z) to the observer.
@@ -788,7 +766,7 @@ module xcable_driver_rod_run
          logical, intent(out) :: held
       end subroutine planar_end_info
 
-      !> Nothing to add to the summary (record and summarise made it).
+      !> After the summary: a scene run turned into x-z has its history turned back (turn_back_history).
       module subroutine planar_conclude(self, run)
          class(planar_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
@@ -873,6 +851,17 @@ contains
       call reject_attempt(run, reason, retry, error)
    end subroutine model_reject_step
 
+   !> No summary of the model's own (the driver makes it): the default of cable_model%finish.
+   subroutine model_finish(self, run, made)
+      !> Model.
+      class(cable_model), intent(inout) :: self
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Whether the model made the run's summary.
+      logical, intent(out) :: made
+      made = .false.
+   end subroutine model_finish
+
    !> The time of a snapshot due at ts: ts, the default of cable_model%snapshot_at.
    real(dp) function model_snapshot_at(self, run, ts) result(t)
       !> Model.
@@ -883,41 +872,6 @@ contains
       real(dp), intent(in) :: ts
       t = ts
    end function model_snapshot_at
-
-   !> The run's summary with the kind of each end from the model (end_info): the default of
-   !> cable_model%finish.
-   subroutine model_finish(self, run)
-      !> Model.
-      class(cable_model), intent(inout) :: self
-      !> Run.
-      type(rod_run), intent(inout) :: run
-      character(len=16), allocatable :: kinds(:)
-      logical, allocatable :: held(:)
-      character(:), allocatable :: kind
-      integer :: j, n_slots
-      n_slots = size(run%history%end_labels)
-      allocate (kinds(n_slots), held(n_slots))
-      do j = 1, n_slots
-         call self%end_info(run, j, kind, held(j))
-         kinds(j) = kind
-      end do
-      call run%finish(kinds, held)
-   end subroutine model_finish
-
-   !> The end of the dynamics (also of one stopped by an error or a
-   !> termination): wall time, time reached, summary figures and warnings.
-   subroutine run_finish(self, kinds, held)
-      !> Run.
-      class(rod_run), intent(inout) :: self
-      !> Kind of the end in each history slot at the end of the run, and whether it is held
-      !> (the model's end_info).
-      character(len=*), intent(in) :: kinds(:)
-      logical, intent(in) :: held(:)
-      self%summary%wall_time = self%wall_time()
-      self%summary%time_reached = self%t
-      call summarise(self, kinds, held)
-      if (self%plane_azimuth /= 0) call turn_back_history(self)
-   end subroutine run_finish
 
    !> Wall time of the dynamics so far, s: this process's and, for a resumed
    !> run, that of the processes before.

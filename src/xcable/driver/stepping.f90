@@ -31,6 +31,7 @@ module xcable_driver_stepping
    use xcable_driver_rod_run, only: rod_run, cable_model, run_progress, pause_none, pause_checkpoint, &
                                     pause_termination, max_steps, wall_limit, ends_change, snapshot_time
    use xcable_driver_records, only: run_observer, n_fields, n_fields3, field3_names
+   use xcable_driver_summary, only: summarise_run
    use xcable_system_posix, only: termination_requested
    implicit none
    private
@@ -176,14 +177,17 @@ contains
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings
-   !> (rod_run's finish), and what the model adds to them.
+   !> (driver/summary.f90, unless the model makes a summary of its own in
+   !> finish), and what the model adds to them (conclude).
    subroutine finish_dynamics(run, model)
       !> Run.
       type(rod_run), intent(inout) :: run
       !> Model of its cable.
       class(cable_model), intent(inout) :: model
+      logical :: made
       if (.not. allocated(run%history%end_labels)) return
-      call model%finish(run)
+      call model%finish(run, made)
+      if (.not. made) call summarise_run(run, model)
       call model%conclude(run)
    end subroutine finish_dynamics
 

@@ -475,18 +475,20 @@ contains
       call rod%history%keep_measures(measure_names(rod%scene%loads))
    end subroutine start_records
 
-   !> The 3-D model's part of history record i at run%t (the step loop wrote its time, step,
-   !> Newton iterations and rejected attempts): the end quantities of the planar run's (x and z
+   !> The 3-D model's part of history record i at run%t (the driver keeps the history,
+   !> driver/history.f90): the end quantities of the planar run's (x and z
    !> components) and their y components (ends_y); before a break inside the cable, break_a and
    !> break_b are the break node with the pull of the cable on either side, as in the planar run.
-   subroutine drive_record(self, run, i)
+   subroutine drive_record(self, run, i, ends, ends_y, measures, energies, stored, work)
       class(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       integer, intent(in) :: i
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp), intent(inout) :: energies(4), stored, work(3)
       integer :: side, k, n, p, slot
       real(dp) :: f(3), en(5), ledger(3), e(3), ten
       call set_time(self, run%t)
-      associate (h => run%history, rod => run)
+      associate (rod => run)
          en = 0
          ledger = 0
          do p = 1, size(self%pieces)
@@ -507,14 +509,13 @@ contains
                      if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(rod%t)
                      if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, rod%t, x(3*n - 2:3*n), run%v(:, n))
                   end if
-                  h%ends(:, slot, i) = [x(3*k - 2), x(3*k), run%v(1, k), run%v(3, k), end_tension(piece, side), &
+                  ends(:, slot) = [x(3*k - 2), x(3*k), run%v(1, k), run%v(3, k), end_tension(piece, side), &
                                         f(1), f(3)]
-                  h%ends_y(:, slot, i) = [x(3*k - 1), run%v(2, k), f(2)]
+                  ends_y(:, slot) = [x(3*k - 1), run%v(2, k), f(2)]
                end do
-               if (allocated(h%measures)) then
-                  if (p == 1) h%measures(:, i) = 0
-                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, h%measures(:, i), &
-                                     piece%s)
+               if (size(measures) > 0) then
+                  if (p == 1) measures = 0
+                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, measures, piece%s)
                end if
                rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
                call note_min_strain(rod%summary, piece%l1, self%pieces(p)%column, rod%s_out, rod%t)
@@ -533,20 +534,18 @@ contains
                f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
                ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)) &
                                                                   /piece%ds(k - 1) - 1))
-               h%ends(:, 3, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
-               h%ends_y(:, 3, i) = [x(3*k - 1), v(2, k), f(2)]
+               ends(:, 3) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+               ends_y(:, 3) = [x(3*k - 1), v(2, k), f(2)]
                e = x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)
                f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
-               h%ends(:, 4, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
-               h%ends_y(:, 4, i) = [x(3*k - 1), v(2, k), f(2)]
+               ends(:, 4) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+               ends_y(:, 4) = [x(3*k - 1), v(2, k), f(2)]
             end associate
          end if
          if (rod%options%energy) then
-            h%energy(1:4, i) = [en(1) + en(5), en(2:4)]
-            h%energy(5, i) = ledger(1)
-            h%energy(6, i) = ledger(3)
-            h%energy(7, i) = sum(en) - ledger(1) - ledger(2) + ledger(3)
-            h%energy(8, i) = ledger(2)
+            energies = [en(1) + en(5), en(2:4)]
+            stored = sum(en)
+            work = ledger
          end if
       end associate
    end subroutine drive_record

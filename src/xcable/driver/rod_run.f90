@@ -274,8 +274,13 @@ module xcable_driver_rod_run
       !> accepted (from run%t to t_new), or those of the static state (static). extra: the fields
       !> of field3_names (driver/records.f90) too, when with_extra.
       procedure(model_snapshot), deferred :: snapshot
-      !> The model's part of history record i at run%t (the loop wrote its time, step, Newton
-      !> iterations and rejected attempts): the ends, the loads' measures, the ledger.
+      !> The model's part of history record i at run%t (the driver, driver/history.f90, keeps
+      !> the history: it wrote the record's time, step, Newton iterations and rejected attempts,
+      !> and stores what the model gives, all zero on entry): the quantities of the end in each
+      !> slot (ends(:, j): x, z, vx, vz, tension, force_x, force_z; ends_y(:, j): y, vy, force_y
+      !> of a 3-D model), the loads' measures (size 0 when the history keeps none) and, with the
+      !> ledger on, its terms: the energies of energy_names(1:4) and their sum as the model adds
+      !> them (stored), the work of the ends, of the distributed loads and the dissipation (work).
       procedure(model_record), deferred :: record
       !> The break: a held end let go, or the piece cut in two at the break node.
       procedure(model_split), deferred :: split
@@ -353,11 +358,13 @@ module xcable_driver_rod_run
          logical, intent(out) :: with_extra
       end subroutine model_snapshot
 
-      subroutine model_record(self, run, i)
-         import :: cable_model, rod_run
+      subroutine model_record(self, run, i, ends, ends_y, measures, energies, stored, work)
+         import :: cable_model, rod_run, dp
          class(cable_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
          integer, intent(in) :: i
+         real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+         real(dp), intent(inout) :: energies(4), stored, work(3)
       end subroutine model_record
 
       subroutine model_split(self, run, error)
@@ -743,11 +750,13 @@ module xcable_driver_rod_run
          logical, intent(out) :: with_extra
       end subroutine planar_snapshot
 
-      !> The pieces' part of history record i: ends, measures, ledger.
-      module subroutine planar_record(self, run, i)
+      !> The pieces' part of history record i: ends, measures, ledger terms.
+      module subroutine planar_record(self, run, i, ends, ends_y, measures, energies, stored, work)
          class(planar_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
          integer, intent(in) :: i
+         real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+         real(dp), intent(inout) :: energies(4), stored, work(3)
       end subroutine planar_record
 
       !> The break (split).

@@ -32,6 +32,7 @@ module xcable_driver_stepping
                                     pause_termination, max_steps, wall_limit, ends_change, snapshot_time
    use xcable_driver_records, only: run_observer, n_fields, n_fields3, field3_names
    use xcable_driver_summary, only: summarise_run
+   use xcable_driver_history, only: append_record
    use xcable_system_posix, only: termination_requested
    implicit none
    private
@@ -224,31 +225,6 @@ contains
          end if
       end do
    end subroutine emit_snapshots
-
-   !> Append a history record at run%t: the step taken, Newton's iterations and the attempts
-   !> rejected before it, then the model's part (ends, measures, ledger).
-   subroutine append_record(run, model, iterations, rejected, step)
-      !> Run.
-      type(rod_run), intent(inout) :: run
-      !> Model of its cable.
-      class(cable_model), intent(inout) :: model
-      !> Newton iterations of the step (the most of a piece) and attempts rejected before it.
-      integer, intent(in) :: iterations, rejected
-      !> The step, s.
-      real(dp), intent(in) :: step
-      integer :: i
-      associate (h => run%history)
-         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), size(h%end_labels), run%options%energy)
-         i = h%n + 1
-         h%n = i
-         h%time(i) = run%t
-         h%step(i) = step
-         h%newton_iterations(i) = iterations
-         h%rejected(i) = rejected
-      end associate
-      if (i > 0) run%summary%max_newton_iterations = max(run%summary%max_newton_iterations, iterations)
-      call model%record(run, i)
-   end subroutine append_record
 
    !> Whether the step loop pauses before its next attempt:
    !> pause_termination when SIGTERM has arrived (options%stop_on_termination),

@@ -89,14 +89,16 @@ contains
       call self%history%keep_measures(measure_names(self%scene%loads))
    end subroutine start_history
 
-   !> The planar model's part of history record i at run%t (the step loop wrote its time, step,
-   !> Newton iterations and rejected attempts): the ends (position, velocity, tension, the force
-   !> on the cable: the support's at a held end, the applied one at a loaded end), the loads'
-   !> measures, the ledger.
-   module subroutine planar_record(self, run, i)
+   !> The planar model's part of history record i at run%t (the driver keeps the history,
+   !> driver/history.f90): the ends (position, velocity, tension, the force on the cable: the
+   !> support's at a held end, the applied one at a loaded end), the loads' measures, the
+   !> ledger's terms.
+   module subroutine planar_record(self, run, i, ends, ends_y, measures, energies, stored, work)
       class(planar_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       integer, intent(in) :: i
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp), intent(inout) :: energies(4), stored, work(3)
       integer :: p, side, node, slot
       real(dp) :: en(4), e(2), f(2), ten
       en = 0
@@ -122,7 +124,7 @@ contains
                      if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, node)
                   end if
                end if
-               run%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
+               ends(:, slot) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
             end do
             if (run%options%energy) then
                call piece%complete_memo()
@@ -139,26 +141,24 @@ contains
             e = r(:, k + 1) - r(:, k)
             f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
             ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
-            run%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
+            ends(:, 3) = [r(:, k), v(:, k), ten, f]
             e = r(:, k) - r(:, k - 1)
             f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
-            run%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
+            ends(:, 4) = [r(:, k), v(:, k), ten, f]
          end associate
       end if
-      if (allocated(run%history%measures)) then
-         run%history%measures(:, i) = 0
+      if (size(measures) > 0) then
+         measures = 0
          do p = 1, size(run%pieces)
             associate (piece => run%pieces(p)%problem%piece)
-               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, run%history%measures(:, i), piece%s)
+               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, measures, piece%s)
             end associate
          end do
       end if
       if (run%options%energy) then
-         run%history%energy(1:4, i) = en
-         run%history%energy(5, i) = run%work
-         run%history%energy(6, i) = run%dissipation
-         run%history%energy(7, i) = sum(en) - run%work - run%load_work + run%dissipation
-         run%history%energy(8, i) = run%load_work
+         energies = en
+         stored = sum(en)
+         work = [run%work, run%load_work, run%dissipation]
       end if
 
    contains

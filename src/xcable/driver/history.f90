@@ -1,0 +1,69 @@
+!> The history of a run, kept by the driver for every model: one record per accepted step (and
+!> the record of t = 0), with what the step loop knows (the time, the step, Newton's iterations,
+!> the attempts rejected before it) and the model's part, which the model gives through
+!> cable_model%record: the quantities of its ends (and their y components in 3-D), the loads'
+!> measures, and the terms of the energy ledger (its energies and their sum, the work of the
+!> ends and of the distributed loads, the dissipation), from which the driver makes the
+!> ledger's columns (driver/records.f90, energy_names).
+module xcable_driver_history
+   use xcable_core_kinds, only: dp
+   use xcable_driver_records, only: n_end_quantities, n_end_quantities_y
+   use xcable_driver_rod_run, only: rod_run, cable_model
+   implicit none
+   private
+   public :: append_record
+
+contains
+
+   !> Append a history record at run%t: the step taken, Newton's iterations and the attempts
+   !> rejected before it, then the model's part (ends, measures, ledger).
+   subroutine append_record(run, model, iterations, rejected, step)
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Model of its cable.
+      class(cable_model), intent(inout) :: model
+      !> Newton iterations of the step (the most of a piece) and attempts rejected before it.
+      integer, intent(in) :: iterations, rejected
+      !> The step, s.
+      real(dp), intent(in) :: step
+      real(dp), allocatable :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp) :: energies(4), stored, work(3)
+      integer :: i, n_slots, n_measures
+      associate (h => run%history)
+         n_slots = size(h%end_labels)
+         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), n_slots, run%options%energy)
+         i = h%n + 1
+         h%n = i
+         h%time(i) = run%t
+         h%step(i) = step
+         h%newton_iterations(i) = iterations
+         h%rejected(i) = rejected
+         n_measures = 0
+         if (allocated(h%measures)) n_measures = size(h%measures, 1)
+         allocate (ends(n_end_quantities, n_slots), ends_y(n_end_quantities_y, n_slots), measures(n_measures))
+      end associate
+      if (i > 0) run%summary%max_newton_iterations = max(run%summary%max_newton_iterations, iterations)
+      ends = 0
+      ends_y = 0
+      measures = 0
+      energies = 0
+      stored = 0
+      work = 0
+      call model%record(run, i, ends, ends_y, measures, energies, stored, work)
+      associate (h => run%history)
+         h%ends(:, :, i) = ends
+         if (allocated(h%ends_y)) h%ends_y(:, :, i) = ends_y
+         if (n_measures > 0) h%measures(:, i) = measures
+         ! The ledger: the energies, the work of the ends, the dissipation, the balance (what is
+         ! stored less the work done on the cable plus what it dissipated), the work of the loads.
+         if (run%options%energy) then
+            h%energy(1:4, i) = energies
+            h%energy(5, i) = work(1)
+            h%energy(6, i) = work(3)
+            h%energy(7, i) = stored - work(1) - work(2) + work(3)
+            h%energy(8, i) = work(2)
+         end if
+      end associate
+   end subroutine append_record
+
+end module xcable_driver_history

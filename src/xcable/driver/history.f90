@@ -11,7 +11,7 @@ module xcable_driver_history
    use xcable_driver_rod_run, only: rod_run, cable_model
    implicit none
    private
-   public :: append_record
+   public :: append_record, hermite_levels
 
 contains
 
@@ -65,5 +65,31 @@ contains
          end if
       end associate
    end subroutine append_record
+
+   !> A snapshot inside a step (either rod model): cubic Hermite between the step's two levels,
+   !> the positions r0, r1 and velocities v0, v1 of the same nodes ((2 or 3, n) each), at the
+   !> fraction u of the step of h (clamped to 0 .. 1): the positions r there and the velocities
+   !> v, their derivative (third order in the positions). The model gives its levels and makes
+   !> its fields from r and v.
+   pure subroutine hermite_levels(u, h, r0, v0, r1, v1, r, v)
+      !> Fraction of the step; the step, s.
+      real(dp), intent(in) :: u, h
+      !> Positions (m) and velocities (m/s) at the start and at the end of the step.
+      real(dp), intent(in) :: r0(:, :), v0(:, :), r1(:, :), v1(:, :)
+      !> Positions and velocities at the fraction u.
+      real(dp), intent(out) :: r(:, :), v(:, :)
+      real(dp) :: w, h00, h10, h01, h11, d00, d10, d01, d11
+      w = min(max(u, 0.0_dp), 1.0_dp)
+      h00 = (1 + 2*w)*(1 - w)**2
+      h10 = w*(1 - w)**2
+      h01 = w*w*(3 - 2*w)
+      h11 = w*w*(w - 1)
+      d00 = 6*w*w - 6*w
+      d10 = 3*w*w - 4*w + 1
+      d01 = 6*w - 6*w*w
+      d11 = 3*w*w - 2*w
+      r = h00*r0 + h10*h*v0 + h01*r1 + h11*h*v1
+      v = (d00*r0 + d01*r1)/h + d10*v0 + d11*v1
+   end subroutine hermite_levels
 
 end module xcable_driver_history

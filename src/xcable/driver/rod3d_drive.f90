@@ -56,6 +56,7 @@ module xcable_driver_rod3d_drive
    use xcable_material_law, only: material_law, secant_stiffness
    use xcable_material_tension_only, only: uncut_law
    use xcable_driver_records, only: run_observer, static_figures, note_min_strain
+   use xcable_driver_history, only: hermite_levels
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
@@ -778,34 +779,28 @@ contains
       self%pieces(2)%reaction(:, 2) = old(1)%reaction(:, 2)
    end subroutine release
 
-   !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
-   !> and velocities of its two levels, the twist angles linear.
+   !> Fields at ts inside the step (t0, t0 + h): the driver's cubic Hermite in the positions
+   !> and velocities of its two levels (hermite_levels), the twist angles linear.
    subroutine interpolated(self, rod, t0, h, ts, fields, extra)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(in) :: rod
       real(dp), intent(in) :: t0, h, ts
       real(dp), intent(out) :: fields(:, :), extra(:, :)
-      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), v(:, :)
-      real(dp) :: u, h00, h10, h01, h11, d00, d10, d01, d11
+      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), r(:, :), v(:, :)
+      real(dp) :: u
       integer :: n, p
       u = min(max((ts - t0)/h, 0.0_dp), 1.0_dp)
-      h00 = (1 + 2*u)*(1 - u)**2
-      h10 = u*(1 - u)**2
-      h01 = u*u*(3 - 2*u)
-      h11 = u*u*(u - 1)
-      d00 = 6*u*u - 6*u
-      d10 = 3*u*u - 4*u + 1
-      d01 = 6*u - 6*u*u
-      d11 = 3*u*u - 2*u
       do p = 1, size(self%pieces)
          associate (piece => self%pieces(p))
             n = piece%run%problem%piece%n
             r0 = reshape(piece%x_prev(1:3*n), [3, n])
             r1 = reshape(piece%run%x(1:3*n), [3, n])
+            r = r0
+            v = r0
+            call hermite_levels((ts - t0)/h, h, r0, piece%v_prev, r1, piece%run%v, r, v)
             x = piece%run%x
-            x(1:3*n) = reshape(h00*r0 + h10*h*piece%v_prev + h01*r1 + h11*h*piece%run%v, [3*n])
+            x(1:3*n) = reshape(r, [3*n])
             x(3*n + 1:) = (1 - u)*piece%x_prev(3*n + 1:) + u*piece%run%x(3*n + 1:)
-            v = (d00*r0 + d01*r1)/h + d10*piece%v_prev + d11*piece%run%v
             call piece_fields(piece, x, v, fields, extra)
          end associate
       end do

@@ -3,6 +3,7 @@
 !> back (the summary with its warnings is the driver's, driver/summary.f90).
 !> (A submodule of driver/rod_run.f90.)
 submodule (xcable_driver_rod_run) xcable_driver_rod_run_records
+   use xcable_driver_history, only: hermite_levels
    implicit none
 
 contains
@@ -193,34 +194,26 @@ contains
       t_end = max(end_value(cells(1:min(3, n - 1)), 1), piece%cell_tension(merge(1, n - 1, side == 1), -0.99_dp))
    end function end_tension
 
-   !> Fields at time ts inside the step just accepted (from self%t to the new
-   !> level): cubic Hermite in the positions and velocities of its two ends.
+   !> Fields at time ts inside the step just accepted (from self%t to the new level): the driver's
+   !> cubic Hermite in the positions and velocities of its two ends (hermite_levels).
    subroutine interpolated_fields(self, ts, fields, velocities)
       type(rod_run), intent(inout) :: self
       real(dp), intent(in) :: ts
       real(dp), intent(out) :: fields(:, :)
       !> The interpolated velocities on the output columns (2, n_out).
       real(dp), allocatable, intent(out), optional :: velocities(:, :)
-      real(dp), allocatable :: r(:, :), v(:, :)
-      real(dp) :: h, u, h00, h10, h01, h11, d00, d10, d01, d11
+      real(dp), allocatable :: r(:, :), v(:, :), rp_r(:, :), rp_v(:, :)
+      real(dp) :: h
       integer :: p
       allocate (r(2, self%n_out), v(2, self%n_out))
       do p = 1, size(self%pieces)
          associate (rp => self%pieces(p))
-            h = self%history%time(self%history%n) ! placeholder, replaced below
             h = rp%problem%dt
-            u = (ts - self%t)/h
-            u = min(max(u, 0.0_dp), 1.0_dp)
-            h00 = (1 + 2*u)*(1 - u)**2
-            h10 = u*(1 - u)**2
-            h01 = u*u*(3 - 2*u)
-            h11 = u*u*(u - 1)
-            d00 = 6*u*u - 6*u
-            d10 = 3*u*u - 4*u + 1
-            d01 = 6*u - 6*u*u
-            d11 = 3*u*u - 2*u
-            r(:, rp%column) = h00*rp%r_prev + h10*h*rp%v_prev + h01*rp%r + h11*h*rp%v
-            v(:, rp%column) = (d00*rp%r_prev + d01*rp%r)/h + d10*rp%v_prev + d11*rp%v
+            allocate (rp_r(2, size(rp%column)), rp_v(2, size(rp%column)))
+            call hermite_levels((ts - self%t)/h, h, rp%r_prev, rp%v_prev, rp%r, rp%v, rp_r, rp_v)
+            r(:, rp%column) = rp_r
+            v(:, rp%column) = rp_v
+            deallocate (rp_r, rp_v)
          end associate
       end do
       call self%fields(fields, r, v)

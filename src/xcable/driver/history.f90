@@ -7,13 +7,38 @@
 !> ledger's columns (driver/records.f90, energy_names).
 module xcable_driver_history
    use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str
+   use xcable_loads_load, only: measure_names
+   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints
    use xcable_driver_records, only: n_end_quantities, n_end_quantities_y
-   use xcable_driver_rod_run, only: rod_run, cable_model
+   use xcable_driver_rod_run, only: rod_run, cable_model, max_steps
    implicit none
    private
-   public :: append_record, hermite_levels
+   public :: open_history, append_record, hermite_levels, exchange_records
 
 contains
+
+   !> Open the history of a run (a model's begin, a checkpoint's load): its end slots and their
+   !> labels (end_a, end_b; break_a, break_b with a break inside the cable), room for capacity
+   !> records, the ledger when it is kept, the ends' y components (with_y: a 3-D model) and the
+   !> loads' measures.
+   subroutine open_history(run, capacity, with_y)
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Records to make room for.
+      integer, intent(in) :: capacity
+      !> Keep the ends' y components.
+      logical, intent(in) :: with_y
+      integer :: n_ends
+      n_ends = merge(4, 2, run%break_node > 0)
+      if (allocated(run%history%end_labels)) deallocate (run%history%end_labels)
+      allocate (run%history%end_labels(n_ends))
+      run%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
+      if (n_ends == 4) run%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      call run%history%reserve(capacity, n_ends, run%options%energy, with_y=with_y)
+      call run%history%keep_measures(measure_names(run%scene%loads))
+   end subroutine open_history
 
    !> Append a history record at run%t: the step taken, Newton's iterations and the attempts
    !> rejected before it, then the model's part (ends, measures, ledger).
@@ -91,5 +116,65 @@ contains
       r = h00*r0 + h10*h*v0 + h01*r1 + h11*h*v1
       v = (d00*r0 + d01*r1)/h + d10*v0 + d11*v1
    end subroutine hermite_levels
+
+   !> The records so far, listed for saving and loading (a checkpoint of either rod model:
+   !> rod_run's exchange_state, rod3d_drive's exchange3): every history record (with the y
+   !> components, ends_y, of a 3-D run) and the summary's counters and extremes; loading opens
+   !> the history (open_history) with room for the rest of the run.
+   subroutine exchange_records(self, a, saving, error, with_y)
+      !> Run.
+      type(rod_run), intent(inout) :: self
+      !> Archive.
+      class(state_archive), intent(inout) :: a
+      !> Save (.true.) or load.
+      logical, intent(in) :: saving
+      !> Error (stat_input) when the archive's history does not fit.
+      type(error_type), allocatable, intent(inout) :: error
+      !> The y components too (a 3-D run; default .false.).
+      logical, intent(in), optional :: with_y
+      integer :: n_records
+      logical :: y_kept
+      y_kept = .false.
+      if (present(with_y)) y_kept = with_y
+      ! The history: every record so far.
+      n_records = self%history%n
+      call sync_int(a, 'history/n', n_records, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (n_records < 0 .or. a%stored_size('history/time') /= n_records + 1) then
+            call fatal_error(error, 'the checkpoint''s history has '//str(n_records)//' records but '// &
+                             str(a%stored_size('history/time'))//' times', stat_input)
+            return
+         end if
+         call open_history(self, max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, y_kept)
+         self%history%n = n_records
+      end if
+      associate (h => self%history, m => n_records)
+         call sync_reals(a, 'history/time', h%time(0:m), saving)
+         call sync_reals(a, 'history/step', h%step(0:m), saving)
+         call sync_ints(a, 'history/newton_iterations', h%newton_iterations(0:m), saving)
+         call sync_ints(a, 'history/rejected', h%rejected(0:m), saving)
+         call sync_cube(a, 'history/ends', h%ends(:, :, 0:m), saving)
+         if (self%options%energy) call sync_matrix(a, 'history/energy', h%energy(:, 0:m), saving)
+         if (y_kept) call sync_cube(a, 'history/ends_y', h%ends_y(:, :, 0:m), saving)
+         if (allocated(h%measures)) call sync_matrix(a, 'history/measures', h%measures(:, 0:m), saving)
+      end associate
+
+      ! The summary's counters and extremes so far (summarise derives the rest at the end).
+      associate (s => self%summary)
+         call sync_int(a, 'summary/rejected_steps', s%rejected_steps, saving)
+         call sync_int(a, 'summary/newton_iterations', s%newton_iterations, saving)
+         call sync_int(a, 'summary/max_newton_iterations', s%max_newton_iterations, saving)
+         call sync_int(a, 'summary/factorisations', s%factorisations, saving)
+         call sync_real(a, 'summary/dt_requested', s%dt_requested, saving)
+         call sync_real(a, 'summary/dt_used', s%dt_used, saving)
+         call sync_real(a, 'summary/courant_requested', s%courant_requested, saving)
+         call sync_real(a, 'summary/max_turning_angle', s%max_turning_angle, saving)
+         call sync_real(a, 'summary/min_strain', s%min_strain, saving)
+         call sync_real(a, 'summary/min_strain_s', s%min_strain_s, saving)
+         call sync_real(a, 'summary/min_strain_time', s%min_strain_time, saving)
+         call sync_real(a, 'summary/max_strain', s%max_strain, saving)
+      end associate
+   end subroutine exchange_records
 
 end module xcable_driver_history

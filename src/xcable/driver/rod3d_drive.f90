@@ -42,7 +42,7 @@ module xcable_driver_rod3d_drive
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_core_strings, only: str
    use xcable_driver_rod_run, only: rod_run, cable_model, end_value, jacobian_kept, check_range, &
-                                    check_folds, exchange_progress, exchange_records, watch_step, max_steps
+                                    check_folds, exchange_progress, watch_step, max_steps
    use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_driver_rod3d_run, only: rod3d_run
@@ -56,7 +56,7 @@ module xcable_driver_rod3d_drive
    use xcable_material_law, only: material_law, secant_stiffness
    use xcable_material_tension_only, only: uncut_law
    use xcable_driver_records, only: run_observer, static_figures, note_min_strain
-   use xcable_driver_history, only: hermite_levels
+   use xcable_driver_history, only: hermite_levels, open_history, exchange_records
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
@@ -438,7 +438,7 @@ contains
             end if
          end associate
       end do
-      call exchange_records(rod, a, saving, merge(4, 2, rod%break_node > 0), error, with_y=.true.)
+      call exchange_records(rod, a, saving, error, with_y=.true.)
    end subroutine exchange3
 
    !> The step control's range check of an attempt on piece p (the planar
@@ -465,15 +465,8 @@ contains
    subroutine start_records(self, rod)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
-      integer :: n_ends
-      n_ends = merge(4, 2, rod%break_node > 0)
-      if (allocated(rod%history%end_labels)) deallocate (rod%history%end_labels)
-      allocate (rod%history%end_labels(n_ends))
-      rod%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
-      if (n_ends == 4) rod%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      call open_history(rod, 16, .true.)
       self%pieces(1)%end_slot = [1, 2]
-      call rod%history%reserve(16, n_ends, rod%options%energy, with_y=.true.)
-      call rod%history%keep_measures(measure_names(rod%scene%loads))
    end subroutine start_records
 
    !> The 3-D model's part of history record i at run%t (the driver keeps the history,

@@ -1,7 +1,7 @@
 !> Time integration of a scene with the rod discretisation: statics, the
-!> break, the time steps with their step control, the energy ledger, the
-!> history and the snapshots. One `rod_run` holds the whole state of a run;
-!> each phase is a type-bound procedure.
+!> break, the time steps with their step control. One `rod_run` holds the
+!> whole state of a run (its history and summary too, which the driver keeps:
+!> driver/history.f90, driver/summary.f90); each phase is a type-bound procedure.
 !>
 !> Steps. The step is the one asked for (dt, or courant ds / c with c the
 !> largest axial wave speed of the static state and ds the longest cell);
@@ -59,7 +59,7 @@ module xcable_driver_rod_run
    private
    public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
    public :: wall_limit, plan_step, reject_attempt, advance_time, jacobian_kept, check_range, check_folds
-   public :: exchange_progress, exchange_records, watch_step
+   public :: exchange_progress, watch_step
    ! The state of a run besides its pieces (driver/run_state.f90), for the users of this module.
    public :: tension_watch, pause_none, pause_checkpoint, pause_termination, max_steps, rupture_tolerance, max_rupture_aims
 
@@ -404,25 +404,6 @@ module xcable_driver_rod_run
          !> Save (.true.) or load.
          logical, intent(in) :: saving
       end subroutine exchange_progress
-
-      !> The records so far, listed for saving and loading: every history
-      !> record (with the y components, ends_y, of a 3-D run) and the summary's
-      !> counters and extremes. Either model (exchange_state,
-      !> driver/rod3d_drive.f90); loading sets up the history with n_ends ends.
-      module subroutine exchange_records(self, a, saving, n_ends, error, with_y)
-         !> Run.
-         type(rod_run), intent(inout) :: self
-         !> Archive.
-         class(state_archive), intent(inout) :: a
-         !> Save (.true.) or load.
-         logical, intent(in) :: saving
-         !> Ends of the history (2, or 4 with a break inside the cable).
-         integer, intent(in) :: n_ends
-         !> Error (stat_input) when the archive's history does not fit.
-         type(error_type), allocatable, intent(inout) :: error
-         !> The y components too (a 3-D run; default .false.).
-         logical, intent(in), optional :: with_y
-      end subroutine exchange_records
 
       !> Time of snapshot i (i >= 1); huge when there is none.
       pure real(dp) module function snapshot_time(self, i)

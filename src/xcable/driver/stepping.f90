@@ -7,15 +7,16 @@
 !> depends on the discretisation: an attempt at a step on all its pieces with
 !> the checks of the new state, the rejection or the acceptance of it, the
 !> fields of a snapshot inside the step, its part of a history record (ends,
-!> measures, ledger), the break. It owns the rest: when snapshots are due and
-!> their output, the history's records,
+!> measures, ledger terms), the break. It owns the rest: when snapshots are due and
+!> their output, the history's records (driver/history.f90), the summary
+!> (driver/summary.f90),
 !> the step to try and its landing on t_end and on the start of the break
 !> (plan_step), the halving and doubling back (reject_attempt, advance_time),
 !> the search for a break by tension (the model gives the two levels'
 !> positions to watch_step), the wall-clock limit, the pauses for checkpoints
 !> and SIGTERM, and the progress reports. The step control's policy is in the
-!> header of driver/rod_run.f90, whose run (rod_run) holds the records, the
-!> history and the summary that both models write.
+!> header of driver/rod_run.f90, whose run (rod_run) holds the history and the
+!> summary the driver keeps.
 !>
 !> The planar rod's pieces are the model planar_model (driver/rod_run.f90 and
 !> its submodules); the 3-D rod's are rod3d_drive (driver/rod3d_drive.f90);

@@ -3,7 +3,7 @@
 !> back (the summary with its warnings is the driver's, driver/summary.f90).
 !> (A submodule of driver/rod_run.f90.)
 submodule (xcable_driver_rod_run) xcable_driver_rod_run_records
-   use xcable_driver_history, only: hermite_levels
+   use xcable_driver_history, only: hermite_levels, open_history
    implicit none
 
 contains
@@ -78,16 +78,10 @@ contains
    !> record of t = 0 follows: driver/stepping.f90).
    module subroutine start_history(self)
       type(rod_run), intent(inout) :: self
-      integer :: n_ends
-      n_ends = merge(4, 2, self%break_node > 0)
-      allocate (self%history%end_labels(n_ends))
-      self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
-      if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      call open_history(self, 16, .false.)
       self%pieces(1)%end_slot = [1, 2]
       self%pieces(1)%reaction(:, 1) = self%static%reaction_a
       self%pieces(1)%reaction(:, 2) = self%static%reaction_b
-      call self%history%reserve(16, n_ends, self%options%energy)
-      call self%history%keep_measures(measure_names(self%scene%loads))
    end subroutine start_history
 
    !> The planar model's part of history record i at run%t (the driver keeps the history,

@@ -15,6 +15,7 @@ module suite_rod_dynamics
    use xcable_ends_end_condition, only: smooth_ramp
    use suite_rod_statics, only: statics_config
    use suite_golden, only: snapshot_store
+   use xcable_driver_history, only: hermite_levels
    use, intrinsic :: iso_fortran_env, only: output_unit
    implicit none
    private
@@ -32,7 +33,8 @@ contains
                new_unittest('ledger_slack_release', test_ledger_slack), &
                new_unittest('ledger_without_compression', test_ledger_no_compression), &
                new_unittest('ledger_dissipation_booked', test_ledger_dissipation), &
-               new_unittest('ledger_moving_end_point_mass', test_ledger_moving)]
+               new_unittest('ledger_moving_end_point_mass', test_ledger_moving), &
+               new_unittest('hermite_snapshot_exact_for_cubics', test_hermite_cubic)]
    end subroutine collect_rod_dynamics
 
    !> The paper's cable released at end b.
@@ -249,4 +251,47 @@ contains
       c%interval = 0
       call ledger_case(error, c, 'moving end a, 20 kg at end b, to 3 s', 1.0e-8_dp)
    end subroutine test_ledger_moving
+   !> The driver's snapshot inside a step (hermite_levels) is cubic Hermite: a motion cubic in time
+   !> is reproduced, positions and velocities, at any fraction of the step from the two levels'
+   !> positions and velocities; a fraction past the step is held at its end.
+   subroutine test_hermite_cubic(error)
+      type(error_type), allocatable, intent(out) :: error
+      real(dp), parameter :: t0 = 0.3_dp, h = 0.02_dp, fractions(4) = [0.0_dp, 0.25_dp, 0.6_dp, 1.0_dp]
+      real(dp) :: c(0:3, 2, 3), r0(2, 3), v0(2, 3), r1(2, 3), v1(2, 3), r(2, 3), v(2, 3), worst_r, worst_v
+      integer :: k, i, j
+      ! Coefficients of x(t) and z(t) at three nodes.
+      do j = 1, 3
+         do i = 1, 2
+            c(:, i, j) = [1.0_dp + i + j, -2.0_dp*j + i, 3.0_dp*i - j, 40.0_dp*(i - 1.5_dp)*j]
+         end do
+      end do
+      r0 = at(t0); v0 = rate(t0); r1 = at(t0 + h); v1 = rate(t0 + h)
+      worst_r = 0
+      worst_v = 0
+      do k = 1, size(fractions)
+         call hermite_levels(fractions(k), h, r0, v0, r1, v1, r, v)
+         worst_r = max(worst_r, maxval(abs(r - at(t0 + fractions(k)*h))))
+         worst_v = max(worst_v, maxval(abs(v - rate(t0 + fractions(k)*h)))/maxval(abs(rate(t0 + fractions(k)*h))))
+      end do
+      write (output_unit, '(4x,a,es10.3,a,es10.3)') 'cubic motion through a step: largest position error ', &
+         worst_r, ' m, velocity error (relative) ', worst_v
+      call check(error, worst_r < 4.0e-15_dp .and. worst_v < 1.0e-14_dp, 'hermite_levels does not reproduce a cubic: '// &
+                 str(worst_r)//' m, '//str(worst_v))
+      if (allocated(error)) return
+      call hermite_levels(1.5_dp, h, r0, v0, r1, v1, r, v)
+      call check(error, all(r == r1) .and. maxval(abs(v - v1)) <= 1.0e-12_dp*maxval(abs(v1)), &
+                 'a fraction past the step is not held at its end')
+   contains
+      function at(t) result(x)
+         real(dp), intent(in) :: t
+         real(dp) :: x(2, 3)
+         x = c(0, :, :) + t*(c(1, :, :) + t*(c(2, :, :) + t*c(3, :, :)))
+      end function at
+      function rate(t) result(x)
+         real(dp), intent(in) :: t
+         real(dp) :: x(2, 3)
+         x = c(1, :, :) + t*(2*c(2, :, :) + t*3*c(3, :, :))
+      end function rate
+   end subroutine test_hermite_cubic
+
 end module suite_rod_dynamics

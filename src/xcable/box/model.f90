@@ -363,12 +363,14 @@ contains
       end if
    end subroutine box_snapshot
 
-   !> History record i at run%t: the box scheme's own record and ledger, and the run's ends
-   !> (end a fixed, end b released) and ledger from them.
-   subroutine box_record(self, run, i)
+   !> History record i at run%t: the box scheme's own record and ledger, and the model's part of
+   !> the run's record from them (the ends: a fixed, b released; the ledger's terms).
+   subroutine box_record(self, run, i, ends, ends_y, measures, energies, stored, work)
       class(box_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       integer, intent(in) :: i
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp), intent(inout) :: energies(4), stored, work(3)
       real(dp) :: e(4), vel_x, vel_z, power_new, f, c2, s2
       integer :: np
       np = size(self%s)
@@ -405,19 +407,17 @@ contains
             f = model%law%tension(ya(i_eps))
             c2 = ya(i_b0)**2 - ya(i_b3)**2
             s2 = 2*ya(i_b0)*ya(i_b3)
-            run%history%ends(:, 1, i) = [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, f, -(f*s2 + ya(i_sn)*c2), &
-                                         -(f*c2 - ya(i_sn)*s2)]
+            ends(:, 1) = [0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, f, -(f*s2 + ya(i_sn)*c2), -(f*c2 - ya(i_sn)*s2)]
             call fixed_frame_velocity(yb, vel_x, vel_z)
             f = model%law%tension(yb(i_eps))
-            run%history%ends(:, 2, i) = [history%end_position(:, i), vel_x, vel_z, f, &
-                                         rupture_factor(history%time(i), self%options%t_break)* &
-                                         [self%force_h, self%force_v]]
+            ends(:, 2) = [history%end_position(:, i), vel_x, vel_z, f, &
+                          rupture_factor(history%time(i), self%options%t_break)*[self%force_h, self%force_v]]
          end associate
+         ! The run's ledger from it (driver/history.f90): no work of loads, no dissipation.
          if (self%options%energy) then
-            run%history%energy(1:5, i) = history%energy(1:5, i)
-            run%history%energy(6, i) = 0
-            run%history%energy(7, i) = history%energy(6, i)
-            run%history%energy(8, i) = 0
+            energies = history%energy(1:4, i)
+            stored = sum(e)
+            work(1) = history%energy(5, i)
          end if
       end associate
    end subroutine box_record
@@ -462,13 +462,16 @@ contains
       call fatal_error(error, 'the box scheme writes no checkpoints and cannot resume', stat_input)
    end subroutine box_load_state
 
-   !> The box scheme's figures (summarise) and the run's summary from them, with its warnings.
-   subroutine box_finish(self, run)
+   !> The box scheme's figures (summarise) and the run's summary from them, with its warnings
+   !> (made: the driver's summary is not made).
+   subroutine box_finish(self, run, made)
       class(box_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
+      logical, intent(out) :: made
       type(run_summary) :: fresh
       real(dp) :: ds, c0
       integer :: n, np
+      made = .true.
       self%summary%rejected_steps = run%summary%rejected_steps
       self%summary%wall_time = run%wall_time()
       self%summary%time_reached = run%t

@@ -42,7 +42,7 @@ module xcable_driver_rod3d_drive
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_core_strings, only: str
    use xcable_driver_rod_run, only: rod_run, cable_model, end_value, jacobian_kept, check_range, &
-                                    check_folds, exchange_progress, exchange_records, watch_step, max_steps
+                                    check_folds, exchange_progress, watch_step, max_steps
    use xcable_theory_closed_forms, only: wave_speed
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_driver_rod3d_run, only: rod3d_run
@@ -56,6 +56,7 @@ module xcable_driver_rod3d_drive
    use xcable_material_law, only: material_law, secant_stiffness
    use xcable_material_tension_only, only: uncut_law
    use xcable_driver_records, only: run_observer, static_figures, note_min_strain
+   use xcable_driver_history, only: hermite_levels, open_history, exchange_records
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    implicit none
    private
@@ -437,7 +438,7 @@ contains
             end if
          end associate
       end do
-      call exchange_records(rod, a, saving, merge(4, 2, rod%break_node > 0), error, with_y=.true.)
+      call exchange_records(rod, a, saving, error, with_y=.true.)
    end subroutine exchange3
 
    !> The step control's range check of an attempt on piece p (the planar
@@ -464,29 +465,24 @@ contains
    subroutine start_records(self, rod)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: rod
-      integer :: n_ends
-      n_ends = merge(4, 2, rod%break_node > 0)
-      if (allocated(rod%history%end_labels)) deallocate (rod%history%end_labels)
-      allocate (rod%history%end_labels(n_ends))
-      rod%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
-      if (n_ends == 4) rod%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      call open_history(rod, 16, .true.)
       self%pieces(1)%end_slot = [1, 2]
-      call rod%history%reserve(16, n_ends, rod%options%energy, with_y=.true.)
-      call rod%history%keep_measures(measure_names(rod%scene%loads))
    end subroutine start_records
 
-   !> The 3-D model's part of history record i at run%t (the step loop wrote its time, step,
-   !> Newton iterations and rejected attempts): the end quantities of the planar run's (x and z
+   !> The 3-D model's part of history record i at run%t (the driver keeps the history,
+   !> driver/history.f90): the end quantities of the planar run's (x and z
    !> components) and their y components (ends_y); before a break inside the cable, break_a and
    !> break_b are the break node with the pull of the cable on either side, as in the planar run.
-   subroutine drive_record(self, run, i)
+   subroutine drive_record(self, run, i, ends, ends_y, measures, energies, stored, work)
       class(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       integer, intent(in) :: i
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp), intent(inout) :: energies(4), stored, work(3)
       integer :: side, k, n, p, slot
       real(dp) :: f(3), en(5), ledger(3), e(3), ten
       call set_time(self, run%t)
-      associate (h => run%history, rod => run)
+      associate (rod => run)
          en = 0
          ledger = 0
          do p = 1, size(self%pieces)
@@ -507,14 +503,13 @@ contains
                      if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(rod%t)
                      if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, rod%t, x(3*n - 2:3*n), run%v(:, n))
                   end if
-                  h%ends(:, slot, i) = [x(3*k - 2), x(3*k), run%v(1, k), run%v(3, k), end_tension(piece, side), &
+                  ends(:, slot) = [x(3*k - 2), x(3*k), run%v(1, k), run%v(3, k), end_tension(piece, side), &
                                         f(1), f(3)]
-                  h%ends_y(:, slot, i) = [x(3*k - 1), run%v(2, k), f(2)]
+                  ends_y(:, slot) = [x(3*k - 1), run%v(2, k), f(2)]
                end do
-               if (allocated(h%measures)) then
-                  if (p == 1) h%measures(:, i) = 0
-                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, h%measures(:, i), &
-                                     piece%s)
+               if (size(measures) > 0) then
+                  if (p == 1) measures = 0
+                  call load_measures(rod%scene%loads, reshape(x(1:3*n), [3, n]), piece%ds, measures, piece%s)
                end if
                rod%summary%max_turning_angle = max(rod%summary%max_turning_angle, maxval(piece%th1))
                call note_min_strain(rod%summary, piece%l1, self%pieces(p)%column, rod%s_out, rod%t)
@@ -533,20 +528,18 @@ contains
                f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
                ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)) &
                                                                   /piece%ds(k - 1) - 1))
-               h%ends(:, 3, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
-               h%ends_y(:, 3, i) = [x(3*k - 1), v(2, k), f(2)]
+               ends(:, 3) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+               ends_y(:, 3) = [x(3*k - 1), v(2, k), f(2)]
                e = x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)
                f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
-               h%ends(:, 4, i) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
-               h%ends_y(:, 4, i) = [x(3*k - 1), v(2, k), f(2)]
+               ends(:, 4) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+               ends_y(:, 4) = [x(3*k - 1), v(2, k), f(2)]
             end associate
          end if
          if (rod%options%energy) then
-            h%energy(1:4, i) = [en(1) + en(5), en(2:4)]
-            h%energy(5, i) = ledger(1)
-            h%energy(6, i) = ledger(3)
-            h%energy(7, i) = sum(en) - ledger(1) - ledger(2) + ledger(3)
-            h%energy(8, i) = ledger(2)
+            energies = [en(1) + en(5), en(2:4)]
+            stored = sum(en)
+            work = ledger
          end if
       end associate
    end subroutine drive_record
@@ -784,34 +777,28 @@ contains
       self%pieces(2)%reaction(:, 2) = old(1)%reaction(:, 2)
    end subroutine release
 
-   !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
-   !> and velocities of its two levels, the twist angles linear.
+   !> Fields at ts inside the step (t0, t0 + h): the driver's cubic Hermite in the positions
+   !> and velocities of its two levels (hermite_levels), the twist angles linear.
    subroutine interpolated(self, rod, t0, h, ts, fields, extra)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(in) :: rod
       real(dp), intent(in) :: t0, h, ts
       real(dp), intent(out) :: fields(:, :), extra(:, :)
-      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), v(:, :)
-      real(dp) :: u, h00, h10, h01, h11, d00, d10, d01, d11
+      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), r(:, :), v(:, :)
+      real(dp) :: u
       integer :: n, p
       u = min(max((ts - t0)/h, 0.0_dp), 1.0_dp)
-      h00 = (1 + 2*u)*(1 - u)**2
-      h10 = u*(1 - u)**2
-      h01 = u*u*(3 - 2*u)
-      h11 = u*u*(u - 1)
-      d00 = 6*u*u - 6*u
-      d10 = 3*u*u - 4*u + 1
-      d01 = 6*u - 6*u*u
-      d11 = 3*u*u - 2*u
       do p = 1, size(self%pieces)
          associate (piece => self%pieces(p))
             n = piece%run%problem%piece%n
             r0 = reshape(piece%x_prev(1:3*n), [3, n])
             r1 = reshape(piece%run%x(1:3*n), [3, n])
+            r = r0
+            v = r0
+            call hermite_levels((ts - t0)/h, h, r0, piece%v_prev, r1, piece%run%v, r, v)
             x = piece%run%x
-            x(1:3*n) = reshape(h00*r0 + h10*h*piece%v_prev + h01*r1 + h11*h*piece%run%v, [3*n])
+            x(1:3*n) = reshape(r, [3*n])
             x(3*n + 1:) = (1 - u)*piece%x_prev(3*n + 1:) + u*piece%run%x(3*n + 1:)
-            v = (d00*r0 + d01*r1)/h + d10*piece%v_prev + d11*piece%run%v
             call piece_fields(piece, x, v, fields, extra)
          end associate
       end do

@@ -1,7 +1,7 @@
 !> Time integration of a scene with the rod discretisation: statics, the
-!> break, the time steps with their step control, the energy ledger, the
-!> history and the snapshots. One `rod_run` holds the whole state of a run;
-!> each phase is a type-bound procedure.
+!> break, the time steps with their step control. One `rod_run` holds the
+!> whole state of a run (its history and summary too, which the driver keeps:
+!> driver/history.f90, driver/summary.f90); each phase is a type-bound procedure.
 !>
 !> Steps. The step is the one asked for (dt, or courant ds / c with c the
 !> largest axial wave speed of the static state and ds the longest cell);
@@ -52,127 +52,23 @@ module xcable_driver_rod_run
    use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints, &
                                 sync_logical
    use xcable_system_posix, only: termination_requested
+   use xcable_driver_run_state, only: rod_run_options, run_progress, run_clock, tension_watch, pause_none, &
+                                      pause_checkpoint, pause_termination, max_steps, rupture_tolerance, max_rupture_aims
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
    public :: rod_run, rod_run_options, run_progress, end_value, snapshot_time, ends_change
    public :: wall_limit, plan_step, reject_attempt, advance_time, jacobian_kept, check_range, check_folds
-   public :: exchange_progress, exchange_records, watch_step
+   public :: exchange_progress, watch_step
+   ! The state of a run besides its pieces (driver/run_state.f90), for the users of this module.
+   public :: tension_watch, pause_none, pause_checkpoint, pause_termination, max_steps, rupture_tolerance, max_rupture_aims
 
-   !> Why advance returned: the run ended (t_end or an error), a checkpoint is
-   !> due, or SIGTERM arrived.
-   integer, parameter, public :: pause_none = 0, pause_checkpoint = 1, pause_termination = 2
-
-   !> Most time steps a run may ask for.
-   integer, parameter, public :: max_steps = 1000000
    !> Skip of the quiescent cable (attempt): a node is quiet when it moves by at most
    !> quiet_fraction newton_tol cell lengths in a step, or by quiet_ulps units of round-off
    !> of the largest coordinate; margin nodes around the moving ones; outer nodes of a
    !> window that must stay quiet.
    real(dp), parameter :: quiet_fraction = 1.0e-5_dp, quiet_ulps = 16
    integer, parameter :: window_margin = 8, check_nodes = 2
-   !> Warning thresholds (documented in docs/user/results.md, "Warnings").
-   real(dp), parameter, public :: warn_energy_drift = 0.01_dp, warn_turning_angle = 1.0_dp, &
-                                  warn_rejected_fraction = 0.01_dp, warn_courant_change = 0.01_dp, &
-                                  warn_static_compression = 1.0e-6_dp
-   !> Resolution warnings: the largest turning of the static shape between neighbouring cells
-   !> (rad; where the shape turns by theta per cell, a cell's chord misses the arc by about
-   !> theta / 8 of its length: 1.2 % at 0.1) and the fewest cells
-   !> across a break's front (the length over which its force ramps down, c t_break).
-   real(dp), parameter, public :: warn_static_turn = 0.1_dp, min_front_cells = 4
-   !> A compression (a negative tension of the law) beyond this fraction of the largest static
-   !> tension is warned, with where and when.
-   real(dp), parameter, public :: warn_dynamic_compression = 0.01_dp
-
-   !> The break by tension (&rupture criterion = 'tension'): a step whose largest cell tension
-   !> passes mbl by more than rupture_tolerance mbl is taken again, shorter, aimed at the time
-   !> where that cell's tension, linear between the step's two levels, reaches mbl; a step that
-   !> ends within rupture_tolerance mbl of it ends the search (docs/theory/numerics.md, "The
-   !> break by tension"). At most max_rupture_aims aims at one crossing.
-   real(dp), parameter, public :: rupture_tolerance = 1.0e-4_dp
-   integer, parameter, public :: max_rupture_aims = 40
-
-   !> The search for a break by tension (the first pass of such a run, driver/simulation.f90),
-   !> and what it found, for the summary of the run with the break.
-   type, public :: tension_watch
-      !> Minimum breaking load, N (0: no search).
-      real(dp) :: mbl = 0
-      !> Whether a cell reached mbl; when (s), which cell, the tension it reached (N) and the
-      !> middle of that cell (m).
-      logical :: found = .false.
-      real(dp) :: time = 0, tension = 0, s = 0
-      integer :: cell = 0
-      !> The cell tensions at that time (N).
-      real(dp), allocatable :: cells(:)
-      !> Step aimed at the crossing (s; 0: none) and the aims at this crossing so far.
-      real(dp) :: h_aim = 0
-      integer :: aims = 0
-      !> The bracket of the search: steps (s) below and past the crossing and their largest cell
-      !> tensions (N); which end moved last (-1: below, 1: past, 0: none yet).
-      real(dp) :: h_lo = 0, f_lo = 0, h_hi = 0, f_hi = 0
-      integer :: side = 0
-      !> Largest cell tension of the accepted steps (N), the middle of its cell (m) and its time (s).
-      real(dp) :: max_tension = 0, max_s = 0, max_time = 0
-   end type tension_watch
-
-   !> Controls of a rod run.
-   type :: rod_run_options
-      !> Number of nodes.
-      integer :: nodes = 121
-      !> Time step (0: from the Courant number), Courant number, end of the run, s.
-      real(dp) :: dt = 0, courant = 1, t_end = 0.16_dp
-      !> Time weight of the new level (1/2: energy-conserving).
-      real(dp) :: theta = 0.5_dp
-      !> Share of the averaged mass matrix (1: averaged, 0: lumped), and the weight of the
-      !> second-difference kinetic energy (model/rod.f90).
-      real(dp) :: mu = 1, mu2 = 0
-      !> Kelvin-Voigt damping c, N s.
-      real(dp) :: damping = 0
-      !> Snapshot interval, s (0: only t_end).
-      real(dp) :: interval = 0.01_dp
-      !> Newton controls of a time step (tolerance, iteration limit, reuse).
-      type(newton_options) :: newton
-      !> First guess of a step: R + dt V.
-      logical :: extrapolate = .true.
-      !> Keep the energy ledger.
-      logical :: energy = .false.
-      !> Solve each step only on the part of the cable that moves (see attempt): the nodes
-      !> outside keep their state. Off (the default): every step solves the whole piece.
-      logical :: skip_quiescent = .false.
-      !> Smallest step of the step control, as a fraction of dt; wall-clock limit (s, 0: none).
-      real(dp) :: min_step_fraction = 1.0_dp/1024, max_wall_time = 0
-      !> Pause for a checkpoint every this many seconds of wall time (0: never).
-      real(dp) :: checkpoint_interval = 0
-      !> Pause for a checkpoint every this many accepted steps (0: never). Not a namelist variable:
-      !> the tests' way to checkpoint at a known step.
-      integer :: checkpoint_steps = 0
-      !> Pause when SIGTERM has arrived (the program installs the handler, system/posix.f90).
-      logical :: stop_on_termination = .false.
-   end type rod_run_options
-
-   !> Where the step loop stands between two steps: what it carries from one
-   !> step to the next besides the state of the pieces (kept in a checkpoint).
-   type :: run_progress
-      !> Step the step control tries next, s.
-      real(dp) :: h = 0
-      !> Steps accepted since the step was last halved (it doubles after four), and attempts
-      !> rejected since the last accepted step.
-      integer :: n_good = 0, rejected_here = 0
-      !> Index of the next snapshot (snapshot_time); snapshots 0 .. snapshot_index - 1 are written.
-      integer :: snapshot_index = 1
-      !> Wall time of the dynamics in the processes before this one (a resumed run), s.
-      real(dp) :: wall_before = 0
-   end type run_progress
-
-   !> The wall clock of this process's part of a run (not kept in a checkpoint).
-   type :: run_clock
-      !> Clock count at the start (or the resume) and counts per second.
-      integer(i8) :: start = 0, rate = 1
-      !> Wall time (s, from start) of the last progress report and of the last checkpoint pause.
-      real(dp) :: last_report = 0, last_checkpoint = 0
-      !> History records at the last checkpoint pause (the next needs a step more).
-      integer :: records_at_checkpoint = 0
-   end type run_clock
 
    !> One piece of cable in a run.
    type :: piece_run
@@ -254,8 +150,6 @@ module xcable_driver_rod_run
    contains
       !> Statics, the time step and the pieces (before any output).
       procedure :: prepare => run_prepare
-      !> The summary at the end of the dynamics (driver/stepping.f90, finish_dynamics).
-      procedure :: finish => run_finish
       !> Wall time of the dynamics so far (all processes of a resumed run), s.
       procedure :: wall_time => run_wall_time
       !> The state between two steps to an archive, and back into a prepared run.
@@ -289,8 +183,13 @@ module xcable_driver_rod_run
       !> accepted (from run%t to t_new), or those of the static state (static). extra: the fields
       !> of field3_names (driver/records.f90) too, when with_extra.
       procedure(model_snapshot), deferred :: snapshot
-      !> The model's part of history record i at run%t (the loop wrote its time, step, Newton
-      !> iterations and rejected attempts): the ends, the loads' measures, the ledger.
+      !> The model's part of history record i at run%t (the driver, driver/history.f90, keeps
+      !> the history: it wrote the record's time, step, Newton iterations and rejected attempts,
+      !> and stores what the model gives, all zero on entry): the quantities of the end in each
+      !> slot (ends(:, j): x, z, vx, vz, tension, force_x, force_z; ends_y(:, j): y, vy, force_y
+      !> of a 3-D model), the loads' measures (size 0 when the history keeps none) and, with the
+      !> ledger on, its terms: the energies of energy_names(1:4) and their sum as the model adds
+      !> them (stored), the work of the ends, of the distributed loads and the dissipation (work).
       procedure(model_record), deferred :: record
       !> The break: a held end let go, or the piece cut in two at the break node.
       procedure(model_split), deferred :: split
@@ -313,8 +212,8 @@ module xcable_driver_rod_run
       procedure :: reject_step => model_reject_step
       !> The time a snapshot due at ts is reported at (the default: ts).
       procedure :: snapshot_at => model_snapshot_at
-      !> The summary at the end of the run (the default: the run's own, rod_run%finish, with
-      !> the model's end_info).
+      !> A summary of the model's own at the end of the run (made: the default .false., the
+      !> driver's summary, driver/summary.f90, with the model's end_info).
       procedure :: finish => model_finish
    end type cable_model
 
@@ -368,11 +267,13 @@ module xcable_driver_rod_run
          logical, intent(out) :: with_extra
       end subroutine model_snapshot
 
-      subroutine model_record(self, run, i)
-         import :: cable_model, rod_run
+      subroutine model_record(self, run, i, ends, ends_y, measures, energies, stored, work)
+         import :: cable_model, rod_run, dp
          class(cable_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
          integer, intent(in) :: i
+         real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+         real(dp), intent(inout) :: energies(4), stored, work(3)
       end subroutine model_record
 
       subroutine model_split(self, run, error)
@@ -503,25 +404,6 @@ module xcable_driver_rod_run
          !> Save (.true.) or load.
          logical, intent(in) :: saving
       end subroutine exchange_progress
-
-      !> The records so far, listed for saving and loading: every history
-      !> record (with the y components, ends_y, of a 3-D run) and the summary's
-      !> counters and extremes. Either model (exchange_state,
-      !> driver/rod3d_drive.f90); loading sets up the history with n_ends ends.
-      module subroutine exchange_records(self, a, saving, n_ends, error, with_y)
-         !> Run.
-         type(rod_run), intent(inout) :: self
-         !> Archive.
-         class(state_archive), intent(inout) :: a
-         !> Save (.true.) or load.
-         logical, intent(in) :: saving
-         !> Ends of the history (2, or 4 with a break inside the cable).
-         integer, intent(in) :: n_ends
-         !> Error (stat_input) when the archive's history does not fit.
-         type(error_type), allocatable, intent(inout) :: error
-         !> The y components too (a 3-D run; default .false.).
-         logical, intent(in), optional :: with_y
-      end subroutine exchange_records
 
       !> Time of snapshot i (i >= 1); huge when there is none.
       pure real(dp) module function snapshot_time(self, i)
@@ -706,13 +588,6 @@ module xcable_driver_rod_run
          type(rod_run), intent(inout) :: self
       end subroutine apply_split
 
-      !> Summary figures and warnings from the history.
-      module subroutine summarise(self, kinds, held)
-         type(rod_run), intent(inout) :: self
-         !> Kind of the end in each history slot, and whether it is held (the model's end_info).
-         character(len=*), intent(in) :: kinds(:)
-         logical, intent(in) :: held(:)
-      end subroutine summarise
       !> The planar model (planar_model; the bindings of cable_model, driver/stepping.f90's loop).
       !> The records of t = 0 and the static state (turned back into the scene's frame for a
       !> scene run turned into x-z) to the observer.
@@ -765,11 +640,13 @@ module xcable_driver_rod_run
          logical, intent(out) :: with_extra
       end subroutine planar_snapshot
 
-      !> The pieces' part of history record i: ends, measures, ledger.
-      module subroutine planar_record(self, run, i)
+      !> The pieces' part of history record i: ends, measures, ledger terms.
+      module subroutine planar_record(self, run, i, ends, ends_y, measures, energies, stored, work)
          class(planar_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
          integer, intent(in) :: i
+         real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+         real(dp), intent(inout) :: energies(4), stored, work(3)
       end subroutine planar_record
 
       !> The break (split).
@@ -788,7 +665,7 @@ module xcable_driver_rod_run
          logical, intent(out) :: held
       end subroutine planar_end_info
 
-      !> Nothing to add to the summary (record and summarise made it).
+      !> After the summary: a scene run turned into x-z has its history turned back (turn_back_history).
       module subroutine planar_conclude(self, run)
          class(planar_model), intent(inout) :: self
          type(rod_run), intent(inout) :: run
@@ -873,6 +750,17 @@ contains
       call reject_attempt(run, reason, retry, error)
    end subroutine model_reject_step
 
+   !> No summary of the model's own (the driver makes it): the default of cable_model%finish.
+   subroutine model_finish(self, run, made)
+      !> Model.
+      class(cable_model), intent(inout) :: self
+      !> Run.
+      type(rod_run), intent(inout) :: run
+      !> Whether the model made the run's summary.
+      logical, intent(out) :: made
+      made = .false.
+   end subroutine model_finish
+
    !> The time of a snapshot due at ts: ts, the default of cable_model%snapshot_at.
    real(dp) function model_snapshot_at(self, run, ts) result(t)
       !> Model.
@@ -883,41 +771,6 @@ contains
       real(dp), intent(in) :: ts
       t = ts
    end function model_snapshot_at
-
-   !> The run's summary with the kind of each end from the model (end_info): the default of
-   !> cable_model%finish.
-   subroutine model_finish(self, run)
-      !> Model.
-      class(cable_model), intent(inout) :: self
-      !> Run.
-      type(rod_run), intent(inout) :: run
-      character(len=16), allocatable :: kinds(:)
-      logical, allocatable :: held(:)
-      character(:), allocatable :: kind
-      integer :: j, n_slots
-      n_slots = size(run%history%end_labels)
-      allocate (kinds(n_slots), held(n_slots))
-      do j = 1, n_slots
-         call self%end_info(run, j, kind, held(j))
-         kinds(j) = kind
-      end do
-      call run%finish(kinds, held)
-   end subroutine model_finish
-
-   !> The end of the dynamics (also of one stopped by an error or a
-   !> termination): wall time, time reached, summary figures and warnings.
-   subroutine run_finish(self, kinds, held)
-      !> Run.
-      class(rod_run), intent(inout) :: self
-      !> Kind of the end in each history slot at the end of the run, and whether it is held
-      !> (the model's end_info).
-      character(len=*), intent(in) :: kinds(:)
-      logical, intent(in) :: held(:)
-      self%summary%wall_time = self%wall_time()
-      self%summary%time_reached = self%t
-      call summarise(self, kinds, held)
-      if (self%plane_azimuth /= 0) call turn_back_history(self)
-   end subroutine run_finish
 
    !> Wall time of the dynamics so far, s: this process's and, for a resumed
    !> run, that of the processes before.

@@ -7,15 +7,16 @@
 !> depends on the discretisation: an attempt at a step on all its pieces with
 !> the checks of the new state, the rejection or the acceptance of it, the
 !> fields of a snapshot inside the step, its part of a history record (ends,
-!> measures, ledger), the break. It owns the rest: when snapshots are due and
-!> their output, the history's records,
+!> measures, ledger terms), the break. It owns the rest: when snapshots are due and
+!> their output, the history's records (driver/history.f90), the summary
+!> (driver/summary.f90),
 !> the step to try and its landing on t_end and on the start of the break
 !> (plan_step), the halving and doubling back (reject_attempt, advance_time),
 !> the search for a break by tension (the model gives the two levels'
 !> positions to watch_step), the wall-clock limit, the pauses for checkpoints
 !> and SIGTERM, and the progress reports. The step control's policy is in the
-!> header of driver/rod_run.f90, whose run (rod_run) holds the records, the
-!> history and the summary that both models write.
+!> header of driver/rod_run.f90, whose run (rod_run) holds the history and the
+!> summary the driver keeps.
 !>
 !> The planar rod's pieces are the model planar_model (driver/rod_run.f90 and
 !> its submodules); the 3-D rod's are rod3d_drive (driver/rod3d_drive.f90);
@@ -31,6 +32,8 @@ module xcable_driver_stepping
    use xcable_driver_rod_run, only: rod_run, cable_model, run_progress, pause_none, pause_checkpoint, &
                                     pause_termination, max_steps, wall_limit, ends_change, snapshot_time
    use xcable_driver_records, only: run_observer, n_fields, n_fields3, field3_names
+   use xcable_driver_summary, only: summarise_run
+   use xcable_driver_history, only: append_record
    use xcable_system_posix, only: termination_requested
    implicit none
    private
@@ -176,14 +179,17 @@ contains
 
    !> The end of the dynamics (also of one stopped by an error or a
    !> termination): wall time, time reached, summary figures and warnings
-   !> (rod_run's finish), and what the model adds to them.
+   !> (driver/summary.f90, unless the model makes a summary of its own in
+   !> finish), and what the model adds to them (conclude).
    subroutine finish_dynamics(run, model)
       !> Run.
       type(rod_run), intent(inout) :: run
       !> Model of its cable.
       class(cable_model), intent(inout) :: model
+      logical :: made
       if (.not. allocated(run%history%end_labels)) return
-      call model%finish(run)
+      call model%finish(run, made)
+      if (.not. made) call summarise_run(run, model)
       call model%conclude(run)
    end subroutine finish_dynamics
 
@@ -220,31 +226,6 @@ contains
          end if
       end do
    end subroutine emit_snapshots
-
-   !> Append a history record at run%t: the step taken, Newton's iterations and the attempts
-   !> rejected before it, then the model's part (ends, measures, ledger).
-   subroutine append_record(run, model, iterations, rejected, step)
-      !> Run.
-      type(rod_run), intent(inout) :: run
-      !> Model of its cable.
-      class(cable_model), intent(inout) :: model
-      !> Newton iterations of the step (the most of a piece) and attempts rejected before it.
-      integer, intent(in) :: iterations, rejected
-      !> The step, s.
-      real(dp), intent(in) :: step
-      integer :: i
-      associate (h => run%history)
-         if (h%n + 1 > ubound(h%time, 1)) call h%reserve(2*ubound(h%time, 1), size(h%end_labels), run%options%energy)
-         i = h%n + 1
-         h%n = i
-         h%time(i) = run%t
-         h%step(i) = step
-         h%newton_iterations(i) = iterations
-         h%rejected(i) = rejected
-      end associate
-      if (i > 0) run%summary%max_newton_iterations = max(run%summary%max_newton_iterations, iterations)
-      call model%record(run, i)
-   end subroutine append_record
 
    !> Whether the step loop pauses before its next attempt:
    !> pause_termination when SIGTERM has arrived (options%stop_on_termination),

@@ -1,6 +1,7 @@
 !> The state of a rod run to and from a checkpoint (one list of items for both ways).
 !> (A submodule of driver/rod_run.f90.)
 submodule (xcable_driver_rod_run) xcable_driver_rod_run_checkpoint
+   use xcable_driver_history, only: exchange_records
    implicit none
 
 contains
@@ -137,7 +138,7 @@ contains
          end associate
       end do
 
-      call exchange_records(self, a, saving, merge(4, 2, self%break_node > 0), error)
+      call exchange_records(self, a, saving, error)
    end subroutine exchange_state
 
    !> Where the step loop stands (run_progress), listed for saving and
@@ -162,73 +163,6 @@ contains
       if (.not. saving) self%progress%wall_before = wall
    end subroutine exchange_progress
 
-   !> The records so far, listed for saving and loading: every history
-   !> record (with the y components, ends_y, of a 3-D run) and the summary's
-   !> counters and extremes. Either model (exchange_state,
-   !> driver/rod3d_drive.f90); loading sets up the history with n_ends ends.
-   module subroutine exchange_records(self, a, saving, n_ends, error, with_y)
-      !> Run.
-      type(rod_run), intent(inout) :: self
-      !> Archive.
-      class(state_archive), intent(inout) :: a
-      !> Save (.true.) or load.
-      logical, intent(in) :: saving
-      !> Ends of the history (2, or 4 with a break inside the cable).
-      integer, intent(in) :: n_ends
-      !> Error (stat_input) when the archive's history does not fit.
-      type(error_type), allocatable, intent(inout) :: error
-      !> The y components too (a 3-D run; default .false.).
-      logical, intent(in), optional :: with_y
-      integer :: n_records
-      logical :: y_kept
-      y_kept = .false.
-      if (present(with_y)) y_kept = with_y
-      ! The history: every record so far.
-      n_records = self%history%n
-      call sync_int(a, 'history/n', n_records, saving)
-      if (.not. saving) then
-         if (.not. a%ok) return
-         if (n_records < 0 .or. a%stored_size('history/time') /= n_records + 1) then
-            call fatal_error(error, 'the checkpoint''s history has '//str(n_records)//' records but '// &
-                             str(a%stored_size('history/time'))//' times', stat_input)
-            return
-         end if
-         if (allocated(self%history%end_labels)) deallocate (self%history%end_labels)
-         allocate (self%history%end_labels(n_ends))
-         self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
-         if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
-         call self%history%reserve(max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, &
-                                   n_ends, self%options%energy, with_y=y_kept)
-         call self%history%keep_measures(measure_names(self%scene%loads))
-         self%history%n = n_records
-      end if
-      associate (h => self%history, m => n_records)
-         call sync_reals(a, 'history/time', h%time(0:m), saving)
-         call sync_reals(a, 'history/step', h%step(0:m), saving)
-         call sync_ints(a, 'history/newton_iterations', h%newton_iterations(0:m), saving)
-         call sync_ints(a, 'history/rejected', h%rejected(0:m), saving)
-         call sync_cube(a, 'history/ends', h%ends(:, :, 0:m), saving)
-         if (self%options%energy) call sync_matrix(a, 'history/energy', h%energy(:, 0:m), saving)
-         if (y_kept) call sync_cube(a, 'history/ends_y', h%ends_y(:, :, 0:m), saving)
-         if (allocated(h%measures)) call sync_matrix(a, 'history/measures', h%measures(:, 0:m), saving)
-      end associate
-
-      ! The summary's counters and extremes so far (summarise derives the rest at the end).
-      associate (s => self%summary)
-         call sync_int(a, 'summary/rejected_steps', s%rejected_steps, saving)
-         call sync_int(a, 'summary/newton_iterations', s%newton_iterations, saving)
-         call sync_int(a, 'summary/max_newton_iterations', s%max_newton_iterations, saving)
-         call sync_int(a, 'summary/factorisations', s%factorisations, saving)
-         call sync_real(a, 'summary/dt_requested', s%dt_requested, saving)
-         call sync_real(a, 'summary/dt_used', s%dt_used, saving)
-         call sync_real(a, 'summary/courant_requested', s%courant_requested, saving)
-         call sync_real(a, 'summary/max_turning_angle', s%max_turning_angle, saving)
-         call sync_real(a, 'summary/min_strain', s%min_strain, saving)
-         call sync_real(a, 'summary/min_strain_s', s%min_strain_s, saving)
-         call sync_real(a, 'summary/min_strain_time', s%min_strain_time, saving)
-         call sync_real(a, 'summary/max_strain', s%max_strain, saving)
-      end associate
-   end subroutine exchange_records
    !> The planar model's state to an archive: the run's (save_state).
    module subroutine planar_save_state(self, run, archive)
       class(planar_model), intent(inout) :: self

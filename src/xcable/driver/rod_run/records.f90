@@ -1,8 +1,9 @@
 !> The records of a rod run: the fields on the output nodes, the history (one record per
 !> accepted step), the snapshots (interpolated within the step), a turned run's results turned
-!> back, and the summary with its warnings.
+!> back (the summary with its warnings is the driver's, driver/summary.f90).
 !> (A submodule of driver/rod_run.f90.)
 submodule (xcable_driver_rod_run) xcable_driver_rod_run_records
+   use xcable_driver_history, only: hermite_levels, open_history
    implicit none
 
 contains
@@ -77,26 +78,22 @@ contains
    !> record of t = 0 follows: driver/stepping.f90).
    module subroutine start_history(self)
       type(rod_run), intent(inout) :: self
-      integer :: n_ends
-      n_ends = merge(4, 2, self%break_node > 0)
-      allocate (self%history%end_labels(n_ends))
-      self%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
-      if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      call open_history(self, 16, .false.)
       self%pieces(1)%end_slot = [1, 2]
       self%pieces(1)%reaction(:, 1) = self%static%reaction_a
       self%pieces(1)%reaction(:, 2) = self%static%reaction_b
-      call self%history%reserve(16, n_ends, self%options%energy)
-      call self%history%keep_measures(measure_names(self%scene%loads))
    end subroutine start_history
 
-   !> The planar model's part of history record i at run%t (the step loop wrote its time, step,
-   !> Newton iterations and rejected attempts): the ends (position, velocity, tension, the force
-   !> on the cable: the support's at a held end, the applied one at a loaded end), the loads'
-   !> measures, the ledger.
-   module subroutine planar_record(self, run, i)
+   !> The planar model's part of history record i at run%t (the driver keeps the history,
+   !> driver/history.f90): the ends (position, velocity, tension, the force on the cable: the
+   !> support's at a held end, the applied one at a loaded end), the loads' measures, the
+   !> ledger's terms.
+   module subroutine planar_record(self, run, i, ends, ends_y, measures, energies, stored, work)
       class(planar_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       integer, intent(in) :: i
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp), intent(inout) :: energies(4), stored, work(3)
       integer :: p, side, node, slot
       real(dp) :: en(4), e(2), f(2), ten
       en = 0
@@ -122,7 +119,7 @@ contains
                      if (piece%end_b%state_dependent()) f = f + state_force(piece%end_b, node)
                   end if
                end if
-               run%history%ends(:, slot, i) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
+               ends(:, slot) = [run_piece%r(:, node), run_piece%v(:, node), ten, f]
             end do
             if (run%options%energy) then
                call piece%complete_memo()
@@ -139,26 +136,24 @@ contains
             e = r(:, k + 1) - r(:, k)
             f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
             ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(r(:, k) - r(:, k - 1))/piece%ds(k - 1) - 1))
-            run%history%ends(:, 3, i) = [r(:, k), v(:, k), ten, f]
+            ends(:, 3) = [r(:, k), v(:, k), ten, f]
             e = r(:, k) - r(:, k - 1)
             f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
-            run%history%ends(:, 4, i) = [r(:, k), v(:, k), ten, f]
+            ends(:, 4) = [r(:, k), v(:, k), ten, f]
          end associate
       end if
-      if (allocated(run%history%measures)) then
-         run%history%measures(:, i) = 0
+      if (size(measures) > 0) then
+         measures = 0
          do p = 1, size(run%pieces)
             associate (piece => run%pieces(p)%problem%piece)
-               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, run%history%measures(:, i), piece%s)
+               call load_measures(run%scene%loads, run%pieces(p)%r, piece%ds, measures, piece%s)
             end associate
          end do
       end if
       if (run%options%energy) then
-         run%history%energy(1:4, i) = en
-         run%history%energy(5, i) = run%work
-         run%history%energy(6, i) = run%dissipation
-         run%history%energy(7, i) = sum(en) - run%work - run%load_work + run%dissipation
-         run%history%energy(8, i) = run%load_work
+         energies = en
+         stored = sum(en)
+         work = [run%work, run%load_work, run%dissipation]
       end if
 
    contains
@@ -193,34 +188,26 @@ contains
       t_end = max(end_value(cells(1:min(3, n - 1)), 1), piece%cell_tension(merge(1, n - 1, side == 1), -0.99_dp))
    end function end_tension
 
-   !> Fields at time ts inside the step just accepted (from self%t to the new
-   !> level): cubic Hermite in the positions and velocities of its two ends.
+   !> Fields at time ts inside the step just accepted (from self%t to the new level): the driver's
+   !> cubic Hermite in the positions and velocities of its two ends (hermite_levels).
    subroutine interpolated_fields(self, ts, fields, velocities)
       type(rod_run), intent(inout) :: self
       real(dp), intent(in) :: ts
       real(dp), intent(out) :: fields(:, :)
       !> The interpolated velocities on the output columns (2, n_out).
       real(dp), allocatable, intent(out), optional :: velocities(:, :)
-      real(dp), allocatable :: r(:, :), v(:, :)
-      real(dp) :: h, u, h00, h10, h01, h11, d00, d10, d01, d11
+      real(dp), allocatable :: r(:, :), v(:, :), rp_r(:, :), rp_v(:, :)
+      real(dp) :: h
       integer :: p
       allocate (r(2, self%n_out), v(2, self%n_out))
       do p = 1, size(self%pieces)
          associate (rp => self%pieces(p))
-            h = self%history%time(self%history%n) ! placeholder, replaced below
             h = rp%problem%dt
-            u = (ts - self%t)/h
-            u = min(max(u, 0.0_dp), 1.0_dp)
-            h00 = (1 + 2*u)*(1 - u)**2
-            h10 = u*(1 - u)**2
-            h01 = u*u*(3 - 2*u)
-            h11 = u*u*(u - 1)
-            d00 = 6*u*u - 6*u
-            d10 = 3*u*u - 4*u + 1
-            d01 = 6*u - 6*u*u
-            d11 = 3*u*u - 2*u
-            r(:, rp%column) = h00*rp%r_prev + h10*h*rp%v_prev + h01*rp%r + h11*h*rp%v
-            v(:, rp%column) = (d00*rp%r_prev + d01*rp%r)/h + d10*rp%v_prev + d11*rp%v
+            allocate (rp_r(2, size(rp%column)), rp_v(2, size(rp%column)))
+            call hermite_levels((ts - self%t)/h, h, rp%r_prev, rp%v_prev, rp%r, rp%v, rp_r, rp_v)
+            r(:, rp%column) = rp_r
+            v(:, rp%column) = rp_v
+            deallocate (rp_r, rp_v)
          end associate
       end do
       call self%fields(fields, r, v)
@@ -229,230 +216,6 @@ contains
          call move_alloc(v, velocities)
       end if
    end subroutine interpolated_fields
-
-   !> Summary figures and warnings from the history.
-   module subroutine summarise(self, kinds, held)
-      type(rod_run), intent(inout) :: self
-      character(len=*), intent(in) :: kinds(:)
-      logical, intent(in) :: held(:)
-      integer :: i, j, n, n_ends
-      real(dp) :: speed, f0, f1, fi, reference, slack_level
-      logical :: held_end
-      n = self%history%n
-      n_ends = size(self%history%end_labels)
-      ! Derived from the history afresh (also for a run summarised when it was interrupted).
-      if (allocated(self%summary%ends)) deallocate (self%summary%ends)
-      allocate (self%summary%ends(n_ends))
-      self%summary%steps = n
-      self%summary%peak_end_speed = 0
-      self%summary%peak_end_speed_time = 0
-      self%summary%min_fixed_end_tension = huge(1.0_dp)
-      self%summary%min_fixed_end_tension_time = 0
-      self%summary%front_arrival_time = -1
-      self%summary%peak_end_speed_end = ''
-      self%summary%has_fixed_end = .false.
-      ! A front is the 1 % drop of a held end's tension after a break; other scenes have none.
-      self%summary%has_front = self%broken
-      self%summary%broke = self%broken
-      if (self%broken) then
-         self%summary%break_time = self%scene%break_time
-         self%summary%break_s = self%scene%s_break
-         self%summary%break_ramp = self%scene%t_break
-      end if
-      ! The loads' measures of the static state, and what the loads say about them.
-      self%summary%notes = ''
-      if (allocated(self%summary%static_measures)) deallocate (self%summary%static_measures)
-      if (allocated(self%summary%measure_names)) deallocate (self%summary%measure_names)
-      if (allocated(self%history%measures)) then
-         self%summary%static_measures = self%history%measures(:, 0)
-         self%summary%measure_names = self%history%measure_names
-         call note_measures(self%scene%loads, self%summary%static_measures, self%scene%length, self%summary%notes)
-      end if
-      ! The break by tension: what the first pass found (driver/simulation.f90).
-      self%summary%by_tension = self%scene%by_tension
-      if (self%scene%by_tension) then
-         self%summary%mbl = self%scene%mbl
-         self%summary%break_tension = self%rupture%tension
-         self%summary%break_cell_s = self%rupture%s
-         self%summary%largest_tension = self%rupture%max_tension
-         self%summary%largest_tension_s = self%rupture%max_s
-         self%summary%largest_tension_time = self%rupture%max_time
-      end if
-      slack_level = slack_tension_fraction*max(self%info%max_tension, self%info%tension_a, self%info%tension_b)
-      do j = 1, n_ends
-         associate (e => self%summary%ends(j))
-            e%kind = kinds(j)
-            e%min_tension = self%history%ends(5, j, 0)
-            e%max_tension = self%history%ends(5, j, 0)
-            e%max_tension_time = self%history%time(0)
-            do i = 0, n
-               speed = norm2(self%history%ends(3:4, j, i))
-               ! A 3-D run (driver/rod3d_drive.f90): with the y velocity.
-               if (allocated(self%history%ends_y)) speed = hypot(speed, self%history%ends_y(2, j, i))
-               if (speed > e%peak_speed) then
-                  e%peak_speed = speed
-                  e%peak_speed_time = self%history%time(i)
-               end if
-               if (self%history%ends(5, j, i) < e%min_tension) then
-                  e%min_tension = self%history%ends(5, j, i)
-                  e%min_tension_time = self%history%time(i)
-               end if
-               if (self%history%ends(5, j, i) > e%max_tension) then
-                  e%max_tension = self%history%ends(5, j, i)
-                  e%max_tension_time = self%history%time(i)
-               end if
-            end do
-            call slack_intervals(self%history, j, slack_level, e%slack_intervals, e%slack_time)
-            ! The peak end speed: the fastest end, whatever its kind (a released end after a break,
-            ! a moving fairlead, a mass).
-            if (e%peak_speed > self%summary%peak_end_speed) then
-               self%summary%peak_end_speed = e%peak_speed
-               self%summary%peak_end_speed_time = e%peak_speed_time
-               self%summary%peak_end_speed_end = self%history%end_labels(j)
-            end if
-            if (trim(e%kind) == 'fixed') then
-               self%summary%has_fixed_end = .true.
-               if (e%min_tension < self%summary%min_fixed_end_tension) then
-                  self%summary%min_fixed_end_tension = e%min_tension
-                  self%summary%min_fixed_end_tension_time = e%min_tension_time
-               end if
-            end if
-            held_end = held(j)
-            if (held_end .and. self%summary%has_front) then
-               ! The 1 % drop of the tension at the end.
-               f0 = self%history%ends(5, j, 0)
-               do i = 1, n
-                  fi = self%history%ends(5, j, i)
-                  if (fi <= 0.99_dp*f0) then
-                     f1 = self%history%ends(5, j, i - 1)
-                     e%front_arrival_time = self%history%time(i - 1) + (self%history%time(i) - self%history%time(i - 1)) &
-                                            *(0.99_dp*f0 - f1)/(fi - f1)
-                     exit
-                  end if
-               end do
-               if (e%front_arrival_time >= 0 .and. (self%summary%front_arrival_time < 0 .or. &
-                                                    e%front_arrival_time < self%summary%front_arrival_time)) &
-                  self%summary%front_arrival_time = e%front_arrival_time
-            end if
-         end associate
-      end do
-      if (self%summary%min_fixed_end_tension == huge(1.0_dp)) self%summary%min_fixed_end_tension = 0
-      if (self%summary%dt_used == 0) self%summary%dt_used = self%dt
-      self%summary%courant_used = self%summary%courant_requested*self%summary%dt_used/self%dt
-      self%summary%dissipated = self%dissipation
-      if (self%options%energy) then
-         reference = self%history%energy(1, 0)
-         if (reference <= 0) reference = max(maxval(abs(self%history%energy(1:4, 0))), 1.0_dp)
-         self%summary%energy_drift = maxval(abs(self%history%energy(7, 0:n) - self%history%energy(7, 0)))/reference
-      end if
-      self%summary%warnings = ''
-      if (self%summary%energy_drift > warn_energy_drift) call warn('the energy ledger drifted by '// &
-         str(100*self%summary%energy_drift)//' % of the initial strain energy (more than '// &
-         str(100*warn_energy_drift)//' %)')
-      if (self%summary%max_turning_angle > warn_turning_angle) call warn('neighbouring cells turned by up to '// &
-         str(self%summary%max_turning_angle)//' rad (more than '//str(warn_turning_angle)// &
-         ' rad): a kink at the grid scale, the buckled zone is not resolved; more nodes resolve it')
-      associate (law => self%scene%law)
-         if (self%summary%max_strain > law%strain_max) call warn('cells were stretched to strain '// &
-            str(self%summary%max_strain)//', beyond the range of the '//law%name()//' law (strain '// &
-            str(law%strain_max)//'): the law was extrapolated there')
-         if (self%summary%min_strain < law%strain_min) call warn('cells were compressed to strain '// &
-            str(self%summary%min_strain)//', below the range of the '//law%name()//' law (strain '// &
-            str(law%strain_min)//'): it was continued there along its first tangent, as stiff in compression '// &
-            'as at the first row (give rows for compression, or compression = ''none'')')
-      end associate
-      if (self%static_min_tension < -warn_static_compression*self%static_max_tension) call warn( &
-         'the static state is in compression: tension down to '//str(self%static_min_tension)//' N at s = '// &
-         str(self%static_min_tension_s)//' m (largest tension '//str(self%static_max_tension)//' N); a rope '// &
-         'cannot push: this state is held by the bending stiffness and the law''s compression branch, and may '// &
-         'be a loop or a buckle (compare with compression = ''none'' and with more nodes)')
-      ! A rope that pushes: the law's compressive branch reached in the dynamics.
-      associate (law => self%scene%law)
-         if (law%tension(self%summary%min_strain) < -warn_dynamic_compression*self%static_max_tension) &
-            call warn('the line was compressed to '//quantity(law%tension(self%summary%min_strain), 'N')// &
-                      ' (strain '//str(self%summary%min_strain)//') at s = '//quantity(self%summary%min_strain_s, 'm')// &
-                      ', t = '//quantity(self%summary%min_strain_time, 's')//': with compression = ''law'' the rope '// &
-                      'pushes back along its law below zero strain; a rope cannot push: compression = ''none''')
-      end associate
-      ! The grid against the scene: the static shape and the break's front.
-      if (self%static_max_turn > warn_static_turn) call warn('the static shape turns by up to '// &
-         str(self%static_max_turn)//' rad between neighbouring cells (more than '//str(warn_static_turn)// &
-         ' rad): the grid is too coarse for the shape; about '//str(nodes_for(self%static_max_turn/warn_static_turn))// &
-         ' nodes resolve it')
-      if (self%front_cells > 0 .and. self%front_cells < min_front_cells) call warn('the break''s front (t_break = '// &
-         str(self%scene%t_break)//' s at wave speed '//str(self%front_cells*maxval(self%s(2:) - self%s(:size(self%s) - 1))/ &
-         self%scene%t_break)//' m/s) spans '//str(self%front_cells)//' cells, fewer than '//str(min_front_cells)// &
-         ': about '//str(nodes_for(min_front_cells/self%front_cells))//' nodes resolve it')
-      if (self%summary%rejected_steps > max(10, int(warn_rejected_fraction*max(n, 1)))) call warn( &
-         str(self%summary%rejected_steps)//' step attempts were rejected ('//str(n)// &
-         ' accepted): the step control struggled; a smaller dt or courant may be more economical')
-      if (abs(self%summary%courant_used/max(self%summary%courant_requested, tiny(1.0_dp)) - 1) > warn_courant_change) &
-         call warn('the Courant number taken, '//str(self%summary%courant_used)//', differs from the one asked for, '// &
-                   str(self%summary%courant_requested))
-
-   contains
-
-      subroutine warn(line)
-         character(*), intent(in) :: line
-         if (len(self%summary%warnings) > 0) self%summary%warnings = self%summary%warnings//new_line('a')
-         self%summary%warnings = self%summary%warnings//line
-      end subroutine warn
-
-      !> The node count that refines the grid by factor (its cells factor times shorter).
-      integer function nodes_for(factor)
-         real(dp), intent(in) :: factor
-         nodes_for = ceiling(factor*(self%options%nodes - 1)) + 1
-      end function nodes_for
-   end subroutine summarise
-
-   !> The intervals in which end j of the history was slack (its tension at most level), with the
-   !> crossings interpolated linearly between records, and their total length, s.
-   subroutine slack_intervals(history, j, level, intervals, total)
-      !> History of the run.
-      type(run_history), intent(in) :: history
-      !> The end's slot.
-      integer, intent(in) :: j
-      !> Tension at and below which the end counts as slack, N.
-      real(dp), intent(in) :: level
-      !> Start and end of each interval (2, k), s.
-      real(dp), allocatable, intent(out) :: intervals(:, :)
-      !> Their total, s.
-      real(dp), intent(out) :: total
-      real(dp), allocatable :: grown(:, :)
-      real(dp) :: start, f0, f1, tc
-      integer :: i, k
-      logical :: slack
-      allocate (intervals(2, 8))
-      k = 0
-      slack = history%ends(5, j, 0) <= level
-      start = history%time(0)
-      do i = 1, history%n
-         f0 = history%ends(5, j, i - 1)
-         f1 = history%ends(5, j, i)
-         if ((f1 <= level) .eqv. slack) cycle
-         tc = history%time(i - 1) + (history%time(i) - history%time(i - 1))*(level - f0)/(f1 - f0)
-         if (slack) then
-            call push(start, tc)
-         else
-            start = tc
-         end if
-         slack = .not. slack
-      end do
-      if (slack) call push(start, history%time(history%n))
-      intervals = intervals(:, 1:k)
-      total = sum(intervals(2, :) - intervals(1, :))
-   contains
-      subroutine push(a, b)
-         real(dp), intent(in) :: a, b
-         if (k == size(intervals, 2)) then
-            allocate (grown(2, 2*k))
-            grown(:, 1:k) = intervals
-            call move_alloc(grown, intervals)
-         end if
-         k = k + 1
-         intervals(:, k) = [a, b]
-      end subroutine push
-   end subroutine slack_intervals
 
    !> The planar model's end in history slot j at the end of the run: its kind ('fixed',
    !> 'motion', ..., 'break') and whether it is held ('' and not held: no end in that slot).
@@ -524,10 +287,12 @@ contains
       if (with_extra) call turned_back(run, fields, v, extra)
    end subroutine planar_snapshot
 
-   !> The planar model adds nothing to the summary (record and summarise made it).
+   !> The planar model after the summary: the history of a scene run turned into x-z turned back
+   !> into the scene's frame (the summary was made from the turned one).
    module subroutine planar_conclude(self, run)
       class(planar_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
+      if (run%plane_azimuth /= 0) call turn_back_history(run)
    end subroutine planar_conclude
 
    !> Fields on the output nodes from the current state of the pieces: cell

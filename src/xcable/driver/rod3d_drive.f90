@@ -21,11 +21,11 @@
 !> the history record and the break. The step control, its landing, the
 !> checkpoint pauses and the summary are the loop's and the planar run's.
 !>
-!> Checkpoints as the planar run's: save_state and load_state list the state
-!> (exchange3) with the planar run's sync procedures (io/archive.f90) and its
+!> Checkpoints as the planar run's (driver/rod3d_drive/checkpoint.f90): save_state and
+!> load_state list the state (exchange3) with the planar run's sync procedures (io/archive.f90) and its
 !> exchange_progress and exchange_records.
 !>
-!> A break inside the cable as in the planar run: the output has the break
+!> A break inside the cable as in the planar run (driver/rod3d_drive/break.f90): the output has the break
 !> node twice (the planar run's columns and end slots break_a, break_b), and
 !> at the break the piece is cut in two 3-D pieces whose new ends carry the
 !> force (x, y, z) and the bending couple that held them, ramped to zero over
@@ -42,15 +42,12 @@ module xcable_driver_rod3d_drive
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_numerics, stat_input
    use xcable_core_strings, only: str
    use xcable_driver_rod_run, only: rod_run, cable_model, end_value, jacobian_kept, check_range, &
-                                    check_folds, exchange_progress, watch_step, max_steps
+                                    check_folds, watch_step, max_steps
    use xcable_theory_closed_forms, only: wave_speed
-   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
+   use xcable_io_archive, only: state_archive
    use xcable_driver_rod3d_run, only: rod3d_run
-   use xcable_model_rod3d, only: rod3d_piece, rod3d_section, bend_moment3 => bend_moment, bend_energy3 => bend_energy
+   use xcable_model_rod3d, only: rod3d_piece, rod3d_section
    use xcable_scene_scene, only: scene_type, section_cells, sections_on, section_at
-   use xcable_numerics_vector3, only: cross3
-   use xcable_solver_banded, only: band_matrix
-   use xcable_ends_force, only: force_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_loads_load, only: measure_names, load_measures, loads_in_statics, any_static_form
    use xcable_material_law, only: material_law, secant_stiffness
@@ -61,9 +58,9 @@ module xcable_driver_rod3d_drive
    implicit none
    private
    public :: rod3d_drive, n_fields3, field3_names
-   ! For the submodule driver/rod3d_drive/statics.f90 (gfortran 12 makes a module's private
-   ! procedures local symbols that its submodules cannot link to).
-   public :: state_fields, piece_sections3
+   ! For the submodules driver/rod3d_drive/ (gfortran 12 makes a module's private procedures
+   ! local symbols that its submodules cannot link to).
+   public :: state_fields, piece_sections3, set_time
 
    !> One 3-D piece of cable in a run.
    type :: piece3
@@ -124,6 +121,51 @@ module xcable_driver_rod3d_drive
          !> to lie in x-z (driver/simulation.f90; default 0: not turned). Its static state is turned back.
          real(dp), intent(in), optional :: azimuth, pivot(2)
       end subroutine drive_prepare
+   end interface
+
+   ! The checkpoint (save_state, load_state) is in the submodule driver/rod3d_drive/checkpoint.f90.
+   interface
+      !> Save the state of the run between two steps (after start, or a pause
+      !> of advance) to an archive. archive%ok tells whether it was stored.
+      module subroutine drive_save_state(self, run, archive)
+         !> 3-D run.
+         class(rod3d_drive), intent(inout) :: self
+         !> The planar run it shares its records with.
+         type(rod_run), intent(inout) :: run
+         !> Where the state goes.
+         class(state_archive), intent(inout) :: archive
+      end subroutine drive_save_state
+      !> Load a state saved by save_state into a run prepared from the same case,
+      !> ready for advance. Errors (stat_input) when the archive fails or holds a
+      !> state this run cannot have.
+      module subroutine drive_load_state(self, run, archive, error)
+         !> 3-D run, prepared.
+         class(rod3d_drive), intent(inout) :: self
+         !> The planar run it shares its records with (prepared).
+         type(rod_run), intent(inout) :: run
+         !> Where the state comes from.
+         class(state_archive), intent(inout) :: archive
+         !> Error.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine drive_load_state
+   end interface
+
+   ! The break (split, release) is in the submodule driver/rod3d_drive/break.f90.
+   interface
+      !> The break: the new ends' forces, couples and torques, and the pieces after it.
+      module subroutine split(self, rod, error)
+         type(rod3d_drive), intent(inout) :: self
+         type(rod_run), intent(inout) :: rod
+         !> Error when a piece cannot be set up.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine split
+      !> The pieces after the break (also those of a broken run loaded from a checkpoint).
+      module subroutine release(self, rod, error)
+         type(rod3d_drive), intent(inout) :: self
+         type(rod_run), intent(inout) :: rod
+         !> Error when a piece cannot be set up.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine release
    end interface
 
 contains
@@ -307,140 +349,6 @@ contains
       end do
    end subroutine set_time
 
-   !> Save the state of the run between two steps (after start, or a pause
-   !> of advance) to an archive (see exchange3). archive%ok tells whether it was stored.
-   subroutine drive_save_state(self, run, archive)
-      !> 3-D run.
-      class(rod3d_drive), intent(inout) :: self
-      !> The planar run it shares its records with.
-      type(rod_run), intent(inout) :: run
-      !> Where the state goes.
-      class(state_archive), intent(inout) :: archive
-      type(error_type), allocatable :: error
-      call exchange3(self, run, archive, .true., error)
-   end subroutine drive_save_state
-
-   !> Load a state saved by save_state into a run prepared from the same case,
-   !> ready for advance. Errors (stat_input) when the archive fails or holds a
-   !> state this run cannot have.
-   subroutine drive_load_state(self, run, archive, error)
-      !> 3-D run, prepared.
-      class(rod3d_drive), intent(inout) :: self
-      !> The planar run it shares its records with (prepared).
-      type(rod_run), intent(inout) :: run
-      !> Where the state comes from.
-      class(state_archive), intent(inout) :: archive
-      !> Error.
-      type(error_type), allocatable, intent(out) :: error
-      integer :: p
-      call exchange3(self, run, archive, .false., error)
-      if (allocated(error)) return
-      if (.not. archive%ok) then
-         call fatal_error(error, archive%message, stat_input)
-         return
-      end if
-      call set_time(self, run%t)
-      do p = 1, size(self%pieces)
-         self%pieces(p)%run%work%usable = .false.
-      end do
-      call system_clock(run%clock%start, run%clock%rate)
-      run%clock%last_report = 0
-      run%clock%last_checkpoint = 0
-      run%clock%records_at_checkpoint = run%history%n
-   end subroutine drive_load_state
-
-   !> The state of a 3-D run, listed once for saving (saving = .true.) and
-   !> loading. Besides what the planar run keeps of the step loop and the
-   !> records (rod_run's exchange_progress, exchange_records: the step
-   !> control, the next snapshot, the wall time, every history record with
-   !> its y components, the summary's counters), it is:
-   !>  - time and step size asked for (run/t, run/dt);
-   !>  - the break (whether it happened; the forces, x, y, z, its new ends
-   !>    start from, and inside the cable their couples, couple axes and
-   !>    torques) and so the pieces;
-   !>  - per piece (rod3d/ for the first, rod3d/2/ for the second): its
-   !>    nodes, the unknowns (positions and twist angles, 4 per node) and
-   !>    velocities at the current time, the ledger's accumulators (stored
-   !>    energy at the start, work of the ends and of the loads, dissipation)
-   !>    and the Newton iterations so far.
-   !> Not saved: the previous time level (x_prev, v_prev: set before every
-   !> attempt), the forces of the supports on the end nodes (accept sets
-   !> them before the history and the break read them), the pieces' work
-   !> arrays (prepare_step and the residual set them), Newton's workspace (a
-   !> 3-D step keeps no factorisation: accept and reject leave it unusable),
-   !> and what prepare computes from the case (the grid, the 3-D static
-   !> state, the ends and loads).
-   subroutine exchange3(self, rod, a, saving, error)
-      type(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: rod
-      class(state_archive), intent(inout) :: a
-      logical, intent(in) :: saving
-      type(error_type), allocatable, intent(out) :: error
-      integer :: n, iterations(1), n_pieces, p, expected
-      real(dp) :: ledger(4)
-      character(:), allocatable :: prefix
-      call sync_real(a, 'run/t', rod%t, saving)
-      call sync_real(a, 'run/dt', rod%dt, saving)
-      call sync_logical(a, 'run/broken', self%broken, saving)
-      call sync_matrix(a, 'rod3d/cut_force', self%cut_force, saving)
-      if (rod%break_node > 0) then
-         call sync_reals(a, 'rod3d/cut_couple', self%cut_couple, saving)
-         call sync_matrix(a, 'rod3d/cut_axis', self%cut_axis, saving)
-         call sync_reals(a, 'rod3d/cut_torque', self%cut_torque, saving)
-      end if
-      call exchange_progress(rod, a, saving)
-      n_pieces = size(self%pieces)
-      call sync_int(a, 'rod3d/pieces', n_pieces, saving)
-      if (.not. saving) then
-         if (.not. a%ok) return
-         if (self%broken .and. .not. rod%scene%breaks) then
-            call fatal_error(error, 'the checkpoint holds a broken cable, the case has no break', stat_input)
-            return
-         end if
-         expected = merge(2, 1, self%broken .and. rod%break_node > 0)
-         if (n_pieces /= expected) then
-            call fatal_error(error, 'the checkpoint holds '//str(n_pieces)//' pieces of cable, this case '// &
-                             str(expected)//' at that stage', stat_input)
-            return
-         end if
-         rod%broken = self%broken
-         if (self%broken) call release(self, rod, error)
-         if (allocated(error)) return
-      end if
-      do p = 1, n_pieces
-         prefix = 'rod3d/'
-         if (p > 1) prefix = 'rod3d/'//str(p)//'/'
-         associate (run => self%pieces(p)%run)
-            n = run%problem%piece%n
-            call sync_int(a, prefix//'nodes', n, saving)
-            if (.not. saving) then
-               if (.not. a%ok) return
-               if (n /= run%problem%piece%n) then
-                  call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in piece '//str(p)// &
-                                   ', this case '//str(run%problem%piece%n), stat_input)
-                  return
-               end if
-            end if
-            call sync_reals(a, prefix//'x', run%x, saving)
-            call sync_matrix(a, prefix//'v', run%v, saving)
-            ledger = [run%energy0, run%end_work, run%load_work, run%dissipated]
-            call sync_reals(a, prefix//'ledger', ledger, saving)
-            iterations = run%iterations
-            call sync_ints(a, prefix//'newton_iterations', iterations, saving)
-            if (.not. saving) then
-               ! The cut piece's anchored twist angle: its first node's, pinned there since the cut.
-               if (n_pieces == 2) run%problem%piece%psi_anchor = run%x(3*n + 1)
-               run%energy0 = ledger(1)
-               run%end_work = ledger(2)
-               run%load_work = ledger(3)
-               run%dissipated = ledger(4)
-               run%iterations = iterations(1)
-            end if
-         end associate
-      end do
-      call exchange_records(rod, a, saving, error, with_y=.true.)
-   end subroutine exchange3
-
    !> The step control's range check of an attempt on piece p (the planar
    !> run's check_state in 3-D form): finite unknowns, no cell squeezed below
    !> 5 % of its length, no turning angle through half a turn within the step of h.
@@ -571,76 +479,6 @@ contains
       end_tension = max(end_value(cells(1:m), 1), piece%cell_tension(merge(1, piece%n - 1, side == 1), -0.99_dp))
    end function end_tension
 
-   !> The break. At a held end: the end lets go with the support's force.
-   !> Inside the cable: the new ends start from the forces of the cells at
-   !> the break node on either side (with half the weight of each one's
-   !> cell, as the planar run), the node's bending couple about its axis and
-   !> the twist moment; the node's bending energy leaves with the cut, booked
-   !> as work of the ends. All are ramped to zero over t_break.
-   subroutine split(self, rod, error)
-      type(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: rod
-      !> Error when a piece cannot be set up.
-      type(error_type), allocatable, intent(out) :: error
-      real(dp), allocatable :: res(:)
-      real(dp) :: axis(3), tau(rod%options%nodes - 1)
-      type(band_matrix) :: unused
-      integer :: kb, p
-      self%broken = .true.
-      rod%broken = .true.
-      if (rod%break_node == 0) then
-         self%cut_force(:, 1) = self%pieces(1)%reaction(:, merge(2, 1, rod%scene%break_at_b))
-         call release(self, rod, error)
-         return
-      end if
-      kb = rod%break_node
-      associate (run => self%pieces(1)%run, piece => self%pieces(1)%run%problem%piece)
-         allocate (res(size(run%x)))
-         call piece%static_system(run%x, rod%t, res, unused, .false.)
-         self%cut_force(:, 1) = piece%force(:, kb - 1) + [0.0_dp, 0.0_dp, 0.5_dp*cell_weight(piece, kb - 1)*piece%ds(kb - 1)]
-         self%cut_force(:, 2) = -piece%force(:, kb) + [0.0_dp, 0.0_dp, 0.5_dp*cell_weight(piece, kb)*piece%ds(kb)]
-         ! The couple about the normal of the node's cells (none on a straight node: axis -y).
-         axis = cross3(piece%e1(:, kb - 1), piece%e1(:, kb))
-         if (norm2(axis) > 0) then
-            axis = axis/norm2(axis)
-            self%cut_couple(1) = bend_moment3(piece, kb, piece%th1(kb))
-         else
-            axis = [0.0_dp, -1.0_dp, 0.0_dp]
-            self%cut_couple(1) = 0
-         end if
-         self%cut_couple(2) = -self%cut_couple(1)
-         self%cut_axis(:, 1) = axis
-         self%cut_axis(:, 2) = axis
-         tau = piece%twist_rates(run%x)
-         self%cut_torque = [piece%gip_at(kb - 1)*tau(kb - 1), piece%gip_at(kb)*tau(kb)]
-         run%end_work = run%end_work - bend_energy3(piece, kb, piece%th1(kb))
-      end associate
-      call release(self, rod, error)
-      if (allocated(error)) return
-      ! Distributed loads: each new end node keeps its own cell's share (the pieces' loads at rest).
-      if (.not. allocated(self%pieces(1)%run%problem%piece%loads)) return
-      do p = 1, 2
-         associate (run => self%pieces(p)%run, piece => self%pieces(p)%run%problem%piece)
-            res = run%x
-            call piece%static_system(run%x, rod%t, res, unused, .false.)
-            self%cut_force(:, p) = self%cut_force(:, p) - piece%load_node(:, merge(piece%n, 1, p == 1))
-         end associate
-      end do
-      call set_cut_force(self%pieces(1)%run%problem%piece%end_b, self%cut_force(:, 1))
-      call set_cut_force(self%pieces(2)%run%problem%piece%end_a, self%cut_force(:, 2))
-   end subroutine split
-
-   !> Weight per length of cell c, N/m (a line of segments: its section's).
-   pure real(dp) function cell_weight(piece, c)
-      type(rod3d_piece), intent(in) :: piece
-      integer, intent(in) :: c
-      if (allocated(piece%sections)) then
-         cell_weight = piece%sections(piece%cell_sec(c))%weight
-      else
-         cell_weight = piece%weight
-      end if
-   end function cell_weight
-
    !> A 3-D piece on a line of segments: its sections from the scene's (rod3d_piece
    !> set_sections), those with cells on the piece (its nodes' arc lengths s), as the planar
    !> run's piece_sections (model/rod_statics.f90). Nothing for a scene of one segment.
@@ -674,111 +512,8 @@ contains
       if (allocated(scene%points)) call piece%set_points(scene%points)
    end subroutine piece_sections3
 
-   !> The starting force of a cut end (a force_end) set to f (x, y, z).
-   subroutine set_cut_force(end, f)
-      class(end_condition), intent(inout) :: end
-      real(dp), intent(in) :: f(3)
-      select type (end)
-      type is (force_end)
-         end%force0 = f([1, 3])
-         end%force0_y = f(2)
-      end select
-   end subroutine set_cut_force
-
-   !> The pieces after the break, with new ends that start from cut_force,
-   !> cut_couple, cut_axis and cut_torque, ramped to zero over t_break: the
-   !> released end replaced; or the piece cut in two at
-   !> the break node, each new piece taking the positions, twist angles,
-   !> velocities, output columns, history slots and reactions of its nodes,
-   !> the first the ledger so far. Also rebuilds the pieces of a broken run
-   !> loaded from a checkpoint.
-   subroutine release(self, rod, error)
-      type(rod3d_drive), intent(inout) :: self
-      type(rod_run), intent(inout) :: rod
-      !> Error when a piece cannot be set up.
-      type(error_type), allocatable, intent(out) :: error
-      type(force_end) :: cut, cut_b
-      type(piece3), allocatable :: old(:)
-      real(dp) :: f(3)
-      integer :: n, kb, p, first(2), last(2)
-      f = self%cut_force(:, 1)
-      cut = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
-                      force0=[f(1), f(3)], force0_y=f(2))
-      if (rod%break_node == 0) then
-         associate (piece => self%pieces(1)%run%problem%piece)
-            if (rod%scene%break_at_b) then
-               cut%label = 'end_b'
-               deallocate (piece%end_b)
-               allocate (piece%end_b, source=cut)
-            else
-               cut%label = 'end_a'
-               deallocate (piece%end_a)
-               allocate (piece%end_a, source=cut)
-            end if
-         end associate
-         self%pieces(1)%run%work%usable = .false.
-         return
-      end if
-      cut%label = 'break_a'
-      cut%couple0 = self%cut_couple(1)
-      cut%axis = self%cut_axis(:, 1)
-      cut%torque0 = self%cut_torque(1)
-      f = self%cut_force(:, 2)
-      cut_b = force_end(kind_name='break', history='ramp', t0=rod%scene%break_time, duration=rod%scene%t_break, &
-                        force0=[f(1), f(3)], force0_y=f(2), couple0=self%cut_couple(2), torque0=self%cut_torque(2))
-      cut_b%axis = self%cut_axis(:, 2)
-      cut_b%label = 'break_b'
-      kb = rod%break_node
-      n = rod%options%nodes
-      first = [1, kb]
-      last = [kb, n]
-      call move_alloc(self%pieces, old)
-      allocate (self%pieces(2))
-      associate (whole => old(1)%run%problem%piece, x => old(1)%run%x)
-         do p = 1, 2
-            associate (run => self%pieces(p)%run, piece => self%pieces(p)%run%problem%piece)
-               if (p == 1) then
-                  call piece%init(rod%s(1:kb), whole%mass_per_length, whole%weight, whole%ei, whole%gip, whole%gravity, &
-                                  whole%mu, whole%law, whole%end_a, cut, whole%tension_ref, error, whole%mu2, &
-                                  whole%damping)
-               else
-                  call piece%init(rod%s(kb:n), whole%mass_per_length, whole%weight, whole%ei, whole%gip, whole%gravity, &
-                                  whole%mu, whole%law, cut_b, whole%end_b, whole%tension_ref, error, whole%mu2, &
-                                  whole%damping)
-               end if
-               if (allocated(error)) return
-               ! A line of segments: each piece its sections (the laws of the whole).
-               call piece_sections3(piece, rod%scene)
-               if (allocated(whole%loads)) piece%loads = whole%loads
-               piece%load_factor = whole%load_factor
-               call run%init(old(1)%run%options%tolerance)
-               run%options = old(1)%run%options
-               run%x = [x(3*first(p) - 2:3*last(p)), x(3*n + first(p):3*n + last(p))]
-               ! A piece no end of which holds the twist keeps its first node's angle (no rigid spin).
-               piece%psi_anchor = x(3*n + first(p))
-               run%v = old(1)%run%v(:, first(p):last(p))
-               run%t = old(1)%run%t
-            end associate
-         end do
-      end associate
-      ! The ledger so far goes on with the first piece.
-      associate (run => self%pieces(1)%run, before => old(1)%run)
-         run%energy0 = before%energy0
-         run%end_work = before%end_work
-         run%load_work = before%load_work
-         run%dissipated = before%dissipated
-         run%iterations = before%iterations
-      end associate
-      self%pieces(1)%column = old(1)%column(1:kb)
-      self%pieces(1)%end_slot = [1, 3]
-      self%pieces(1)%reaction(:, 1) = old(1)%reaction(:, 1)
-      self%pieces(2)%column = [kb + 1, old(1)%column(kb + 1:n)]
-      self%pieces(2)%end_slot = [4, 2]
-      self%pieces(2)%reaction(:, 2) = old(1)%reaction(:, 2)
-   end subroutine release
-
-   !> Fields at ts inside the step (t0, t0 + h): the driver's cubic Hermite in the positions
-   !> and velocities of its two levels (hermite_levels), the twist angles linear.
+   !> Fields at ts inside the step (t0, t0 + h): cubic Hermite in the positions
+   !> and velocities of its two levels, the twist angles linear.
    subroutine interpolated(self, rod, t0, h, ts, fields, extra)
       type(rod3d_drive), intent(inout) :: self
       type(rod_run), intent(in) :: rod

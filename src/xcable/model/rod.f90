@@ -42,16 +42,22 @@
 !> after node; the momentum balance of node k involves nodes k-2 .. k+2, so
 !> the Jacobian has kl = ku = 5. A held end's rows are R = X(t).
 !>
-!> This file holds the piece's types and the statics and time step with their helpers (the hot
-!> path, kept in one compilation unit: gfortran inlines and specialises only a unit's private
-!> procedures; the piece-free kernels are in model/rod_kernels.f90). The submodules in model/rod/
-!> hold the cold parts: init.f90 (the set-up) and records.f90 (the reaction, the cell fields).
+!> This file holds the piece's types, its geometry, memo and energies, and the time step with
+!> its helpers: the hot path, whose small helpers gfortran 12 inlines and specialises only as
+!> private procedures of this unit (a submodule's procedures and public ones are global symbols,
+!> which fpm's -fPIC keeps whole; docs/dev/model-interface.md). The piece-free kernels are
+!> modules: model/rod_kernels.f90 (cells, node rows, the band Jacobian) and model/rod/bending.f90
+!> (the bending energy and its divided differences, its helpers private there). The submodules
+!> in model/rod/ hold the parts called once per evaluation or colder: assembly.f90 (the node
+!> rows), equilibrium.f90 (the static system), loads.f90 (distributed loads), window.f90 (a step
+!> on a window of nodes), accepted.f90 (the accepted state of a step), checks.f90 (Newton's
+!> trust in its estimate), init.f90 (the set-up) and records.f90 (the reaction, the cell fields).
 module xcable_model_rod
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, fatal_error, stat_numerics
    use xcable_core_strings, only: str
    use xcable_material_law, only: material_law
-   use xcable_material_tension_only, only: slack_cell_force, damped_tension, may_cross_kink
+   use xcable_material_tension_only, only: slack_cell_force, damped_tension
    use xcable_numerics_atan2, only: fast_atan2, fast_atan2_array
    use xcable_numerics_tan, only: fast_tan, fast_tan_array
    use xcable_solver_banded, only: band_matrix
@@ -62,6 +68,7 @@ module xcable_model_rod
    use xcable_model_rod_kernels, only: perp, cross2, outer, identity2, geometry_of, turning_angles, &
                                        cell_rotations_of, geometry_cells, add_jacobian, cell_terms, &
                                        moment_gradient_of, node_residuals, small_strain_step, small_rotation
+   use xcable_model_rod_bending, only: bending_energy, bending_moment, bending_stiffness, bend_arguments, bend_divided_array
    implicit none
    private
    public :: rod_piece, rod_section, rod_problem, rod_kl, rod_ku, perp, cross2, rod_unknown_names, rod_nodal
@@ -72,8 +79,10 @@ module xcable_model_rod
    ! into it (public, they cost 0.9e6 instructions on fast_180kN).
    public :: cell_terms, add_jacobian, bend_nodes, small_rotation, small_strain_step
    public :: collapsed_length
-   ! For the submodules in model/rod/ (see the wrappers at the end).
-   public :: rod_node_weight, rod_old_energies
+   ! For the submodules in model/rod/: the wrappers at the end, and helpers that are calls here
+   ! too (not inlined into the step: public costs them nothing).
+   public :: rod_node_weight, rod_old_energies, geometry_flat, cell_couple, windowed, point3, bend_stiffness
+   public :: section_cell_terms, copy_values, copy_geometry
 
    !> A cell shorter than this fraction of its unstretched length has collapsed: the step
    !> control rejects such a state (driver/rod_run/step.f90 check_range), the statics refuse it.
@@ -317,6 +326,100 @@ module xcable_model_rod
          !> Moment per node, dB/dtheta, N m (0 at the ends).
          real(dp), intent(out) :: moment_node(:)
       end subroutine rod_cell_fields
+      !> Residual (and Jacobian) of the static equilibrium at time t: for a loaded
+      !> node, [-(N_k - N_k-1) + w_k e_z - F_k(t)] / T_ref with N_c the exact
+      !> gradient of U per cell; for a held node (R_k - X(t)) / ds_ref. (model/rod/equilibrium.f90)
+      module subroutine rod_static_system(self, x, t, residual, jacobian, with_jacobian)
+         !> Piece.
+         class(rod_piece), intent(inout) :: self
+         !> Positions, 2 per node.
+         real(dp), intent(in) :: x(:)
+         !> Time of the loads and held positions, s.
+         real(dp), intent(in) :: t
+         !> Scaled residual.
+         real(dp), intent(out) :: residual(:)
+         !> Jacobian (band storage).
+         type(band_matrix), intent(inout) :: jacobian
+         !> Whether to form the Jacobian.
+         logical, intent(in) :: with_jacobian
+      end subroutine rod_static_system
+
+      !> Node residuals and the Jacobian from the cell forces and blocks (statics:
+      !> t1 is the time; dynamics: t1 = t0, t2 = dt). (model/rod/assembly.f90)
+      module subroutine assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
+         class(rod_piece), intent(inout) :: self
+         real(dp), intent(in) :: x(:)
+         real(dp), intent(in) :: t1, t2
+         real(dp), intent(out) :: residual(:)
+         type(band_matrix), intent(inout) :: jacobian
+         logical, intent(in) :: with_jacobian, dynamic
+         real(dp), intent(in), optional :: theta
+      end subroutine assemble
+
+      !> assemble (dynamic) on the rows and columns of the nodes lo .. hi, from the cell
+      !> forces and blocks step_window computed. (model/rod/assembly.f90)
+      module subroutine assemble_window(self, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
+         type(rod_piece), intent(inout) :: self
+         integer, intent(in) :: lo, hi
+         real(dp), intent(in) :: t0, dt, theta
+         real(dp), intent(out) :: residual(:)
+         type(band_matrix), intent(inout) :: jacobian
+         logical, intent(in) :: with_jacobian
+      end subroutine assemble_window
+
+      !> The distributed loads at the positions x: load_node and, when asked, load_block.
+      !> (model/rod/loads.f90)
+      module subroutine apply_loads(self, x, dt, theta, with_jacobian)
+         class(rod_piece), intent(inout) :: self
+         real(dp), intent(in) :: x(:)
+         real(dp), intent(in) :: dt, theta
+         logical, intent(in) :: with_jacobian
+      end subroutine apply_loads
+
+      !> Newton's contraction estimate after the update from the last evaluated point: trusted
+      !> unless it may have carried a cell past the kink of the law. (model/rod/checks.f90)
+      module function rod_problem_estimate_trusted(self, update, tolerance) result(trusted)
+         !> Problem.
+         class(rod_problem), intent(in) :: self
+         !> The update, 2 per node of the window (all nodes when there is none), m.
+         real(dp), intent(in) :: update(:)
+         !> Tolerance on the scaled update (scale: length_ref).
+         real(dp), intent(in) :: tolerance
+         logical :: trusted
+      end function rod_problem_estimate_trusted
+
+      !> Whether the law of any cell has a kink (strain_slack: a rope that cannot push).
+      !> (model/rod/checks.f90)
+      module pure function rod_has_kink(self) result(kink)
+         !> Piece.
+         class(rod_piece), intent(in) :: self
+         logical :: kink
+      end function rod_has_kink
+      !> rod_step_system on the window of nodes lo .. hi (2 < hi - lo + 1 < n; no distributed
+      !> loads); the other nodes stay at the old level (rod_freeze_level). (model/rod/window.f90)
+      module subroutine step_window(self, x, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
+         type(rod_piece), intent(inout) :: self
+         real(dp), intent(in) :: x(:)
+         integer, intent(in) :: lo, hi
+         real(dp), intent(in) :: t0, dt, theta
+         real(dp), intent(out) :: residual(:)
+         type(band_matrix), intent(inout) :: jacobian
+         logical, intent(in) :: with_jacobian
+      end subroutine step_window
+
+      !> The evaluation of a step at its converged positions x (the window's unknowns when the
+      !> problem has a window), in place of the full residual. (model/rod/accepted.f90)
+      module subroutine rod_problem_accepted_state(self, x)
+         !> Problem (a step: dt > 0).
+         class(rod_problem), intent(inout) :: self
+         !> Positions, 2 per node of the window (all nodes when there is none).
+         real(dp), intent(in) :: x(:)
+      end subroutine rod_problem_accepted_state
+      !> Before a step on a window: the new level's geometry and the memo of the last evaluation
+      !> are set to the old level's (what the nodes outside the window keep). (model/rod/window.f90)
+      module subroutine rod_freeze_level(self)
+         class(rod_piece), intent(inout) :: self
+      end subroutine rod_freeze_level
    end interface
 
 contains
@@ -343,67 +446,11 @@ contains
       end if
    end subroutine rod_problem_evaluate
 
-   !> Newton's contraction estimate (newton_problem) after the update from the last evaluated
-   !> point: trusted unless it may have carried a cell past the kink of the law by more than
-   !> the tolerance (may_cross_kink) (the cells
-   !> whose strains the evaluation computed from the unknowns: a window's lo - 1 .. hi).
-   logical function rod_problem_estimate_trusted(self, update, tolerance) result(trusted)
-      !> Problem.
-      class(rod_problem), intent(in) :: self
-      !> The update, 2 per node of the window (all nodes when there is none), m.
-      real(dp), intent(in) :: update(:)
-      !> Tolerance on the scaled update (scale: length_ref).
-      real(dp), intent(in) :: tolerance
-      real(dp) :: du(rod_nodal, self%piece%n)
-      integer :: lo, hi, ca, cb
-      integer :: j, a, b
-      trusted = .true.
-      if (.not. self%piece%has_kink()) return
-      lo = 1
-      hi = self%piece%n
-      if (windowed(self)) then
-         lo = self%lo
-         hi = self%hi
-      end if
-      ca = max(1, lo - 1)
-      cb = min(self%piece%n - 1, hi)
-      du(:, ca:cb + 1) = 0
-      du(:, lo:hi) = reshape(update, [rod_nodal, hi - lo + 1])
-      if (.not. allocated(self%piece%sections)) then
-         trusted = .not. may_cross_kink(self%piece%law%strain_slack, self%piece%l1(ca:cb), self%piece%ds(ca:cb), &
-                                        du(:, ca:cb + 1), tolerance*self%piece%length_ref)
-         return
-      end if
-      do j = 1, size(self%piece%sections)
-         a = max(ca, self%piece%sections(j)%first)
-         b = min(cb, self%piece%sections(j)%last)
-         if (a > b) cycle
-         if (.not. self%piece%sections(j)%law%strain_slack > -huge(1.0_dp)) cycle
-         if (may_cross_kink(self%piece%sections(j)%law%strain_slack, self%piece%l1(a:b), self%piece%ds(a:b), &
-                            du(:, a:b + 1), tolerance*self%piece%length_ref)) trusted = .false.
-      end do
-   end function rod_problem_estimate_trusted
-
    !> Whether the problem is a step on a window of the piece's nodes (lo .. hi, not all of them).
    pure logical function windowed(self)
       class(rod_problem), intent(in) :: self
       windowed = self%dt > 0 .and. self%hi > 0 .and. (self%lo > 1 .or. self%hi < self%piece%n)
    end function windowed
-
-   !> The evaluation of a step at its converged positions x (the window's unknowns when the
-   !> problem has a window, as for evaluate), in place of the full residual Newton would
-   !> evaluate there (newton_options%final_residual): step_state.
-   subroutine rod_problem_accepted_state(self, x)
-      !> Problem (a step: dt > 0).
-      class(rod_problem), intent(inout) :: self
-      !> Positions, 2 per node of the window (all nodes when there is none).
-      real(dp), intent(in) :: x(:)
-      if (windowed(self)) then
-         call step_state(self%piece, x, self%lo, self%hi, self%t0, self%dt, self%theta)
-      else
-         call step_state(self%piece, x, 1, self%piece%n, self%t0, self%dt, self%theta)
-      end if
-   end subroutine rod_problem_accepted_state
 
    !> Number of unknowns (two per node).
    pure integer function rod_unknowns(self)
@@ -552,57 +599,6 @@ contains
       end do
    end function kinetic_energy
 
-   !> Residual (and Jacobian) of the static equilibrium at time t: for a loaded
-   !> node, [-(N_k - N_k-1) + w_k e_z - F_k(t)] / T_ref with N_c the exact
-   !> gradient of U per cell; for a held node (R_k - X(t)) / ds_ref.
-   subroutine rod_static_system(self, x, t, residual, jacobian, with_jacobian)
-      !> Piece.
-      class(rod_piece), intent(inout) :: self
-      !> Positions, 2 per node.
-      real(dp), intent(in) :: x(:)
-      !> Time of the loads and held positions, s.
-      real(dp), intent(in) :: t
-      !> Scaled residual.
-      real(dp), intent(out) :: residual(:)
-      !> Jacobian (band storage).
-      type(band_matrix), intent(inout) :: jacobian
-      !> Whether to form the Jacobian.
-      logical, intent(in) :: with_jacobian
-      integer :: c, n, k
-      real(dp) :: f, fp, t_c(2), pvec(2), moment_diff, couple, stiff(2, 2), dp_de(2, 2)
-      real(dp) :: dmom(2, -1:1), jm(2, 2)
-      n = self%n
-      call geometry_flat(self, x, self%e1, self%l1, self%th1)
-      jm = reshape([0.0_dp, 1.0_dp, -1.0_dp, 0.0_dp], [2, 2])
-      do k = 2, n - 1
-         self%mom(k) = bend_moment(self, k, self%th1(k))
-         self%dmom(k) = bend_stiffness(self, k, self%th1(k))
-      end do
-      do c = 1, n - 1
-         associate (e => self%e1(:, c), l => self%l1(c))
-            if (allocated(self%sections)) then
-               call self%sections(self%cell_sec(c))%law%tension_stiffness(l - 1, f, fp)
-            else
-               call self%law%tension_stiffness(l - 1, f, fp)
-            end if
-            t_c = e/l
-            pvec = perp(e)/l**2
-            couple = cell_couple(self, c, t, t)
-            moment_diff = self%mom(c) - self%mom(c + 1) - couple
-            self%force(:, c) = f*t_c + moment_diff/self%ds(c)*pvec
-            if (.not. with_jacobian) cycle
-            stiff = fp*outer(t_c, t_c) + f/l*(identity2() - outer(t_c, t_c))
-            dp_de = (jm - 2*outer(matmul(jm, e), e)/l**2)/l**2
-            dmom = moment_difference_gradient(self, c)
-            self%block(:, :, 0, c) = stiff + moment_diff/self%ds(c)*dp_de + outer(pvec, dmom(:, 0))/self%ds(c)
-            self%block(:, :, -1, c) = outer(pvec, dmom(:, -1))/self%ds(c)
-            self%block(:, :, 1, c) = outer(pvec, dmom(:, 1))/self%ds(c)
-         end associate
-      end do
-      call apply_loads(self, x, 0.0_dp, 0.5_dp, with_jacobian)
-      call assemble(self, x, t, t, residual, jacobian, with_jacobian, dynamic=.false.)
-   end subroutine rod_static_system
-
    !> Store the old level (positions and velocities) of a step.
    subroutine rod_prepare_step(self, r0, v0)
       !> Piece.
@@ -718,139 +714,6 @@ contains
       call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, dynamic=.true., theta=theta)
    end subroutine rod_step_system
 
-   !> Before a step solved on a window of nodes (rod_problem lo, hi): the new level's
-   !> geometry and the memo of the last evaluation are set to the old level's, which is
-   !> what the nodes outside the window keep (their new positions are their old ones, so
-   !> these are the values an evaluation would compute for them, the same bits); the
-   !> window's evaluations then overwrite their own part.
-   subroutine rod_freeze_level(self)
-      class(rod_piece), intent(inout) :: self
-      integer :: n
-      n = self%n
-      call copy_geometry(n, self%e0, self%l0, self%th0, self%e1, self%l1, self%th1)
-      call copy_values(2*n, self%r0, self%memo_x)
-      call copy_geometry(n, self%e0, self%l0, self%th0, self%memo_e, self%memo_l, self%memo_th)
-      call copy_values(n, self%b0, self%memo_b)
-      self%memo_b_ok = .true.
-      ! atan2(e0 x e0, e0 . e0) = 0: a cell that keeps its positions does not rotate.
-      self%memo_dphi = 0
-      self%memo_valid = .true.
-   end subroutine rod_freeze_level
-
-   !> rod_step_system on the window of nodes lo .. hi (2 < hi - lo + 1 < n; no distributed
-   !> loads): x holds the new positions of the window's nodes; the others stay at the
-   !> old level (rod_freeze_level). The residual rows and the unknowns (Jacobian
-   !> columns) are the window's; the cells and nodes whose terms enter them are computed
-   !> (cells lo - 2 .. hi + 1 for the geometry, nodes lo - 1 .. hi + 1 for the moments,
-   !> cells lo - 1 .. hi for the forces), and so are the end cells and end velocities a
-   !> reaction needs. The operations on each value are those of rod_step_system.
-   subroutine step_window(self, x, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
-      type(rod_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      integer, intent(in) :: lo, hi
-      real(dp), intent(in) :: t0, dt, theta
-      real(dp), intent(out) :: residual(:)
-      type(band_matrix), intent(inout) :: jacobian
-      logical, intent(in) :: with_jacobian
-      integer :: n, ga, gb, ca, cb
-      n = self%n
-      self%memo_x(2*lo - 1:2*hi) = x
-      ga = max(1, lo - 2)
-      gb = min(n - 1, hi + 1)
-      call geometry_cells(n, self%ds, self%memo_x, self%e1, self%l1, self%th1, ga, gb)
-      self%memo_e(:, ga:gb) = self%e1(:, ga:gb)
-      self%memo_l(ga:gb) = self%l1(ga:gb)
-      self%memo_th(ga + 1:gb) = self%th1(ga + 1:gb)
-      call bend_nodes(self, max(2, lo - 1), min(n - 1, hi + 1))
-      ca = max(1, lo - 1)
-      cb = min(n - 1, hi)
-      ! The end cells for the reactions (rod_reaction), when outside.
-      if (ca > 1) then
-         call bend_nodes(self, 2, 2)
-         call window_cells(1, 1)
-      end if
-      if (cb < n - 1) then
-         call bend_nodes(self, n - 1, n - 1)
-         call window_cells(n - 1, n - 1)
-      end if
-      call window_cells(ca, cb)
-      self%memo_valid = .true.
-      ! No loads on a window: load_node holds the zeros of init (apply_loads).
-      call assemble_window(self, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
-
-   contains
-
-      subroutine window_cells(c1, c2)
-         integer, intent(in) :: c1, c2
-         call section_cell_terms(self, t0, dt, with_jacobian, c1, c2)
-      end subroutine window_cells
-   end subroutine step_window
-
-   !> What a step's evaluation at its converged positions leaves that the accepted state
-   !> needs, computed by the same expressions as rod_step_system and step_window (so the
-   !> same bits), without the residual: the new level's geometry e1, l1, th1; the memo
-   !> (positions, geometry, the bending energy of every node whose turning angle is
-   !> evaluated, each cell's rotation dphi) for check_state, the next prepare_step and the
-   !> ledger; the forces of the two end cells, the end nodes' new velocities and the
-   !> distributed loads for rod_reaction and the ledger's work. The other cells' forces and
-   !> blocks, the other nodes' moments and velocities and the residual are not computed
-   !> (they stay those of the last evaluation). Window lo .. hi (1 .. n: the whole piece);
-   !> x holds the new positions of its nodes. On fast_180kN (241 nodes) it takes about
-   !> 101 000 instructions, the residual alone it replaces about 235 000 (docs/measurements/data/speed_rounds.md).
-   subroutine step_state(self, x, lo, hi, t0, dt, theta)
-      type(rod_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      integer, intent(in) :: lo, hi
-      real(dp), intent(in) :: t0, dt, theta
-      integer :: n, ga, gb, ca, cb, k, k1, k2, kk, a
-      n = self%n
-      if (lo == 1 .and. hi == n) then
-         call geometry_of(n, self%ds, x, self%e1, self%l1, self%th1)
-         call copy_values(2*n, x, self%memo_x)
-         call copy_geometry(n, self%e1, self%l1, self%th1, self%memo_e, self%memo_l, self%memo_th)
-         self%memo_b_ok = .false.
-         k1 = 2
-         k2 = n - 1
-         ca = 1
-         cb = n - 1
-      else
-         self%memo_x(2*lo - 1:2*hi) = x
-         ga = max(1, lo - 2)
-         gb = min(n - 1, hi + 1)
-         call geometry_cells(n, self%ds, self%memo_x, self%e1, self%l1, self%th1, ga, gb)
-         self%memo_e(:, ga:gb) = self%e1(:, ga:gb)
-         self%memo_l(ga:gb) = self%l1(ga:gb)
-         self%memo_th(ga + 1:gb) = self%th1(ga + 1:gb)
-         k1 = max(2, lo - 1)
-         k2 = min(n - 1, hi + 1)
-         ca = max(1, lo - 1)
-         cb = min(n - 1, hi)
-      end if
-      ! The bending terms of the evaluated nodes, as a step evaluation computes them: the
-      ! end cells' forces need the moments of nodes 2 and n - 1, the next step's old level
-      ! the bending energies. (bend_divided's B(th1), not B computed by a separate loop:
-      ! gfortran vectorises a plain loop over tan with glibc's libmvec, whose tan differs
-      ! from libm's in the last bits.)
-      call bend_nodes(self, k1, k2)
-      if (k1 > 2) call bend_nodes(self, 2, 2)
-      if (k2 < n - 1) call bend_nodes(self, n - 1, n - 1)
-      call section_cell_terms(self, t0, dt, .false., 1, 1)
-      if (n > 2) call section_cell_terms(self, t0, dt, .false., n - 1, n - 1)
-      ! Each cell's rotation, as cell_terms computes it.
-      call cell_rotations_of(n, self%e0, self%e1, self%memo_dphi, ca, cb)
-      self%memo_valid = .true.
-      ! (A window has no loads: load_node holds the zeros of init, apply_loads.)
-      if (lo == 1 .and. hi == n) call apply_loads(self, x, dt, theta, .false.)
-      ! The new velocities a reaction needs (nodes 1 .. 3 and n - 2 .. n).
-      do k = 1, n
-         if (k > 3 .and. k < n - 2) cycle
-         do a = 1, 2
-            kk = 2*k - 2 + a
-            self%v1(a, k) = ((self%memo_x(kk) - self%r0(a, k))/dt - (1 - theta)*self%v0(a, k))/theta
-         end do
-      end do
-   end subroutine step_state
-
    !> The bending terms of a step (bend_divided) at the nodes k1 .. k2: the moment, its
    !> derivative and, where computed, the new bending energy (memo).
    subroutine bend_nodes(self, k1, k2)
@@ -951,206 +814,6 @@ contains
       end if
    end function rod_cell_tension
 
-   !> Whether the law of any cell has a kink (strain_slack: a rope that cannot push).
-   pure logical function rod_has_kink(self) result(kink)
-      !> Piece.
-      class(rod_piece), intent(in) :: self
-      integer :: j
-      kink = self%law%strain_slack > -huge(1.0_dp)
-      if (.not. allocated(self%sections)) return
-      do j = 1, size(self%sections)
-         if (self%sections(j)%law%strain_slack > -huge(1.0_dp)) kink = .true.
-      end do
-   end function rod_has_kink
-
-   !> assemble (dynamic) on the rows and columns of the nodes lo .. hi, from the cell
-   !> forces and blocks step_window computed; the positions of all nodes in memo_x.
-   !> Each residual entry gets its terms in assemble's order.
-   subroutine assemble_window(self, lo, hi, t0, dt, theta, residual, jacobian, with_jacobian)
-      type(rod_piece), intent(inout) :: self
-      integer, intent(in) :: lo, hi
-      real(dp), intent(in) :: t0, dt, theta
-      real(dp), intent(out) :: residual(:)
-      type(band_matrix), intent(inout) :: jacobian
-      logical, intent(in) :: with_jacobian
-      integer :: n, off, va, vb
-      real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new, jac_a(2, 2), jac_b(2, 2)
-      logical :: held_a, held_b, state_a, state_b
-      n = self%n
-      scale = 1/self%tension_ref
-      held_a = self%end_a%held()
-      held_b = self%end_b%held()
-      t_new = t0 + dt
-      off = 2*(lo - 1)
-      ! New velocities where the rows (and the reactions at the ends) need them.
-      va = max(1, lo - 2)
-      vb = min(n, hi + 2)
-      call window_velocities(va, vb)
-      if (va > 1) call window_velocities(1, min(3, n))
-      if (vb < n) call window_velocities(max(1, n - 2), n)
-      ! The rows of the nodes lo .. hi: node_residuals, as assemble's (explicit shapes: the
-      ! same operations in the same order as the loop over self's components it replaces,
-      ! 0.6375e9 -> 0.6359e9 instructions on fast_180kN, callgrind).
-      fext_a = 0
-      fext_b = 0
-      if (lo == 1) fext_a = 0.5_dp*(self%end_a%applied_force(t0) + self%end_a%applied_force(t_new))
-      if (hi == n) fext_b = 0.5_dp*(self%end_b%applied_force(t0) + self%end_b%applied_force(t_new))
-      state_a = lo == 1 .and. self%end_a%state_dependent()
-      state_b = hi == n .and. self%end_b%state_dependent()
-      if (state_a) call add_end_state(self%end_a, .true., t0, dt, self%r0(:, 1), self%memo_x(1:2), fext_a, jac_a)
-      if (state_b) call add_end_state(self%end_b, .true., t0, dt, self%r0(:, n), self%memo_x(2*n - 1:2*n), fext_b, &
-                                      jac_b)
-      if (allocated(self%node_w)) then
-         ! The node weights as lumped lengths of a unit weight (1 * w_k: the same bits).
-         call node_residuals(n, lo, hi, self%force, node_weight(self, 1), node_weight(self, n), 1.0_dp, &
-                             self%node_w, self%load_node, fext_a, fext_b, .true., self%mass, self%v1, self%mv0, dt, &
-                             scale, residual)
-      else
-         call node_residuals(n, lo, hi, self%force, node_weight(self, 1), node_weight(self, n), self%weight, &
-                             self%lumped, self%load_node, fext_a, fext_b, .true., self%mass, self%v1, self%mv0, dt, &
-                             scale, residual)
-      end if
-      if (held_a .and. lo == 1) residual(1:2) = (self%memo_x(1:2) - self%end_a%position(t_new))/self%length_ref
-      if (held_b .and. hi == n) residual(2*(hi - lo) + 1:2*(hi - lo) + 2) = &
-         (self%memo_x(2*n - 1:2*n) - self%end_b%position(t_new))/self%length_ref
-      if (.not. with_jacobian) return
-      rate = 1/(theta*dt*dt)
-      call jacobian%clear()
-      call add_jacobian(n, lo, hi, jacobian%ldab, jacobian%kl + jacobian%ku + 1, jacobian%ab, self%block, self%ds, &
-                        self%mass, scale, rate, held_a, held_b, .true., self%block_scaled, self%mass_scaled)
-      if (state_a) call add_end_block(jacobian, 0, jac_a, scale)
-      if (state_b) call add_end_block(jacobian, 2*(hi - lo), jac_b, scale)
-      if (held_a .and. lo == 1) then
-         jacobian%ab(jacobian%kl + jacobian%ku + 1, 1:2) = 1/self%length_ref
-      end if
-      if (held_b .and. hi == n) then
-         jacobian%ab(jacobian%kl + jacobian%ku + 1, 2*(hi - lo) + 1:2*(hi - lo) + 2) = 1/self%length_ref
-      end if
-
-   contains
-
-      subroutine window_velocities(k1, k2)
-         integer, intent(in) :: k1, k2
-         integer :: kk, aa
-         do kk = k1, k2
-            do aa = 1, 2
-               self%v1(aa, kk) = ((self%memo_x(2*kk - 2 + aa) - self%r0(aa, kk))/dt - (1 - theta)*self%v0(aa, kk))/theta
-            end do
-         end do
-      end subroutine window_velocities
-   end subroutine assemble_window
-
-   !> d(M_c - M_c+1)/de_c' for c' = c-1, c, c+1 (columns -1:1), with the moments' derivatives
-   !> dmom with respect to the new turning angles (statics and steps alike): the turning
-   !> angle of node k changes by perp(e_c) . de_c / |e_c|^2 with its cell c = k - 1 or k.
-   pure function moment_difference_gradient(self, c) result(d)
-      class(rod_piece), intent(in) :: self
-      integer, intent(in) :: c
-      real(dp) :: d(2, -1:1)
-      d = moment_gradient_of(self%n, c, self%e1, self%l1, self%dmom)
-   end function moment_difference_gradient
-
-   !> The distributed loads at the positions x: each cell's force (the load per
-   !> unstretched length times ds) goes half to each of its nodes. In a step
-   !> (dt > 0) a cell's kinematics are centred on the step: stretch vector
-   !> (e^n + e^n+1) / 2, velocity (R^n+1 - R^n) / dt and acceleration
-   !> (V^n+1 - V^n) / dt, each the mean of its two nodes'; in statics, e of x at
-   !> rest. Fills load_node and, when asked, load_block.
-   subroutine apply_loads(self, x, dt, theta, with_jacobian)
-      class(rod_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(in) :: dt, theta
-      logical, intent(in) :: with_jacobian
-      call cell_loads(self, x, dt, theta, with_jacobian)
-      if (allocated(self%points)) call point_loads(self, x, dt)
-   end subroutine apply_loads
-
-   !> The drag of the bodies at nodes on load_node (which cell_loads cleared, or which holds the
-   !> zeros of init when there are no cell loads: cleared here), and its derivative (x, z) in
-   !> point_jac.
-   subroutine point_loads(self, x, dt)
-      class(rod_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(in) :: dt
-      integer :: i, k
-      real(dp) :: f(3), jac(3, 3), x1(3)
-      logical :: cleared
-      cleared = allocated(self%loads)
-      if (cleared) cleared = size(self%loads) > 0
-      if (.not. cleared) self%load_node = 0
-      do i = 1, size(self%points)
-         if (.not. self%points(i)%has_drag()) cycle
-         k = self%point_node(i)
-         x1 = [x(2*k - 1), 0.0_dp, x(2*k)]
-         if (dt > 0) then
-            call self%points(i)%drag(dt, [self%r0(1, k), 0.0_dp, self%r0(2, k)], x1, f, jac)
-         else
-            call self%points(i)%drag(dt, x1, x1, f, jac)
-         end if
-         self%load_node(:, k) = self%load_node(:, k) + self%load_factor*f([1, 3])
-         self%point_jac(:, :, i) = self%load_factor*jac([1, 3], [1, 3])
-      end do
-   end subroutine point_loads
-
-   !> The distributed loads along the cells (apply_loads).
-   subroutine cell_loads(self, x, dt, theta, with_jacobian)
-      class(rod_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(in) :: dt, theta
-      logical, intent(in) :: with_jacobian
-      integer :: c, i, n
-      real(dp) :: e(2), w(2), a(2), f(2), df_de(2, 2), df_dw(2, 2), df_da(2, 2), r1(2, 2), de_coef, kin(2, 2), &
-                  xm(2), dx_coef, df_dx(2, 2)
-      ! Without loads load_node stays the zeros init set: only this routine writes other
-      ! values, and a piece's loads are set once, before its first evaluation. (Clearing it
-      ! at every evaluation, a memset per node, took 0.8 % of fast_180kN's instructions.)
-      if (.not. allocated(self%loads)) return
-      if (size(self%loads) == 0) return
-      self%load_node = 0
-      n = self%n
-      self%load_block = 0
-      self%skewed = any_skew(self%loads)
-      if (self%skewed) self%skew_block = 0
-      do c = 1, n - 1
-         r1 = reshape(x(2*c - 1:2*c + 2), [2, 2])
-         call cell_kinematics(self%e0(:, c), self%e1(:, c), self%r0(:, c:c + 1), self%v0(:, c:c + 1), r1, dt, theta, &
-                              e, w, a, de_coef, xm, dx_coef)
-         do i = 1, size(self%loads)
-            if (.not. self%loads(i)%acts_on(self%s(c), self%s(c + 1))) cycle
-            call self%loads(i)%load%cell_force(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
-            f = self%load_factor*f
-            df_dx = self%load_factor*df_dx
-            df_de = self%load_factor*df_de
-            df_dw = self%load_factor*df_dw
-            df_da = self%load_factor*df_da
-            self%load_node(:, c) = self%load_node(:, c) + 0.5_dp*self%ds(c)*f
-            self%load_node(:, c + 1) = self%load_node(:, c + 1) + 0.5_dp*self%ds(c)*f
-            if (.not. with_jacobian) cycle
-            ! dF_c/dR_b = ds [df/dx dx/dR_b + df/de de/dR_b + df/dw dw/dR_b + df/da da/dR_b],
-            ! dx/dR_b = dx_coef, de/dR_b = +-de_coef / ds.
-            kin = self%ds(c)*dx_coef*df_dx
-            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
-            self%load_block(:, :, 0, c) = self%load_block(:, :, 0, c) - de_coef*df_de + kin
-            self%load_block(:, :, 1, c) = self%load_block(:, :, 1, c) + de_coef*df_de + kin
-         end do
-         ! The unequal shares: node c takes +ds g, node c + 1 -ds g.
-         if (.not. self%skewed) cycle
-         do i = 1, size(self%loads)
-            if (.not. self%loads(i)%load%has_skew()) cycle
-            if (.not. self%loads(i)%acts_on(self%s(c), self%s(c + 1))) cycle
-            call self%loads(i)%load%cell_skew(xm, self%ds(c), e, w, a, f, df_dx, df_de, df_dw, df_da)
-            f = self%load_factor*f
-            self%load_node(:, c) = self%load_node(:, c) + self%ds(c)*f
-            self%load_node(:, c + 1) = self%load_node(:, c + 1) - self%ds(c)*f
-            if (.not. with_jacobian) cycle
-            kin = self%ds(c)*dx_coef*df_dx
-            if (dt > 0) kin = kin + self%ds(c)*(df_dw/(2*dt) + df_da/(2*theta*dt*dt))
-            self%skew_block(:, :, 0, c) = self%skew_block(:, :, 0, c) + self%load_factor*(-de_coef*df_de + kin)
-            self%skew_block(:, :, 1, c) = self%skew_block(:, :, 1, c) + self%load_factor*(de_coef*df_de + kin)
-         end do
-      end do
-   end subroutine cell_loads
-
    !> Bending energy of interior node k at turning angle th: B = 2 EI tan^2(th / 2) / h_k,
    !> that is EI kappa^2 h_k / 2 with the discrete curvature kappa = 2 tan(th / 2) / h_k
    !> (the curvature of discrete elastic rods). It is EI th^2 / (2 h_k) to O(th^4) and grows
@@ -1161,16 +824,8 @@ contains
       integer, intent(in) :: k
       real(dp), intent(in) :: th
       bend_energy = 0
-      if (k >= 2 .and. k <= self%n - 1) bend_energy = bend_energy_of(node_ei(self, k), self%dual(k), fast_tan(0.5_dp*th))
+      if (k >= 2 .and. k <= self%n - 1) bend_energy = bending_energy(node_ei(self, k), self%dual(k), fast_tan(0.5_dp*th))
    end function bend_energy
-
-   !> bend_energy from t = tan(th / 2).
-   !> (Bending stiffness ei, N m^2, and dual length hk of the node, m: also bend_moment_of,
-   !> bend_stiffness_of, bend_taylor, bend_divided.)
-   elemental real(dp) function bend_energy_of(ei, hk, t)
-      real(dp), intent(in) :: ei, hk, t
-      bend_energy_of = 2*ei*t**2/hk
-   end function bend_energy_of
 
    !> The discrete curvature 2 tan(th / 2) / h_k of node k, 1/m (counter-clockwise positive).
    pure real(dp) function bend_curvature(self, k, th)
@@ -1185,133 +840,16 @@ contains
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_moment = bend_moment_of(node_ei(self, k), self%dual(k), fast_tan(0.5_dp*th))
+      bend_moment = bending_moment(node_ei(self, k), self%dual(k), fast_tan(0.5_dp*th))
    end function bend_moment
-
-   !> bend_moment from t = tan(th / 2).
-   elemental real(dp) function bend_moment_of(ei, hk, t)
-      real(dp), intent(in) :: ei, hk, t
-      bend_moment_of = 2*ei*t*(1 + t*t)/hk
-   end function bend_moment_of
 
    !> d2B/dth2 of node k, N m.
    pure real(dp) function bend_stiffness(self, k, th)
       class(rod_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_stiffness = bend_stiffness_of(node_ei(self, k), self%dual(k), fast_tan(0.5_dp*th))
+      bend_stiffness = bending_stiffness(node_ei(self, k), self%dual(k), fast_tan(0.5_dp*th))
    end function bend_stiffness
-
-   !> bend_stiffness from t = tan(th / 2).
-   elemental real(dp) function bend_stiffness_of(ei, hk, t)
-      real(dp), intent(in) :: ei, hk, t
-      bend_stiffness_of = ei*(1 + t*t)*(1 + 3*t*t)/hk
-   end function bend_stiffness_of
-
-   !> The discrete gradient of the bending energy of a node between the turning
-   !> angles th0 and th1, m = [B(th1) - B(th0)] / (th1 - th0), and dm / dth1
-   !> (Taylor forms when the two are close, bend_taylor).
-   pure subroutine bend_divided(ei, hk, th0, th1, b0, t, m, dm, b1, b1_ok)
-      real(dp), intent(in) :: ei, hk
-      !> Old and new turning angle, and the old one's bending energy B(th0).
-      real(dp), intent(in) :: th0, th1, b0
-      !> fast_tan(bend_argument(th0, th1)).
-      real(dp), intent(in) :: t
-      real(dp), intent(out) :: m, dm
-      !> B(th1) when it was computed (b1_ok).
-      real(dp), intent(out) :: b1
-      logical, intent(out) :: b1_ok
-      real(dp) :: h
-      h = th1 - th0
-      if (abs(h) < small_rotation) then
-         call bend_taylor(ei, hk, h, t, m, dm)
-         b1 = 0
-         b1_ok = .false.
-      else
-         ! One tan for B(th1) and its moment (the compiler called tan twice here).
-         b1 = bend_energy_of(ei, hk, t)
-         b1_ok = .true.
-         m = (b1 - b0)/h
-         dm = (bend_moment_of(ei, hk, t) - m)/h
-      end if
-   end subroutine bend_divided
-
-   !> bend_divided's Taylor forms (|h| < small_rotation, h = th1 - th0, t the tan of half
-   !> the mean turning angle): m = B' + B''' h^2 / 24 and dm = B'' / 2 + B''' h / 12.
-   elemental subroutine bend_taylor(ei, hk, h, t, m, dm)
-      real(dp), intent(in) :: ei, hk, h, t
-      real(dp), intent(out) :: m, dm
-      real(dp) :: third
-      ! d3B/dth3 = EI (1 + t^2) t (4 + 6 t^2) / h_k
-      third = ei*(1 + t*t)*t*(4 + 6*t*t)/hk
-      m = bend_moment_of(ei, hk, t) + third*h*h/24
-      dm = 0.5_dp*bend_stiffness_of(ei, hk, t) + third*h/12
-   end subroutine bend_taylor
-
-   !> bend_divided at n nodes, bit for bit: bend_taylor at every node in a loop without
-   !> branches (gfortran 12 packs it two nodes to an SSE2 operation, divisions included),
-   !> then, if some node is not that case (|th1 - th0| >= small_rotation, NaN),
-   !> bend_divided itself for each of those. test/suite_rod.f90 compares bend_nodes' results
-   !> with the per-node forms by their bits (bend_terms_in_pairs_same_bits).
-   pure subroutine bend_divided_array(n, ei, hk, th0, th1, b0, t, m, dm, b1, b1_ok)
-      !> Number of nodes.
-      integer, intent(in) :: n
-      !> Bending stiffness, N m^2.
-      real(dp), intent(in) :: ei
-      !> The nodes' dual lengths, old and new turning angles, old bending energies and tan
-      !> (fast_tan(bend_argument(th0, th1))).
-      real(dp), intent(in) :: hk(n), th0(n), th1(n), b0(n), t(n)
-      !> bend_divided's results at each node.
-      real(dp), intent(out) :: m(n), dm(n), b1(n)
-      logical, intent(out) :: b1_ok(n)
-      real(dp) :: h
-      integer :: i
-      integer(i8) :: others
-      ! others: the OR of the complemented bits of |h| - small_rotation, whose sign bit is
-      ! set if some |h| >= small_rotation or is NaN (as in fast_tan_array).
-      others = 0
-      !GCC$ unroll 1
-      do i = 1, n
-         h = th1(i) - th0(i)
-         call bend_taylor(ei, hk(i), h, t(i), m(i), dm(i))
-         others = ior(others, not(transfer(abs(h) - small_rotation, 0_i8)))
-      end do
-      b1 = 0
-      b1_ok = .false.
-      if (others >= 0) return
-      do i = 1, n
-         if (.not. abs(th1(i) - th0(i)) < small_rotation) &
-            call bend_divided(ei, hk(i), th0(i), th1(i), b0(i), t(i), m(i), dm(i), b1(i), b1_ok(i))
-      end do
-   end subroutine bend_divided_array
-
-   !> The argument of tan in bend_divided: half the mean turning angle where the two are
-   !> close (its Taylor form), else half the new one.
-   elemental real(dp) function bend_argument(th0, th1) result(x)
-      real(dp), intent(in) :: th0, th1
-      integer(i8) :: close
-      ! Both forms, and the one that applies picked by a mask of bits, so that bend_arguments'
-      ! loop packs in SSE2 pairs (gfortran 12 keeps a merge of the two, or of integer masks
-      ! from a comparison, a branch). close: all bits set where |th1 - th0| < small_rotation,
-      ! the sign bit of |th1 - th0| - small_rotation copied (never -0; a NaN is positive, as
-      ! abs leaves it: not close, as the comparison).
-      close = shifta(transfer(abs(th1 - th0) - small_rotation, 0_i8), 63)
-      x = transfer(ior(iand(close, transfer(0.5_dp*(0.5_dp*(th0 + th1)), 0_i8)), &
-                       iand(not(close), transfer(0.5_dp*th1, 0_i8))), 0.0_dp)
-   end function bend_argument
-
-   !> x(i) = bend_argument(th0(i), th1(i)), i = 1 .. n, in packed SSE2 pairs (explicit-shape
-   !> arrays, as fast_tan_array's).
-   pure subroutine bend_arguments(n, th0, th1, x)
-      integer, intent(in) :: n
-      real(dp), intent(in) :: th0(n), th1(n)
-      real(dp), intent(out) :: x(n)
-      integer :: i
-      !GCC$ unroll 1
-      do i = 1, n
-         x(i) = bend_argument(th0(i), th1(i))
-      end do
-   end subroutine bend_arguments
 
    !> Applied couple on cell c (the end cells), averaged over [ta, tb].
    pure real(dp) function cell_couple(self, c, ta, tb)
@@ -1323,164 +861,6 @@ contains
       if (c == self%n - 1) cell_couple = cell_couple + 0.5_dp*(self%end_b%applied_couple(ta) &
                                                                + self%end_b%applied_couple(tb))
    end function cell_couple
-
-   !> Node residuals and the Jacobian from the cell forces and blocks (statics:
-   !> t1 is the time; dynamics: t1 = t0, t2 = dt).
-   subroutine assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
-      class(rod_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(in) :: t1, t2
-      real(dp), intent(out) :: residual(:)
-      type(band_matrix), intent(inout) :: jacobian
-      logical, intent(in) :: with_jacobian, dynamic
-      real(dp), intent(in), optional :: theta
-      integer :: n, c, k, j, side, node, band0, a, b, row, col
-      real(dp) :: share
-      real(dp) :: scale, rate, fext_a(2), fext_b(2), t_new, jac_a(2, 2), jac_b(2, 2)
-      logical :: held_a, held_b, state_a, state_b
-      n = self%n
-      scale = 1/self%tension_ref
-      held_a = self%end_a%held()
-      held_b = self%end_b%held()
-      if (dynamic) then
-         t_new = t1 + t2
-         fext_a = 0.5_dp*(self%end_a%applied_force(t1) + self%end_a%applied_force(t_new))
-         fext_b = 0.5_dp*(self%end_b%applied_force(t1) + self%end_b%applied_force(t_new))
-         rate = 1/(theta*t2*t2)
-         ! V^n+1 from the new positions. (Element by element: the array expressions cost 2-3
-         ! times more, in temporaries.)
-         do k = 1, n
-            do a = 1, 2
-               self%v1(a, k) = ((x(2*k - 2 + a) - self%r0(a, k))/t2 - (1 - theta)*self%v0(a, k))/theta
-            end do
-         end do
-      else
-         t_new = t1
-         fext_a = self%end_a%applied_force(t1)
-         fext_b = self%end_b%applied_force(t1)
-         rate = 0
-      end if
-      ! Ends that depend on their own state (springs): their force at the node, and its derivative.
-      state_a = self%end_a%state_dependent()
-      state_b = self%end_b%state_dependent()
-      if (state_a) call add_end_state(self%end_a, dynamic, t1, t2, self%r0(:, 1), x(1:2), fext_a, jac_a)
-      if (state_b) call add_end_state(self%end_b, dynamic, t1, t2, self%r0(:, n), x(2*n - 1:2*n), fext_b, jac_b)
-      ! Node k: N_k - N_k-1, its weight, loads, applied forces and in a step the inertia
-      ! [M (V^n+1 - V^n)]_k / dt, over T_ref. Each node's rows are summed in one go, their
-      ! terms in the order of the former loops (a pass over the residual for each kind of
-      ! term: the same bits in 11e6 fewer instructions on fast_180kN, callgrind).
-      if (allocated(self%node_w)) then
-         call node_residuals(n, 1, n, self%force, node_weight(self, 1), node_weight(self, n), 1.0_dp, self%node_w, &
-                             self%load_node, fext_a, fext_b, dynamic, self%mass, self%v1, self%mv0, t2, scale, residual)
-      else
-         call node_residuals(n, 1, n, self%force, node_weight(self, 1), node_weight(self, n), self%weight, &
-                             self%lumped, self%load_node, fext_a, fext_b, dynamic, self%mass, self%v1, self%mv0, t2, &
-                             scale, residual)
-      end if
-      if (held_a) residual(1:2) = (x(1:2) - self%end_a%position(t_new))/self%length_ref
-      if (held_b) residual(2*n - 1:2*n) = (x(2*n - 1:2*n) - self%end_b%position(t_new))/self%length_ref
-      if (.not. with_jacobian) return
-
-      call jacobian%clear()
-      band0 = jacobian%kl + jacobian%ku + 1
-      call add_jacobian(n, 1, n, jacobian%ldab, band0, jacobian%ab, self%block, self%ds, self%mass, scale, rate, &
-                        held_a, held_b, dynamic, self%block_scaled, self%mass_scaled)
-      if (state_a) call add_end_block(jacobian, 0, jac_a, scale)
-      if (state_b) call add_end_block(jacobian, 2*n - 2, jac_b, scale)
-      ! Bodies at nodes: their drag's derivative (its force is in load_node).
-      if (allocated(self%points)) then
-         do c = 1, size(self%points)
-            k = self%point_node(c)
-            if ((k == 1 .and. held_a) .or. (k == n .and. held_b)) cycle
-            call add_end_block(jacobian, 2*(k - 1), self%point_jac(:, :, c), scale)
-         end do
-      end if
-      ! Distributed loads: node c and node c+1 each get -F_c / 2 (and -G_c, +G_c of unequal shares).
-      if (allocated(self%loads)) then
-         if (size(self%loads) > 0) then
-            do c = 1, n - 1
-               do side = 0, 1
-                  node = c + side
-                  do j = 0, 1
-                     k = c + j
-                     if (k == 1 .and. held_a) cycle
-                     if (k == n .and. held_b) cycle
-                     do a = 1, 2
-                        do b = 1, 2
-                           row = 2*(k - 1) + a
-                           col = 2*(node - 1) + b
-                           share = 0.5_dp*self%load_block(a, b, side, c)
-                           if (self%skewed) share = share + merge(1.0_dp, -1.0_dp, j == 0)*self%skew_block(a, b, side, c)
-                           jacobian%ab(band0 + row - col, col) = jacobian%ab(band0 + row - col, col) - share*scale
-                        end do
-                     end do
-                  end do
-               end do
-            end do
-         end if
-      end if
-      if (held_a) call held_rows(1)
-      if (held_b) call held_rows(n)
-
-   contains
-
-      !> Rows of a held node: R_k - X(t) = 0.
-      subroutine held_rows(kk)
-         integer, intent(in) :: kk
-         integer :: aa
-         do aa = 1, 2
-            row = 2*(kk - 1) + aa
-            jacobian%ab(band0, row) = 1/self%length_ref
-         end do
-      end subroutine held_rows
-   end subroutine assemble
-
-   !> The force of an end that depends on its own state, added to f (the time-only applied
-   !> force of its node), and its derivative with respect to the node's (new) position: the
-   !> statics' state_force at rest at x (dynamic false, t the time), or a step's step_force
-   !> from x0 at t to x over dt.
-   subroutine add_end_state(end, dynamic, t, dt, x0, x, f, jac)
-      !> The end (state_dependent).
-      class(end_condition), intent(in) :: end
-      !> A step (or the statics).
-      logical, intent(in) :: dynamic
-      !> Time (the step's start), s; the step, s.
-      real(dp), intent(in) :: t, dt
-      !> The node's old (a step) and new position (x, z), m.
-      real(dp), intent(in) :: x0(2), x(2)
-      !> Force on the node, N: the end's force is added.
-      real(dp), intent(inout) :: f(2)
-      !> d (end's force) / d x, N/m.
-      real(dp), intent(out) :: jac(2, 2)
-      real(dp) :: f3(3), j3(3, 3), dv(3, 3), damp(3)
-      if (dynamic) then
-         call end%step_force(t, dt, point3(x0), point3(x), f3, j3, damp)
-      else
-         call end%state_force(t, point3(x), [0.0_dp, 0.0_dp, 0.0_dp], f3, j3, dv, damp)
-      end if
-      f = f + f3([1, 3])
-      jac = j3([1, 3], [1, 3])
-   end subroutine add_end_state
-
-   !> -jac times the row scale on the 2x2 diagonal block of the rows and columns off + 1, off + 2
-   !> (an end node's: its rows hold -F).
-   subroutine add_end_block(jacobian, off, jac, scale)
-      !> Jacobian, band storage.
-      type(band_matrix), intent(inout) :: jacobian
-      !> Unknowns before the block.
-      integer, intent(in) :: off
-      !> d F / d x of the end, N/m.
-      real(dp), intent(in) :: jac(2, 2)
-      !> Row scale.
-      real(dp), intent(in) :: scale
-      integer :: a, b, band0
-      band0 = jacobian%kl + jacobian%ku + 1
-      do b = 1, 2
-         do a = 1, 2
-            jacobian%ab(band0 + a - b, off + b) = jacobian%ab(band0 + a - b, off + b) - jac(a, b)*scale
-         end do
-      end do
-   end subroutine add_end_block
 
    !> M V with the band of M in mass(0:2, n), on explicit-shape arrays: the same
    !> operations in the same order as on the assumed-shape arrays and the class

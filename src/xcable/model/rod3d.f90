@@ -35,23 +35,15 @@
 !> same mass matrix for each component. The discrete gradient of the strain
 !> part is the planar one in vector form. The bending part of node k is
 !> mom_k grad th_k, mom_k the divided difference of B between th_k^n and
-!> th_k^n+1 and grad th_k a discrete gradient of the turning angle: the
-!> change of th_k is split into the changes of a with b held (at b^n and at
-!> b^n+1, averaged) and of b with a held, and each one-vector change of the
-!> scale-free function g(x) = th(x, y) gets
-!>
-!>     D = grad g(x_mid) + [g(x1) - g(x0) - grad g(x_mid) . (x1 - x0)] (c x x_mid) / |c|^2,  c = x0 x x1,
-!>
-!> which satisfies D . (x1 - x0) = g(x1) - g(x0) exactly, tends to grad g as
-!> the step shrinks and, in a plane, equals the planar rod's perp(x_mid)
-!> dphi / (sin(dphi) |x0| |x1|). So the energy changes by exactly the work of
-!> the ends, and a planar run reproduces the planar rod as long as no turning
-!> angle passes through zero within a step (the planar rod's angle is signed,
-!> this one is not). Below a rotation of 1e-8 rad in a step the bracket
-!> (third order in the rotation) is dropped. The Jacobian is written out,
-!> the bending blocks of a step included (step_bending_jacobian: first and
-!> second derivatives of the rotation vector); the statics' bending blocks
-!> use forward-mode dual numbers (defined in rod3d/statics.f90).
+!> th_k^n+1 and grad th_k a discrete gradient of the turning angle, exact in
+!> the change of th_k (model/rod3d/kernels.f90 gives its formula). So the
+!> energy changes by exactly the work of the ends, and a planar run
+!> reproduces the planar rod as long as no turning angle passes through zero
+!> within a step (the planar rod's angle is signed, this one is not). The
+!> Jacobian is written out, the bending blocks of a step included
+!> (node_bending_jacobian: first and second derivatives of the rotation
+!> vector); the statics' bending blocks use forward-mode dual numbers
+!> (defined in rod3d/statics.f90).
 !>
 !> Newton's vector holds the positions node after node (x, y, z), then the
 !> twist angles psi_1 .. psi_n. The momentum rows of node k reach nodes k-2 ..
@@ -67,20 +59,25 @@
 !> otherwise: the new ends of a break inside the cable), on the angle of the
 !> end cell's projection on the plane normal to the axis.
 !>
-!> This file holds the piece's types, its geometry and mass helpers, the time step with the
-!> discrete gradient of the bending, and the assembly of the node rows: the hot path of a 3-D run,
-!> kept in one compilation unit because gfortran inlines and specialises its kernels only as
-!> private procedures of the unit (in a submodule the step's kernels cost +1.2 %, the assembly
-!> +1.8 % instructions on input/sway3d.nml). The submodules in model/rod3d/ hold the cold parts:
+!> This file holds the piece's types, its geometry and mass helpers and the time step (the
+!> cells' forces, the loop over the nodes' bending). gfortran 12 inlines and specialises small
+!> kernels only as private procedures of their module or internal procedures (a submodule's
+!> procedures and public ones are global symbols, which fpm's -fPIC keeps whole;
+!> docs/dev/model-interface.md), so the hot parts are cut along those lines: the node's
+!> bending in a step is the module model/rod3d/kernels.f90 (one call per node, its helpers
+!> private there), the assembly of the node rows the submodule model/rod3d/assembly.f90 (its
+!> helpers internal procedures). The other submodules in model/rod3d/ hold the cold parts:
 !> init.f90 (the set-up), statics.f90 (the static system and its dual numbers), loads.f90 (the
-!> distributed loads and the end couples), records.f90 (energies, twist rates, the reaction) and
-!> frames.f90 (the material frames, Euler parameters).
+!> distributed loads and the end couples), records.f90 (energies, twist rates, the reaction),
+!> frames.f90 (the material frames, Euler parameters) and checks.f90 (Newton's trust in its
+!> estimate, the fold check).
 module xcable_model_rod3d
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_material_law, only: material_law
-   use xcable_material_tension_only, only: slack_cell_force, may_cross_kink
-   use xcable_numerics_tan, only: fast_tan
+   use xcable_material_tension_only, only: slack_cell_force
+   use xcable_model_rod3d_kernels, only: node_bending, node_bending_jacobian, rotation_vector, bend_energy_of, &
+                                         bend_moment_of, small_rotation
    use xcable_solver_banded, only: band_matrix
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem
@@ -91,7 +88,7 @@ module xcable_model_rod3d
    private
    public :: rod3d_piece, rod3d_section, rod3d_problem, rod3d_kl, rod3d_ku, rod3d_nodal, rod3d_unknown_names, turning_angle
    public :: paper_euler_parameters, couple_plane, bend_energy, bend_moment, small_strain_step
-   ! For the submodules in model/rod3d/ (see the wrappers at the end).
+   ! For the submodules in model/rod3d/ (the wrappers at the end; the assembly, of assembly.f90).
    public :: rod3d_unpack, rod3d_node_weight, rod3d_assemble
 
    !> The unknowns of a node: positions at 3 (k - 1) + 1..3, psi at 3 n + k.
@@ -103,10 +100,6 @@ module xcable_model_rod3d
    integer, parameter :: rod3d_kl = 3*3 - 1, rod3d_ku = rod3d_kl
    !> Strain differences below this use the Taylor form of the divided difference.
    real(dp), parameter :: small_strain_step = 1.0e-6_dp
-   !> Turning-angle differences below this use the Taylor form of the divided difference.
-   real(dp), parameter :: small_rotation = 1.0e-4_dp
-   !> Cell rotations in a step below this drop the third-order bracket of the discrete gradient.
-   real(dp), parameter :: bracket_rotation = 1.0e-8_dp
 
    !> One section of a 3-D piece on a line of segments: its cells (piece-local) and its material.
    type :: rod3d_section
@@ -376,6 +369,55 @@ module xcable_model_rod3d
          real(dp), intent(in) :: beta(4)
          real(dp) :: b(4)
       end function paper_euler_parameters
+      !> Newton's contraction estimate (newton_problem) after the update from the last evaluated
+      !> point: trusted unless it may have carried a cell past the kink of the law by more than
+      !> the tolerance (may_cross_kink); in model/rod3d/checks.f90.
+      module function rod3d_problem_estimate_trusted(self, update, tolerance) result(trusted)
+         !> Problem.
+         class(rod3d_problem), intent(in) :: self
+         !> The update: 3 positions per node, then the twists, m and rad.
+         real(dp), intent(in) :: update(:)
+         !> Tolerance on the scaled update (scale of the positions: length_ref).
+         real(dp), intent(in) :: tolerance
+         logical :: trusted
+      end function rod3d_problem_estimate_trusted
+
+      !> Whether the law of any cell has a kink (strain_slack: a rope that cannot push).
+      module pure function rod3d_has_kink(self) result(kink)
+         !> Piece.
+         class(rod3d_piece), intent(in) :: self
+         logical :: kink
+      end function rod3d_has_kink
+
+      !> The fold check of the step control in 3-D (driver/rod_run.f90, check_folds): the
+      !> mismatch of each node's turning against its cells' rotations in the step.
+      module pure subroutine rod3d_turning_folds(self, r1, fold)
+         !> Piece (holds the old level).
+         class(rod3d_piece), intent(in) :: self
+         !> New positions (3, n), m.
+         real(dp), intent(in) :: r1(:, :)
+         !> Mismatch at each node (n; 0 at the ends), rad.
+         real(dp), intent(out) :: fold(:)
+      end subroutine rod3d_turning_folds
+
+      !> Node rows from the cell forces and blocks, inertia, weight, end forces, twist and held rows
+      !> (statics: t1 the time; a step: t1 = t0, t2 = dt), in model/rod3d/assembly.f90.
+      module subroutine rod3d_assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
+         !> Piece.
+         class(rod3d_piece), intent(inout) :: self
+         !> Unknowns, 4 per node.
+         real(dp), intent(in) :: x(:)
+         !> Statics: t1 the time; a step: t1 = t0, t2 = dt.
+         real(dp), intent(in) :: t1, t2
+         !> Scaled residual.
+         real(dp), intent(out) :: residual(:)
+         !> Jacobian (band storage).
+         type(band_matrix), intent(inout) :: jacobian
+         !> Whether to form the Jacobian; whether a step.
+         logical, intent(in) :: with_jacobian, dynamic
+         !> Time weight.
+         real(dp), intent(in) :: theta
+      end subroutine rod3d_assemble
    end interface
 
 contains
@@ -398,38 +440,6 @@ contains
          call self%piece%static_system(x, self%t0, residual, jacobian, with_jacobian)
       end if
    end subroutine rod3d_problem_evaluate
-
-   !> Newton's contraction estimate (newton_problem) after the update from the last evaluated
-   !> point: trusted unless it may have carried a cell past the kink of the law by more than
-   !> the tolerance (may_cross_kink).
-   logical function rod3d_problem_estimate_trusted(self, update, tolerance) result(trusted)
-      !> Problem.
-      class(rod3d_problem), intent(in) :: self
-      !> The update: 3 positions per node, then the twists, m and rad.
-      real(dp), intent(in) :: update(:)
-      !> Tolerance on the scaled update (scale of the positions: length_ref).
-      real(dp), intent(in) :: tolerance
-      real(dp), allocatable :: du(:, :)
-      integer :: j, a, b
-      trusted = .true.
-      if (.not. allocated(self%piece%sections)) then
-         if (.not. self%piece%law%strain_slack > -huge(1.0_dp)) return
-         trusted = .not. may_cross_kink(self%piece%law%strain_slack, self%piece%l1, self%piece%ds, &
-                                        reshape(update(1:3*self%piece%n), [3, self%piece%n]), &
-                                        tolerance*self%piece%length_ref)
-         return
-      end if
-      ! A line of segments: each section whose law has a kink, on its own cells.
-      if (.not. self%piece%has_kink()) return
-      du = reshape(update(1:3*self%piece%n), [3, self%piece%n])
-      do j = 1, size(self%piece%sections)
-         a = self%piece%sections(j)%first
-         b = self%piece%sections(j)%last
-         if (.not. self%piece%sections(j)%law%strain_slack > -huge(1.0_dp)) cycle
-         if (may_cross_kink(self%piece%sections(j)%law%strain_slack, self%piece%l1(a:b), self%piece%ds(a:b), &
-                            du(:, a:b + 1), tolerance*self%piece%length_ref)) trusted = .false.
-      end do
-   end function rod3d_problem_estimate_trusted
 
    !> Number of unknowns (four per node).
    pure integer function rod3d_unknowns(self)
@@ -463,7 +473,7 @@ contains
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_energy = energy_of(self%ei_at(k), self%dual_length(k), th)
+      bend_energy = bend_energy_of(self%ei_at(k), self%dual_length(k), th)
    end function bend_energy
 
    !> dB/dth, N m.
@@ -471,50 +481,8 @@ contains
       class(rod3d_piece), intent(in) :: self
       integer, intent(in) :: k
       real(dp), intent(in) :: th
-      bend_moment = moment_of(self%ei_at(k), self%dual_length(k), th)
+      bend_moment = bend_moment_of(self%ei_at(k), self%dual_length(k), th)
    end function bend_moment
-
-   !> 2 EI tan^2(th / 2) / h, J: bend_energy of a node of EI ei and length h.
-   pure real(dp) function energy_of(ei, h, th)
-      real(dp), intent(in) :: ei, h, th
-      energy_of = 2*ei*fast_tan(0.5_dp*th)**2/h
-   end function energy_of
-
-   !> dB/dth of a node of EI ei and length h, N m.
-   pure real(dp) function moment_of(ei, h, th)
-      real(dp), intent(in) :: ei, h, th
-      real(dp) :: t
-      t = fast_tan(0.5_dp*th)
-      moment_of = 2*ei*t*(1 + t*t)/h
-   end function moment_of
-
-   !> d2B/dth2 of a node of EI ei and length h, N m.
-   pure real(dp) function stiffness_of(ei, h, th)
-      real(dp), intent(in) :: ei, h, th
-      real(dp) :: t
-      t = fast_tan(0.5_dp*th)
-      stiffness_of = ei*(1 + t*t)*(1 + 3*t*t)/h
-   end function stiffness_of
-
-   !> [B(th1) - B(th0)] / (th1 - th0) and its derivative in th1 (Taylor forms when close), of a
-   !> node of EI ei and length hk.
-   pure subroutine bend_divided(ei, hk, th0, th1, m, dm)
-      real(dp), intent(in) :: ei, hk
-      real(dp), intent(in) :: th0, th1
-      real(dp), intent(out) :: m, dm
-      real(dp) :: h, mid, t, third
-      h = th1 - th0
-      if (abs(h) < small_rotation) then
-         mid = 0.5_dp*(th0 + th1)
-         t = fast_tan(0.5_dp*mid)
-         third = ei*(1 + t*t)*t*(4 + 6*t*t)/hk
-         m = moment_of(ei, hk, mid) + third*h*h/24
-         dm = 0.5_dp*stiffness_of(ei, hk, mid) + third*h/12
-      else
-         m = (energy_of(ei, hk, th1) - energy_of(ei, hk, th0))/h
-         dm = (moment_of(ei, hk, th1) - m)/h
-      end if
-   end subroutine bend_divided
 
    !> EI of node k, N m^2 (a line of segments: the length-weighted mean of its cells').
    pure real(dp) function rod3d_ei_at(self, k) result(ei)
@@ -557,18 +525,6 @@ contains
       end if
    end function rod3d_cell_tension
 
-   !> Whether the law of any cell has a kink (strain_slack: a rope that cannot push).
-   pure logical function rod3d_has_kink(self) result(kink)
-      !> Piece.
-      class(rod3d_piece), intent(in) :: self
-      integer :: j
-      kink = self%law%strain_slack > -huge(1.0_dp)
-      if (.not. allocated(self%sections)) return
-      do j = 1, size(self%sections)
-         if (self%sections(j)%law%strain_slack > -huge(1.0_dp)) kink = .true.
-      end do
-   end function rod3d_has_kink
-
    !> Cell vectors e_c, their lengths and the turning angles of the interior nodes.
    pure subroutine rod3d_geometry(self, r, e, l, th)
       !> Piece.
@@ -607,46 +563,6 @@ contains
       real(dp), intent(out) :: a(m)
       a = 0
    end subroutine clear
-
-   !> The fold check of the step control (driver/rod_run.f90, check_folds) in
-   !> 3-D: for each interior node k, |phi(e1_k-1, e1_k) - phi(e0_k-1, e0_k) -
-   !> (rho_k - rho_k-1)|, with phi the rotation vector of the node's turning
-   !> and rho_c that of cell c from the old level (prepare_step) to the
-   !> positions r1. In a plane it is the planar rod's |th1 - th0 - (dphi_b -
-   !> dphi_a)|: 0 to round-off, or about 2 pi when the angle went through half
-   !> a turn. Out of the plane it is first order in the cells' rotations (a
-   !> rotation omega of both cells adds |omega x phi|, at most pi |omega|,
-   !> and near th = pi the axis of phi swings fast): it passes 3 rad when a
-   !> turning angle goes through or close around half a turn, or a sharp bend
-   !> turns by about 1 rad out of its plane in one step.
-   pure subroutine rod3d_turning_folds(self, r1, fold)
-      !> Piece (holds the old level).
-      class(rod3d_piece), intent(in) :: self
-      !> New positions (3, n), m.
-      real(dp), intent(in) :: r1(:, :)
-      !> Mismatch at each node (n; 0 at the ends), rad.
-      real(dp), intent(out) :: fold(:)
-      real(dp) :: e1(3, self%n - 1), rho(3, self%n - 1)
-      integer :: c, k
-      do c = 1, self%n - 1
-         e1(:, c) = r1(:, c + 1) - r1(:, c)
-         rho(:, c) = rotation(self%e0(:, c), e1(:, c))
-      end do
-      fold = 0
-      do k = 2, self%n - 1
-         fold(k) = norm2(rotation(e1(:, k - 1), e1(:, k)) - rotation(self%e0(:, k - 1), self%e0(:, k)) - &
-                         (rho(:, k) - rho(:, k - 1)))
-      end do
-
-   contains
-
-      !> The rotation vector phi(a, b) (rotation_vector_r).
-      pure function rotation(a, b) result(phi)
-         real(dp), intent(in) :: a(3), b(3)
-         real(dp) :: phi(3)
-         call rotation_vector_r(a, b, phi)
-      end function rotation
-   end subroutine rod3d_turning_folds
 
    !> Weight of node k (cable share and point mass), N, on a line of segments too.
    pure real(dp) function any_node_weight(self, k)
@@ -709,7 +625,7 @@ contains
       call self%mass_times(v0, self%mv0)
       call self%geometry(r0, self%e0, self%l0, self%th0)
       do k = 2, self%n - 1
-         call rotation_vector_r(self%e0(:, k - 1), self%e0(:, k), self%phi_old(:, k))
+         call rotation_vector(self%e0(:, k - 1), self%e0(:, k), self%phi_old(:, k))
       end do
    end subroutine rod3d_prepare_step
 
@@ -784,7 +700,7 @@ contains
       end if
       call add_couples(self, t0, t0 + dt, .true., with_jacobian)
       call apply_loads(self, x, dt, theta, with_jacobian)
-      call assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
+      call rod3d_assemble(self, x, t0, dt, residual, jacobian, with_jacobian, .true., theta)
    end subroutine rod3d_step_system
 
    !> The cells c1 .. c2 of a step with the law and damping c (N s): their forces (the discrete
@@ -836,647 +752,42 @@ contains
       end do
    end subroutine step_cells
 
-   !> Node k's bending force in a step, values only (the step_bending_jacobian's forces to the
-   !> same bits): B1 - B0 = coef (phi1 + phi0) . (phi1 - phi0), phi1 - phi0 = Ja (a1 - a0) +
-   !> Jb (b1 - b0), Ja carrying the mean of the changes of a at b0 and at b1, Jb that of the
-   !> changes of b at a0 and at a1, each about the Jacobian at the mid vectors.
+   !> Node k's bending force in a step, values only (node_bending, model/rod3d/kernels.f90; the
+   !> step_bending_jacobian's forces to the same bits).
    subroutine step_bending(self, k, ei)
       class(rod3d_piece), intent(inout) :: self
       integer, intent(in) :: k
       !> The node's EI, N m^2.
       real(dp), intent(in) :: ei
-      real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, coef, psum(3)
-      real(dp) :: ja(3, 3), jb(3, 3)
-      integer :: i
-      a = self%e1(:, k - 1)
-      b = self%e1(:, k)
-      a0 = self%e0(:, k - 1)
-      b0 = self%e0(:, k)
-      phi0 = self%phi_old(:, k)
-      call rotation_vector_r(a, b, phi1)
-      call rotation_vector_r(a, b0, phi_a1b0)
-      call rotation_vector_r(a0, b, phi_a0b1)
-      q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
-      coef = bend_coefficient_r(ei, self%dual_length(k), phi0(1)**2 + phi0(2)**2 + phi0(3)**2, q1)
-      psum = (phi1 + phi0)*coef
-      ! phi(a, b) = -phi(b, a): the changes in b are those of -phi(b, a).
-      call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp, ja)
-      call discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp, jb)
-      do i = 1, 3
-         self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
-                                /self%ds(k - 1)
-         self%force(i, k) = self%force(i, k) + (jb(1, i)*psum(1) + jb(2, i)*psum(2) + jb(3, i)*psum(3))/self%ds(k)
-      end do
+      real(dp) :: fa(3), fb(3)
+      call node_bending(self%e0(:, k - 1), self%e1(:, k - 1), self%e0(:, k), self%e1(:, k), self%phi_old(:, k), ei, &
+                        self%dual_length(k), fa, fb)
+      self%force(:, k - 1) = self%force(:, k - 1) + fa/self%ds(k - 1)
+      self%force(:, k) = self%force(:, k) + fb/self%ds(k)
    end subroutine step_bending
 
-   !> Node k's bending force in a step and its blocks. The forces are step_bending's (the same
-   !> operations, so the same bits); their derivatives with respect to the new a and b are written
-   !> out: those of the rotation vectors (rotation_vector_r), of the bending coefficient, and of
-   !> each discrete Jacobian's force J^T p (discrete_force_derivatives).
+   !> Node k's bending force in a step and its blocks (node_bending_jacobian, model/rod3d/kernels.f90).
    subroutine step_bending_jacobian(self, k, ei)
       class(rod3d_piece), intent(inout) :: self
       integer, intent(in) :: k
       !> The node's EI, N m^2.
       real(dp), intent(in) :: ei
-      real(dp) :: a(3), b(3), a0(3), b0(3), phi0(3), phi1(3), phi_a1b0(3), phi_a0b1(3), q1, q0, coef, dcoef, psum(3)
-      real(dp) :: ja(3, 3), jb(3, 3), j1a(3, 3), j1b(3, 3), jab0(3, 3), ja0b(3, 3), dpa(3, 3), dpb(3, 3), dq(6)
-      real(dp) :: ja_mid(3, 3), jb_mid(3, 3), delta_a(3), delta_b(3), dfa_da(3, 3), dfa_db(3, 3), dfb_db(3, 3), dfb_da(3, 3)
-      integer :: i, j
-      a = self%e1(:, k - 1)
-      b = self%e1(:, k)
-      a0 = self%e0(:, k - 1)
-      b0 = self%e0(:, k)
-      phi0 = self%phi_old(:, k)
-      call rotation_vector_r(a, b, phi1, j1a, j1b)
-      call rotation_vector_r(a, b0, phi_a1b0, jab0)
-      call rotation_vector_r(a0, b, phi_a0b1, jy=ja0b)
-      q1 = phi1(1)*phi1(1) + phi1(2)*phi1(2) + phi1(3)*phi1(3)
-      q0 = phi0(1)**2 + phi0(2)**2 + phi0(3)**2
-      call bend_coefficient_derivative(ei, self%dual_length(k), q0, q1, coef, dcoef)
-      psum = (phi1 + phi0)*coef
-      delta_a = ((phi_a1b0 - phi0) + (phi1 - phi_a0b1))*0.5_dp
-      delta_b = ((phi_a0b1 - phi0) + (phi1 - phi_a1b0))*0.5_dp
-      call discrete_jacobian_r(a0, a, (b0 + b)*0.5_dp, 1.0_dp, delta_a, ja, ja_mid)
-      call discrete_jacobian_r(b0, b, (a0 + a)*0.5_dp, -1.0_dp, delta_b, jb, jb_mid)
-      do i = 1, 3
-         self%force(i, k - 1) = self%force(i, k - 1) + (ja(1, i)*psum(1) + ja(2, i)*psum(2) + ja(3, i)*psum(3)) &
-                                /self%ds(k - 1)
-         self%force(i, k) = self%force(i, k) + (jb(1, i)*psum(1) + jb(2, i)*psum(2) + jb(3, i)*psum(3))/self%ds(k)
-      end do
-      ! d psum = coef d phi1 + (phi1 + phi0) coef'(q1) 2 phi1^T d phi1.
-      do j = 1, 3
-         dq(j) = 2*dcoef*(phi1(1)*j1a(1, j) + phi1(2)*j1a(2, j) + phi1(3)*j1a(3, j))
-         dq(j + 3) = 2*dcoef*(phi1(1)*j1b(1, j) + phi1(2)*j1b(2, j) + phi1(3)*j1b(3, j))
-      end do
-      do j = 1, 3
-         dpa(:, j) = coef*j1a(:, j) + (phi1 + phi0)*dq(j)
-         dpb(:, j) = coef*j1b(:, j) + (phi1 + phi0)*dq(j + 3)
-      end do
-      call discrete_force_derivatives(a0, a, b0, b, 1.0_dp, ja_mid, delta_a, 0.5_dp*(jab0 + j1a), 0.5_dp*(j1b - ja0b), &
-                                      psum, dpa, dpb, dfa_da, dfa_db)
-      call discrete_force_derivatives(b0, b, a0, a, -1.0_dp, jb_mid, delta_b, 0.5_dp*(ja0b + j1b), 0.5_dp*(j1a - jab0), &
-                                      psum, dpb, dpa, dfb_db, dfb_da)
+      real(dp) :: fa(3), fb(3), dfa_da(3, 3), dfa_db(3, 3), dfb_db(3, 3), dfb_da(3, 3)
+      call node_bending_jacobian(self%e0(:, k - 1), self%e1(:, k - 1), self%e0(:, k), self%e1(:, k), self%phi_old(:, k), &
+                                 ei, self%dual_length(k), fa, fb, dfa_da, dfa_db, dfb_da, dfb_db)
+      self%force(:, k - 1) = self%force(:, k - 1) + fa/self%ds(k - 1)
+      self%force(:, k) = self%force(:, k) + fb/self%ds(k)
       self%block(:, :, 0, k - 1) = self%block(:, :, 0, k - 1) + dfa_da/self%ds(k - 1)
       self%block(:, :, 1, k - 1) = self%block(:, :, 1, k - 1) + dfa_db/self%ds(k - 1)
       self%block(:, :, -1, k) = self%block(:, :, -1, k) + dfb_da/self%ds(k)
       self%block(:, :, 0, k) = self%block(:, :, 0, k) + dfb_db/self%ds(k)
    end subroutine step_bending_jacobian
 
-   !> bend_coefficient_r (the same operations) and its derivative in q1.
-   pure subroutine bend_coefficient_derivative(ei, hk, q0, q1, coef, dcoef)
-      real(dp), intent(in) :: ei, hk
-      real(dp), intent(in) :: q0, q1
-      real(dp), intent(out) :: coef, dcoef
-      real(dp) :: th0, th1, m, dm, big
-      big = 2*ei/hk
-      th0 = sqrt(q0)
-      th1 = sqrt(q1)
-      if (th0 + th1 < 1.0e-3_dp) then
-         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
-                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
-         dcoef = (1.0_dp/24.0_dp + (2*q1 + q0)*(17.0_dp/2880.0_dp) &
-                  + ((q1*q1 + q0*q0) + (q1 + q0)*2*q1)*(31.0_dp/40320.0_dp))*big
-      else
-         call bend_divided(ei, hk, th0, th1, m, dm)
-         coef = m/(th0 + th1)
-         dcoef = (dm - coef)/(th0 + th1)/(2*max(th1, 1.0e-12_dp))
-      end if
-   end subroutine bend_coefficient_derivative
-
-   !> The derivatives of f = J^T p, J the discrete Jacobian of discrete_jacobian_r(x0, x1, y, sign,
-   !> delta) with y = (y0 + y1) / 2 (jx: its sign dphi/dx at the mid vectors, the J without the
-   !> bracket), with respect to x1 (dfx) and y1 (dfy), given the derivatives
-   !> of delta (ddx, ddy) and of p (dpx, dpy). With J = sign dphi/dx (x_mid, y) + br w^T,
-   !> br = delta - sign dphi/dx dx, f = g + w beta with g = sign dphi/dx^T p and beta = br . p =
-   !> delta . p - g . dx, so the only second derivatives needed are the Hessian of the scalar
-   !> p . phi(x, y) in x and in x and y. Writing phi = R(c) u, u = x^ x y^, c = x^ . y^ (unit
-   !> vectors; R = th / sin th), p . phi = R(c) T with T = p . u, and its gradient in x is
-   !> Px v, Px = (I - x^ x^^T) / |x|, v = R' T y^ + R (y^ x p). Then
-   !>
-   !>     Hxx = [Q (R'' T y^ y^^T + R' (y^ q^T + q y^^T)) Px - (x^ . v) Px - x^ (Px v)^T - (Px v) x^^T] / |x|,
-   !>     Hxy = Px [R'' T y^ x^^T + R' y^ m^T + R' T I + R' q x^^T - R [p]x] Py,
-   !>
-   !> with Q = I - x^ x^^T, q = y^ x p, m = p x x^, [p]x the cross-product matrix of p.
-   pure subroutine discrete_force_derivatives(x0, x1, y0, y1, sign, jx, delta, ddx, ddy, p, dpx, dpy, dfx, dfy)
-      real(dp), intent(in) :: x0(3), x1(3), y0(3), y1(3), sign, jx(3, 3), delta(3), ddx(3, 3), ddy(3, 3), p(3), &
-                              dpx(3, 3), dpy(3, 3)
-      real(dp), intent(out) :: dfx(3, 3), dfy(3, 3)
-      real(dp) :: xm(3), y(3), nx, ny, xh(3), yh(3), u(3), s2, c, r0, r1, r2, t, q(3), m(3), v(3)
-      real(dp) :: qx(3, 3), px(3, 3), py(3, 3), mm(3, 3), nn(3, 3), hxx(3, 3), hxy(3, 3), pv(3), g(3), xv
-      real(dp) :: cv(3), cc, w(3), dx(3), beta, dbx(3), dby(3), dcm(3, 3), dcc(3), x0x(3, 3), xmx(3, 3)
-      integer :: i, j
-      xm = (x0 + x1)*0.5_dp
-      y = (y0 + y1)*0.5_dp
-      nx = sqrt(xm(1)**2 + xm(2)**2 + xm(3)**2)
-      ny = sqrt(y(1)**2 + y(2)**2 + y(3)**2)
-      xh = xm/nx
-      yh = y/ny
-      u = cross(xh, yh)
-      s2 = u(1)**2 + u(2)**2 + u(3)**2
-      c = xh(1)*yh(1) + xh(2)*yh(2) + xh(3)*yh(3)
-      call turning_factors(s2, c, r0, r1, r2)
-      t = p(1)*u(1) + p(2)*u(2) + p(3)*u(3)
-      q = cross(yh, p)
-      m = cross(p, xh)
-      v = r1*t*yh + r0*q
-      xv = xh(1)*v(1) + xh(2)*v(2) + xh(3)*v(3)
-      do j = 1, 3
-         do i = 1, 3
-            qx(i, j) = merge(1.0_dp, 0.0_dp, i == j) - xh(i)*xh(j)
-            py(i, j) = (merge(1.0_dp, 0.0_dp, i == j) - yh(i)*yh(j))/ny
-            mm(i, j) = r2*t*yh(i)*yh(j) + r1*(yh(i)*q(j) + q(i)*yh(j))
-            nn(i, j) = r2*t*yh(i)*xh(j) + r1*yh(i)*m(j) + r1*q(i)*xh(j)
-         end do
-         nn(j, j) = nn(j, j) + r1*t
-      end do
-      px = qx/nx
-      nn = nn - r0*cross_matrix(p)
-      pv = matmul(px, v)
-      hxx = matmul(qx, matmul(mm, px)) - xv*px
-      do j = 1, 3
-         do i = 1, 3
-            hxx(i, j) = (hxx(i, j) - xh(i)*pv(j) - pv(i)*xh(j))/nx
-         end do
-      end do
-      hxy = matmul(px, matmul(nn, py))
-      ! g = J^T p and its derivatives (J with its sign; d x_mid / d x1 = d y / d y1 = I / 2).
-      g = matmul(p, jx)
-      dfx = 0.5_dp*sign*hxx + matmul(transpose(jx), dpx)
-      dfy = 0.5_dp*sign*hxy + matmul(transpose(jx), dpy)
-      cv = cross(x0, x1)
-      cc = cv(1)*cv(1) + cv(2)*cv(2) + cv(3)*cv(3)
-      if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
-      dx = x1 - x0
-      w = cross(cv, xm)/cc
-      beta = dot_product(delta, p) - dot_product(g, dx)
-      dbx = matmul(p, ddx) + matmul(delta, dpx) - matmul(dx, dfx) - g
-      dby = matmul(p, ddy) + matmul(delta, dpy) - matmul(dx, dfy)
-      ! w = (c x x_mid) / |c|^2, c = x0 x x1: d(c x x_mid) = (-[x_mid]x [x0]x + [c]x / 2) dx1, d|c|^2 = 2 c^T [x0]x dx1.
-      x0x = cross_matrix(x0)
-      xmx = cross_matrix(xm)
-      dcm = -matmul(xmx, x0x) + 0.5_dp*cross_matrix(cv)
-      dcc = 2*matmul(cv, x0x)
-      do j = 1, 3
-         do i = 1, 3
-            dfx(i, j) = dfx(i, j) + (dcm(i, j) - w(i)*dcc(j))/cc*beta + w(i)*dbx(j)
-            dfy(i, j) = dfy(i, j) + w(i)*dby(j)
-         end do
-      end do
-
-   contains
-
-      pure function cross(e, f) result(r)
-         real(dp), intent(in) :: e(3), f(3)
-         real(dp) :: r(3)
-         r = [e(2)*f(3) - e(3)*f(2), e(3)*f(1) - e(1)*f(3), e(1)*f(2) - e(2)*f(1)]
-      end function cross
-
-      !> [e]x, the matrix of f -> e x f.
-      pure function cross_matrix(e) result(r)
-         real(dp), intent(in) :: e(3)
-         real(dp) :: r(3, 3)
-         r(1, 1) = 0
-         r(2, 1) = e(3)
-         r(3, 1) = -e(2)
-         r(1, 2) = -e(3)
-         r(2, 2) = 0
-         r(3, 2) = e(1)
-         r(1, 3) = e(2)
-         r(2, 3) = -e(1)
-         r(3, 3) = 0
-      end function cross_matrix
-   end subroutine discrete_force_derivatives
-
-   !> R(c) = th / sin th of the turning with cos th = c, sin^2 th = s2, and its first two
-   !> derivatives in c: R' = (c R - 1) / s2, R'' = (R + 3 c R') / s2, by their series in
-   !> w = 1 - c = s2 / (1 + c) when w < 0.01 (truncation below 1e-15).
-   pure subroutine turning_factors(s2, c, r0, r1, r2)
-      real(dp), intent(in) :: s2, c
-      real(dp), intent(out) :: r0, r1, r2
-      real(dp), parameter :: a0(0:8) = [1.0_dp, 1.0_dp/3, 2.0_dp/15, 2.0_dp/35, 8.0_dp/315, 8.0_dp/693, 16.0_dp/3003, &
-                                        16.0_dp/6435, 128.0_dp/109395]
-      real(dp), parameter :: a1(0:7) = [-1.0_dp/3, -4.0_dp/15, -6.0_dp/35, -32.0_dp/315, -40.0_dp/693, -32.0_dp/1001, &
-                                        -112.0_dp/6435, -1024.0_dp/109395]
-      real(dp), parameter :: a2(0:6) = [4.0_dp/15, 12.0_dp/35, 32.0_dp/105, 160.0_dp/693, 160.0_dp/1001, 224.0_dp/2145, &
-                                        7168.0_dp/109395]
-      real(dp) :: w, s
-      integer :: i
-      w = 2
-      if (c > 0) w = s2/(1 + c)
-      if (w < 0.01_dp) then
-         r0 = a0(8)
-         do i = 7, 0, -1
-            r0 = r0*w + a0(i)
-         end do
-         r1 = a1(7)
-         do i = 6, 0, -1
-            r1 = r1*w + a1(i)
-         end do
-         r2 = a2(6)
-         do i = 5, 0, -1
-            r2 = r2*w + a2(i)
-         end do
-      else
-         s = sqrt(s2)
-         r0 = atan2(s, c)/s
-         r1 = (c*r0 - 1)/s2
-         r2 = (r0 + 3*c*r1)/s2
-      end if
-   end subroutine turning_factors
-
-   !> The rotation vector phi(x, y) = th u / |u|, u = x x y / (|x| |y|), of the smallest rotation
-   !> taking the direction of x to that of y (|phi| = th; smooth through th = 0), with its
-   !> Jacobians d phi / dx and d phi / dy when asked.
-   pure subroutine rotation_vector_r(x, y, phi, jx, jy)
-      real(dp), intent(in) :: x(3), y(3)
-      real(dp), intent(out) :: phi(3)
-      real(dp), intent(out), optional :: jx(3, 3), jy(3, 3)
-      real(dp) :: nx, ny, u(3), s2, c, rho, rho_s2, rho_c, z, s, g(3), inv_xy, inv_xx, inv_yy, w(3), r(3)
-      integer :: i, j
-      nx = sqrt(x(1)*x(1) + x(2)*x(2) + x(3)*x(3))
-      ny = sqrt(y(1)*y(1) + y(2)*y(2) + y(3)*y(3))
-      u(1) = (x(2)*y(3) - x(3)*y(2))/(nx*ny)
-      u(2) = (x(3)*y(1) - x(1)*y(3))/(nx*ny)
-      u(3) = (x(1)*y(2) - x(2)*y(1))/(nx*ny)
-      s2 = u(1)*u(1) + u(2)*u(2) + u(3)*u(3)
-      c = (x(1)*y(1) + x(2)*y(2) + x(3)*y(3))/(nx*ny)
-      if (c > 0 .and. s2 < 1.0e-5_dp*c**2) then
-         z = s2/(c*c)
-         rho = (1.0_dp - z/3.0_dp + z*z/5.0_dp - z*z*z/7.0_dp)/c
-         rho_s2 = (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))/(c*c*c)
-         rho_c = -rho/c + (-1.0_dp/3.0_dp + z*(2.0_dp/5.0_dp) - z*z*(3.0_dp/7.0_dp))*(-2.0_dp)*z/(c*c)
-      else
-         s = sqrt(s2)
-         rho = atan2(s, c)/s
-         rho_s2 = (c/(s2 + c*c) - rho)/(2.0_dp*s2)
-         rho_c = -1.0_dp/(s2 + c*c)
-      end if
-      phi = u*rho
-      if (.not. (present(jx) .or. present(jy))) return
-      inv_xy = 1.0_dp/(nx*ny)
-      if (present(jx)) then
-         ! du/dx dx = (dx x y) / (|x| |y|) - u (x . dx) / |x|^2; (dx x y) = -[y]x dx.
-         inv_xx = 1.0_dp/(nx*nx)
-         w = [y(2)*u(3) - y(3)*u(2), y(3)*u(1) - y(1)*u(3), y(1)*u(2) - y(2)*u(1)]
-         g = (w*inv_xy - x*(s2*inv_xx))*(2.0_dp*rho_s2) + (y*inv_xy - x*(c*inv_xx))*rho_c - x*(rho*inv_xx)
-         do j = 1, 3
-            do i = 1, 3
-               jx(i, j) = u(i)*g(j)
-            end do
-         end do
-         r = y*(rho*inv_xy)
-         jx(1, 2) = jx(1, 2) + r(3)
-         jx(1, 3) = jx(1, 3) - r(2)
-         jx(2, 1) = jx(2, 1) - r(3)
-         jx(2, 3) = jx(2, 3) + r(1)
-         jx(3, 1) = jx(3, 1) + r(2)
-         jx(3, 2) = jx(3, 2) - r(1)
-      end if
-      if (present(jy)) then
-         ! du/dy dy = (x x dy) / (|x| |y|) - u (y . dy) / |y|^2; (x x dy) = [x]x dy.
-         inv_yy = 1.0_dp/(ny*ny)
-         w = [u(2)*x(3) - u(3)*x(2), u(3)*x(1) - u(1)*x(3), u(1)*x(2) - u(2)*x(1)]
-         g = (w*inv_xy - y*(s2*inv_yy))*(2.0_dp*rho_s2) + (x*inv_xy - y*(c*inv_yy))*rho_c - y*(rho*inv_yy)
-         do j = 1, 3
-            do i = 1, 3
-               jy(i, j) = u(i)*g(j)
-            end do
-         end do
-         r = x*(rho*inv_xy)
-         jy(1, 2) = jy(1, 2) - r(3)
-         jy(1, 3) = jy(1, 3) + r(2)
-         jy(2, 1) = jy(2, 1) + r(3)
-         jy(2, 3) = jy(2, 3) - r(1)
-         jy(3, 1) = jy(3, 1) - r(2)
-         jy(3, 2) = jy(3, 2) + r(1)
-      end if
-   end subroutine rotation_vector_r
-
-   !> Discrete Jacobian jac between x0 and x1 of the one-vector function h(x) = sign phi(x, y)
-   !> (see the module header), given its change delta = h(x1) - h(x0): jac (x1 - x0) = delta
-   !> exactly. jmid: sign d phi / dx at the mid vector, the part without the bracket.
-   pure subroutine discrete_jacobian_r(x0, x1, y, sign, delta, jac, jmid)
-      real(dp), intent(in) :: x0(3), x1(3), y(3)
-      real(dp), intent(in) :: sign
-      real(dp), intent(in) :: delta(3)
-      real(dp), intent(out) :: jac(3, 3)
-      real(dp), intent(out), optional :: jmid(3, 3)
-      real(dp) :: xm(3), c(3), cc, w(3), dx(3), phi(3), bracket(3)
-      integer :: i, j
-      xm = (x0 + x1)*0.5_dp
-      call rotation_vector_r(xm, y, phi, jac)
-      if (sign < 0) jac = -jac
-      if (present(jmid)) jmid = jac
-      c = [x0(2)*x1(3) - x0(3)*x1(2), x0(3)*x1(1) - x0(1)*x1(3), x0(1)*x1(2) - x0(2)*x1(1)]
-      cc = c(1)*c(1) + c(2)*c(2) + c(3)*c(3)
-      if (cc <= (bracket_rotation**2)*dot_product(x0, x0)*(x1(1)**2 + x1(2)**2 + x1(3)**2)) return
-      dx = x1 - x0
-      do i = 1, 3
-         bracket(i) = delta(i) - (jac(i, 1)*dx(1) + jac(i, 2)*dx(2) + jac(i, 3)*dx(3))
-      end do
-      w = [c(2)*xm(3) - c(3)*xm(2), c(3)*xm(1) - c(1)*xm(3), c(1)*xm(2) - c(2)*xm(1)]/cc
-      do j = 1, 3
-         do i = 1, 3
-            jac(i, j) = jac(i, j) + bracket(i)*w(j)
-         end do
-      end do
-   end subroutine discrete_jacobian_r
-
-   !> [B(th1) - B(th0)] / (th1^2 - th0^2) of node k from q0 = th0^2 and q1 = th1^2: a polynomial
-   !> in q near the straight state, from the divided difference in th otherwise.
-   pure real(dp) function bend_coefficient_r(ei, hk, q0, q1) result(coef)
-      real(dp), intent(in) :: ei, hk
-      real(dp), intent(in) :: q0, q1
-      real(dp) :: th0, th1, m, dm, big
-      big = 2*ei/hk
-      th0 = sqrt(q0)
-      th1 = sqrt(q1)
-      if (th0 + th1 < 1.0e-3_dp) then
-         coef = (0.25_dp + (q1 + q0)/24.0_dp + (q1*q1 + q1*q0 + q0*q0)*(17.0_dp/2880.0_dp) &
-                 + (q1 + q0)*(q1*q1 + q0*q0)*(31.0_dp/40320.0_dp))*big
-      else
-         call bend_divided(ei, hk, th0, th1, m, dm)
-         coef = m/(th0 + th1)
-      end if
-   end function bend_coefficient_r
-
-   !> Node rows from the cell forces and blocks, inertia, weight, end forces, twist and held rows
-   !> (statics: t1 the time; a step: t1 = t0, t2 = dt).
-   subroutine assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
-      class(rod3d_piece), intent(inout) :: self
-      real(dp), intent(in) :: x(:)
-      real(dp), intent(in) :: t1, t2
-      real(dp), intent(out) :: residual(:)
-      type(band_matrix), intent(inout) :: jacobian
-      logical, intent(in) :: with_jacobian, dynamic
-      real(dp), intent(in) :: theta
-      integer :: n, c, k, band0, a, b
-      real(dp) :: scale, rate, t_new, r(3, self%n), psi(self%n), twist_scale, tau, jac_a(3, 3), jac_b(3, 3)
-      logical :: held_a, held_b, anchor_a, anchor_b, state_a, state_b
-      n = self%n
-      scale = 1/self%tension_ref
-      twist_scale = self%length_ref/self%gip
-      held_a = self%end_a%held()
-      held_b = self%end_b%held()
-      anchor_a = held_a .or. .not. held_b
-      anchor_b = held_b
-      call unpack(x, r, psi)
-      residual = 0
-      do c = 1, n - 1
-         residual(3*c - 2:3*c) = residual(3*c - 2:3*c) - self%force(:, c)
-         residual(3*c + 1:3*c + 3) = residual(3*c + 1:3*c + 3) + self%force(:, c)
-      end do
-      if (allocated(self%node_w)) then
-         do k = 1, n
-            residual(3*k) = residual(3*k) + section_node_weight(self, k)
-            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
-         end do
-      else
-         do k = 1, n
-            residual(3*k) = residual(3*k) + node_weight(self, k)
-            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) - self%load_node(:, k)
-         end do
-      end if
-      if (dynamic) then
-         t_new = t1 + t2
-         residual(1:3) = residual(1:3) - 0.5_dp*(self%end_a%applied_force3(t1) + self%end_a%applied_force3(t_new))
-         residual(3*n - 2:3*n) = residual(3*n - 2:3*n) &
-                                     - 0.5_dp*(self%end_b%applied_force3(t1) + self%end_b%applied_force3(t_new))
-         rate = 1/(theta*t2*t2)
-         self%v1 = ((r - self%r0)/t2 - (1 - theta)*self%v0)/theta
-         call self%mass_times(self%v1, self%force_node)
-         do k = 1, n
-            residual(3*k - 2:3*k) = residual(3*k - 2:3*k) + (self%force_node(:, k) - self%mv0(:, k))/t2
-         end do
-      else
-         t_new = t1
-         residual(1:3) = residual(1:3) - self%end_a%applied_force3(t1)
-         residual(3*n - 2:3*n) = residual(3*n - 2:3*n) - self%end_b%applied_force3(t1)
-         rate = 0
-      end if
-      ! Ends that depend on their own state (springs): their force, and its derivative.
-      state_a = self%end_a%state_dependent()
-      state_b = self%end_b%state_dependent()
-      if (state_a) call end_state(self%end_a, self%r0(:, 1), r(:, 1), residual(1:3), jac_a)
-      if (state_b) call end_state(self%end_b, self%r0(:, n), r(:, n), residual(3*n - 2:3*n), jac_b)
-      residual = residual*scale
-      ! Twist rows (quasi-static, at the new time): dU/dpsi_k minus the applied torques.
-      if (allocated(self%cell_gip)) then
-         do c = 1, n - 1
-            tau = (psi(c + 1) - psi(c))/self%ds(c)
-            residual(3*n + c) = residual(3*n + c) - self%cell_gip(c)*tau*twist_scale
-            residual(3*n + c + 1) = residual(3*n + c + 1) + self%cell_gip(c)*tau*twist_scale
-         end do
-      else
-         do c = 1, n - 1
-            tau = (psi(c + 1) - psi(c))/self%ds(c)
-            residual(3*n + c) = residual(3*n + c) - self%gip*tau*twist_scale
-            residual(3*n + c + 1) = residual(3*n + c + 1) + self%gip*tau*twist_scale
-         end do
-      end if
-      residual(3*n + 1) = residual(3*n + 1) + self%end_a%applied_torque(t_new)*twist_scale
-      residual(4*n) = residual(4*n) - self%end_b%applied_torque(t_new)*twist_scale
-      if (anchor_a .and. held_a) residual(3*n + 1) = psi(1)
-      if (anchor_a .and. .not. held_a) residual(3*n + 1) = psi(1) - self%psi_anchor
-      if (anchor_b) residual(4*n) = psi(n)
-      if (held_a) residual(1:3) = (r(:, 1) - self%end_a%position3(t_new))/self%length_ref
-      if (held_b) residual(3*n - 2:3*n) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref
-      if (.not. with_jacobian) return
-
-      jacobian%ab = 0
-      jacobian%factorised = .false.
-      band0 = jacobian%kl + jacobian%ku + 1
-      call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
-                               self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self), &
-                               self%skew_block, self%skewed)
-      if (allocated(self%cell_gip)) then
-         do c = 1, n - 1
-            call add_twist(3*n + c, 3*n + c, self%cell_gip(c)/self%ds(c)*twist_scale)
-            call add_twist(3*n + c, 3*n + c + 1, -self%cell_gip(c)/self%ds(c)*twist_scale)
-            call add_twist(3*n + c + 1, 3*n + c, -self%cell_gip(c)/self%ds(c)*twist_scale)
-            call add_twist(3*n + c + 1, 3*n + c + 1, self%cell_gip(c)/self%ds(c)*twist_scale)
-         end do
-      else
-         do c = 1, n - 1
-            call add_twist(3*n + c, 3*n + c, self%gip/self%ds(c)*twist_scale)
-            call add_twist(3*n + c, 3*n + c + 1, -self%gip/self%ds(c)*twist_scale)
-            call add_twist(3*n + c + 1, 3*n + c, -self%gip/self%ds(c)*twist_scale)
-            call add_twist(3*n + c + 1, 3*n + c + 1, self%gip/self%ds(c)*twist_scale)
-         end do
-      end if
-      do b = 1, 3
-         do a = 1, 3
-            if (state_a) call add_twist(a, b, -jac_a(a, b)*scale)
-            if (state_b) call add_twist(3*(n - 1) + a, 3*(n - 1) + b, -jac_b(a, b)*scale)
-         end do
-      end do
-      ! Bodies at nodes: their drag's derivative (its force is in load_node).
-      if (allocated(self%points)) then
-         do c = 1, size(self%points)
-            k = self%point_node(c)
-            if ((k == 1 .and. held_a) .or. (k == n .and. held_b)) cycle
-            do b = 1, 3
-               do a = 1, 3
-                  call add_twist(3*(k - 1) + a, 3*(k - 1) + b, -self%point_jac(a, b, c)*scale)
-               end do
-            end do
-         end do
-      end if
-      if (anchor_a) call set_row(3*n + 1, [3*n + 1], [1.0_dp])
-      if (anchor_b) call set_row(4*n, [4*n], [1.0_dp])
-      if (held_a) then
-         do a = 1, 3
-            call set_row(a, [a], [1/self%length_ref])
-         end do
-      end if
-      if (held_b) then
-         do a = 1, 3
-            call set_row(3*(n - 1) + a, [3*(n - 1) + a], [1/self%length_ref])
-         end do
-      end if
-
-   contains
-
-      !> A state-dependent end's force taken from its node's rows (statics: at rest at x1, time t1;
-      !> a step: from x0 over t2), and its derivative with respect to x1.
-      subroutine end_state(end, x0, x1, rows, jac)
-         class(end_condition), intent(in) :: end
-         real(dp), intent(in) :: x0(3), x1(3)
-         real(dp), intent(inout) :: rows(3)
-         real(dp), intent(out) :: jac(3, 3)
-         real(dp) :: f(3), dv(3, 3), damp(3)
-         if (dynamic) then
-            call end%step_force(t1, t2, x0, x1, f, jac, damp)
-         else
-            call end%state_force(t1, x1, [0.0_dp, 0.0_dp, 0.0_dp], f, jac, dv, damp)
-         end if
-         rows = rows - f
-      end subroutine end_state
-
-      !> Adds value to the entry (rr, cc) of the band.
-      subroutine add_twist(rr, cc, value)
-         integer, intent(in) :: rr, cc
-         real(dp), intent(in) :: value
-         jacobian%ab(band0 + rr - cc, cc) = jacobian%ab(band0 + rr - cc, cc) + value
-      end subroutine add_twist
-
-      !> Replace row rr by the given entries.
-      subroutine set_row(rr, cols, values)
-         integer, intent(in) :: rr, cols(:)
-         real(dp), intent(in) :: values(:)
-         integer :: cc, ii
-         do cc = max(1, rr - jacobian%kl), min(size(x), rr + jacobian%ku)
-            jacobian%ab(band0 + rr - cc, cc) = 0
-         end do
-         do ii = 1, size(cols)
-            jacobian%ab(band0 + rr - cols(ii), cols(ii)) = values(ii)
-         end do
-      end subroutine set_row
-   end subroutine assemble
-
-   !> The Jacobian's position blocks (cells, inertia, distributed loads) in band storage ab, as
-   !> explicit-shape arrays (a class argument's allocatable components cost several times the
-   !> instructions in these loops, docs/measurements/data/speed_rounds.md item 4); the same sums in the same order.
-   pure subroutine add_position_blocks(n, ld, ncol, ab, band0, block, ds, mass, load_block, scale, rate, held_a, held_b, &
-                                       dynamic, loads, skew_block, skewed)
-      integer, intent(in) :: n, ld, ncol, band0
-      real(dp), intent(inout) :: ab(ld, ncol)
-      real(dp), intent(in) :: block(3, 3, -1:1, n - 1), ds(n - 1), mass(0:2, n), load_block(3, 3, 0:1, n - 1)
-      real(dp), intent(in) :: scale, rate
-      logical, intent(in) :: held_a, held_b, dynamic, loads
-      !> The unequal shares' blocks (cable_load cell_skew) and whether there are any.
-      real(dp), intent(in) :: skew_block(3, 3, 0:1, n - 1)
-      logical, intent(in) :: skewed
-      integer :: c, cp, side, node, j, k, a, b, row, col
-      real(dp) :: sgn, t(3, 3), share
-      ! Cell c's force N_c enters node c with - and node c+1 with +; e_cp = (R_cp+1 - R_cp) / ds_cp.
-      ! Each block is scaled once: (+-1 / ds) scale block = +-((1 / ds) scale block), the same bits.
-      do c = 1, n - 1
-         do cp = max(1, c - 1), min(n - 1, c + 1)
-            sgn = 1.0_dp/ds(cp)*scale
-            do b = 1, 3
-               do a = 1, 3
-                  t(a, b) = sgn*block(a, b, cp - c, c)
-               end do
-            end do
-            do side = 0, 1
-               node = cp + side
-               do j = 0, 1
-                  k = c + j
-                  if (k == 1 .and. held_a) cycle
-                  if (k == n .and. held_b) cycle
-                  if (side == j) then
-                     do b = 1, 3
-                        col = 3*(node - 1) + b
-                        do a = 1, 3
-                           row = 3*(k - 1) + a
-                           ab(band0 + row - col, col) = ab(band0 + row - col, col) + t(a, b)
-                        end do
-                     end do
-                  else
-                     do b = 1, 3
-                        col = 3*(node - 1) + b
-                        do a = 1, 3
-                           row = 3*(k - 1) + a
-                           ab(band0 + row - col, col) = ab(band0 + row - col, col) - t(a, b)
-                        end do
-                     end do
-                  end if
-               end do
-            end do
-         end do
-      end do
-      if (dynamic) then
-         do k = 1, n
-            if (k == 1 .and. held_a) cycle
-            if (k == n .and. held_b) cycle
-            do a = 1, 3
-               row = 3*(k - 1) + a
-               do j = -2, 2
-                  node = k + j
-                  if (node < 1 .or. node > n) cycle
-                  col = row + 3*j
-                  ab(band0 + row - col, col) = ab(band0 + row - col, col) + mass(abs(j), min(k, node))*rate*scale
-               end do
-            end do
-         end do
-      end if
-      if (loads) then
-         ! Node c and node c+1 each get -F_c / 2 (and -G_c, +G_c of unequal shares).
-         do c = 1, n - 1
-            do side = 0, 1
-               node = c + side
-               do j = 0, 1
-                  k = c + j
-                  if (k == 1 .and. held_a) cycle
-                  if (k == n .and. held_b) cycle
-                  do a = 1, 3
-                     row = 3*(k - 1) + a
-                     do b = 1, 3
-                        col = 3*(node - 1) + b
-                        share = 0.5_dp*load_block(a, b, side, c)
-                        if (skewed) share = share + merge(1.0_dp, -1.0_dp, j == 0)*skew_block(a, b, side, c)
-                        ab(band0 + row - col, col) = ab(band0 + row - col, col) - share*scale
-                     end do
-                  end do
-               end do
-            end do
-         end do
-      end if
-   end subroutine add_position_blocks
-
-   !> Whether the piece has distributed loads.
-   pure logical function has_loads(self)
-      class(rod3d_piece), intent(in) :: self
-      has_loads = .false.
-      if (allocated(self%loads)) has_loads = size(self%loads) > 0
-   end function has_loads
-
    ! ---- for the submodules in model/rod3d/ ----
    ! gfortran 12 makes a module's private procedures local symbols that its submodules cannot link
-   ! to; making unpack, node_weight and assemble themselves public would keep the compiler from
-   ! inlining and specialising them in the time step here (a global symbol may be interposed under
-   ! fpm's -fPIC). So the submodules call these public wrappers.
+   ! to; making unpack and node_weight themselves public would keep the compiler from inlining
+   ! and specialising them in the time step here (a global symbol may be interposed under fpm's
+   ! -fPIC). So the submodules call these public wrappers.
 
    !> unpack, for the submodules.
    pure subroutine rod3d_unpack(x, r, psi)
@@ -1495,23 +806,4 @@ contains
       integer, intent(in) :: k
       rod3d_node_weight = any_node_weight(self, k)
    end function rod3d_node_weight
-
-   !> assemble, for the submodules (the statics).
-   subroutine rod3d_assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
-      !> Piece.
-      class(rod3d_piece), intent(inout) :: self
-      !> Unknowns, 4 per node.
-      real(dp), intent(in) :: x(:)
-      !> Statics: t1 the time; a step: t1 = t0, t2 = dt.
-      real(dp), intent(in) :: t1, t2
-      !> Scaled residual.
-      real(dp), intent(out) :: residual(:)
-      !> Jacobian (band storage).
-      type(band_matrix), intent(inout) :: jacobian
-      !> Whether to form the Jacobian; whether a step.
-      logical, intent(in) :: with_jacobian, dynamic
-      !> Time weight.
-      real(dp), intent(in) :: theta
-      call assemble(self, x, t1, t2, residual, jacobian, with_jacobian, dynamic, theta)
-   end subroutine rod3d_assemble
 end module xcable_model_rod3d

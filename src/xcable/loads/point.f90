@@ -8,18 +8,24 @@
 !> point has the same five). In water of density rho, with gravity g and a
 !> uniform current U, it adds to its node
 !>
-!>     inertia  m + Ca rho V              (the node's mass matrix, every direction)
-!>     weight   (m - rho V) g             (down; negative for a buoy)
-!>     drag     -1/2 rho Cd A |w| w,      w = V_node - U
+!>     inertia   m + Ca rho V              (the node's mass matrix, every direction)
+!>     weight    m g                       (down)
+!>     buoyancy  rho g V phi(z)            (up; phi the wetted share, 1 well under the surface)
+!>     drag      -1/2 rho Cd A |w| w,      w = V_node - U
 !>
-!> The buoyancy takes the body as fully submerged wherever it is (a named
-!> approximation: a buoy at the water surface is not modelled). Over a time
-!> step the drag acts on the step's mean velocity (R^n+1 - R^n) / dt, like
-!> the cells' drag, so that the work it does over the step is the force times
-!> the displacement; in statics w = -U. The weight is part of the node's
+!> The buoyancy is that of the sphere of the body's volume (radius
+!> R = (3 V / 4 pi)^(1/3)) cut by the water surface z_s: with h = z_s - (z - R)
+!> the depth of its lowest point, clamped to [0, 2 R], the wetted share is
+!> h^2 (3 R - h) / (4 R^3), smooth where it starts and ends (a named
+!> approximation: a buoy of another shape floats at another draft; its
+!> added mass and drag stay those of the whole body). Over a time step the
+!> buoyancy acts at the step's mean height (z^n + z^n+1) / 2 and the drag on
+!> the step's mean velocity (R^n+1 - R^n) / dt, like the cells' loads, so that
+!> the work they do over the step is their force times the displacement; in
+!> statics at the height and w = -U. The weight m g is part of the node's
 !> weight (its potential g z in the ledger), the inertia part of the mass
-!> matrix (its kinetic energy), and the drag's work is booked with the other
-!> loads'.
+!> matrix (its kinetic energy), and the buoyancy's and the drag's work are
+!> booked with the other loads'.
 module xcable_loads_point
    use xcable_core_kinds, only: dp
    implicit none
@@ -33,15 +39,22 @@ module xcable_loads_point
       !> Mass, kg; displaced volume, m^3; added-mass coefficient; drag coefficient; projected
       !> area for the drag, m^2.
       real(dp) :: mass = 0, volume = 0, ca = 0, cd = 0, area = 0
-      !> Water density, kg/m^3 (0: no water); gravity, m/s^2; the current (x, y, z), m/s.
-      real(dp) :: density = 0, gravity = 0, current(3) = 0
+      !> Water density, kg/m^3 (0: no water); gravity, m/s^2; the current (x, y, z), m/s; the
+      !> height of the water surface, m.
+      real(dp) :: density = 0, gravity = 0, current(3) = 0, surface = huge(1.0_dp)
       !> Its name in messages ('point_1').
       character(len=16) :: label = ''
    contains
       !> Mass with the added mass, kg.
       procedure :: inertia
-      !> Weight less buoyancy, N (positive down).
+      !> Weight less buoyancy when fully submerged, N (positive down).
       procedure :: net_weight
+      !> Weight, N (down).
+      procedure :: weight
+      !> Whether it has buoyancy.
+      procedure :: has_buoyancy
+      !> Buoyancy at a height, with its derivative.
+      procedure :: buoyancy
       !> Whether it has drag.
       procedure :: has_drag
       !> Drag force on its node over a step or at rest, with its derivative.
@@ -61,6 +74,44 @@ contains
       class(point_body), intent(in) :: self
       net_weight = (self%mass - self%density*self%volume)*self%gravity
    end function net_weight
+
+   !> m g, N.
+   pure real(dp) function weight(self)
+      class(point_body), intent(in) :: self
+      weight = self%mass*self%gravity
+   end function weight
+
+   !> Whether rho V g > 0.
+   pure logical function has_buoyancy(self)
+      class(point_body), intent(in) :: self
+      has_buoyancy = self%density*self%volume*self%gravity > 0
+   end function has_buoyancy
+
+   !> The buoyancy rho g V phi(z) (N, up) of the body centred at height z, and its derivative in
+   !> z (N/m): phi the wetted share of the sphere of volume V under the surface.
+   pure subroutine buoyancy(self, z, f, df_dz)
+      class(point_body), intent(in) :: self
+      !> Height of the body's centre, m.
+      real(dp), intent(in) :: z
+      !> Buoyancy, N; its derivative, N/m.
+      real(dp), intent(out) :: f, df_dz
+      real(dp), parameter :: pi = acos(-1.0_dp)
+      real(dp) :: r, h, full
+      full = self%density*self%gravity*self%volume
+      f = full
+      df_dz = 0
+      if (self%surface >= huge(1.0_dp)) return
+      r = (3*self%volume/(4*pi))**(1.0_dp/3)
+      h = self%surface - (z - r)
+      if (h >= 2*r) return
+      if (h <= 0) then
+         f = 0
+         return
+      end if
+      ! phi = h^2 (3 r - h) / (4 r^3); dphi/dz = -dphi/dh = -(6 r h - 3 h^2) / (4 r^3).
+      f = full*h*h*(3*r - h)/(4*r**3)
+      df_dz = -full*(6*r*h - 3*h*h)/(4*r**3)
+   end subroutine buoyancy
 
    !> Whether 1/2 rho Cd A > 0.
    pure logical function has_drag(self)

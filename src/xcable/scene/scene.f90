@@ -173,7 +173,10 @@ contains
             p%area = pc%area
             p%gravity = config%gravity
             p%density = max(config%fluid_density, 0.0_dp)
-            if (p%density > 0) p%current = [config%current_x, config%current_y, config%current_z]
+            if (p%density > 0) then
+               p%current = [config%current_x, config%current_y, config%current_z]
+               p%surface = config%surface_z
+            end if
          end associate
       end do
 

@@ -368,7 +368,8 @@ contains
          call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
                   'down on the joint', 0.0_dp, 1.0e9_dp)
          call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &
-                  'density g volume up on the joint, taken fully submerged', 0.0_dp, 1.0e6_dp)
+                  'density g volume up, less where the sphere of this volume rises through &fluid surface_z', &
+                  0.0_dp, 1.0e6_dp)
          call add(t, group, 'ca', 'real', '-', '0', 'added-mass coefficient: ca &fluid density volume more '// &
                   'inertia, in every direction', 0.0_dp, 100.0_dp)
          call add(t, group, 'cd', 'real', '-', '0', 'drag coefficient on area: the force 1/2 &fluid density cd '// &

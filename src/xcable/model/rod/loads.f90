@@ -20,7 +20,7 @@ contains
       if (allocated(self%points)) call point_loads(self, x, dt)
    end subroutine apply_loads
 
-   !> The drag of the bodies at nodes on load_node (which cell_loads cleared, or which holds the
+   !> The buoyancy and drag of the bodies at nodes on load_node (which cell_loads cleared, or which holds the
    !> zeros of init when there are no cell loads: cleared here), and its derivative (x, z) in
    !> point_jac.
    subroutine point_loads(self, x, dt)
@@ -28,24 +28,45 @@ contains
       real(dp), intent(in) :: x(:)
       real(dp), intent(in) :: dt
       integer :: i, k
-      real(dp) :: f(3), jac(3, 3), x1(3)
+      real(dp) :: f(3), jac(3, 3), x0(3), x1(3)
       logical :: cleared
       cleared = allocated(self%loads)
       if (cleared) cleared = size(self%loads) > 0
       if (.not. cleared) self%load_node = 0
       do i = 1, size(self%points)
-         if (.not. self%points(i)%has_drag()) cycle
          k = self%point_node(i)
          x1 = [x(2*k - 1), 0.0_dp, x(2*k)]
          if (dt > 0) then
-            call self%points(i)%drag(dt, [self%r0(1, k), 0.0_dp, self%r0(2, k)], x1, f, jac)
+            x0 = [self%r0(1, k), 0.0_dp, self%r0(2, k)]
          else
-            call self%points(i)%drag(dt, x1, x1, f, jac)
+            x0 = x1
          end if
+         call body_force(self%points(i), dt, x0, x1, f, jac)
          self%load_node(:, k) = self%load_node(:, k) + self%load_factor*f([1, 3])
          self%point_jac(:, :, i) = self%load_factor*jac([1, 3], [1, 3])
       end do
    end subroutine point_loads
+
+   !> The force of a body on its node besides its weight (N): its buoyancy at the step's mean
+   !> height (statics: at x1) and its drag, with the derivative with respect to x1 (N/m).
+   pure subroutine body_force(body, dt, x0, x1, f, jac)
+      type(point_body), intent(in) :: body
+      real(dp), intent(in) :: dt, x0(3), x1(3)
+      real(dp), intent(out) :: f(3), jac(3, 3)
+      real(dp) :: fb, dfb
+      f = 0
+      jac = 0
+      if (body%has_drag()) call body%drag(dt, x0, x1, f, jac)
+      if (.not. body%has_buoyancy()) return
+      if (dt > 0) then
+         call body%buoyancy(0.5_dp*(x0(3) + x1(3)), fb, dfb)
+         dfb = 0.5_dp*dfb
+      else
+         call body%buoyancy(x1(3), fb, dfb)
+      end if
+      f(3) = f(3) + fb
+      jac(3, 3) = jac(3, 3) + dfb
+   end subroutine body_force
 
    !> The distributed loads along the cells (apply_loads).
    subroutine cell_loads(self, x, dt, theta, with_jacobian)

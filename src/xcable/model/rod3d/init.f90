@@ -164,8 +164,8 @@ contains
    end subroutine rod3d_set_sections
 
    !> Bodies at nodes: each on the node at its arc length (within 1e-9 of the piece's length), if
-   !> the piece has one there; its inertia on the diagonal of the mass matrix, its weight less
-   !> buoyancy on the node's weight (node_w: set_sections first, or the uniform share).
+   !> the piece has one there; its inertia on the diagonal of the mass matrix, its weight on the
+   !> node's weight (its buoyancy and drag are loads, point_loads) (node_w: set_sections first, or the uniform share).
    module subroutine rod3d_set_points(self, points)
       class(rod3d_piece), intent(inout) :: self
       type(point_body), intent(in) :: points(:)
@@ -193,7 +193,7 @@ contains
       do i = 1, found
          k = self%point_node(i)
          self%mass(0, k) = self%mass(0, k) + self%points(i)%inertia()
-         self%node_w(k) = self%node_w(k) + self%points(i)%net_weight()
+         self%node_w(k) = self%node_w(k) + self%points(i)%weight()
       end do
    end subroutine rod3d_set_points
 end submodule xcable_model_rod3d_init

@@ -378,8 +378,8 @@ contains
                'also write an XDMF sidecar (file with the extension .xmf) for ParaView and other XDMF readers; '// &
                'written when the run completes', resume_may_differ=.true.)
       call add(t, 'output', 'checkpoint_interval', 'real', 's', '0', &
-               'wall-clock time between checkpoints of a rod run (the file &output file + .ckpt, for xcable '// &
-               '--resume); a rod run also writes one when it gets SIGTERM, whatever this says', 0.0_dp, 1.0e7_dp, &
+               'wall-clock time between checkpoints of a run, either scheme (the file &output file + .ckpt, for '// &
+               'xcable --resume); a run also writes one when it gets SIGTERM, whatever this says', 0.0_dp, 1.0e7_dp, &
                lower_open=.true., zero_means='none', resume_may_differ=.true.)
       t = t(1:filled)
    end subroutine build_table

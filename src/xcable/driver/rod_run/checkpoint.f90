@@ -199,7 +199,8 @@ contains
          if (n_ends == 4) self%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
          call self%history%reserve(max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, &
                                    n_ends, self%options%energy, with_y=y_kept)
-         call self%history%keep_measures(measure_names(self%scene%loads))
+         ! (The box scheme's run has no scene loads.)
+         if (allocated(self%scene%loads)) call self%history%keep_measures(measure_names(self%scene%loads))
          self%history%n = n_records
       end if
       associate (h => self%history, m => n_records)

@@ -11,10 +11,10 @@
 !> 1 numerical failure (the result file says 'failed', with the reason and
 !> the time; or no file when the statics fails); 2 bad input or output path
 !> (no result file), or a checkpoint that --resume refuses (nothing changed);
-!> 3 interrupted by SIGTERM (rod scheme): a checkpoint was written and the
+!> 3 interrupted by SIGTERM: a checkpoint was written and the
 !> result file says 'interrupted'; `xcable --resume case.nml` continues.
 !>
-!> Checkpoints (rod scheme): the file &output file + '.ckpt', written every
+!> Checkpoints (either scheme): the file &output file + '.ckpt', written every
 !> &output checkpoint_interval seconds of wall time and when SIGTERM arrives;
 !> removed when the run completes or fails. A new run (without --resume)
 !> removes a checkpoint left by an earlier one of the same result file.
@@ -46,7 +46,7 @@ program xcable_main
    character(:), allocatable :: checkpoint, fingerprint, run_id, problem
    integer :: nargs, steps
    real(dp) :: dt
-   logical :: check_only, resume, exists, rod
+   logical :: check_only, resume, exists
    character(len=*), parameter :: usage = 'usage: xcable [--check | --resume] <case.nml>   (--check: validate only; '// &
                                           '--resume: continue from the checkpoint; see docs/user/namelist.md for the namelist '// &
                                           'groups); xcable --schema markdown|tsv; xcable --outputs markdown|tsv; '// &
@@ -103,21 +103,17 @@ program xcable_main
    end if
 
    output%quiet = config%quiet
-   ! Checkpoints and SIGTERM: the rod scheme (either model).
-   rod = sim%scheme /= 'box'
-   ! SIGTERM (a batch system's time limit): from here on the rod run writes a
-   ! checkpoint at its next step and stops (before the dynamics: at t = 0).
-   if (rod) then
-      problem = install_termination_handler()
-      if (len(problem) > 0) write (error_unit, '(a)') 'xcable: warning: '//problem//': SIGTERM ends the run '// &
-         'without a checkpoint'
-   end if
+   ! SIGTERM (a batch system's time limit): from here on the run (either scheme, either model)
+   ! writes a checkpoint at its next step and stops (before the dynamics: at t = 0).
+   problem = install_termination_handler()
+   if (len(problem) > 0) write (error_unit, '(a)') 'xcable: warning: '//problem//': SIGTERM ends the run '// &
+      'without a checkpoint'
    checkpoint = checkpoint_path(trim(config%file))
    fingerprint = config_text(config, fingerprint=.true.)
    if (resume) then
       ! Everything is checked before the result file is touched.
       inquire (file=checkpoint, exist=exists)
-      if (.not. exists) call fail_text(trim(path)//': no checkpoint '//checkpoint//' to resume from (a rod run '// &
+      if (.not. exists) call fail_text(trim(path)//': no checkpoint '//checkpoint//' to resume from (a run '// &
                                        'writes one every &output checkpoint_interval seconds and when it gets '// &
                                        'SIGTERM); run without --resume')
       call sim%enable_checkpoints(checkpoint, fingerprint, '', config%checkpoint_interval, on_termination=.true.)
@@ -150,8 +146,8 @@ program xcable_main
          call output%finish('failed', error%message)
          call fail_input(error)
       end if
-      if (rod) call sim%enable_checkpoints(checkpoint, fingerprint, run_id, config%checkpoint_interval, &
-                                           on_termination=.true.)
+      call sim%enable_checkpoints(checkpoint, fingerprint, run_id, config%checkpoint_interval, &
+                              on_termination=.true.)
       info => sim%static()
       if (.not. config%quiet) write (error_unit, '(a)') 'xcable: statics solved (end tensions '// &
          quantity(info%tension_a, 'N')//' and '//quantity(info%tension_b, 'N')//'); dynamics with the '// &

@@ -1,4 +1,4 @@
-!> Checkpoints and resume (rod scheme): a run stopped by SIGTERM (raised
+!> Checkpoints and resume (either scheme): a run stopped by SIGTERM (raised
 !> from inside the run, by the observer at a chosen snapshot) and resumed
 !> from its checkpoint computes, bit for bit, the snapshots, history and
 !> summary of the run that was not stopped; so does a run resumed from a
@@ -13,8 +13,11 @@
 !> the same line parted inside (two 3-D pieces; before the break and during
 !> its ramp), and a release off the plane whose steps are rejected and halved; the
 !> snapshots' 3-D fields and the history's y components are compared too.
-!> Damaged, truncated, foreign (another version, another namelist, the
-!> other model) and missing checkpoints are refused.
+!> The box scheme the same way (box/model.f90): the paper's rupture stopped
+!> during and after the release and with its step halved, and a checkpoint
+!> every 7 steps. Damaged, truncated, foreign (another version, another
+!> namelist, the other model, the other scheme) and missing checkpoints are
+!> refused.
 module suite_checkpoint
    use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
@@ -119,7 +122,9 @@ contains
                new_unittest('periodic_checkpoints_change_nothing_3d', test_periodic_3d), &
                new_unittest('refuses_the_other_model', test_other_model), &
                new_unittest('sigterm_then_resume_is_bitwise_skip', test_sigterm_skip), &
-               new_unittest('sigterm_then_resume_is_bitwise_tension', test_sigterm_tension)]
+               new_unittest('sigterm_then_resume_is_bitwise_tension', test_sigterm_tension), &
+               new_unittest('sigterm_then_resume_is_bitwise_box', test_sigterm_box), &
+               new_unittest('periodic_checkpoints_change_nothing_box', test_periodic_box)]
    end subroutine collect_checkpoint
 
    subroutine recorder_static(self, info, error)
@@ -169,6 +174,13 @@ contains
       c%energy = .true.
       c%interval = 0.0025_dp
    end function paper_scene
+
+   !> The paper's rupture (paper_scene) with the box scheme.
+   function box_scene() result(c)
+      type(case_config) :: c
+      c = paper_scene()
+      c%scheme = 'box'
+   end function box_scene
 
    !> An inclined taut line (end b at 60 m, 20 m up) whose end a moves up and
    !> down, parting in the middle at t = 10 ms: before the break one piece, after it two.
@@ -318,8 +330,12 @@ contains
       call check(error, stopped%rod%t > 0 .and. stopped%rod%t < c%t_end, what//': stopped at t = '//str(stopped%rod%t))
       if (allocated(error)) return
       ! With reuse_jacobian the checkpoint holds a kept factorisation (its LU factors and pivots).
-      if (stopped%rod%options%newton%reuse_jacobian) call check(error, stopped%rod%pieces(1)%work%usable, &
-                                                                 what//': no factorisation kept at the checkpoint')
+      if (stopped%scheme == 'box') then
+         call check(error, stopped%box%stepper%work%usable .and. stopped%box%stepper%have_prev, &
+                    what//': no factorisation kept, or no level before, at the checkpoint')
+      else if (stopped%rod%options%newton%reuse_jacobian) then
+         call check(error, stopped%rod%pieces(1)%work%usable, what//': no factorisation kept at the checkpoint')
+      end if
       if (allocated(error)) return
       ! With fluid loads their work so far is part of the state (the ledger's loads).
       if (c%fluid_density > 0) call check(error, merge(stopped%rod3%pieces(1)%run%load_work, stopped%rod%load_work, &
@@ -410,6 +426,60 @@ contains
          call check(error, sim%rod%skipped_node_solves > 0, what//': nothing skipped')
       end subroutine skips
    end subroutine test_sigterm_skip
+
+   !> The box scheme: SIGTERM at snapshot k, the checkpoint (the two time levels the first guess
+   !> extrapolates from, the kept factorisation, the ledger, the box scheme's own history), the
+   !> resumed run bit for bit as the run that was not stopped: during the release (snapshot 2,
+   !> t = 5 ms), after it (snapshot 12), and with the step halved (Courant number 2, at most 3
+   !> Newton iterations: 83 rejected attempts in 92 steps).
+   subroutine test_sigterm_box(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: problem
+      type(case_config) :: c
+      problem = install_termination_handler()
+      call check(error, len(problem) == 0, problem)
+      if (allocated(error)) return
+      call stopped_and_resumed('box scheme, paper rupture, SIGTERM during the release', box_scene(), 2, error)
+      if (allocated(error)) return
+      call stopped_and_resumed('box scheme, paper rupture, SIGTERM after the release', box_scene(), 12, error)
+      if (allocated(error)) return
+      c = box_scene()
+      c%courant = 2
+      c%newton_max_iter = 3
+      call stopped_and_resumed('box scheme, step halved (3 Newton iterations at most)', c, 4, error, halved=.true.)
+   end subroutine test_sigterm_box
+
+   !> The box scheme with a checkpoint every 7 steps: the run is as without them; resumed from
+   !> the last, the same end again.
+   subroutine test_periodic_box(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: reference, periodic, resumed
+      type(recorder) :: whole, with_checkpoints, rest, none
+      type(case_config) :: c
+      integer :: kept
+      c = box_scene()
+      call plain_run(c, reference, whole, error)
+      if (allocated(error)) return
+      call checkpointed(c, periodic, 7, error)
+      if (allocated(error)) return
+      call periodic%run(with_checkpoints, error)
+      if (allocated(error)) return
+      call same_run('box, a checkpoint every 7 steps', reference, periodic, whole, with_checkpoints, none, error)
+      if (allocated(error)) return
+      call check(error, periodic%checkpoints_written == (reference%rod%history%n - 1)/7, 'checkpoints written: '// &
+                 str(periodic%checkpoints_written)//' for '//str(reference%rod%history%n)//' steps')
+      if (allocated(error)) return
+      call resumed_run(c, resumed, rest, error)
+      if (allocated(error)) return
+      kept = whole%n - rest%n
+      with_checkpoints%n = kept
+      call same_run('box, resumed from the last of them', reference, resumed, whole, with_checkpoints, rest, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,i0,a,i0,a)') 'box scheme: ', periodic%checkpoints_written, &
+         ' checkpoints (every 7 steps) change nothing; resumed from the last (', kept, &
+         ' snapshots kept): bitwise equal'
+      call remove_checkpoint(path)
+   end subroutine test_periodic_box
 
    !> A checkpoint every 7 steps leaves the run as it is; the last one,
    !> resumed, gives the same end again.
@@ -714,10 +784,12 @@ contains
       call remove_checkpoint(path)
    end subroutine test_periodic_3d
 
-   !> A checkpoint resumes only with the model that wrote it: the paper's
-   !> rupture checkpointed in 2-D is refused by the same case with model =
-   !> '3d', and checkpointed in 3-D by the case with model = '2d'; the
-   !> message names the models (not only the namelist line that differs).
+   !> A checkpoint resumes only with the model and scheme that wrote it: the
+   !> paper's rupture checkpointed in 2-D is refused by the same case with
+   !> model = '3d', and checkpointed in 3-D by the case with model = '2d';
+   !> checkpointed by the rod scheme, by the case with scheme = 'box', and the
+   !> other way round; the message names the models or schemes (not only the
+   !> namelist line that differs).
    subroutine test_other_model(error)
       type(error_type), allocatable, intent(out) :: error
       type(case_config) :: c2, c3
@@ -729,7 +801,15 @@ contains
       if (allocated(error)) return
       call written_then_refused(c3, c2, 'was written by a 3-D run, this case runs the 2-D model', error)
       if (allocated(error)) return
-      write (output_unit, '(4x,a)') 'a 2-D checkpoint refused by a 3-D case, a 3-D one by a 2-D case'
+      ! The other scheme: the rod's checkpoint offered to the box scheme, and the box's to the rod.
+      c3 = c2
+      c3%scheme = 'box'
+      call written_then_refused(c2, c3, 'was written by a rod-scheme run, this case runs the box scheme', error)
+      if (allocated(error)) return
+      call written_then_refused(c3, c2, 'was written by a box-scheme run, this case runs the rod scheme', error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a)') 'a 2-D checkpoint refused by a 3-D case, a 3-D one by a 2-D case; a rod '// &
+         'checkpoint by a box case, a box one by a rod case'
       call remove_checkpoint(path)
 
    contains

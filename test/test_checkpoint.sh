@@ -32,6 +32,9 @@
 # line parted inside (s = 20 m, at 0.1 s: two 3-D pieces, 122 output nodes)
 # killed after its first checkpoint (after the break) and resumed. The 2-D
 # checkpoint offered to the 3-D case is refused (exit 2, naming both models).
+# The box scheme the same two ways (the paper's rupture at 180 kN, 961 nodes, 2366 steps, about
+# 1 s): killed after its first checkpoint and resumed, and stopped by SIGTERM and resumed; both
+# equal their reference bit for bit.
 # Then 24 SIGKILLs placed inside the 3-D run's file writes (a preloaded
 # library counts write calls; needs a C compiler): each resume equals the
 # reference or is refused with exit 2; none completes with other numbers.
@@ -108,6 +111,18 @@ write_case3() {
 &rupture  s_break = 60, t_break = 0.5, time = 1.5 /
 &numerics model = '3d', nodes = 121, dt = 0.005, t_end = 2.5 /
 &output   file = '$1.h5', interval = 0.02, gnuplot = .true., energy = .true.$2 /
+EOF
+}
+
+# write_caseb NAME [OUTPUT EXTRA]: the box-scheme namelist NAME.nml writing NAME.h5.
+write_caseb() {
+   cat >"$1.nml" <<EOF
+! test/test_checkpoint.sh: the paper's rupture at 180 kN with the box scheme
+&material compression = 'law' /
+&static   tension = 180000 /
+&rupture  t_break = 0.005 /
+&numerics scheme = 'box', nodes = 961, courant = 1.0, t_end = 0.14 /
+&output   file = '$1.h5', interval = 0.01, gnuplot = .true., energy = .true.$2 /
 EOF
 }
 
@@ -246,6 +261,38 @@ code=$?
 check "--resume of the intact checkpoint completes it (exit $code), no checkpoint left" \
    test "$code" -eq 0 -a "$(status_of stopped.h5)" = complete -a ! -e stopped.h5.ckpt
 check "the resumed run equals the uninterrupted one bit for bit" same_as_reference stopped
+
+echo "test_checkpoint: box scheme reference run"
+write_caseb refb ''
+"$exe" refb.nml 2>refb.err
+check "the box-scheme reference run completes, without a checkpoint" \
+   test "$(status_of refb.h5)" = complete -a ! -e refb.h5.ckpt
+stepsb=$(int_attr refb.h5 /summary/steps)
+
+echo "test_checkpoint: box scheme, SIGKILL after the first checkpoint, then --resume"
+write_caseb killedb ', checkpoint_interval = 0.2'
+killed_and_resumed killedb refb "$stepsb"
+
+echo "test_checkpoint: box scheme, SIGTERM, then --resume"
+write_caseb stoppedb ''
+"$exe" stoppedb.nml 2>stoppedb.err &
+pid=$!
+wait_for 120 running stoppedb.h5
+sleep 0.1
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"
+code=$?
+pid=""
+check "SIGTERM: exit 3, 'interrupted', a checkpoint" \
+   test "$code" -eq 3 -a "$(status_of stoppedb.h5)" = interrupted -a -s stoppedb.h5.ckpt
+not_sameb() { ! same_as_reference stoppedb refb >/dev/null; }
+check "control: the comparison tells the interrupted file from the reference" not_sameb
+"$exe" --resume stoppedb.nml 2>stoppedb.resume.err
+code=$?
+check "--resume completes it (exit $code), no checkpoint left" \
+   test "$code" -eq 0 -a "$(status_of stoppedb.h5)" = complete -a ! -e stoppedb.h5.ckpt
+check "the resumed box-scheme run equals the uninterrupted one bit for bit ($stepsb steps)" \
+   same_as_reference stoppedb refb
 
 echo "test_checkpoint: 3-D reference run"
 write_case3 ref3 ''

@@ -252,8 +252,6 @@ begin 'checkpoint_interval = -1' 'checkpoint_interval = -1' 'must be 0 (none) or
 from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = -1, /'; check
 begin 'checkpoint_interval = 1e300' 'checkpoint_interval' '1e7'
 from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = 1e300, /'; check
-begin 'checkpoint_interval with the box scheme' 'checkpoint_interval = 60' 'box scheme writes no checkpoints'
-from fast_180kN; edit 's/^&output   /\&output   checkpoint_interval = 60, /'; set_in numerics "scheme = 'box'"; check
 begin 'gravity = 0, the box scheme (static direction undetermined)' 'gravity' 'box'
 from slow_315kN; add '&cable gravity = 0 /'; set_in numerics "scheme = 'box'"; check
 begin 'gravity = 0, a cable held at one end only (no static shape)' 'gravity = 0' 'held at one end'

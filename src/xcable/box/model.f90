@@ -28,8 +28,9 @@ module xcable_box_model
                                   rupture_factor, energy_terms
    use xcable_solver_newton, only: newton_workspace, newton_options, newton_report, newton_solve
    use xcable_theory_closed_forms, only: wave_speed
-   use xcable_io_archive, only: state_archive
-   use xcable_driver_rod_run, only: rod_run, cable_model, snapshot_time
+   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_cube, sync_int, sync_ints
+   use xcable_driver_rod_run, only: rod_run, cable_model, snapshot_time, exchange_progress
+   use xcable_driver_history, only: exchange_records
    use xcable_driver_records, only: run_observer, run_summary, n_fields
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
@@ -132,6 +133,30 @@ contains
       type(rod_run), intent(inout) :: run
       class(run_observer), intent(inout), optional :: observer
       type(error_type), allocatable, intent(out) :: error
+      integer :: np
+      np = size(self%s)
+      call box_ready(self)
+      self%work_done = 0
+      self%power_old = 0
+      if (allocated(run%history%end_labels)) deallocate (run%history%end_labels)
+      allocate (run%history%end_labels(2))
+      run%history%end_labels = [character(len=8) :: 'end_a', 'end_b']
+      call run%history%reserve(16, 2, self%options%energy)
+      if (.not. present(observer)) return
+      call observer%static(run%info, error)
+      if (allocated(error)) return
+      block
+         real(dp) :: fields(np, n_fields)
+         call state_fields(self%cable, self%s, self%y, fields)
+         call observer%snapshot(0.0_dp, fields, error)
+      end block
+   end subroutine box_begin
+
+   !> The state at t = 0 (the static state, no step before it), the Newton settings of a step,
+   !> the system and its work arrays, the static end force, and the box scheme's own records
+   !> empty with room for the requested steps: what begin and load_state start from.
+   subroutine box_ready(self)
+      class(box_model), intent(inout) :: self
       type(box_history) :: fresh_history
       type(box_summary) :: fresh_summary
       real(dp) :: end_tension, c_ref
@@ -173,21 +198,7 @@ contains
          capacity = int(min(o%t_end/o%dt + o%t_end/max(o%interval, o%dt), 1.0e6_dp)) + 16
       end associate
       call self%history%reserve(capacity, self%options%energy)
-      self%work_done = 0
-      self%power_old = 0
-      if (allocated(run%history%end_labels)) deallocate (run%history%end_labels)
-      allocate (run%history%end_labels(2))
-      run%history%end_labels = [character(len=8) :: 'end_a', 'end_b']
-      call run%history%reserve(16, 2, self%options%energy)
-      if (.not. present(observer)) return
-      call observer%static(run%info, error)
-      if (allocated(error)) return
-      block
-         real(dp) :: fields(np, n_fields)
-         call state_fields(self%cable, self%s, self%y, fields)
-         call observer%snapshot(0.0_dp, fields, error)
-      end block
-   end subroutine box_begin
+   end subroutine box_ready
 
    !> The box scheme's step plan: a whole number of equal steps, of at most the step control's
    !> step, to the next snapshot or t_end (t_stop); landing: this is the last of them.
@@ -447,20 +458,130 @@ contains
       type(rod_run), intent(inout) :: run
    end subroutine box_conclude
 
-   !> The box scheme writes no checkpoints (the simulation refuses them).
+   !> Save the state between two steps (after begin, or a pause of the step loop) to an archive
+   !> (see exchange_box); archive%ok tells whether it was stored.
    subroutine box_save_state(self, run, archive)
       class(box_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       class(state_archive), intent(inout) :: archive
+      type(error_type), allocatable :: error
+      call exchange_box(self, run, archive, .true., error)
    end subroutine box_save_state
 
+   !> Load a state saved by save_state into a run prepared from the same case (setup done,
+   !> begin not called), ready for the step loop. Errors (stat_input) when the archive fails
+   !> or holds a state this run cannot have.
    subroutine box_load_state(self, run, archive, error)
       class(box_model), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       class(state_archive), intent(inout) :: archive
       type(error_type), allocatable, intent(out) :: error
-      call fatal_error(error, 'the box scheme writes no checkpoints and cannot resume', stat_input)
+      call box_ready(self)
+      call exchange_box(self, run, archive, .false., error)
+      if (allocated(error)) return
+      if (.not. archive%ok) then
+         call fatal_error(error, archive%message, stat_input)
+         return
+      end if
+      call system_clock(run%clock%start, run%clock%rate)
+      run%clock%last_report = 0
+      run%clock%last_checkpoint = 0
+      run%clock%records_at_checkpoint = run%history%n
    end subroutine box_load_state
+
+   !> The state of a box-scheme run, listed once for saving (saving = .true.) and loading.
+   !> Besides what the rods keep of the step loop and the records (rod_run's exchange_progress
+   !> and exchange_records: the step control, the next snapshot, the wall time, every record of
+   !> the run's history and the summary's counters), it is:
+   !>  - time and step size asked for (run/t, run/dt);
+   !>  - the unknowns at the current level and the level before (box/y, box/y_prev: the first
+   !>    guess extrapolates from both), the step between them and whether there was one;
+   !>  - the ledger's accumulators (the work of the end force and its last power);
+   !>  - Newton's kept factorisation when one is kept (reuse_jacobian): LU factors, pivots and
+   !>    the contraction of the last solve;
+   !>  - the box scheme's own history (every record: time, step, end velocity, fixed-end
+   !>    tension, iterations, rejections, both ends' unknowns and end b's position, the energies)
+   !>    and strain extremes, from which finish makes its figures, and its summary's counters
+   !>    (factorisations, the largest drift of the Euler parameters).
+   !> Not saved, because every attempt recomputes them (prepare_step and the residual): the
+   !> system's old level and work arrays, Newton's residual and update, the new level being
+   !> tried; because begin and load_state compute them from the case (box_ready): the static
+   !> state and its end force, the system's constants, the Newton settings of a step.
+   subroutine exchange_box(self, run, a, saving, error)
+      type(box_model), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(state_archive), intent(inout) :: a
+      logical, intent(in) :: saving
+      type(error_type), allocatable, intent(out) :: error
+      integer :: np, n, flags(4)
+      real(dp) :: reals(5), strains(2)
+      call sync_real(a, 'run/t', run%t, saving)
+      call sync_real(a, 'run/dt', run%dt, saving)
+      call exchange_progress(run, a, saving)
+      np = size(self%s)
+      call sync_int(a, 'box/nodes', np, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (np /= size(self%s)) then
+            call fatal_error(error, 'the checkpoint holds '//str(np)//' nodes, this case '//str(size(self%s)), &
+                             stat_input)
+            return
+         end if
+      end if
+      call sync_matrix(a, 'box/y', self%y, saving)
+      call sync_matrix(a, 'box/y_prev', self%y_prev, saving)
+      reals = [self%h_prev, self%work_done, self%power_old, self%work%contraction, self%summary%max_unit_norm_error]
+      call sync_reals(a, 'box/reals', reals, saving)
+      flags = [merge(1, 0, self%have_prev), merge(1, 0, self%work%usable .and. self%newton%reuse_jacobian), &
+               merge(1, 0, self%work%jacobian%factorised), self%summary%factorisations]
+      call sync_ints(a, 'box/flags', flags, saving)
+      if (.not. saving) then
+         self%h_prev = reals(1)
+         self%work_done = reals(2)
+         self%power_old = reals(3)
+         self%work%contraction = reals(4)
+         self%summary%max_unit_norm_error = reals(5)
+         self%have_prev = flags(1) == 1
+         self%work%usable = flags(2) == 1
+         self%work%jacobian%factorised = flags(3) == 1
+         self%summary%factorisations = flags(4)
+      end if
+      if (flags(2) == 1) then
+         call sync_matrix(a, 'box/jacobian', self%work%jacobian%ab, saving)
+         call sync_ints(a, 'box/pivots', self%work%jacobian%ipiv, saving)
+      end if
+      ! The box scheme's own history.
+      n = self%history%n
+      call sync_int(a, 'box/history/n', n, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (n < 0 .or. a%stored_size('box/history/time') /= n + 1) then
+            call fatal_error(error, 'the checkpoint''s box history has '//str(n)//' records but '// &
+                             str(a%stored_size('box/history/time'))//' times', stat_input)
+            return
+         end if
+         call self%history%reserve(n + 16, self%options%energy)
+         self%history%n = n
+      end if
+      associate (h => self%history)
+         call sync_reals(a, 'box/history/time', h%time(0:n), saving)
+         call sync_reals(a, 'box/history/step', h%step(0:n), saving)
+         call sync_reals(a, 'box/history/end_velocity', h%end_velocity(0:n), saving)
+         call sync_reals(a, 'box/history/fixed_end_tension', h%fixed_end_tension(0:n), saving)
+         call sync_ints(a, 'box/history/newton_iterations', h%newton_iterations(0:n), saving)
+         call sync_ints(a, 'box/history/rejected', h%rejected(0:n), saving)
+         call sync_cube(a, 'box/history/end_y', h%end_y(:, :, 0:n), saving)
+         call sync_matrix(a, 'box/history/end_position', h%end_position(:, 0:n), saving)
+         if (self%options%energy) call sync_matrix(a, 'box/history/energy', h%energy(:, 0:n), saving)
+         strains = [h%min_strain, h%max_strain]
+         call sync_reals(a, 'box/history/strains', strains, saving)
+         if (.not. saving) then
+            h%min_strain = strains(1)
+            h%max_strain = strains(2)
+         end if
+      end associate
+      call exchange_records(run, a, saving, error)
+   end subroutine exchange_box
 
    !> The box scheme's figures (summarise) and the run's summary from them, with its warnings
    !> (made: the driver's summary is not made).

@@ -8,7 +8,7 @@
 module xcable_box_run
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
-   use xcable_core_strings, only: str, real_text
+   use xcable_core_strings, only: str
    use xcable_io_config, only: case_config
    use xcable_box_case, only: setup_case
    use xcable_box_equations, only: cable_model, i_b0, i_b3
@@ -85,12 +85,6 @@ contains
       !> Error.
       type(error_type), allocatable, intent(out) :: error
       character(:), allocatable :: why
-      if (config%checkpoint_interval > 0) then
-         call fatal_error(error, config%source//': &output: checkpoint_interval = '//real_text(config%checkpoint_interval)// &
-                          ': the box scheme writes no checkpoints; must be 0 with scheme = ''box'' (or use '// &
-                          'scheme = ''rod'')', stat_input)
-         return
-      end if
       why = box_supports(config)
       if (len(why) > 0) then
          call fatal_error(error, config%source//': &numerics: scheme = ''box'': '//why//'; use scheme = ''rod''', &

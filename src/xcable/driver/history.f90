@@ -37,7 +37,8 @@ contains
       run%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
       if (n_ends == 4) run%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
       call run%history%reserve(capacity, n_ends, run%options%energy, with_y=with_y)
-      call run%history%keep_measures(measure_names(run%scene%loads))
+      ! (The box scheme's run has no scene loads.)
+      if (allocated(run%scene%loads)) call run%history%keep_measures(measure_names(run%scene%loads))
    end subroutine open_history
 
    !> Append a history record at run%t: the step taken, Newton's iterations and the attempts

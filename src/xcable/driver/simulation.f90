@@ -9,15 +9,16 @@
 !> prepare returns stat_input errors for an inconsistent case (nothing has
 !> been written yet) and stat_numerics when the statics fails.
 !>
-!> Checkpoints (rod scheme, either model): after `enable_checkpoints`, run writes the
+!> Checkpoints (either scheme, either model): after `enable_checkpoints`, run writes the
 !> state to a checkpoint file (io/checkpoint.f90) every so many seconds of
 !> wall time, and when SIGTERM arrives it writes one and stops (`interrupted`
 !> is then set). `resume` loads a checkpoint into a prepared simulation, so
 !> that run continues from it; the resumed run computes what the
 !> uninterrupted one would have, to the last bit on the same machine and
 !> build (the state saved is listed in driver/rod_run.f90, exchange_state,
-!> and for the 3-D model in driver/rod3d_drive.f90, exchange3). A
-!> checkpoint resumes only with the model that wrote it.
+!> for the 3-D model in driver/rod3d_drive.f90, exchange3, and for the box
+!> scheme in box/model.f90, exchange_box). A checkpoint resumes only with the
+!> scheme and model that wrote it.
 module xcable_driver_simulation
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, prefix_error, stat_input
@@ -579,8 +580,7 @@ contains
    !> Write checkpoints to path during run: every interval seconds of wall
    !> time (0: none), every every_steps accepted steps (0: none; tests), and,
    !> with on_termination, when SIGTERM arrives (then the run stops and
-   !> interrupted is set). The rod scheme only, either model (the box scheme refuses a
-   !> checkpoint interval in prepare and is left alone here).
+   !> interrupted is set). Either scheme, either model.
    subroutine sim_enable_checkpoints(self, path, fingerprint, run_id, interval, on_termination, every_steps)
       !> Simulation (prepared).
       class(simulation), intent(inout) :: self
@@ -594,7 +594,6 @@ contains
       logical, intent(in) :: on_termination
       !> Accepted steps between checkpoints (0: none).
       integer, intent(in), optional :: every_steps
-      if (self%scheme == 'box') return
       self%checkpoints%path = path
       self%checkpoints%fingerprint = fingerprint
       self%checkpoints%run_id = run_id
@@ -607,7 +606,7 @@ contains
       self%rod%options%stop_on_termination = on_termination
    end subroutine sim_enable_checkpoints
 
-   !> Write the state of the rod run to the checkpoint file (atomically).
+   !> Write the state of the run to the checkpoint file (atomically).
    subroutine write_checkpoint(self, error)
       type(simulation), intent(inout), target :: self
       type(error_type), allocatable, intent(out) :: error
@@ -640,15 +639,20 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(checkpoint_file) :: file
       class(cable_model), pointer :: model
-      if (self%scheme == 'box') then
-         call fatal_error(error, path//': the box scheme writes no checkpoints and cannot resume', stat_input)
-         return
-      end if
       call file%open(path, error)
       if (allocated(error)) return
       run_id = file%run_id
+      ! A checkpoint of the other scheme (its namelist differs in scheme).
+      if ((file%stored_size('box/y') >= 0) .neqv. (self%scheme == 'box')) then
+         call fatal_error(error, "checkpoint '"//path//"' was written by a "// &
+                          merge('rod-scheme', 'box-scheme', self%scheme == 'box')//' run, this case runs the '// &
+                          merge('box scheme', 'rod scheme', self%scheme == 'box')//" (&numerics scheme): a "// &
+                          "checkpoint resumes only with the scheme that wrote it", stat_input)
+         call file%close()
+         return
+      end if
       ! A checkpoint of the other model (its namelist differs in model, or in what 'auto' looks at).
-      if ((file%stored_size('rod3d/x') >= 0) .neqv. (self%model == '3d')) then
+      if (self%scheme /= 'box' .and. ((file%stored_size('rod3d/x') >= 0) .neqv. (self%model == '3d'))) then
          call fatal_error(error, "checkpoint '"//path//"' was written by a "//merge('3-D', '2-D', self%model == '2d')// &
                           ' run, this case runs the '//merge('3-D', '2-D', self%model == '3d')//" model (&numerics "// &
                           "model): a checkpoint resumes only with the model that wrote it", stat_input)

@@ -229,7 +229,7 @@ module xcable_io_config
       logical :: gnuplot = .false.
       !> Write an XDMF sidecar (.xmf) that lets ParaView and other XDMF readers open the HDF5 file.
       logical :: xdmf = .false.
-      !> Wall-clock time between checkpoints of a rod run, s (0: none; SIGTERM still writes one).
+      !> Wall-clock time between checkpoints of a run (either scheme), s (0: none; SIGTERM still writes one).
       real(dp) :: checkpoint_interval = 0
       !> Variables assigned in the file, as 'group%variable' names separated by blanks
       !> (so that "both given" and "not given" can be told apart from defaults).

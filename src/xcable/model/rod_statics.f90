@@ -52,6 +52,9 @@ module xcable_model_rod_statics
    !> the statics' Newton iteration takes the guess to the same state to round-off
    !> (docs/measurements/data/speed_rounds.md, "The statics' first guess").
    integer, parameter :: guess_panels = 1
+   !> The sideways offset of the folded first guess of a slack line between ends one above the
+   !> other (folded_guess), a share of the line's length.
+   real(dp), parameter :: fold_offset = 0.1_dp
 
    !> The static equilibrium with every loaded node tied by a spring to an
    !> anchor point (the last accepted state of the relaxation): residual
@@ -147,7 +150,7 @@ contains
          if (allocated(error)) return
          call solve_or_relax(error)
          if (allocated(error)) then
-            error%message = error%message//slack_on_floor_note()
+            error%message = error%message//slack_on_floor_note()//folded_note()
             if (saw_collapse) error%message = error%message//'; on the way Newton reached an equilibrium with '// &
                'a collapsed cell (slack line heaped into a point), which the dynamics cannot start from: the '// &
                'line is slack somewhere; with compression = ''none'' nothing resists that, with ''law'' the '// &
@@ -566,6 +569,10 @@ contains
          if (held_a .and. held_b) then
             pa = problem%piece%end_a%position(0.0_dp)
             pb = problem%piece%end_b%position(0.0_dp)
+            if (vertical_slack(pa, pb)) then
+               call folded_guess(pa, pb, ss, err)
+               return
+            end if
             if (segmented) then
                call catenary_between(scene%law, scene%weight, scene%length, pa, pb, n0, err, scene_segments(scene))
             else
@@ -620,6 +627,37 @@ contains
             end associate
          end do
       end function body_weight
+      !> Whether both held ends are one above the other (their horizontal distance below 1e-9 of
+      !> the line's length) and the line is slack (their distance shorter than its length at zero
+      !> tension): it hangs folded.
+      logical function vertical_slack(pa, pb)
+         real(dp), intent(in) :: pa(2), pb(2)
+         vertical_slack = abs(pb(1) - pa(1)) < 1.0e-9_dp*max(scene%length, 1.0_dp) .and. &
+                          norm2(pb - pa) < scene%length*(1 + scene%law%strain_at(0.0_dp)) .and. scene%weight > 0
+      end function vertical_slack
+
+      !> The first guess of a slack line between ends one above the other: the catenary to a
+      !> point fold_offset L beside end b, sheared back onto end b (x - fold_offset L s / L): a
+      !> narrow U that hangs below the lower end, down and up again, whose two strands the
+      !> bending stiffness holds apart at the fold.
+      subroutine folded_guess(pa, pb, ss, err)
+         real(dp), intent(in) :: pa(2), pb(2), ss(:)
+         type(error_type), allocatable, intent(out) :: err
+         real(dp) :: n0(2), off
+         off = fold_offset*scene%length
+         if (size(scene%sections) > 1) then
+            call catenary_between(scene%law, scene%weight, scene%length, pa, pb + [off, 0.0_dp], n0, err, &
+                                  scene_segments(scene))
+         else
+            call catenary_between(scene%law, scene%weight, scene%length, pa, pb + [off, 0.0_dp], n0, err)
+         end if
+         if (allocated(err)) then
+            call prefix_error(err, scene%source//': statics: ')
+            return
+         end if
+         call guess_from_force(n0, pa, ss, state%r)
+         state%r(1, :) = state%r(1, :) - off*ss/ss(n)
+      end subroutine folded_guess
 
       !> The catenary from the force n0 at s = 0 through r0 at the points ss, on a line of
       !> segments segment by segment (the first guess).
@@ -666,6 +704,25 @@ contains
             'and a slack line on a frictionless seabed has no single static state; move the ends apart or '// &
             'shorten the line'
       end function slack_on_floor_note
+
+      !> A slack line between held ends one above the other hangs folded (vertical_slack): its
+      !> fold is held open by the bending stiffness against a little compression. The note for the
+      !> statics' error says so.
+      function folded_note() result(note)
+         character(:), allocatable :: note
+         real(dp) :: pa(2), pb(2)
+         note = ''
+         if (.not. (problem%piece%end_a%held() .and. problem%piece%end_b%held())) return
+         pa = problem%piece%end_a%position(0.0_dp)
+         pb = problem%piece%end_b%position(0.0_dp)
+         if (.not. vertical_slack(pa, pb)) return
+         note = '; the ends are one above the other, '//str(norm2(pb - pa))//' m apart, closer than the '// &
+                'line''s length at zero tension ('//str(scene%length*(1 + scene%law%strain_at(0.0_dp)))// &
+                ' m): the slack line hangs folded, down below the lower end and up again, its fold held open '// &
+                'by the bending stiffness against a little compression, which a rope that cannot push '// &
+                '(compression = ''none'') does not give: the statics find no state for it; give the ends a '// &
+                'horizontal offset, or compression = ''law'''
+      end function folded_note
 
       !> The load of a state-dependent loaded end (a spring) for the catenary guess: the load
       !> (time-only force, state force at the catenary's end point, the point mass's weight)

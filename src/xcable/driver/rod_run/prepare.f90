@@ -123,10 +123,21 @@ contains
             self%static_max_tension = maxval(abs(cell_tension))
          end block
          block
-            real(dp) :: e(2, n - 1)
+            real(dp) :: e(2, n - 1), turn(max(n - 2, 1))
+            integer :: i
             e = self%static%r(:, 2:n) - self%static%r(:, 1:n - 1)
-            if (n > 2) self%static_max_turn = maxval(abs(atan2(e(1, 1:n - 2)*e(2, 2:n - 1) - e(2, 1:n - 2)*e(1, 2:n - 1), &
-                                                            e(1, 1:n - 2)*e(1, 2:n - 1) + e(2, 1:n - 2)*e(2, 2:n - 1))))
+            if (n > 2) then
+               turn = abs(atan2(e(1, 1:n - 2)*e(2, 2:n - 1) - e(2, 1:n - 2)*e(1, 2:n - 1), &
+                                e(1, 1:n - 2)*e(1, 2:n - 1) + e(2, 1:n - 2)*e(2, 2:n - 1)))
+               ! A body on a node (&point_k) bends the line there by its force: a kink that no grid
+               ! resolves, not a sign of a coarse one.
+               if (allocated(piece%point_node)) then
+                  do i = 1, size(piece%point_node)
+                     if (piece%point_node(i) > 1 .and. piece%point_node(i) < n) turn(piece%point_node(i) - 1) = 0
+                  end do
+               end if
+               self%static_max_turn = maxval(turn)
+            end if
          end block
       end associate
       if (scene%breaks .and. scene%t_break > 0) self%front_cells = c_max*scene%t_break/ds_max

@@ -59,6 +59,8 @@ module xcable_loads_point
       procedure :: has_drag
       !> Drag force on its node over a step or at rest, with its derivative.
       procedure :: drag
+      !> Its force on its node besides its weight (buoyancy and drag), with its derivative.
+      procedure :: force
    end type point_body
 
 contains
@@ -148,4 +150,30 @@ contains
          df_dx1(a, a) = df_dx1(a, a) - c*speed/dt
       end do
    end subroutine drag
+
+   !> The force of the body on its node besides its weight (N): its buoyancy at the step's mean
+   !> height (statics, dt = 0: at x1) and its drag, with the derivative with respect to x1 (N/m).
+   pure subroutine force(self, dt, x0, x1, f, df_dx1)
+      !> The body.
+      class(point_body), intent(in) :: self
+      !> Time step, s (0: statics).
+      real(dp), intent(in) :: dt
+      !> Positions of the node at the start and the end of the step, m.
+      real(dp), intent(in) :: x0(3), x1(3)
+      !> Force, N; d f / d x1, N/m.
+      real(dp), intent(out) :: f(3), df_dx1(3, 3)
+      real(dp) :: fb, dfb
+      f = 0
+      df_dx1 = 0
+      if (self%has_drag()) call self%drag(dt, x0, x1, f, df_dx1)
+      if (.not. self%has_buoyancy()) return
+      if (dt > 0) then
+         call self%buoyancy(0.5_dp*(x0(3) + x1(3)), fb, dfb)
+         dfb = 0.5_dp*dfb
+      else
+         call self%buoyancy(x1(3), fb, dfb)
+      end if
+      f(3) = f(3) + fb
+      df_dx1(3, 3) = df_dx1(3, 3) + dfb
+   end subroutine force
 end module xcable_loads_point

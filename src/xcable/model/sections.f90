@@ -3,9 +3,10 @@
 !> built as a uniform rod's with each cell's own mass.
 module xcable_model_sections
    use xcable_core_kinds, only: dp
+   use xcable_loads_point, only: point_body
    implicit none
    private
-   public :: joint_ei, cell_mass_matrix
+   public :: joint_ei, cell_mass_matrix, point_nodes, add_point_masses
 
 contains
 
@@ -65,4 +66,35 @@ contains
          mass(2, k - 1) = mass(2, k - 1) + w
       end do
    end subroutine cell_mass_matrix
+   !> The node of each body on a piece with the node arc lengths s: the node at its arc length
+   !> (within 1e-9 of the piece's length), or 0 when the piece has none there.
+   pure function point_nodes(s, points) result(nodes)
+      !> Node arc lengths of the piece, m.
+      real(dp), intent(in) :: s(:)
+      !> The line's bodies.
+      type(point_body), intent(in) :: points(:)
+      integer :: nodes(size(points))
+      integer :: i, k
+      do i = 1, size(points)
+         nodes(i) = 0
+         do k = 1, size(s)
+            if (abs(s(k) - points(i)%s) <= 1.0e-9_dp*(s(size(s)) - s(1))) nodes(i) = k
+         end do
+      end do
+   end function point_nodes
+
+   !> Each body's inertia on the diagonal of the mass matrix (mass(0, k) = M(k, k)) and its weight
+   !> on its node's weight.
+   pure subroutine add_point_masses(points, nodes, mass, node_w)
+      !> The bodies on the piece and their nodes.
+      type(point_body), intent(in) :: points(:)
+      integer, intent(in) :: nodes(:)
+      !> Mass matrix (0:2, n), kg; node weights (n), N.
+      real(dp), intent(inout) :: mass(0:, :), node_w(:)
+      integer :: i
+      do i = 1, size(points)
+         mass(0, nodes(i)) = mass(0, nodes(i)) + points(i)%inertia()
+         node_w(nodes(i)) = node_w(nodes(i)) + points(i)%weight()
+      end do
+   end subroutine add_point_masses
 end module xcable_model_sections

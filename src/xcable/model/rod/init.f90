@@ -1,7 +1,7 @@
 !> The set-up of a planar piece (rod_init): grid, material, ends, work arrays and the mass matrix.
 !> (A submodule of model/rod.f90.)
 submodule (xcable_model_rod) xcable_model_rod_init
-   use xcable_model_sections, only: joint_ei, cell_mass_matrix
+   use xcable_model_sections, only: joint_ei, cell_mass_matrix, point_nodes, add_point_masses
    implicit none
 
 contains
@@ -150,35 +150,23 @@ contains
 
    !> Bodies at nodes: each on the node at its arc length (within 1e-9 of the piece's length), if
    !> the piece has one there; its inertia on the diagonal of the mass matrix, its weight on the
-   !> node's weight (its buoyancy and drag are loads, point_loads) (node_w: set_sections first, or the uniform share).
+   !> node's weight (its buoyancy and drag are loads, point_loads; node_w: set_sections first, or
+   !> the uniform share).
    module subroutine rod_set_points(self, points)
       class(rod_piece), intent(inout) :: self
       type(point_body), intent(in) :: points(:)
-      integer :: i, k, n, found
       integer :: nodes(size(points))
-      n = self%n
       if (allocated(self%points)) deallocate (self%points, self%point_node, self%point_jac)
-      found = 0
-      do i = 1, size(points)
-         nodes(i) = 0
-         do k = 1, n
-            if (abs(self%s(k) - points(i)%s) <= 1.0e-9_dp*(self%s(n) - self%s(1))) nodes(i) = k
-         end do
-         if (nodes(i) > 0) found = found + 1
-      end do
-      if (found == 0) return
+      nodes = point_nodes(self%s, points)
+      if (all(nodes == 0)) return
       if (.not. allocated(self%node_w)) then
-         allocate (self%node_w(n))
+         allocate (self%node_w(self%n))
          self%node_w = self%weight*self%lumped
       end if
       self%points = pack(points, nodes > 0)
       self%point_node = pack(nodes, nodes > 0)
-      allocate (self%point_jac(2, 2, found))
+      allocate (self%point_jac(2, 2, size(self%points)))
       self%point_jac = 0
-      do i = 1, found
-         k = self%point_node(i)
-         self%mass(0, k) = self%mass(0, k) + self%points(i)%inertia()
-         self%node_w(k) = self%node_w(k) + self%points(i)%weight()
-      end do
+      call add_point_masses(self%points, self%point_node, self%mass, self%node_w)
    end subroutine rod_set_points
 end submodule xcable_model_rod_init

@@ -41,32 +41,11 @@ contains
          else
             x0 = x1
          end if
-         call body_force(self%points(i), dt, x0, x1, f, jac)
+         call self%points(i)%force(dt, x0, x1, f, jac)
          self%load_node(:, k) = self%load_node(:, k) + self%load_factor*f([1, 3])
          self%point_jac(:, :, i) = self%load_factor*jac([1, 3], [1, 3])
       end do
    end subroutine point_loads
-
-   !> The force of a body on its node besides its weight (N): its buoyancy at the step's mean
-   !> height (statics: at x1) and its drag, with the derivative with respect to x1 (N/m).
-   pure subroutine body_force(body, dt, x0, x1, f, jac)
-      type(point_body), intent(in) :: body
-      real(dp), intent(in) :: dt, x0(3), x1(3)
-      real(dp), intent(out) :: f(3), jac(3, 3)
-      real(dp) :: fb, dfb
-      f = 0
-      jac = 0
-      if (body%has_drag()) call body%drag(dt, x0, x1, f, jac)
-      if (.not. body%has_buoyancy()) return
-      if (dt > 0) then
-         call body%buoyancy(0.5_dp*(x0(3) + x1(3)), fb, dfb)
-         dfb = 0.5_dp*dfb
-      else
-         call body%buoyancy(x1(3), fb, dfb)
-      end if
-      f(3) = f(3) + fb
-      jac(3, 3) = jac(3, 3) + dfb
-   end subroutine body_force
 
    !> The distributed loads along the cells (apply_loads).
    subroutine cell_loads(self, x, dt, theta, with_jacobian)

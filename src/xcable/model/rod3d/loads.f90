@@ -48,35 +48,14 @@ contains
       do i = 1, size(self%points)
          k = self%point_node(i)
          if (dt > 0) then
-            call body_force(self%points(i), dt, self%r0(:, k), x(3*k - 2:3*k), f, jac)
+            call self%points(i)%force(dt, self%r0(:, k), x(3*k - 2:3*k), f, jac)
          else
-            call body_force(self%points(i), dt, x(3*k - 2:3*k), x(3*k - 2:3*k), f, jac)
+            call self%points(i)%force(dt, x(3*k - 2:3*k), x(3*k - 2:3*k), f, jac)
          end if
          self%load_node(:, k) = self%load_node(:, k) + self%load_factor*f
          self%point_jac(:, :, i) = self%load_factor*jac
       end do
    end subroutine point_loads
-
-   !> The force of a body on its node besides its weight (N): its buoyancy at the step's mean
-   !> height (statics: at x1) and its drag, with the derivative with respect to x1 (N/m).
-   pure subroutine body_force(body, dt, x0, x1, f, jac)
-      type(point_body), intent(in) :: body
-      real(dp), intent(in) :: dt, x0(3), x1(3)
-      real(dp), intent(out) :: f(3), jac(3, 3)
-      real(dp) :: fb, dfb
-      f = 0
-      jac = 0
-      if (body%has_drag()) call body%drag(dt, x0, x1, f, jac)
-      if (.not. body%has_buoyancy()) return
-      if (dt > 0) then
-         call body%buoyancy(0.5_dp*(x0(3) + x1(3)), fb, dfb)
-         dfb = 0.5_dp*dfb
-      else
-         call body%buoyancy(x1(3), fb, dfb)
-      end if
-      f(3) = f(3) + fb
-      jac(3, 3) = jac(3, 3) + dfb
-   end subroutine body_force
 
    !> The distributed loads along the cells (apply_loads).
    subroutine cell_loads(self, x, dt, theta, with_jacobian)

@@ -33,10 +33,11 @@ start the run). Fairlead and anchor tension: /history/end_b/tension, /history/en
 
 MoorDyn (PyPI `moordyn`, RK4): the whole spread in one system: per line a Fixed anchor, two
 Free joint points (no mass, no volume) and a Coupled fairlead, three lines (chain, polyester,
-chain) with the same segment counts as xcable's cells; dtM = courant * ds_min / sqrt(EA / m)
-(chain: 2068 m/s). The script moves the three coupled points every COUPLE = 0.01 s: the exact
-position at the start and the chord to the end as the velocity (MoorDyn subdivides the call
-into steps of at most dtM). MoorDyn starts from xcable's statics on the same nodes (a state
+chain) with the same segment counts as xcable's cells; dtM = courant * ds_min / c_max (c_max =
+sqrt(EA / m) of the polyester, 2456 m/s; ds_min the shortest segment). The script moves the three
+coupled points every COUPLE = 0.01 s (MoorDyn divides the call into equal steps of at most dtM)
+or, with --every-step, once per step (dtM rounded down to divide SAMPLE): the exact position at
+the start and the chord to the end as the velocity. MoorDyn starts from xcable's statics on the same nodes (a state
 file), settled with the fairleads held for --settle s in a copy with critical axial damping
 (BA = -1) and 100 times the drag; that settled state is loaded into the real system and t = 0
 starts from it. Tensions at the fairlead and the anchor: the tension of the end segment and of
@@ -49,7 +50,7 @@ processes, statics included; MoorDyn: the stepping loop, the settling not counte
 
 Usage (from bench/peer; XCABLE or --exe, default ../../bin/xcable):
   python3 spread.py xcable  --nodes 100 --dt 0.05 [--repeat 3] [--work DIR]
-  python3 spread.py moordyn --nodes 100 --courant 1.0 [--repeat 3] [--work DIR]
+  python3 spread.py moordyn --nodes 100 --courant 1.4 --every-step [--repeat 3] [--work DIR]
   python3 spread.py ladder  [--work DIR]        (the runs of spread.md, one at a time)
   python3 spread.py summarize [--work DIR] [--no-figure]   (the tables; data/spread*.tsv, spread.png)
 Each run writes WORK/<tag>.tsv (t, T_fair 1..3, T_anchor 1..3) and WORK/<tag>.json (times);
@@ -410,10 +411,12 @@ def do_run(args, code, nodes, step, repeat=None):
         json.dump(info, f, indent=1)
 
 
-# (nodes per line, xcable's dt or MoorDyn's Courant, repeats)
-LADDER_X = [(25, 0.1, 3), (50, 0.1, 3), (100, 0.1, 3), (100, 0.05, 3), (100, 0.025, 1), (200, 0.05, 1),
-            (200, 0.025, 1), (400, 0.025, 1)]
-LADDER_M = [(25, 1.0, 3), (50, 1.0, 3), (100, 1.0, 3), (100, 0.5, 1), (200, 1.0, 1), (400, 1.0, 1)]
+# (nodes per line, xcable's dt or MoorDyn's Courant, repeats[, MoorDyn moved at every step])
+LADDER_X = [(25, 0.1, 3), (50, 0.1, 3), (50, 0.05, 3), (100, 0.1, 3), (100, 0.05, 3), (100, 0.025, 1),
+            (200, 0.05, 1), (200, 0.025, 1), (200, 0.0125, 1), (400, 0.025, 1), (400, 0.0125, 1)]
+LADDER_M = [(25, 1.0, 3, False), (50, 1.0, 3, False), (50, 1.4, 3, True), (100, 1.0, 3, False),
+            (100, 1.4, 3, True), (100, 0.5, 1, False), (200, 1.0, 1, False), (200, 1.4, 1, True),
+            (400, 1.0, 1, False)]
 
 
 def main():
@@ -438,7 +441,8 @@ def main():
     elif args.what == "ladder":
         for n, dt, rep in LADDER_X:
             do_run(args, "xcable", n, dt, rep)
-        for n, c, rep in LADDER_M:
+        for n, c, rep, every in LADDER_M:
+            args.every_step = every
             do_run(args, "moordyn", n, c, rep)
     else:
         summarize(args)
@@ -592,6 +596,8 @@ def figure(table, xref, mref, common):
                 for e, t, n, st in pts:
                     text = f"{n}/{st:g}" if code == "xcable" else (f"{n}" if st == 1 else f"{n}/C{st:g}")
                     ax.annotate(text, (t, e / 1e3), fontsize=7, xytext=(3, 3), textcoords="offset points")
+    floor = rms(xref["rows"], mref["rows"]) / 1e3
+    ax.axhline(floor, linestyle=":", color="grey", label="the two finest runs differ by")
     ax.set_xlabel("time for 600 s of the spread (s)")
     ax.set_ylabel("rms tension error (kN)")
     ax.set_title("slow tensions: error against time\n(labels: nodes per line / xcable's dt, s; MoorDyn Courant 1 "

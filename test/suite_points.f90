@@ -32,6 +32,7 @@ contains
                new_unittest('points_jacobians', test_jacobians), &
                new_unittest('body_at_a_free_end_closed_form', test_free_end), &
                new_unittest('buoy_at_the_surface_draft_and_jacobians', test_surface_buoy), &
+               new_unittest('body_on_the_break_node_counted_once', test_break_at_body), &
                new_unittest('points_bad_input_refused', test_bad_input)]
    end subroutine collect_points
 
@@ -636,6 +637,53 @@ contains
          buoyancy = 1025*g*vol*h**2*(3*r - h)/(4*r**3)
       end function buoyancy
    end subroutine test_surface_buoy
+
+   !> The clump case with the line parting at its joint (by time, at s = 50 m, after 10 ms), in
+   !> 2-D and 3-D: the two pieces' node weights add up to the line's weight and the clump's once
+   !> (the clump stays with the piece on end a's side).
+   subroutine test_break_at_body(error)
+      type(error_type), allocatable, intent(out) :: error
+      character(len=2), parameter :: models(2) = ['2d', '3d']
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp) :: w(2), wp, total, expected
+      integer :: m, p
+      call case_weights(1, w, wp)
+      expected = sum(w*seg_length) + wp
+      do m = 1, 2
+         c = body_config(101, 1)
+         c%model = models(m)
+         c%break_enabled = .true.
+         c%s_break = seg_length(1)
+         c%break_time = 0.01_dp
+         c%t_end = 0.02_dp
+         c%interval = 0
+         c%given = c%given//' rupture%s_break rupture%break_time'
+         call sim%prepare(c, error)
+         if (allocated(error)) return
+         call sim%run(error=error)
+         if (allocated(error)) return
+         total = 0
+         if (m == 1) then
+            call check(error, size(sim%rod%pieces) == 2, 'the line did not part')
+            if (allocated(error)) return
+            do p = 1, 2
+               total = total + sum(sim%rod%pieces(p)%problem%piece%node_w)
+            end do
+         else
+            call check(error, size(sim%rod3%pieces) == 2, 'the 3-D line did not part')
+            if (allocated(error)) return
+            do p = 1, 2
+               total = total + sum(sim%rod3%pieces(p)%run%problem%piece%node_w)
+            end do
+         end if
+         write (output_unit, '(4x,a,a,a,f12.4,a,f12.4,a)') 'parted at the clump, ', models(m), ': node weights', &
+            total, ' N, line and clump', expected, ' N'
+         call check(error, abs(total - expected) < 1.0e-9_dp*expected, models(m)//': the pieces weigh '//str(total)// &
+                    ' N, the line with its clump '//str(expected)//' N')
+         if (allocated(error)) return
+      end do
+   end subroutine test_break_at_body
 
    !> Bad &point_k input: each refused with exit code 2 by the reader, naming the group and the
    !> variable.

@@ -67,7 +67,9 @@ contains
       end do
    end subroutine cell_mass_matrix
    !> The node of each body on a piece with the node arc lengths s: the node at its arc length
-   !> (within 1e-9 of the piece's length), or 0 when the piece has none there.
+   !> (within 1e-9 of the piece's length), or 0 when the piece has none there. A body on the
+   !> node where the line parts stays with the piece on end a's side: a piece that starts at a
+   !> cut (s(1) > 0) leaves its first node's body to the piece before.
    pure function point_nodes(s, points) result(nodes)
       !> Node arc lengths of the piece, m.
       real(dp), intent(in) :: s(:)
@@ -80,6 +82,7 @@ contains
          do k = 1, size(s)
             if (abs(s(k) - points(i)%s) <= 1.0e-9_dp*(s(size(s)) - s(1))) nodes(i) = k
          end do
+         if (nodes(i) == 1 .and. s(1) > 1.0e-9_dp*(s(size(s)) - s(1))) nodes(i) = 0
       end do
    end function point_nodes
 

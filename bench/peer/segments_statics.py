@@ -98,7 +98,7 @@ def joined(segs, a, b, cb0):
 
 
 def namelist(segs, nodes, out):
-    text = "&cable length = %r, bending_stiffness = 0 /\n" % sum(s[0] for s in segs)
+    text = "&cable length = %r, bending_stiffness = 1.0e-3 /\n" % sum(s[0] for s in segs)
     text += "&material law = 'linear', compression = 'none' /\n"
     text += "&fluid density = %r, surface_z = 0 /\n" % RHO
     text += "&seabed depth = %r, stiffness = 1e10 /\n" % DEPTH

@@ -149,7 +149,10 @@ contains
       call add('/history/<end>/z', 'dataset', 'record', 'm', '', 'position of the end along the global z axis (up)')
       call add('/history/<end>/vx', 'dataset', 'record', 'm/s', '', 'velocity of the end along the global x axis')
       call add('/history/<end>/vz', 'dataset', 'record', 'm/s', '', 'velocity of the end along the global z axis')
-      call add('/history/<end>/tension', 'dataset', 'record', 'N', '', 'tension of the end''s cell')
+      call add('/history/<end>/tension', 'dataset', 'record', 'N', '', 'tension at the end node: the end cell''s '// &
+               'extrapolated half a cell along the slope of the two end cells (second order; the end cell''s own '// &
+               'where the three end cells zig-zag), not below the law''s tension at strain -0.99 (0 for a rope that '// &
+               'cannot push); the support''s pull is force_x, force_z')
       call add('/history/<end>/force_x', 'dataset', 'record', 'N', '', &
                'external force on the end along the global x axis (a held end''s support reaction, a loaded end''s load)')
       call add('/history/<end>/force_z', 'dataset', 'record', 'N', '', &
@@ -236,9 +239,11 @@ contains
       call add('/summary@<end>_kind', 'attribute', '', '', '', "kind of the end at the end of the run ('fixed', ..., 'break')")
       call add('/summary@<end>_peak_speed', 'attribute', '', 'm/s', '', 'largest speed of the end')
       call add('/summary@<end>_peak_speed_time', 'attribute', '', 's', '', 'when it happened')
-      call add('/summary@<end>_min_tension', 'attribute', '', 'N', '', 'smallest tension of the end''s cell')
+      call add('/summary@<end>_min_tension', 'attribute', '', 'N', '', 'smallest tension at the end node (as '// &
+               '/history/<end>/tension)')
       call add('/summary@<end>_min_tension_time', 'attribute', '', 's', '', 'when it happened')
-      call add('/summary@<end>_max_tension', 'attribute', '', 'N', '', 'largest tension of the end''s cell')
+      call add('/summary@<end>_max_tension', 'attribute', '', 'N', '', 'largest tension at the end node (as '// &
+               '/history/<end>/tension)')
       call add('/summary@<end>_max_tension_time', 'attribute', '', 's', '', 'when it happened')
       call add('/summary@<end>_slack_time', 'attribute', '', 's', '', &
                'time the end was slack (its cell''s tension at most 0.001 of the largest static tension)')

@@ -42,8 +42,6 @@ module xcable_loads_point
       !> Water density, kg/m^3 (0: no water); gravity, m/s^2; the current (x, y, z), m/s; the
       !> height of the water surface, m.
       real(dp) :: density = 0, gravity = 0, current(3) = 0, surface = huge(1.0_dp)
-      !> Its name in messages ('point_1').
-      character(len=16) :: label = ''
    contains
       !> Mass with the added mass, kg.
       procedure :: inertia

@@ -163,7 +163,6 @@ contains
       allocate (scene%points(config%point_count))
       do k = 1, config%point_count
          associate (p => scene%points(k), pc => config%points(k))
-            write (p%label, '(a,i0)') 'point_', k
             p%s = 0
             if (pc%joint > 0) p%s = scene%sections(pc%joint)%s_end
             p%mass = pc%mass

@@ -19,6 +19,9 @@ module xcable_io_input_checks
    implicit none
    private
    public :: derive_defaults, max_time_steps, validate
+   ! For the submodule io/input/checks/points.f90 (gfortran gives a module's private procedures
+   ! no symbol a submodule can link to).
+   public :: check_entry, quoted_words
 
    !> Most snapshots a run may ask for (t_end / interval).
    real(dp), parameter :: max_snapshots = 1.0e5_dp
@@ -30,6 +33,18 @@ module xcable_io_input_checks
 
    !> Poisson ratio of the default torsional stiffness GIp = EI / (1 + nu) (a solid isotropic rod; nylon).
    real(dp), parameter :: default_poisson = 0.4_dp
+
+   interface
+      !> The bodies on the line (io/input/checks/points.f90).
+      module subroutine check_points(c, t, error)
+         !> The case.
+         type(case_config), intent(inout) :: c
+         !> The schema.
+         type(schema_entry), intent(in) :: t(:)
+         !> Error naming file, group, variable, value and what is allowed.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_points
+   end interface
 
 contains
 
@@ -292,77 +307,6 @@ contains
          return
       end if
    end subroutine check_segment_layout
-
-   !> The bodies at the joints (&point_1 ... &point_n, numbered without a gap, which the reader
-   !> checks): each on a joint of the line's segments or on an end that is not held, one body per
-   !> joint, its variables in their ranges; a volume only in water, a drag coefficient only with
-   !> an area.
-   subroutine check_points(c, t, error)
-      !> The case.
-      type(case_config), intent(inout) :: c
-      !> The schema.
-      type(schema_entry), intent(in) :: t(:)
-      !> Error naming file, group, variable, value and what is allowed.
-      type(error_type), allocatable, intent(out) :: error
-      character(:), allocatable :: prefix
-      character(len=16) :: group
-      integer :: k, i, j
-      do k = 1, c%point_count
-         group = point_group(k)
-         prefix = c%source//': &'//trim(group)//': '
-         if (.not. c%is_given(trim(group), 'joint')) then
-            call fatal_error(error, prefix//'joint not given: a point sits on a joint of two segments; give joint = '// &
-                             'k for the end of &segment_k', stat_input)
-            return
-         end if
-         j = c%points(k)%joint
-         if (trim(c%scheme) == 'box') then
-            call fatal_error(error, c%source//": &numerics: scheme = 'box' with &"//trim(group)//': the box scheme '// &
-                             "has no bodies on its line; allowed: scheme = 'rod'", stat_input)
-            return
-         end if
-         if (j < 0 .or. j > c%segments_of_line()) then
-            call fatal_error(error, prefix//'joint = '//str(j)//': the line has '//str(c%segments_of_line())// &
-                             ' segment(s); allowed: 0 .. '//str(c%segments_of_line())//' (0 is end a, k the end '// &
-                             'of &segment_k, '//str(c%segments_of_line())//' end b)', stat_input)
-            return
-         end if
-         if ((j == 0 .and. held_kind(c%end_a%kind)) .or. (j == c%segments_of_line() .and. held_kind(c%end_b%kind))) then
-            call fatal_error(error, prefix//'joint = '//str(j)//': that is end '//merge('a', 'b', j == 0)// &
-                             ", which is held (kind '"//trim(merge(c%end_a%kind, c%end_b%kind, j == 0))// &
-                             "'): its support carries the body; allowed: a point on a joint or on a free, "// &
-                             "force, mass or spring end", stat_input)
-            return
-         end if
-         do i = 1, size(t)
-            if (trim(t(i)%group) /= trim(group)) cycle
-            call check_entry(c, t(i), error)
-            if (allocated(error)) return
-         end do
-         do i = 1, k - 1
-            if (c%points(i)%joint /= j) cycle
-            call fatal_error(error, prefix//'joint = '//str(j)//': &'//trim(point_group(i))//' sits on it already; '// &
-                             'allowed: one point per joint (give their mass, volume and area together)', stat_input)
-            return
-         end do
-         if (c%points(k)%volume > 0 .and. c%fluid_density <= 0) then
-            call fatal_error(error, prefix//'volume = '//real_text(c%points(k)%volume)//': buoyancy needs water; '// &
-                             'give &fluid density, or volume = 0', stat_input)
-            return
-         end if
-         if (c%points(k)%cd > 0 .and. c%points(k)%area <= 0) then
-            call fatal_error(error, prefix//'cd = '//real_text(c%points(k)%cd)//' without an area: the drag acts '// &
-                             'on area; give area > 0, or cd = 0', stat_input)
-            return
-         end if
-      end do
-   end subroutine check_points
-
-   !> Whether an end kind holds its end's position (fixed, motion).
-   pure logical function held_kind(kind)
-      character(*), intent(in) :: kind
-      held_kind = trim(kind) == 'fixed' .or. trim(kind) == 'motion'
-   end function held_kind
 
    !> Each segment's variables against their schema entries (the ranges and words of their
    !> twins in &cable, &material and &fluid), its table law's rows (read from its table_file

@@ -165,6 +165,14 @@ module xcable_model_rod3d
       type(point_body), allocatable :: points(:)
       integer, allocatable :: point_node(:)
       real(dp), allocatable :: point_jac(:, :, :)
+      !> Held ends whose momentum rows are kept (a line's end at a free point of a network,
+      !> driver/network.f90): keep_rows(side), and of the last evaluation the end node's momentum
+      !> residual (3, side; scaled by 1 / tension_ref, as the rows it replaces) and its Jacobian
+      !> rows, kept_jac(a, j, side) the derivative of row a with respect to unknown kept_first(side)
+      !> - 1 + j (the positions of the end node and of its two neighbours: j = 1 .. 9).
+      logical :: keep_rows(2) = .false.
+      real(dp) :: kept_residual(3, 2) = 0, kept_jac(3, 9, 2) = 0
+      integer :: kept_first(2) = 1
    contains
       !> A line of segments: the sections' cells and materials.
       procedure :: set_sections => rod3d_set_sections

@@ -19,7 +19,7 @@ contains
       real(dp), intent(in) :: theta
       integer :: n, c, k, band0, a, b
       real(dp) :: scale, rate, t_new, r(3, self%n), psi(self%n), twist_scale, tau, jac_a(3, 3), jac_b(3, 3)
-      logical :: held_a, held_b, anchor_a, anchor_b, state_a, state_b
+      logical :: held_a, held_b, anchor_a, anchor_b, state_a, state_b, skip_a, skip_b
       n = self%n
       scale = 1/self%tension_ref
       twist_scale = self%length_ref/self%gip
@@ -27,6 +27,9 @@ contains
       held_b = self%end_b%held()
       anchor_a = held_a .or. .not. held_b
       anchor_b = held_b
+      ! The rows of a held end are replaced by its held rows; those kept are formed first.
+      skip_a = held_a .and. .not. self%keep_rows(1)
+      skip_b = held_b .and. .not. self%keep_rows(2)
       call rod3d_unpack(x, r, psi)
       residual = 0
       do c = 1, n - 1
@@ -79,6 +82,8 @@ contains
       if (anchor_a .and. held_a) residual(3*n + 1) = psi(1)
       if (anchor_a .and. .not. held_a) residual(3*n + 1) = psi(1) - self%psi_anchor
       if (anchor_b) residual(4*n) = psi(n)
+      if (self%keep_rows(1)) self%kept_residual(:, 1) = residual(1:3)
+      if (self%keep_rows(2)) self%kept_residual(:, 2) = residual(3*n - 2:3*n)
       if (held_a) residual(1:3) = (r(:, 1) - self%end_a%position3(t_new))/self%length_ref
       if (held_b) residual(3*n - 2:3*n) = (r(:, n) - self%end_b%position3(t_new))/self%length_ref
       if (.not. with_jacobian) return
@@ -87,7 +92,7 @@ contains
       jacobian%factorised = .false.
       band0 = jacobian%kl + jacobian%ku + 1
       call add_position_blocks(n, size(jacobian%ab, 1), size(jacobian%ab, 2), jacobian%ab, band0, self%block, self%ds, &
-                               self%mass, self%load_block, scale, rate, held_a, held_b, dynamic, has_loads(self), &
+                               self%mass, self%load_block, scale, rate, skip_a, skip_b, dynamic, has_loads(self), &
                                self%skew_block, self%skewed)
       if (allocated(self%cell_gip)) then
          do c = 1, n - 1
@@ -114,7 +119,7 @@ contains
       if (allocated(self%points)) then
          do c = 1, size(self%points)
             k = self%point_node(c)
-            if ((k == 1 .and. held_a) .or. (k == n .and. held_b)) cycle
+            if ((k == 1 .and. skip_a) .or. (k == n .and. skip_b)) cycle
             do b = 1, 3
                do a = 1, 3
                   call add_twist(3*(k - 1) + a, 3*(k - 1) + b, -self%point_jac(a, b, c)*scale)
@@ -122,6 +127,8 @@ contains
             end do
          end do
       end if
+      if (self%keep_rows(1)) call keep_jacobian(1, 1)
+      if (self%keep_rows(2)) call keep_jacobian(2, n)
       if (anchor_a) call set_row(3*n + 1, [3*n + 1], [1.0_dp])
       if (anchor_b) call set_row(4*n, [4*n], [1.0_dp])
       if (held_a) then
@@ -152,6 +159,24 @@ contains
          end if
          rows = rows - f
       end subroutine end_state
+
+      !> Copy the momentum rows of end node k (side 1: end a, 2: end b) out of the band: the
+      !> columns of the positions of the end node and of its two neighbours.
+      subroutine keep_jacobian(side, k)
+         integer, intent(in) :: side, k
+         integer :: first, a, j, rr, cc
+         first = max(1, merge(1, 3*k - 8, side == 1))
+         self%kept_first(side) = first
+         self%kept_jac(:, :, side) = 0
+         do j = 1, 9
+            cc = first - 1 + j
+            if (cc > 3*n) exit
+            do a = 1, 3
+               rr = 3*(k - 1) + a
+               self%kept_jac(a, j, side) = jacobian%ab(band0 + rr - cc, cc)
+            end do
+         end do
+      end subroutine keep_jacobian
 
       !> Adds value to the entry (rr, cc) of the band.
       subroutine add_twist(rr, cc, value)

@@ -1,0 +1,341 @@
+!> Networks of lines joined at free points (driver/network.f90, issue "Moorings"): two lines
+!> meeting at a free point with a buoy against the one line of two segments with the buoy at
+!> its joint (the same equations, written twice: statics and a heave, in a current, with drag
+!> and added mass); the kept rows of a joint end against central differences; the points'
+!> stiffness (the bordered system's Schur complement) against differences of re-solved
+!> networks; a three-line spread meeting at a buoy, symmetric, found from a guess off its
+!> axis; its ledger over a heave of one fairlead.
+module suite_network
+   use xcable_core_kinds, only: dp
+   use xcable_testing, only: error_type, unittest_type, new_unittest, check
+   use xcable_core_strings, only: str
+   use xcable_io_config, only: case_config
+   use xcable_io_input, only: read_config
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_rod3d_run, only: rod3d_run
+   use xcable_driver_network, only: network_run, network_joint
+   use xcable_io_config, only: point_config
+   use xcable_fixtures, only: write_text
+   use, intrinsic :: iso_fortran_env, only: output_unit
+   implicit none
+   private
+   public :: collect_network
+
+   character(len=*), parameter :: path = 'build/suite_network.nml'
+   character(len=*), parameter :: nl = new_line('a')
+   !> The water, the rope's material, the numerics.
+   character(len=*), parameter :: common = &
+      "&material law = 'linear', ea = 2.0e6, compression = 'none' /"//nl// &
+      "&fluid density = 1025.0, cd_normal = 1.2, cd_tangential = 0.05, ca_normal = 1.0, current_x = 0.3, "// &
+      "surface_z = 0.0 /"//nl
+   !> The numerics.
+   character(len=*), parameter :: numerics = "&numerics model = '3d', mass_matrix = 'lumped', newton_tol = 1e-12"
+   !> The anchor, the fairlead (heaved 1 m over 4 s) and the buoy at the joint (m, kg, m^3).
+   real(dp), parameter :: anchor(3) = [0.0_dp, 0.0_dp, -60.0_dp], fairlead(3) = [70.0_dp, 20.0_dp, -5.0_dp]
+   character(len=*), parameter :: heave = "kind = 'motion', amplitude = 1.0, period = 4.0, direction_z = 1.0"
+
+contains
+
+   subroutine collect_network(tests)
+      type(unittest_type), allocatable, intent(out) :: tests(:)
+      tests = [new_unittest('two_lines_at_a_buoy_equal_one_line_with_the_buoy', test_equal_one_line), &
+               new_unittest('kept_rows_jacobian_fd', test_kept_rows), &
+               new_unittest('point_stiffness_fd', test_point_stiffness), &
+               new_unittest('spread_at_a_buoy_symmetric_and_ledger', test_spread)]
+   end subroutine collect_network
+
+   !> Read and prepare a case given as namelist text.
+   subroutine prepared(text, sim, error)
+      character(*), intent(in) :: text
+      type(simulation), intent(inout) :: sim
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      call write_text(path, common//text//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call sim%prepare(c, error)
+   end subroutine prepared
+
+   !> Read and prepare a case, with a body put on end b (a joint end's body, which the input
+   !> would refuse on the held end the line is prepared with).
+   subroutine prepared_with_body(text, body, sim, error)
+      character(*), intent(in) :: text
+      type(point_config), intent(in) :: body
+      type(simulation), intent(inout) :: sim
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      call write_text(path, common//text//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      c%point_count = 1
+      c%points(1) = body
+      call sim%prepare(c, error)
+   end subroutine prepared_with_body
+
+   !> The buoy: 50 kg displacing 0.3 m^3, ca 0.5, cd 0.8 on 0.5 m^2.
+   function buoy(joint) result(b)
+      integer, intent(in) :: joint
+      type(point_config) :: b
+      b%joint = joint
+      b%mass = 50
+      b%volume = 0.3_dp
+      b%ca = 0.5_dp
+      b%cd = 0.8_dp
+      b%area = 0.5_dp
+   end function buoy
+
+   function xyz(name, p) result(text)
+      character(*), intent(in) :: name
+      real(dp), intent(in) :: p(3)
+      character(:), allocatable :: text
+      character(len=100) :: buffer
+      write (buffer, '(3(a,es24.16e3))') ', x = ', p(1), ', y = ', p(2), ', z = ', p(3)
+      text = name//trim(buffer)
+   end function xyz
+
+   !> The one line: 40 m of heavier rope (3000 kg/m^3) from the anchor, 50 m of rope to the fairlead,
+   !> the buoy at the joint.
+   function one_line() result(text)
+      character(:), allocatable :: text
+      text = "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
+             numerics//" /"//nl//"&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
+             "&segment_2 length = 50.0, nodes = 51 /"//nl// &
+             xyz("&end_a kind = 'fixed'", anchor)//" /"//nl// &
+             xyz("&end_b "//heave, fairlead)//" /"//nl
+   end function one_line
+
+   !> The two lines of one_line, the joint at the guess.
+   subroutine two_lines(guess, lines, error)
+      real(dp), intent(in) :: guess(3)
+      type(rod3d_run), allocatable, intent(out) :: lines(:)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim1, sim2
+      call prepared_with_body("&cable length = 40.0, diameter = 0.05, density = 3000.0, bending_stiffness = 1e-6 /"//nl// &
+                              numerics//", nodes = 41 /"//nl// &
+                              xyz("&end_a kind = 'fixed'", anchor)//" /"//nl// &
+                              xyz("&end_b kind = 'fixed'", guess)//" /", buoy(1), sim1, error)
+      if (allocated(error)) return
+      call prepared("&cable length = 50.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
+                    numerics//", nodes = 51 /"//nl// &
+                    xyz("&end_a kind = 'fixed'", guess)//" /"//nl// &
+                    xyz("&end_b "//heave, fairlead)//" /", sim2, error)
+      if (allocated(error)) return
+      allocate (lines(2))
+      lines(1) = sim1%rod3%pieces(1)%run
+      lines(2) = sim2%rod3%pieces(1)%run
+   end subroutine two_lines
+
+   !> Positions of a run's nodes first .. last (3, :).
+   function nodes_of(run, first, last) result(r)
+      type(rod3d_run), intent(in) :: run
+      integer, intent(in) :: first, last
+      real(dp) :: r(3, last - first + 1)
+      r = reshape(run%x(3*first - 2:3*last), [3, last - first + 1])
+   end function nodes_of
+
+   !> Two lines meeting at a free point with the buoy on it are the one line of two segments with
+   !> the buoy at its joint: the same unknowns and equations (lumped mass; the joint's bending,
+   !> EI 1e-6 N m^2, is the only term the one line has more). Statics from a guess 2.9 m off, then
+   !> 40 steps of 0.025 s of the heave in the current, against the one line on the same steps.
+   subroutine test_equal_one_line(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: ref
+      type(rod3d_run), allocatable :: lines(:)
+      type(network_run) :: net
+      real(dp) :: joint(3), err_static, err_step, dt, theta, led(4), led0(4), drift, scale
+      integer :: i
+      call prepared_with_body(one_line(), buoy(1), ref, error)
+      if (allocated(error)) return
+      associate (r => ref%rod3%pieces(1)%run)
+         joint = r%x(3*41 - 2:3*41)
+         call two_lines(joint + [2.0_dp, -1.0_dp, 1.5_dp], lines, error)
+         if (allocated(error)) return
+         call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 1, 1)], 1, error)
+         if (allocated(error)) return
+         call net%statics(0.0_dp, error)
+         if (allocated(error)) return
+         scale = 90
+         err_static = max(maxval(abs(nodes_of(net%lines(1), 1, 41) - nodes_of(r, 1, 41))), &
+                          maxval(abs(nodes_of(net%lines(2), 1, 51) - nodes_of(r, 41, 91))))/scale
+         write (output_unit, '(4x,a,es9.2,a,i0,a,es9.2,a)') 'statics: ', err_static, ' of L off the one line (', &
+            net%last_iterations, ' iterations; imbalance ', maxval(abs(net%imbalance)), ' N)'
+         ! Measured 2.1e-14 (Newton to 1e-12).
+         call check(error, err_static < 1.0e-12_dp, 'the network''s static state is '//str(err_static)// &
+                    ' of L off the one line''s')
+         if (allocated(error)) return
+         dt = 0.025_dp
+         theta = 0.5_dp
+         led0 = net%ledger()
+         do i = 1, 40
+            call r%step(dt, theta, error)
+            if (allocated(error)) return
+            call net%attempt(dt, theta, error)
+            if (allocated(error)) return
+            call net%accept(dt, theta)
+         end do
+         err_step = max(maxval(abs(nodes_of(net%lines(1), 1, 41) - nodes_of(r, 1, 41))), &
+                        maxval(abs(nodes_of(net%lines(2), 1, 51) - nodes_of(r, 41, 91))))/scale
+         led = net%ledger()
+         drift = abs((led(1) - led0(1)) - (led(2) + led(3) - led(4)))/max(abs(led(1)), 1.0_dp)
+         write (output_unit, '(4x,a,es9.2,a,es9.2)') 'after 1 s of heave: ', err_step, ' of L; ledger ', drift
+         ! Measured 8.8e-15 and 9.2e-15.
+         call check(error, err_step < 1.0e-12_dp, 'after the heave the network is '//str(err_step)// &
+                    ' of L off the one line')
+         if (allocated(error)) return
+         call check(error, drift < 1.0e-13_dp, 'the network''s ledger does not close: '//str(drift))
+      end associate
+   end subroutine test_equal_one_line
+
+   !> The kept rows of a joint end (its momentum rows before the held rows replace them) against
+   !> central differences of the kept residual, in a step and in the statics.
+   subroutine test_kept_rows(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run), allocatable :: lines(:)
+      type(network_run) :: net
+      real(dp), allocatable :: x(:), res(:)
+      real(dp) :: fd(3), h, worst, scale_row, kept(3, 9)
+      integer :: mode, side, j, col, m, first
+      call two_lines([25.0_dp, 5.0_dp, -40.0_dp], lines, error)
+      if (allocated(error)) return
+      call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 1, 1)], 1, error)
+      if (allocated(error)) return
+      call net%statics(0.0_dp, error)
+      if (allocated(error)) return
+      worst = 0
+      do mode = 1, 2
+         if (mode == 1) then
+            call net%attempt(0.05_dp, 0.5_dp, error)
+            if (allocated(error)) return
+         end if
+         associate (run => net%lines(1), piece => net%lines(1)%problem%piece)
+            ! Off balance: move the nodes a little, so that the rows are not zero.
+            m = size(run%x)
+            x = run%x + 0.01_dp*sin([(real(j, dp), j=1, m)])
+            allocate (res(m))
+            do side = 1, 2
+               if (.not. piece%keep_rows(side)) cycle
+               call run%problem%evaluate(x, res, run%work%jacobian, .true.)
+               kept = piece%kept_jac(:, :, side)
+               first = piece%kept_first(side)
+               scale_row = maxval(abs(kept))
+               do j = 1, 9
+                  col = first - 1 + j
+                  h = 1.0e-6_dp
+                  x(col) = x(col) + h
+                  call run%problem%evaluate(x, res, run%work%jacobian, .false.)
+                  fd = piece%kept_residual(:, side)
+                  x(col) = x(col) - 2*h
+                  call run%problem%evaluate(x, res, run%work%jacobian, .false.)
+                  fd = (fd - piece%kept_residual(:, side))/(2*h)
+                  x(col) = x(col) + h
+                  worst = max(worst, maxval(abs(fd - kept(:, j)))/scale_row)
+               end do
+            end do
+            deallocate (res)
+         end associate
+         if (mode == 1) call net%reject()
+      end do
+      write (output_unit, '(4x,a,es9.2,a)') 'kept rows: ', worst, ' of the row scale off central differences'
+      ! Measured 8.4e-10 (the differences' truncation).
+      call check(error, worst < 5.0e-9_dp, 'the kept rows'' Jacobian is off central differences by '//str(worst))
+   end subroutine test_kept_rows
+
+   !> The points' stiffness (the Schur complement of the bordered Newton matrix) against
+   !> differences of the point's force with the lines re-solved at the point moved: the
+   !> derivative that makes the network's Newton iteration quadratic.
+   subroutine test_point_stiffness(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(rod3d_run), allocatable :: lines(:)
+      type(network_run) :: net, moved
+      real(dp) :: k(3, 3), fd(3, 3), h, worst, f(3, 2)
+      integer :: a, sgn
+      call two_lines([25.0_dp, 5.0_dp, -40.0_dp], lines, error)
+      if (allocated(error)) return
+      call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 1, 1)], 1, error)
+      if (allocated(error)) return
+      call net%statics(0.0_dp, error)
+      if (allocated(error)) return
+      k = net%point_stiffness()
+      h = 1.0e-4_dp
+      do a = 1, 3
+         do sgn = 1, 2
+            moved = net
+            moved%xp(a, 1) = moved%xp(a, 1) + merge(h, -h, sgn == 1)
+            call lines_in_balance(moved, error)
+            if (allocated(error)) return
+            f(:, sgn) = moved%imbalance(:, 1)
+         end do
+         ! The sum of the kept rows is minus the lines' force on the point.
+         fd(:, a) = (f(:, 1) - f(:, 2))/(2*h)
+      end do
+      worst = maxval(abs(fd - k))/maxval(abs(k))
+      write (output_unit, '(4x,a,es9.2,a)') 'point stiffness: ', worst, ' off differences of re-solved lines'
+      ! Measured 7.1e-10 (differences of 1e-4 m).
+      call check(error, worst < 5.0e-9_dp, 'the points'' stiffness is off by '//str(worst))
+   end subroutine test_point_stiffness
+
+   !> Solve the lines of a network with its points held where they are (each line alone).
+   subroutine lines_in_balance(net, error)
+      type(network_run), intent(inout) :: net
+      type(error_type), allocatable, intent(out) :: error
+      call net%hold_statics(0.0_dp, error)
+   end subroutine lines_in_balance
+
+   !> Three lines of 75 m from anchors at 120 degrees, 60 m from the axis, meet at a buoy: the
+   !> current along x, line 1's anchor on the x axis, the others mirror images across it. From a
+   !> guess 2 m off the plane of symmetry, the statics finds the buoy on it; the ledger of 2 s of
+   !> heave of line 1's anchor closes.
+   subroutine test_spread(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sims(3)
+      type(rod3d_run), allocatable :: lines(:)
+      type(network_run) :: net
+      real(dp) :: guess(3), a(3), off, led0(4), led(4), drift, dt, buoy0(3)
+      integer :: l, i
+      character(len=*), parameter :: line = "&cable length = 75.0, diameter = 0.05, density = 1500.0, "// &
+                                            "bending_stiffness = 1.0 /"//nl//numerics//", nodes = 61 /"//nl
+      guess = [3.0_dp, 2.0_dp, -25.0_dp]
+      allocate (lines(3))
+      do l = 1, 3
+         a(3) = -60
+         a(1:2) = 60*[cos(2*acos(-1.0_dp)/3*(l - 1)), sin(2*acos(-1.0_dp)/3*(l - 1))]
+         if (l == 1) then
+            call prepared_with_body(line//xyz("&end_a kind = 'fixed'", guess)//" /"//nl// &
+                                    xyz("&end_b "//heave, a)//" /", buoy(0), sims(l), error)
+            ! (the buoy on line 1's end a: joint 0)
+         else
+            call prepared(line//xyz("&end_a kind = 'fixed'", guess)//" /"//nl// &
+                          xyz("&end_b kind = 'fixed'", a)//" /", sims(l), error)
+         end if
+         if (allocated(error)) return
+         lines(l) = sims(l)%rod3%pieces(1)%run
+      end do
+      call net%init(lines, [network_joint(1, 1, 1), network_joint(2, 1, 1), network_joint(3, 1, 1)], 1, error)
+      if (allocated(error)) return
+      call net%statics(0.0_dp, error)
+      if (allocated(error)) return
+      off = abs(net%xp(2, 1))
+      write (output_unit, '(4x,a,3f10.4,a,es9.2,a,i0,a)') 'spread: the buoy at', net%xp(:, 1), ', ', off, &
+         ' m off the plane of symmetry (', net%last_iterations, ' iterations)'
+      ! Measured 4.3e-15 m.
+      call check(error, off < 1.0e-12_dp, 'the spread''s buoy is '//str(off)//' m off the plane of symmetry')
+      if (allocated(error)) return
+      dt = 0.05_dp
+      buoy0 = net%xp(:, 1)
+      led0 = net%ledger()
+      do i = 1, 40
+         call net%attempt(dt, 0.5_dp, error)
+         if (allocated(error)) return
+         call net%accept(dt, 0.5_dp)
+      end do
+      led = net%ledger()
+      drift = abs((led(1) - led0(1)) - (led(2) + led(3) - led(4)))/max(abs(led(1)), abs(led(2)), 1.0_dp)
+      write (output_unit, '(4x,a,es9.2,a,es9.2,a,es9.2,a,es9.2,a)') 'spread heave: ledger ', drift, ' (end work ', &
+         led(2), ' J; the points'' work on the lines ', net%joint_work, ' J; the buoy moved ', &
+         norm2(net%xp(:, 1) - buoy0), ' m)'
+      ! Measured 1.2e-16; with the kept rows of one line 0.1 % off, 2.9e-7.
+      call check(error, drift < 1.0e-13_dp, 'the spread''s ledger does not close: '//str(drift))
+   end subroutine test_spread
+end module suite_network

@@ -48,6 +48,8 @@ module xcable_driver_network
    use xcable_core_strings, only: str
    use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_ends_joint, only: joint_end
+   use xcable_material_law, only: material_law
+   use xcable_material_tension_only, only: uncut_law
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    implicit none
    private
@@ -73,6 +75,12 @@ module xcable_driver_network
    type :: joint_columns_type
       real(dp), allocatable :: z(:, :)
    end type joint_columns_type
+
+   !> A line's laws kept aside while the statics solves with others.
+   type :: kept_law_type
+      class(material_law), allocatable :: law
+      type(kept_law_type), allocatable :: sections(:)
+   end type kept_law_type
 
    !> Lines joined at free points.
    type :: network_run
@@ -101,6 +109,8 @@ module xcable_driver_network
       real(dp) :: joint_work = 0
       !> Per joint, its columns in the last iteration.
       type(joint_columns_type), allocatable, private :: columns(:)
+      !> The lines' own laws while the statics solves with their compressive branches.
+      type(kept_law_type), allocatable, private :: kept_laws(:)
    contains
       !> Take the lines and the joints; the joint ends replace the lines' ends there.
       procedure :: init => network_init
@@ -200,6 +210,18 @@ contains
          self%lines(l)%problem%dt = 0
          self%lines(l)%problem%t0 = t
       end do
+      ! A rope that cannot push: first with its law's compressive branch (a slack cell has no
+      ! stiffness, and the points' system none in a slack line's direction), then with the law
+      ! itself from there, as the single line's statics on a seabed (rod3d_drive/statics.f90).
+      if (any([(self%lines(l)%problem%piece%has_kink(), l=1, size(self%lines))])) then
+         call swap_laws(self)
+         call solve(self, .true., error)
+         call swap_laws(self)
+         if (allocated(error)) then
+            error%message = 'network statics (the ropes'' laws with their compressive branch): '//error%message
+            return
+         end if
+      end if
       call solve(self, .true., error)
       if (allocated(error)) then
          error%message = 'network statics: '//error%message
@@ -337,6 +359,43 @@ contains
    end function network_point_stiffness
 
    ! ---- the solve ----
+
+   !> Swap each line's laws with their kept copies: the first call puts in the laws with their
+   !> compressive branch (uncut_law), the second the laws themselves back.
+   subroutine swap_laws(self)
+      type(network_run), intent(inout) :: self
+      class(material_law), allocatable :: other
+      logical :: was_cut
+      integer :: l, j
+      do l = 1, size(self%lines)
+         associate (piece => self%lines(l)%problem%piece)
+            if (.not. allocated(self%kept_laws)) allocate (self%kept_laws(size(self%lines)))
+            if (.not. allocated(self%kept_laws(l)%law)) then
+               call uncut_law(piece%law, other, was_cut)
+               call move_alloc(piece%law, self%kept_laws(l)%law)
+               call move_alloc(other, piece%law)
+               if (allocated(piece%sections)) then
+                  allocate (self%kept_laws(l)%sections(size(piece%sections)))
+                  do j = 1, size(piece%sections)
+                     call uncut_law(piece%sections(j)%law, other, was_cut)
+                     call move_alloc(piece%sections(j)%law, self%kept_laws(l)%sections(j)%law)
+                     call move_alloc(other, piece%sections(j)%law)
+                  end do
+               end if
+            else
+               deallocate (piece%law)
+               call move_alloc(self%kept_laws(l)%law, piece%law)
+               if (allocated(piece%sections)) then
+                  do j = 1, size(piece%sections)
+                     deallocate (piece%sections(j)%law)
+                     call move_alloc(self%kept_laws(l)%sections(j)%law, piece%sections(j)%law)
+                  end do
+                  deallocate (self%kept_laws(l)%sections)
+               end if
+            end if
+         end associate
+      end do
+   end subroutine swap_laws
 
    !> Set each joint end's position to its point's.
    subroutine place_points(self)

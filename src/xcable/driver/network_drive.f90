@@ -1,0 +1,339 @@
+!> A network of lines (&line_1 ... with free &point_k) as the model of a run: the lines of
+!> driver/network.f90 behind the step loop's interface (cable_model, driver/stepping.f90).
+!>
+!> The output lays the lines out one after another, as the pieces of a parted line: line 1's
+!> output nodes, then line 2's, and so on, the arc length running on from line to line (line l
+!> starts at the sum of the lengths before it), and each line a piece of its own (the output's
+!> piece starts, the XDMF's polylines). The history has two ends per line, `line_1_a`,
+!> `line_1_b`, `line_2_a`, ..., with the end kinds of the lines' ends ('joint' at a free point).
+!> The ledger's columns are the network's: the lines' energies, the work of the supports (not
+!> the points', which cancels), of the loads, and the dissipation.
+!>
+!> The step is the one step loop's, from the shortest of the lines' steps (each line's
+!> Courant number at its static state); a step the network's Newton does not take is taken
+!> again shorter, as any model's. The checks of a new state are each line's (its strain
+!> range, the fold check). What a network does not have yet: a break (the input refuses
+!> &rupture), checkpoints (a run is not paused for one: it says so and goes on), the loads'
+!> measures in the history.
+module xcable_driver_network_drive
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type, fatal_error, stat_input
+   use xcable_core_strings, only: str
+   use xcable_driver_rod_run, only: rod_run, cable_model, end_value, check_range, check_folds
+   use xcable_driver_network, only: network_run
+   use xcable_driver_records, only: run_observer, note_min_strain
+   use xcable_driver_history, only: hermite_levels
+   use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
+   use xcable_io_archive, only: state_archive
+   use xcable_model_rod3d, only: rod3d_piece
+   implicit none
+   private
+   public :: network_drive, network_end_labels
+
+   !> One line's place in the output and its previous level.
+   type :: line_place
+      !> First output column of the line (its n nodes follow).
+      integer :: first = 0
+      !> The previous time level (snapshots inside a step).
+      real(dp), allocatable :: x_prev(:), v_prev(:, :)
+      !> Force of the supports (held ends; the points at joints) on the end nodes, N.
+      real(dp) :: reaction(3, 2) = 0
+   end type line_place
+
+   !> A network run.
+   type, extends(cable_model) :: network_drive
+      !> The lines and points.
+      type(network_run) :: net
+      !> Per line, its place.
+      type(line_place), allocatable :: lines(:)
+      !> Extra fields of the static state (n_out, n_fields3).
+      real(dp), allocatable :: static_extra(:, :)
+   contains
+      procedure :: begin => drive_begin
+      procedure :: attempt => drive_attempt
+      procedure :: reject => drive_reject
+      procedure :: watch => drive_watch
+      procedure :: accept => drive_accept
+      procedure :: snapshot => drive_snapshot
+      procedure :: record => drive_record
+      procedure :: split => drive_split
+      procedure :: end_info => drive_end_info
+      procedure :: conclude => drive_conclude
+      procedure :: save_state => drive_save_state
+      procedure :: load_state => drive_load_state
+      !> The output's fields of the current state (n_out, n_fields) and (n_out, n_fields3).
+      procedure :: state_fields => drive_state_fields
+   end type network_drive
+
+contains
+
+   !> The history's end labels of a network of lines lines: line_1_a, line_1_b, ...
+   pure function network_end_labels(lines) result(labels)
+      !> Number of lines.
+      integer, intent(in) :: lines
+      character(len=8) :: labels(2*lines)
+      integer :: l
+      do l = 1, lines
+         write (labels(2*l - 1), '(a,i0,a)') 'line_', l, '_a'
+         write (labels(2*l), '(a,i0,a)') 'line_', l, '_b'
+      end do
+   end function network_end_labels
+
+   subroutine drive_begin(self, run, observer, error)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(run_observer), intent(inout), optional :: observer
+      type(error_type), allocatable, intent(out) :: error
+      integer :: l
+      if (allocated(run%history%end_labels)) deallocate (run%history%end_labels)
+      allocate (run%history%end_labels(2*size(self%lines)))
+      run%history%end_labels = network_end_labels(size(self%lines))
+      call run%history%reserve(16, size(run%history%end_labels), run%options%energy, with_y=.true.)
+      do l = 1, size(self%lines)
+         self%lines(l)%x_prev = self%net%lines(l)%x
+         self%lines(l)%v_prev = self%net%lines(l)%v
+      end do
+      if (.not. present(observer)) return
+      call observer%static(run%info, error)
+      if (.not. allocated(error)) call observer%snapshot(0.0_dp, run%info%fields, error)
+      if (.not. allocated(error)) call observer%snapshot_extra(0.0_dp, field3_names, self%static_extra, error)
+   end subroutine drive_begin
+
+   subroutine drive_attempt(self, run, h, iterations, retry_same, error)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      integer, intent(out) :: iterations
+      logical, intent(out) :: retry_same
+      type(error_type), allocatable, intent(out) :: error
+      integer :: l, n
+      retry_same = .false.
+      do l = 1, size(self%lines)
+         self%lines(l)%x_prev = self%net%lines(l)%x
+         self%lines(l)%v_prev = self%net%lines(l)%v
+      end do
+      self%net%t = run%t
+      call self%net%attempt(h, run%options%theta, error)
+      iterations = self%net%last_iterations
+      if (allocated(error)) return
+      do l = 1, size(self%lines)
+         associate (piece => self%net%lines(l)%problem%piece, x => self%net%lines(l)%x)
+            n = piece%n
+            call check_line(piece, x, l, h, error)
+            if (allocated(error)) return
+         end associate
+      end do
+   end subroutine drive_attempt
+
+   !> The checks of a line's new state: its strain range, the fold check.
+   subroutine check_line(piece, x, l, h, error)
+      type(rod3d_piece), intent(in) :: piece
+      real(dp), intent(in) :: x(:)
+      integer, intent(in) :: l
+      real(dp), intent(in) :: h
+      type(error_type), allocatable, intent(out) :: error
+      real(dp) :: r(3, piece%n), e(3, piece%n - 1), len1(piece%n - 1), th(piece%n), fold(piece%n)
+      r = reshape(x(1:3*piece%n), [3, piece%n])
+      call piece%geometry(r, e, len1, th)
+      call check_range(x, len1, piece%law, l, error)
+      if (allocated(error)) return
+      call piece%turning_folds(r, fold)
+      call check_folds(fold, l, h, error)
+   end subroutine check_line
+
+   subroutine drive_reject(self, run)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      call self%net%reject()
+   end subroutine drive_reject
+
+   !> No watch of the tensions (a network has no break by tension yet).
+   subroutine drive_watch(self, run, h, retry)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      logical, intent(out) :: retry
+      retry = .false.
+   end subroutine drive_watch
+
+   subroutine drive_accept(self, run, h)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: h
+      integer :: l
+      call self%net%accept(h, run%options%theta)
+      do l = 1, size(self%lines)
+         associate (piece => self%net%lines(l)%problem%piece)
+            self%lines(l)%reaction(:, 1) = piece%reaction(1, h)
+            self%lines(l)%reaction(:, 2) = piece%reaction(piece%n, h)
+         end associate
+      end do
+   end subroutine drive_accept
+
+   subroutine drive_snapshot(self, run, t_new, ts, static, fields, extra, with_extra)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp), intent(in) :: t_new, ts
+      logical, intent(in) :: static
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      logical, intent(out) :: with_extra
+      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), r(:, :), v(:, :), f(:, :), e(:, :)
+      real(dp) :: u, h
+      integer :: l, n
+      with_extra = .true.
+      if (static) then
+         fields = run%info%fields
+         extra = self%static_extra
+         return
+      end if
+      h = t_new - run%t
+      u = min(max((ts - run%t)/h, 0.0_dp), 1.0_dp)
+      do l = 1, size(self%lines)
+         associate (line => self%lines(l), now => self%net%lines(l))
+            n = now%problem%piece%n
+            r0 = reshape(line%x_prev(1:3*n), [3, n])
+            r1 = reshape(now%x(1:3*n), [3, n])
+            r = r0
+            v = r0
+            call hermite_levels((ts - run%t)/h, h, r0, line%v_prev, r1, now%v, r, v)
+            x = now%x
+            x(1:3*n) = reshape(r, [3*n])
+            x(3*n + 1:) = (1 - u)*line%x_prev(3*n + 1:) + u*now%x(3*n + 1:)
+            allocate (f(n, size(fields, 2)), e(n, size(extra, 2)))
+            call fields3(now%problem%piece, x, v, f, e)
+            fields(line%first:line%first + n - 1, :) = f
+            extra(line%first:line%first + n - 1, :) = e
+            deallocate (f, e)
+         end associate
+      end do
+   end subroutine drive_snapshot
+
+   !> The fields of the current state (the static state's, after the statics).
+   subroutine drive_state_fields(self, fields, extra)
+      class(network_drive), intent(in) :: self
+      real(dp), intent(out) :: fields(:, :), extra(:, :)
+      real(dp), allocatable :: f(:, :), e(:, :)
+      integer :: l, n
+      do l = 1, size(self%lines)
+         associate (now => self%net%lines(l))
+            n = now%problem%piece%n
+            allocate (f(n, size(fields, 2)), e(n, size(extra, 2)))
+            call fields3(now%problem%piece, now%x, now%v, f, e)
+            fields(self%lines(l)%first:self%lines(l)%first + n - 1, :) = f
+            extra(self%lines(l)%first:self%lines(l)%first + n - 1, :) = e
+            deallocate (f, e)
+         end associate
+      end do
+   end subroutine drive_state_fields
+
+   subroutine drive_record(self, run, i, ends, ends_y, measures, energies, stored, work)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      integer, intent(in) :: i
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
+      real(dp), intent(inout) :: energies(4), stored, work(3)
+      real(dp) :: en(5), ledger(4), f(3)
+      integer :: l, side, k, n, slot
+      integer, allocatable :: columns(:)
+      en = 0
+      do l = 1, size(self%lines)
+         associate (run3 => self%net%lines(l), piece => self%net%lines(l)%problem%piece, x => self%net%lines(l)%x)
+            n = piece%n
+            call piece%geometry(reshape(x(1:3*n), [3, n]), piece%e1, piece%l1, piece%th1)
+            do side = 1, 2
+               slot = 2*(l - 1) + side
+               k = merge(1, n, side == 1)
+               if (side == 1) then
+                  f = self%lines(l)%reaction(:, 1)
+                  if (.not. piece%end_a%held()) f = piece%end_a%applied_force3(run%t)
+               else
+                  f = self%lines(l)%reaction(:, 2)
+                  if (.not. piece%end_b%held()) f = piece%end_b%applied_force3(run%t)
+               end if
+               ends(:, slot) = [x(3*k - 2), x(3*k), run3%v(1, k), run3%v(3, k), end_tension(piece, side), f(1), f(3)]
+               ends_y(:, slot) = [x(3*k - 1), run3%v(2, k), f(2)]
+            end do
+            run%summary%max_turning_angle = max(run%summary%max_turning_angle, maxval(piece%th1))
+            columns = [(self%lines(l)%first - 1 + k, k=1, n)]
+            call note_min_strain(run%summary, piece%l1, columns, run%s_out, run%t)
+            run%summary%max_strain = max(run%summary%max_strain, maxval(piece%l1) - 1)
+            if (run%options%energy) en = en + run3%energies()
+         end associate
+      end do
+      if (run%options%energy) then
+         ledger = self%net%ledger()
+         energies = [en(1) + en(5), en(2:4)]
+         stored = sum(en)
+         work = ledger(2:4)
+      end if
+   end subroutine drive_record
+
+   !> A line's tension at an end node, extrapolated from its end cells (as the 3-D run's).
+   real(dp) function end_tension(piece, side)
+      type(rod3d_piece), intent(in) :: piece
+      integer, intent(in) :: side
+      real(dp) :: cells(3)
+      integer :: j, c, m
+      m = min(3, piece%n - 1)
+      do j = 1, m
+         c = merge(j, piece%n - j, side == 1)
+         cells(j) = piece%cell_tension(c, piece%l1(c) - 1)
+      end do
+      end_tension = max(end_value(cells(1:m), 1), piece%cell_tension(merge(1, piece%n - 1, side == 1), -0.99_dp))
+   end function end_tension
+
+   !> A network does not part (the input refuses &rupture for it).
+   subroutine drive_split(self, run, error)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      type(error_type), allocatable, intent(out) :: error
+      call fatal_error(error, 'a network of lines cannot part (no &rupture for networks yet)', stat_input)
+   end subroutine drive_split
+
+   subroutine drive_end_info(self, run, j, kind, held)
+      class(network_drive), intent(in) :: self
+      type(rod_run), intent(in) :: run
+      integer, intent(in) :: j
+      character(:), allocatable, intent(out) :: kind
+      logical, intent(out) :: held
+      integer :: l
+      l = (j + 1)/2
+      associate (piece => self%net%lines(l)%problem%piece)
+         if (mod(j, 2) == 1) then
+            kind = piece%end_a%kind()
+            held = piece%end_a%held()
+         else
+            kind = piece%end_b%kind()
+            held = piece%end_b%held()
+         end if
+      end associate
+   end subroutine drive_end_info
+
+   subroutine drive_conclude(self, run)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      real(dp) :: ledger(4)
+      run%summary%newton_iterations = self%net%iterations
+      run%summary%factorisations = self%net%iterations*size(self%lines)
+      if (run%options%energy) then
+         ledger = self%net%ledger()
+         run%summary%dissipated = ledger(4)
+      end if
+   end subroutine drive_conclude
+
+   !> No checkpoints of a network yet: archive%ok stays false (the run goes on).
+   subroutine drive_save_state(self, run, archive)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(state_archive), intent(inout) :: archive
+      archive%ok = .false.
+   end subroutine drive_save_state
+
+   subroutine drive_load_state(self, run, archive, error)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      class(state_archive), intent(inout) :: archive
+      type(error_type), allocatable, intent(out) :: error
+      call fatal_error(error, 'a network of lines has no checkpoints yet: run it again without --resume', stat_input)
+   end subroutine drive_load_state
+end module xcable_driver_network_drive

@@ -6,8 +6,8 @@ module xcable_io_input_scanner
    use xcable_core_kinds, only: dp, i8
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: str, to_lower
-   use xcable_io_config, only: case_config, max_segments
-   use xcable_io_schema, only: schema_entry, find_entry, group_entries, group_list, segment_group
+   use xcable_io_config, only: case_config, max_segments, max_points
+   use xcable_io_schema, only: schema_entry, find_entry, group_entries, group_list, segment_group, point_group
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use xcable_io_input_access, only: access, config_value
    implicit none
@@ -38,7 +38,8 @@ contains
    !> its first column (an end's table_time, the material's table_strain),
    !> which the other columns must match (an end's table_y may be left out).
    subroutine count_table_rows(c, t, counts, error)
-      !> The case; table_rows of each end and material_table_rows (the line's and each segment's) set.
+      !> The case; table_rows of each end (and network point) and material_table_rows (the line's and each
+      !> segment's) set.
       type(case_config), intent(inout) :: c
       !> The schema.
       type(schema_entry), intent(in) :: t(:)
@@ -62,6 +63,13 @@ contains
       do k = 1, max_segments
          call inline_rows(c, t, counts, trim(segment_group(k)), material_columns, &
                           c%segments(k)%material_table_rows, error)
+         if (allocated(error)) return
+      end do
+      ! A motion point's table (&point_k of a network).
+      do k = 1, max_points
+         call inline_rows(c, t, counts, trim(point_group(k)), end_columns, c%points(k)%end%table_rows, error)
+         if (allocated(error)) return
+         call optional_column(trim(point_group(k)), c%points(k)%end%table_rows)
          if (allocated(error)) return
       end do
    contains

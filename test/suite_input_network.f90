@@ -140,7 +140,8 @@ contains
       call check(error, size(ends, 2) == 1 .and. all(ends(:, 1) == [3, 1]), 'point 4: end a of line 3')
       if (allocated(error)) return
       ! The motion point's direction normalised, as an end's.
-      call check(error, c%points(4)%end%direction_x == 1 .and. c%points(4)%end%direction_z == 0, &
+      call check(error, c%point_ends(4)%direction_x == 1 .and. c%point_ends(4)%direction_z == 0 .and. &
+                 c%point_ends(4)%kind == 'motion', &
                  'the motion direction normalised')
    end subroutine test_read
 

@@ -103,12 +103,9 @@ module xcable_io_config
       integer :: joint = -1
       !> Mass, kg; displaced volume, m^3; added-mass and drag coefficients; projected area, m^2.
       real(dp) :: mass = 0, volume = 0, ca = 0, cd = 0, area = 0
-      !> A network point as an end: end%kind '' (a body on the single line), 'fixed', 'free' or
-      !> 'motion'; x, y, z (the position of a fixed point, the mean position of a motion point, the
-      !> first guess of a free one's) and a motion point's motion, as &end_a kind = 'motion' has
-      !> them. For 'fixed' and 'motion' it is the end condition the registry builds
-      !> (ends/registry.f90); a free point is a junction the network's solve places.
-      type(end_config) :: end = end_config(kind='')
+      !> The kind of a network point: 'fixed', 'free' or 'motion' ('' : a body on the single line).
+      !> Its position and motion are an end's: case_config%point_end(k).
+      character(len=16) :: kind = ''
    contains
       !> Whether the point is a point of a network (a kind given).
       procedure :: in_network => point_in_network
@@ -203,6 +200,13 @@ module xcable_io_config
       integer :: point_count = 0
       !> The bodies; only 1 .. point_count are used.
       type(point_config) :: points(max_points)
+      !> The network points as ends (&point_k kind, x, y, z and a motion point's motion, as &end_a
+      !> kind = 'motion' has them): point_ends(k) for point k, its kind that of points(k).
+      !> Allocated (max_points) only where a &point_k gives one of these variables; read them
+      !> with point_end(k). (Not an end in each point_config: an end carries its tables, and a
+      !> case is copied often; an allocatable end inside points(:) made every copy three times
+      !> dearer, 25 % more instructions in a run's start.)
+      type(end_config), allocatable :: point_ends(:)
       ! &line_1 ... &line_8
       !> Number of lines of a network given (0: the single line of &end_a and &end_b).
       integer :: line_count = 0
@@ -302,6 +306,8 @@ module xcable_io_config
       procedure :: line_case
       !> The line ends that meet at a network point: (line, side) pairs.
       procedure :: point_lines
+      !> A network point as an end (its kind, position and motion), for the end registry's builder.
+      procedure :: point_end
    end type case_config
 
 contains
@@ -455,8 +461,26 @@ contains
    pure logical function point_in_network(self)
       !> The point.
       class(point_config), intent(in) :: self
-      point_in_network = len_trim(self%end%kind) > 0
+      point_in_network = len_trim(self%kind) > 0
    end function point_in_network
+
+   !> Point k as an end: its kind ('fixed', 'free', 'motion'; '' for a body on the single line),
+   !> its position x, y, z (a free point's first guess) and a motion point's motion; for 'fixed'
+   !> and 'motion' what the end registry's builder takes (ends/registry.f90). The defaults of an
+   !> end where the case has no point_ends.
+   pure function point_end(self, k) result(e)
+      !> The case.
+      class(case_config), intent(in) :: self
+      !> Point, 1 .. point_count.
+      integer, intent(in) :: k
+      type(end_config) :: e
+      if (allocated(self%point_ends)) then
+         e = self%point_ends(k)
+      else
+         e = end_config()
+      end if
+      e%kind = self%points(k)%kind
+   end function point_end
 
    !> Whether the case is a network of lines (&line_1 ... &line_n).
    pure logical function is_network(self)
@@ -507,12 +531,14 @@ contains
       character(:), allocatable :: given, names, all_given
       integer :: k, j, side, p, pos
       type(point_config) :: body
+      type(end_config) :: e
       all_given = ''
       if (allocated(self%given)) all_given = self%given
       c = self
       c%line_count = 0
       c%point_count = 0
       c%points = point_config()
+      if (allocated(c%point_ends)) deallocate (c%point_ends)
       c%break_enabled = .false.
       c%model = '3d'
       given = ''
@@ -546,24 +572,21 @@ contains
             p = line%end_point(side)
             side_group = merge('end_a', 'end_b', side == 1)
             if (p < 1 .or. p > self%point_count) cycle
+            if (.not. self%points(p)%in_network()) cycle
             associate (pt => self%points(p))
-               if (trim(pt%end%kind) == 'free') then
-                  if (side == 1) then
-                     c%end_a = end_config(kind='fixed', x=pt%end%x, y=pt%end%y, z=pt%end%z)
-                  else
-                     c%end_b = end_config(kind='fixed', x=pt%end%x, y=pt%end%y, z=pt%end%z)
-                  end if
-               else if (side == 1) then
-                  c%end_a = pt%end
+               e = self%point_end(p)
+               if (trim(pt%kind) == 'free') e = end_config(kind='fixed', x=e%x, y=e%y, z=e%z)
+               if (side == 1) then
+                  c%end_a = e
                else
-                  c%end_b = pt%end
+                  c%end_b = e
                end if
                given = given//' '//trim(side_group)//'%kind '//trim(side_group)//'%x '//trim(side_group)//'%y '// &
                        trim(side_group)//'%z'
-               if (trim(pt%end%kind) == 'motion') &
+               if (trim(pt%kind) == 'motion') &
                   given = given//renamed(group_name('point_', p), side_group, point_end_variables)
                ! The body of a free point, on the lowest-numbered line that ends there.
-               if (trim(pt%end%kind) == 'free' .and. first_line_at(p) == l .and. &
+               if (trim(pt%kind) == 'free' .and. first_line_at(p) == l .and. &
                    first_side_at(p) == side .and. has_body(p)) then
                   body = point_config(joint=merge(0, max(line%segment_count, 1), side == 1), mass=pt%mass, &
                                       volume=pt%volume, ca=pt%ca, cd=pt%cd, area=pt%area)

@@ -24,7 +24,7 @@ module xcable_io_input
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_io_config, only: case_config, end_config, segment_config, point_config, line_config, max_table_points, &
-                               max_segments
+                               max_segments, point_end_variables
    use xcable_io_schema, only: schema_entry, schema_table, schema_groups, find_entry, known_fields, segment_of, &
                                segment_group, point_of, point_group, line_of, line_group
    use xcable_core_strings, only: to_lower
@@ -115,6 +115,11 @@ contains
       end do
       call read_groups(path, config, groups, present_group, error)
       if (allocated(error)) return
+      ! The points' ends only where a variable of them is given (bodies on the single line have none).
+      if (allocated(config%point_ends)) then
+         if (.not. any([(any(counts(point_end_entries(point_group(i))) > 0), i=1, config%point_count)])) &
+            deallocate (config%point_ends)
+      end if
       ! A line's segments: as many as the values given; its ends: the numbers of the points named.
       do i = 1, config%line_count
          config%lines(i)%segment_count = min(counts(find_entry(t, line_group(i), 'segments')), max_segments)
@@ -126,10 +131,29 @@ contains
          if (counts(i) > 0) config%given = config%given//' '//trim(t(i)%group)//'%'//trim(t(i)%name)
       end do
       config%given = adjustl(config%given)
+      ! (The words given: those not given are their defaults, in lower case.)
       do i = 1, size(t)
-         if (len_trim(t(i)%choices) > 0) call lower_words(config, t(i))
+         if (len_trim(t(i)%choices) > 0 .and. counts(i) > 0) call lower_words(config, t(i))
       end do
+      ! A network point's end has the point's kind.
+      if (allocated(config%point_ends)) config%point_ends(1:config%point_count)%kind = &
+         config%points(1:config%point_count)%kind
       call count_table_rows(config, t, counts, error)
+
+   contains
+
+      !> The entries of a point's end (its kind, position and motion) in the schema.
+      function point_end_entries(group) result(indices)
+         character(*), intent(in) :: group
+         integer, allocatable :: indices(:)
+         integer :: j
+         allocate (indices(0))
+         do j = 1, size(t)
+            if (t(j)%group /= group) cycle
+            if (t(j)%name == 'kind' .or. index(' '//point_end_variables//' ', ' '//trim(t(j)%name)//' ') > 0) &
+               indices = [indices, j]
+         end do
+      end function point_end_entries
    end subroutine read_values
 
    !> Read the groups that are present with the compiler's namelist input.
@@ -214,7 +238,10 @@ contains
             c%segments(segment_of(group_names(ig)))%p = p
             call read_segment(unit, segment_of(group_names(ig)), c%segments(segment_of(group_names(ig))), ios, msg)
          case ('point_1', 'point_2', 'point_3', 'point_4', 'point_5', 'point_6', 'point_7', 'point_8')
-            call read_point(unit, point_of(group_names(ig)), c%points(point_of(group_names(ig))), ios, msg)
+            ! The points' ends are read whole (read_values keeps them where a variable of them is given).
+            if (.not. allocated(c%point_ends)) allocate (c%point_ends(size(c%points)))
+            call read_point(unit, point_of(group_names(ig)), c%points(point_of(group_names(ig))), &
+                            c%point_ends(point_of(group_names(ig))), ios, msg)
          case ('line_1', 'line_2', 'line_3', 'line_4', 'line_5', 'line_6', 'line_7', 'line_8')
             call read_line(unit, line_of(group_names(ig)), c%lines(line_of(group_names(ig))), ios, msg)
          case default
@@ -357,13 +384,15 @@ contains
 
    !> Read &point_k into one body or network point (the groups &point_1 ... &point_8 have the same
    !> variables).
-   subroutine read_point(unit, k, pt, ios, msg)
+   subroutine read_point(unit, k, pt, e, ios, msg)
       !> Open namelist file, rewound.
       integer, intent(in) :: unit
       !> Point, 1 .. max_points.
       integer, intent(in) :: k
       !> The point: defaults in, values given out.
       type(point_config), intent(inout) :: pt
+      !> Its end (a network point's position and motion): defaults in, values given out.
+      type(end_config), intent(inout) :: e
       !> iostat of the read.
       integer, intent(out) :: ios
       !> iomsg of the read.
@@ -392,12 +421,10 @@ contains
       namelist /point_8/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
          direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
       joint = pt%joint; mass = pt%mass; volume = pt%volume; ca = pt%ca; cd = pt%cd; area = pt%area
-      associate (e => pt%end)
-         kind = e%kind; x = e%x; y = e%y; z = e%z; motion = e%motion; amplitude = e%amplitude; period = e%period
-         phase = e%phase; direction_x = e%direction_x; direction_y = e%direction_y; direction_z = e%direction_z
-         ramp_time = e%ramp_time; table_time = e%table_time; table_x = e%table_x; table_y = e%table_y
-         table_z = e%table_z; table_file = e%table_file
-      end associate
+      kind = pt%kind; x = e%x; y = e%y; z = e%z; motion = e%motion; amplitude = e%amplitude; period = e%period
+      phase = e%phase; direction_x = e%direction_x; direction_y = e%direction_y; direction_z = e%direction_z
+      ramp_time = e%ramp_time; table_time = e%table_time; table_x = e%table_x; table_y = e%table_y
+      table_z = e%table_z; table_file = e%table_file
       select case (k)
       case (1); read (unit, nml=point_1, iostat=ios, iomsg=msg)
       case (2); read (unit, nml=point_2, iostat=ios, iomsg=msg)
@@ -413,12 +440,11 @@ contains
       end select
       if (ios /= 0) return
       pt%joint = joint; pt%mass = mass; pt%volume = volume; pt%ca = ca; pt%cd = cd; pt%area = area
-      associate (e => pt%end)
-         e%kind = kind; e%x = x; e%y = y; e%z = z; e%motion = motion; e%amplitude = amplitude; e%period = period
-         e%phase = phase; e%direction_x = direction_x; e%direction_y = direction_y; e%direction_z = direction_z
-         e%ramp_time = ramp_time; e%table_time = table_time; e%table_x = table_x; e%table_y = table_y
-         e%table_z = table_z; e%table_file = table_file
-      end associate
+      pt%kind = kind
+      e%kind = kind; e%x = x; e%y = y; e%z = z; e%motion = motion; e%amplitude = amplitude; e%period = period
+      e%phase = phase; e%direction_x = direction_x; e%direction_y = direction_y; e%direction_z = direction_z
+      e%ramp_time = ramp_time; e%table_time = table_time; e%table_x = table_x; e%table_y = table_y
+      e%table_z = table_z; e%table_file = table_file
    end subroutine read_point
 
    !> Read &line_k into one line of a network (the groups &line_1 ... &line_8 have the same

@@ -3,7 +3,8 @@
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_access
    use xcable_core_kinds, only: dp
-   use xcable_io_config, only: case_config, end_config, segment_config, point_config, line_config, point_end_variables
+   use xcable_io_config, only: case_config, end_config, segment_config, point_config, line_config, point_end_variables, &
+                               max_points
    use xcable_io_schema, only: schema_entry, segment_of, point_of, line_of
    implicit none
    private
@@ -57,7 +58,11 @@ contains
          return
       end if
       if (point_of(e%group) > 0) then
-         call access_point(c%points(point_of(e%group)), e%name, v, store)
+         if (index(' '//point_end_variables//' ', ' '//trim(e%name)//' ') > 0) then
+            call access_point_end(c, point_of(e%group), e%name, v, store)
+         else
+            call access_point(c%points(point_of(e%group)), e%name, v, store)
+         end if
          return
       end if
       if (line_of(e%group) > 0) then
@@ -233,16 +238,35 @@ contains
       case ('ca'); call move(g%ca, v, store)
       case ('cd'); call move(g%cd, v, store)
       case ('area'); call move(g%area, v, store)
-      case ('kind'); call move(g%end%kind, v, store)
+      case ('kind'); call move(g%kind, v, store)
       case default
-         ! A network point's position and motion: those of its end.
-         if (index(' '//point_end_variables//' ', ' '//trim(name)//' ') > 0) then
-            call access_end(g%end, name, v, store)
-         else
-            v%found = .false.
-         end if
+         v%found = .false.
       end select
    end subroutine access_point
+
+   !> `access` for a network point's position and motion (&point_k x, y, z, motion, ...):
+   !> case_config%point_ends(k); where the case has none, their defaults (a store allocates them).
+   subroutine access_point_end(c, k, name, v, store)
+      !> The case.
+      type(case_config), intent(inout) :: c
+      !> The point.
+      integer, intent(in) :: k
+      !> Variable name.
+      character(*), intent(in) :: name
+      !> Its value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      type(end_config) :: defaults
+      if (.not. allocated(c%point_ends)) then
+         if (.not. store) then
+            call access_end(defaults, name, v, store)
+            return
+         end if
+         allocate (c%point_ends(max_points))
+      end if
+      call access_end(c%point_ends(k), name, v, store)
+   end subroutine access_point_end
 
    !> `access` for the variables of &line_1 ... &line_8.
    subroutine access_line(g, name, v, store)

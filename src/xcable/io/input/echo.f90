@@ -201,11 +201,11 @@ contains
             else if (e%name == 'joint') then
                echoed = .false.
             else if (is_word(e%name, point_body_variables)) then
-               echoed = trim(pt%end%kind) == 'free'
+               echoed = trim(pt%kind) == 'free'
             else if (e%name == 'kind' .or. is_word(e%name, 'x y z')) then
                echoed = .true.
             else
-               echoed = trim(pt%end%kind) == 'motion' .and. end_echoed(pt%end, e)
+               echoed = trim(pt%kind) == 'motion' .and. end_echoed(c%point_end(point_of(e%group)), e)
             end if
          end associate
          return

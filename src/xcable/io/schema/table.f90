@@ -278,44 +278,43 @@ contains
 
    !> The groups &point_1 ... &point_8, all alike: a body (clump weight, buoy) at a joint of two
    !> segments or at an end that is not held; or, with a kind, a point of a network of lines: its
-   !> position and a motion point's motion (copies of &end_a's entries of kind 'motion', made
-   !> here in a scratch part of the table and taken out again), and the body of a free point.
+   !> position and a motion point's motion (copies of &end_a's entries of kind 'motion'), and the
+   !> body of a free point. The entries of one point are made once, in a scratch part of the table
+   !> (with a scratch &end_a to copy from), and appended for each point.
    subroutine add_points(t)
       !> The table; the points appended.
       type(schema_entry), allocatable, intent(inout) :: t(:)
       character(len=5), parameter :: scratch(1) = ['end_a']
-      type(schema_entry), allocatable :: end_entries(:)
-      type(schema_entry) :: e
+      type(schema_entry), allocatable :: proto(:)
       character(len=16) :: group
-      integer :: k, i, before
+      integer :: k, i, before, first
       before = filled
-      call add_ends(t, scratch)
-      end_entries = t(before + 1:filled)
-      filled = before
-      do k = 1, max_points
-         group = point_group(k)
-         call add(t, group, 'kind', 'string', '-', "''", "a point of a network of lines (&line_k end_a, end_b): "// &
-                  "'fixed' (held at x, y, z), 'free' (a junction the lines place, with the body of mass, volume, "// &
-                  "ca, cd and area there) or 'motion' (moved about x, y, z as an end of kind 'motion')", length=16, &
-                  choices=point_kinds, zero_means='a body on the single line, at joint')
-         call add(t, group, 'joint', 'integer', '-', '-1', 'the node the body sits on: k > 0 the end of '// &
-                  '&segment_k (where &segment_k+1 starts; the last one is end b, and a line without segments has '// &
-                  'joints 0 and 1), 0 end a; an end only if it is not held (free, force, mass or spring); not for '// &
-                  'a network point', 0.0_dp, real(max_segments, dp), default_means='must be given without kind')
-         call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
-                  "down on the joint (or the free network point; not on a 'fixed' or 'motion' one)", 0.0_dp, 1.0e9_dp)
-         call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &
-                  'density g volume up, less where the sphere of this volume rises through &fluid surface_z', &
-                  0.0_dp, 1.0e6_dp)
-         call add(t, group, 'ca', 'real', '-', '0', 'added-mass coefficient: ca &fluid density volume more '// &
-                  'inertia, in every direction', 0.0_dp, 100.0_dp)
-         call add(t, group, 'cd', 'real', '-', '0', 'drag coefficient on area: the force 1/2 &fluid density cd '// &
-                  'area |w| w against the velocity w relative to the current, in every direction', 0.0_dp, 100.0_dp)
-         call add(t, group, 'area', 'real', 'm^2', '0', 'projected area of the body for its drag', 0.0_dp, 1.0e6_dp)
-         do i = 1, size(end_entries)
-            e = end_entries(i)
-            if (index(' '//point_end_variables//' ', ' '//trim(e%name)//' ') == 0) cycle
-            e%group = group
+      call add_ends(t, scratch, kinds_named=.false.)
+      first = filled + 1
+      group = ''
+      call add(t, group, 'kind', 'string', '-', "''", "a point of a network of lines (&line_k end_a, end_b): "// &
+               "'fixed' (held at x, y, z), 'free' (a junction the lines place, with the body of mass, volume, "// &
+               "ca, cd and area there) or 'motion' (moved about x, y, z as an end of kind 'motion')", length=16, &
+               choices=point_kinds, zero_means='a body on the single line, at joint')
+      call add(t, group, 'joint', 'integer', '-', '-1', 'the node the body sits on: k > 0 the end of '// &
+               '&segment_k (where &segment_k+1 starts; the last one is end b, and a line without segments has '// &
+               'joints 0 and 1), 0 end a; an end only if it is not held (free, force, mass or spring); not for '// &
+               'a network point', 0.0_dp, real(max_segments, dp), default_means='must be given without kind')
+      call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
+               "down on the joint (or the free network point; not on a 'fixed' or 'motion' one)", 0.0_dp, 1.0e9_dp)
+      call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &
+               'density g volume up, less where the sphere of this volume rises through &fluid surface_z', &
+               0.0_dp, 1.0e6_dp)
+      call add(t, group, 'ca', 'real', '-', '0', 'added-mass coefficient: ca &fluid density volume more '// &
+               'inertia, in every direction', 0.0_dp, 100.0_dp)
+      call add(t, group, 'cd', 'real', '-', '0', 'drag coefficient on area: the force 1/2 &fluid density cd '// &
+               'area |w| w against the velocity w relative to the current, in every direction', 0.0_dp, 100.0_dp)
+      call add(t, group, 'area', 'real', 'm^2', '0', 'projected area of the body for its drag', 0.0_dp, 1.0e6_dp)
+      proto = t(first:filled)
+      do i = before + 1, first - 1
+         if (index(' '//point_end_variables//' ', ' '//trim(t(i)%name)//' ') == 0) cycle
+         proto = [proto, t(i)]
+         associate (e => proto(size(proto)))
             e%own_kinds_only = .false.
             select case (e%name)
             case ('x', 'y', 'z')
@@ -324,42 +323,60 @@ contains
             case default
                e%doc = 'as &end_a '//trim(e%name)//" of kind 'motion', for a network point of kind 'motion'"
             end select
-            call append(t, e)
+         end associate
+      end do
+      filled = before
+      do k = 1, max_points
+         do i = 1, size(proto)
+            proto(i)%group = point_group(k)
+            call append(t, proto(i))
          end do
       end do
    end subroutine add_points
 
    !> The groups &line_1 ... &line_8, all alike: the lines of a network between two network
-   !> points (&point_k with a kind), each of &segment_k groups or uniform.
+   !> points (&point_k with a kind), each of &segment_k groups or uniform. (Made once, appended
+   !> for each line, as the points.)
    subroutine add_lines(t)
       !> The table; the lines appended.
       type(schema_entry), allocatable, intent(inout) :: t(:)
+      type(schema_entry), allocatable :: proto(:)
       character(len=16) :: group
-      integer :: k
+      integer :: k, i, before
+      before = filled
+      group = ''
+      call add(t, group, 'end_a', 'string', '-', "''", "the network point at end a of the line, as its "// &
+               "group's name ('point_3': a &point_k with kind 'fixed', 'free' or 'motion')", length=16, &
+               default_means='must be given')
+      call add(t, group, 'end_b', 'string', '-', "''", "the network point at end b, as end_a; another point "// &
+               'than end_a', length=16, default_means='must be given')
+      call add(t, group, 'segments', 'integer', '-', '', 'the &segment_k groups the line is made of, from its '// &
+               'end a (a group may serve several lines: three like lines all say segments = 1, 2)', 1.0_dp, &
+               real(max_segments, dp), count=max_segments, default_means='a uniform line of &cable and &material')
+      call add(t, group, 'length', 'real', 'm', '0', "unstretched length of the line; with segments, their "// &
+               'sum (given, it must be it)', 1.0e-2_dp, 1.0e5_dp, default_means='&cable length if given')
+      call add(t, group, 'nodes', 'integer', '-', '0', 'nodes of a line without segments (with segments, each '// &
+               'has its nodes or a share of &numerics nodes)', 3.0_dp, 100001.0_dp, default_means='&numerics nodes')
+      proto = t(before + 1:filled)
+      filled = before
       do k = 1, max_lines
-         group = line_group(k)
-         call add(t, group, 'end_a', 'string', '-', "''", "the network point at end a of the line, as its "// &
-                  "group's name ('point_3': a &point_k with kind 'fixed', 'free' or 'motion')", length=16, &
-                  default_means='must be given')
-         call add(t, group, 'end_b', 'string', '-', "''", "the network point at end b, as end_a; another point "// &
-                  'than end_a', length=16, default_means='must be given')
-         call add(t, group, 'segments', 'integer', '-', '', 'the &segment_k groups the line is made of, from its '// &
-                  'end a (a group may serve several lines: three like lines all say segments = 1, 2)', 1.0_dp, &
-                  real(max_segments, dp), count=max_segments, default_means='a uniform line of &cable and &material')
-         call add(t, group, 'length', 'real', 'm', '0', "unstretched length of the line; with segments, their "// &
-                  'sum (given, it must be it)', 1.0e-2_dp, 1.0e5_dp, default_means='&cable length if given')
-         call add(t, group, 'nodes', 'integer', '-', '0', 'nodes of a line without segments (with segments, each '// &
-                  'has its nodes or a share of &numerics nodes)', 3.0_dp, 100001.0_dp, default_means='&numerics nodes')
+         do i = 1, size(proto)
+            proto(i)%group = line_group(k)
+            call append(t, proto(i))
+         end do
       end do
    end subroutine add_lines
 
    !> The groups of the ends given (&end_a and &end_b; add_points takes a copy of &end_a's to
    !> pick a network point's variables from): the same variables, the kinds from the registry.
-   subroutine add_ends(t, ends)
+   subroutine add_ends(t, ends, kinds_named)
       !> The table; the ends appended.
       type(schema_entry), allocatable, intent(inout) :: t(:)
       !> The groups.
       character(len=*), intent(in) :: ends(:)
+      !> Whether each variable's meaning ends with the kinds that use it (default .true.; the
+      !> scratch copy add_points takes has meanings of its own).
+      logical, intent(in), optional :: kinds_named
       type(end_kind), allocatable :: kinds(:)
       character(:), allocatable :: kind_doc
       integer :: k
@@ -437,6 +454,9 @@ contains
                   'columns 0), # starts a comment; the path is relative to the working directory', length=512)
       end do
       ! Each variable of an end names the kinds that use it (the registry's lines).
+      if (present(kinds_named)) then
+         if (.not. kinds_named) return
+      end if
       do k = 1, filled
          if (.not. any(t(k)%group == ends) .or. t(k)%name == 'kind') cycle
          t(k)%doc = trim(t(k)%doc)//' [kind '//words_or(kinds_using(t(k)%name))//']'

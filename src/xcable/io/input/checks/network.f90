@@ -33,7 +33,7 @@ contains
       if (c%line_count == 0) then
          do k = 1, c%point_count
             if (.not. c%points(k)%in_network()) cycle
-            call fatal_error(error, c%source//': &'//trim(point_group(k))//": kind = '"//trim(c%points(k)%end%kind)// &
+            call fatal_error(error, c%source//': &'//trim(point_group(k))//": kind = '"//trim(c%points(k)%kind)// &
                              "': a network point without any &line group: a network point is an end of lines; "// &
                              "give &line_1 with end_a = '"//trim(point_group(k))//"' (and end_b), or leave kind out "// &
                              '(a body on the single line, at joint)', stat_input)
@@ -116,14 +116,14 @@ contains
       integer :: i
       group = point_group(k)
       prefix = c%source//': &'//trim(group)//': '
-      kind = "kind = '"//trim(c%points(k)%end%kind)//"'"
+      kind = "kind = '"//trim(c%points(k)%kind)//"'"
       if (c%is_given(trim(group), 'joint')) then
          call fatal_error(error, prefix//'joint = '//str(c%points(k)%joint)//': given for '//kind//', a network '// &
                           'point: joint places a body on the single line (a point without kind); leave joint out '// &
                           '(the lines that end at the point name it in &line_k end_a or end_b)', stat_input)
          return
       end if
-      uses = point_kind_variables(c%points(k)%end%kind)
+      uses = point_kind_variables(c%points(k)%kind)
       mine = group_entries(t, group)
       do i = 1, size(mine)
          name = trim(t(mine(i))%name)
@@ -145,7 +145,7 @@ contains
          call check_entry(c, t(mine(i)), error)
          if (allocated(error)) return
       end do
-      e = c%points(k)%end
+      e = c%point_end(k)
       if (trim(e%kind) == 'motion') then
          call load_table(c, trim(group), e, error)
          if (allocated(error)) return
@@ -163,7 +163,8 @@ contains
          call check_column(prefix, 'table_time', e%table_time(1:e%table_rows), time_order, error)
          if (allocated(error)) return
       end if
-      c%points(k)%end = e
+      if (.not. allocated(c%point_ends)) allocate (c%point_ends(size(c%points)))
+      c%point_ends(k) = e
       if (trim(e%kind) /= 'free' .and. c%has_seabed()) then
          if (e%z < c%seabed_z(e%x, e%y) - 1.0e-3_dp) then
             call fatal_error(error, prefix//'z = '//real_text(e%z)//': the '//trim(e%kind)//' point is below the '// &
@@ -354,7 +355,7 @@ contains
       do p = 1, c%point_count
          if (.not. c%points(p)%in_network()) cycle
          if (size(c%point_lines(p), 2) > 0) cycle
-         call fatal_error(error, c%source//': &'//trim(point_group(p))//": kind '"//trim(c%points(p)%end%kind)// &
+         call fatal_error(error, c%source//': &'//trim(point_group(p))//": kind '"//trim(c%points(p)%kind)// &
                           "' joins no line: name it in some &line_k end_a or end_b, or leave the point out", stat_input)
          return
       end do
@@ -372,7 +373,7 @@ contains
       end do
       held = .false.
       do p = 1, c%point_count
-         if (is_word(c%points(p)%end%kind, 'fixed motion')) held(top(p)) = .true.
+         if (is_word(c%points(p)%kind, 'fixed motion')) held(top(p)) = .true.
       end do
       do l = 1, c%line_count
          p = top(c%lines(l)%end_point(1))

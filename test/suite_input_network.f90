@@ -72,7 +72,11 @@ contains
                new_unittest('network_body_on_held_point', test_body_held), &
                new_unittest('network_point_variable_of_another_kind', test_other_kind), &
                new_unittest('network_variable_on_a_body', test_network_variable_on_body), &
-               new_unittest('network_motion_point_checks', test_motion_check)]
+               new_unittest('network_motion_point_checks', test_motion_check), &
+               new_unittest('line_nodes_in_some_segments', test_nodes_some), &
+               new_unittest('line_nodes_too_few', test_nodes_too_few), &
+               new_unittest('network_buoy_without_water', test_buoy_dry), &
+               new_unittest('network_anchor_below_seabed', test_below_seabed)]
    end subroutine collect_input_network
 
    !> The whole spread.
@@ -389,6 +393,39 @@ contains
       call expect_refusal(error, replaced(spread(), 'period = 10', 'period = 0'), &
                           [character(len=50) :: '&point_4: period = 0', "must be > 0 for motion = 'harmonic'"])
    end subroutine test_motion_check
+
+   !> Nodes in one of the two segments of a line: in every one or in none.
+   subroutine test_nodes_some(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, replaced(spread(), '&segment_2 length = 100, nodes = 21 /', &
+                                          '&segment_2 length = 100 /'), &
+                          [character(len=50) :: '&line_1', 'segments = 1, 2', '&segment_2 gives no nodes'])
+   end subroutine test_nodes_some
+
+   !> Nodes shared by length: at least two cells a segment of each line.
+   subroutine test_nodes_too_few(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, replaced(replaced(replaced(spread(), '&segment_1 length = 50, nodes = 11 /', &
+                                                           '&segment_1 length = 50 /'), &
+                                                  '&segment_2 length = 100, nodes = 21 /', '&segment_2 length = 100 /'), &
+                                         '&numerics t_end = 1 /', '&numerics t_end = 1, nodes = 4 /'), &
+                          [character(len=50) :: '&numerics: nodes = 4', 'the 2 segments of &line_1', &
+                          'at least 2*2 + 1 = 5'])
+   end subroutine test_nodes_too_few
+
+   !> A free point's buoyancy needs water, as a body's.
+   subroutine test_buoy_dry(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, replaced(spread(), '&fluid density = 1025 /', ''), &
+                          [character(len=50) :: '&point_1: volume = 10', 'buoyancy needs water'])
+   end subroutine test_buoy_dry
+
+   !> A fixed point under the seabed.
+   subroutine test_below_seabed(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, spread()//'&seabed depth = 90 /'//nl, &
+                          [character(len=50) :: '&point_2: z = -100', 'below the seabed (z = -90'])
+   end subroutine test_below_seabed
 
    !> text with its first old replaced by new.
    function replaced(text, old, new) result(s)

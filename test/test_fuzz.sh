@@ -725,6 +725,14 @@ begin 'a motion point with period 0' '&point_4' 'period = 0' "must be > 0 for mo
 network; edit 's/period = 10/period = 0/'; check
 begin 'an unknown point kind' '&point_1' "kind = 'anchor'" "'fixed', 'free', 'motion'"
 network; edit "s/^&point_1  kind = 'free'/\&point_1 kind = 'anchor'/"; check
+begin 'nodes in one segment of a line' '&line_1' '&segment_2 gives no nodes'
+network; edit 's/^&segment_2 length = 100, nodes = 21/\&segment_2 length = 100/'; check
+begin 'too few nodes shared on a line' '&numerics' 'nodes = 4' 'the 2 segments of &line_1'
+network; edit 's/, nodes = 11 / /; s/, nodes = 21 / /; s/^&numerics t_end = 1/\&numerics t_end = 1, nodes = 4/'; check
+begin 'a buoy point without water' '&point_1' 'volume = 10' 'buoyancy needs water'
+network; edit '/^&fluid/d'; check
+begin 'an anchor point below the seabed' '&point_2' 'z = -100' 'below the seabed'
+network; add '&seabed depth = 90 /'; check
 begin 'a ninth line' 'unknown group &line_9' '&line_1 ... &line_8'
 network; add "&line_9 end_a = 'point_1' /"; check
 

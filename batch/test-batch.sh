@@ -64,10 +64,12 @@ echo "$PROG: sweep-generate"
 table_matches_xcable() {
   local group allowed mine
   printf '&zz_no_group /\n' >"$tmp/probe.nml"
-  # (xcable names the numbered groups once: "segment_1 ... segment_8", "point_1 ... point_8".)
+  # (xcable names the numbered groups once: "segment_1 ... segment_8", "point_1 ... point_8",
+  # "line_1 ... line_8".)
   allowed=$("$xcable" "$tmp/probe.nml" 2>&1 | sed -n 's/.*allowed: //p' | tr -d '&' |
     sed -e 's/segment_1 \.\.\. segment_8/segment_1, segment_2, segment_3, segment_4, segment_5, segment_6, segment_7, segment_8/' \
-        -e 's/point_1 \.\.\. point_8/point_1, point_2, point_3, point_4, point_5, point_6, point_7, point_8/')
+        -e 's/point_1 \.\.\. point_8/point_1, point_2, point_3, point_4, point_5, point_6, point_7, point_8/' \
+        -e 's/line_1 \.\.\. line_8/line_1, line_2, line_3, line_4, line_5, line_6, line_7, line_8/')
   mine=$(sweep_variable_table "$xcable" | awk '!seen[$1]++ { printf "%s%s", sep, $1; sep = ", " }')
   [ "$allowed" = "$mine" ] || { echo "    groups: xcable '$allowed', table '$mine'"; return 1; }
   for group in $(sweep_variable_table "$xcable" | awk '!seen[$1]++ { print $1 }'); do

@@ -31,6 +31,7 @@ program xcable_tests
    use suite_segments, only: collect_segments
    use suite_points, only: collect_points
    use suite_network, only: collect_network
+   use suite_input_network, only: collect_input_network
    use, intrinsic :: iso_fortran_env, only: output_unit, error_unit
    implicit none
    type(testsuite_type), allocatable :: suites(:)
@@ -66,7 +67,8 @@ program xcable_tests
              new_testsuite('rupture', collect_rupture), &
              new_testsuite('segments', collect_segments), &
              new_testsuite('points', collect_points), &
-             new_testsuite('network', collect_network)]
+             new_testsuite('network', collect_network), &
+             new_testsuite('input_network', collect_input_network)]
    only_suite = ''
    only_test = ''
    if (command_argument_count() >= 1) call get_command_argument(1, only_suite)

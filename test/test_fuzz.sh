@@ -649,6 +649,93 @@ add '&point_1 joint = 1, mass = 500, cd = 1.0 /'; check
 begin 'a ninth point' 'unknown group &point_9' '&point_1 ... &point_8'
 from chain_mooring_heave; add '&point_9 joint = 1 /'; check
 
+# --- networks of lines (&line_1 ... &line_8 between &point_k with a kind) ---------------
+# network: a three-line spread meeting at a free buoy (valid input; the run is refused).
+network() {
+   cat >"$f" <<'EOF'
+&cable    diameter = 0.1, density = 7850 /
+&fluid    density = 1025 /
+&segment_1 length = 50, nodes = 11 /
+&segment_2 length = 100, nodes = 21 /
+&point_1  kind = 'free', z = -20, volume = 10, mass = 1000 /
+&point_2  kind = 'fixed', x = 200, z = -100 /
+&point_3  kind = 'fixed', x = -100, y = 173.2, z = -100 /
+&point_4  kind = 'motion', x = -100, y = -173.2, z = -100, amplitude = 1, period = 10, direction_x = 1, direction_z = 0 /
+&line_1   end_a = 'point_2', end_b = 'point_1', segments = 1, 2 /
+&line_2   end_a = 'point_3', end_b = 'point_1', segments = 1, 2 /
+&line_3   end_a = 'point_4', end_b = 'point_1', length = 160, nodes = 31 /
+&numerics t_end = 1 /
+EOF
+}
+begin 'a network (not run yet)' '&line_1' 'networks of lines are read and checked but cannot be run yet'
+network; check
+begin 'a network with --check (not run yet)' '&line_1' 'cannot be run yet'
+network; args=(--check case.nml); check
+begin 'a network point that joins no line' '&point_5' "kind 'fixed' joins no line"
+network; add "&point_5 kind = 'fixed', x = 1 /"; check
+begin 'a line end at no such point' '&line_3' "end_a = 'point_9'" 'no such point'
+network; edit "s/end_a = 'point_4'/end_a = 'point_9'/"; check
+begin 'a line end at a body of the single line' '&line_3' "end_a = 'point_4'" '&point_4 has no kind'
+network; edit "s/^&point_4 .*/\&point_4 joint = 1, mass = 5 \//"; check
+begin 'a line closed on itself' '&line_3' "end_a = 'point_1', end_b = 'point_1'" 'both ends on one point'
+network; edit "s/end_a = 'point_4'/end_a = 'point_1'/"; check
+begin 'lines that float' '&line_1' 'nothing holds them' "make one of those points kind 'fixed' or 'motion'"
+network; edit "s/kind = 'fixed'/kind = 'free'/g; s/kind = 'motion',/kind = 'free',/; s/, amplitude = 1, period = 10, direction_x = 1, direction_z = 0//"
+check
+begin 'a line segment number out of range' '&line_1' 'segments(2) = 9' 'from 1 to 8'
+network; edit "0,/segments = 1, 2/s//segments = 1, 9/"; check
+begin 'a line segment not given' '&line_1' 'segments(2) = 3' '&segment_3 is not given'
+network; edit "0,/segments = 1, 2/s//segments = 1, 3/"; check
+begin 'a segment no line uses' '&segment_3' 'used by no line'
+network; add '&segment_3 length = 5 /'; check
+begin 'a gap in the line numbering' '&line_3 given without &line_2'
+network; edit '/^&line_2/d'; check
+begin 'a line without end_b' '&line_3' 'end_b not given'
+network; edit "s/, end_b = 'point_1', length = 160/, length = 160/"; check
+begin 'a line length not its segments' '&line_1' 'length = 140' '50 + 100 = 150'
+network; edit "0,/segments = 1, 2 \//s//segments = 1, 2, length = 140 \//"; check
+begin 'a uniform line without a length' '&line_3' 'length not given'
+network; edit 's/, length = 160//'; check
+begin 'nodes of a line of segments' '&line_1' 'nodes = 5' 'given for a line of segments'
+network; edit "0,/segments = 1, 2 \//s//segments = 1, 2, nodes = 5 \//"; check
+begin 'a network with &end_a' '&end_a' "kind = 'fixed'" 'leave &end_a and &end_b out'
+network; add "&end_a kind = 'fixed' /"; check
+begin 'a network with &static tension' '&static' 'tension = 300000'
+network; add '&static tension = 3e5 /'; check
+begin 'a network with the box scheme' '&numerics' "scheme = 'box'" "scheme = 'rod' for a network"
+network; edit "s/^&numerics /\&numerics scheme = 'box', /"; check
+begin 'a network with the 2-D model' '&numerics' "model = '2d'" "allowed: model = '3d' or 'auto'"
+network; edit "s/^&numerics /\&numerics model = '2d', /"; check
+begin 'a network that breaks' '&rupture' "criterion = 'time'" 'does not break'
+network; add '&rupture t_break = 0.01 /'; check
+begin 'a body on a line of a network' '&point_5' 'joint = 1' 'split the line at a free point'
+network; add '&point_5 joint = 1, mass = 50 /'; check
+begin 'a network point without lines' '&point_1' "kind = 'fixed'" 'without any &line group'
+from chain_mooring_heave; add "&point_1 kind = 'fixed', x = 3 /"; check
+begin 'a network point with a joint' '&point_1' 'joint = 1' 'a network point'
+network; edit "s/^&point_1  kind = 'free',/\&point_1 kind = 'free', joint = 1,/"; check
+begin 'a body on a fixed point' '&point_2' 'mass = 5' 'a body there does nothing'
+network; edit "s/^&point_2  kind = 'fixed',/\&point_2 kind = 'fixed', mass = 5,/"; check
+begin 'a motion variable on a fixed point' '&point_2' 'period = 3' "a variable of kind 'motion'"
+network; edit "s/^&point_2  kind = 'fixed',/\&point_2 kind = 'fixed', period = 3,/"; check
+begin 'a network variable on a body' '&point_1' 'z = -3' 'without kind'
+from chain_mooring_heave; add '&segment_1 length = 100 /'; add '&segment_2 length = 150 /'
+add '&point_1 joint = 1, mass = 500, z = -3 /'; check
+begin 'a motion point with period 0' '&point_4' 'period = 0' "must be > 0 for motion = 'harmonic'"
+network; edit 's/period = 10/period = 0/'; check
+begin 'an unknown point kind' '&point_1' "kind = 'anchor'" "'fixed', 'free', 'motion'"
+network; edit "s/^&point_1  kind = 'free'/\&point_1 kind = 'anchor'/"; check
+begin 'nodes in one segment of a line' '&line_1' '&segment_2 gives no nodes'
+network; edit 's/^&segment_2 length = 100, nodes = 21/\&segment_2 length = 100/'; check
+begin 'too few nodes shared on a line' '&numerics' 'nodes = 4' 'the 2 segments of &line_1'
+network; edit 's/, nodes = 11 / /; s/, nodes = 21 / /; s/^&numerics t_end = 1/\&numerics t_end = 1, nodes = 4/'; check
+begin 'a buoy point without water' '&point_1' 'volume = 10' 'buoyancy needs water'
+network; edit '/^&fluid/d'; check
+begin 'an anchor point below the seabed' '&point_2' 'z = -100' 'below the seabed'
+network; add '&seabed depth = 90 /'; check
+begin 'a ninth line' 'unknown group &line_9' '&line_1 ... &line_8'
+network; add "&line_9 end_a = 'point_1' /"; check
+
 # --- syntax -------------------------------------------------------------------------
 begin 'assignment without =' '&static'
 from fast_180kN; edit 's/tension = 180000/tension 180000/'; check

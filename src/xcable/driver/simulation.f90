@@ -152,6 +152,14 @@ contains
       type(rod_run) :: fresh_rod
       type(box_run) :: fresh_box
       type(rod3d_drive) :: fresh_rod3
+      ! A network of lines (&line_k) is read and checked (io/input/checks/network.f90) but has no
+      ! run yet: one line, before anything is written.
+      if (config%line_count > 0) then
+         call fatal_error(error, config%source//': &line_1: networks of lines are read and checked but cannot '// &
+                          'be run yet (the input of '//str(config%line_count)//' line(s) is valid); run each '// &
+                          'line as a single line with &end_a and &end_b', stat_input)
+         return
+      end if
       ! A simulation may be prepared again for another case (checkpoints are enabled after prepare).
       self%rod = fresh_rod
       self%box = fresh_box

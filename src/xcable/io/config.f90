@@ -9,7 +9,8 @@ module xcable_io_config
    use xcable_numerics_facets, only: facet_at
    implicit none
    private
-   public :: case_config, end_config, segment_config, point_config, max_table_points, max_segments, max_points
+   public :: case_config, end_config, segment_config, point_config, line_config, max_table_points, max_segments, &
+             max_points, max_lines, point_kinds, point_end_variables, point_body_variables
 
    !> Longest inline table (law tables and end histories).
    integer, parameter :: max_table_points = 1000
@@ -81,14 +82,52 @@ module xcable_io_config
    !> Most bodies on a line (&point_1 ... &point_8).
    integer, parameter :: max_points = 8
 
-   !> A body at a joint of two segments (&point_k): a clump weight or a buoy.
+   !> The kinds of a network point (&point_k kind; '' : a body on the single line).
+   character(len=*), parameter :: point_kinds = 'fixed free motion'
+
+   !> The variables of &point_k that a network point takes from the end kinds (those of an end of
+   !> kind 'motion': position, motion and its table), kept in point_config%end.
+   character(len=*), parameter :: point_end_variables = 'x y z motion amplitude period phase direction_x '// &
+                                                        'direction_y direction_z ramp_time table_time table_x '// &
+                                                        'table_y table_z table_file'
+
+   !> The variables of the body of &point_k (at a joint of the single line, or at a free network point).
+   character(len=*), parameter :: point_body_variables = 'mass volume ca cd area'
+
+   !> A body at a joint of two segments (&point_k): a clump weight or a buoy; or, with a kind, a
+   !> point of a network of lines (&line_k end_a, end_b): fixed, moved, or free (a junction, with
+   !> the body there).
    type :: point_config
       !> The joint: k > 0 the end of &segment_k (where &segment_k+1 starts; the last is end b), 0 end
-      !> a (-1: not given).
+      !> a (-1: not given). Not for a network point.
       integer :: joint = -1
       !> Mass, kg; displaced volume, m^3; added-mass and drag coefficients; projected area, m^2.
       real(dp) :: mass = 0, volume = 0, ca = 0, cd = 0, area = 0
+      !> The kind of a network point: 'fixed', 'free' or 'motion' ('' : a body on the single line).
+      !> Its position and motion are an end's: case_config%point_end(k).
+      character(len=16) :: kind = ''
+   contains
+      !> Whether the point is a point of a network (a kind given).
+      procedure :: in_network => point_in_network
    end type point_config
+
+   !> Most lines of a network (&line_1 ... &line_8).
+   integer, parameter :: max_lines = 8
+
+   !> One line of a network (&line_k): between two network points, made of &segment_k groups
+   !> from its end a, or uniform (&cable and &material).
+   type :: line_config
+      !> The points at end a and end b as written ('point_3'), and their numbers (0: none such).
+      character(len=16) :: point_names(2) = ''
+      integer :: end_point(2) = 0
+      !> Number of segments listed (0: uniform) and the &segment_k groups, from end a.
+      integer :: segment_count = 0
+      integer :: segments(max_segments) = 0
+      !> Unstretched length, m (0: not given; after validation the line's length).
+      real(dp) :: length = 0
+      !> Nodes of a uniform line (0: not given; after validation &numerics nodes where not given).
+      integer :: nodes = 0
+   end type line_config
 
    !> A case.
    type :: case_config
@@ -161,6 +200,18 @@ module xcable_io_config
       integer :: point_count = 0
       !> The bodies; only 1 .. point_count are used.
       type(point_config) :: points(max_points)
+      !> The network points as ends (&point_k kind, x, y, z and a motion point's motion, as &end_a
+      !> kind = 'motion' has them): point_ends(k) for point k, its kind that of points(k).
+      !> Allocated (max_points) only where a &point_k gives one of these variables; read them
+      !> with point_end(k). (Not an end in each point_config: an end carries its tables, and a
+      !> case is copied often; an allocatable end inside points(:) made every copy three times
+      !> dearer, 25 % more instructions in a run's start.)
+      type(end_config), allocatable :: point_ends(:)
+      ! &line_1 ... &line_8
+      !> Number of lines of a network given (0: the single line of &end_a and &end_b).
+      integer :: line_count = 0
+      !> The lines; only 1 .. line_count are used.
+      type(line_config) :: lines(max_lines)
       ! &static
       !> End tension of the paper's symmetric catenary, N (ends at one height, span from the tension).
       real(dp) :: tension = 315.0e3_dp
@@ -249,6 +300,14 @@ module xcable_io_config
       procedure :: segments_of_line
       !> The case seen by one segment: its values in &cable, &material and &fluid.
       procedure :: segment_case
+      !> Whether the case is a network of lines (&line_k groups).
+      procedure :: is_network
+      !> The case of line l of a network alone, as a single line.
+      procedure :: line_case
+      !> The line ends that meet at a network point: (line, side) pairs.
+      procedure :: point_lines
+      !> A network point as an end (its kind, position and motion), for the end registry's builder.
+      procedure :: point_end
    end type case_config
 
 contains
@@ -278,11 +337,17 @@ contains
                    all(e%table_y(1:e%table_rows) == 0)
    end function end_planar
 
-   !> '2d' or '3d': model = '2d' or '3d' as given; 'auto' takes 2-D for a planar scene.
+   !> '2d' or '3d': model = '2d' or '3d' as given; 'auto' takes 2-D for a planar scene; a network
+   !> of lines (&line_k) is 3-D.
    pure function model_to_run(self) result(model)
       !> The case.
       class(case_config), intent(in) :: self
       character(len=2) :: model
+      ! A network of lines: the 3-D model ('2d' is refused by the validation).
+      if (self%line_count > 0) then
+         model = '3d'
+         return
+      end if
       select case (trim(self%model))
       case ('2d')
          model = '2d'
@@ -391,4 +456,247 @@ contains
          derived = value == 0 .or. value == from_others
       end function derived
    end function segment_case
+
+   !> Whether a point is a point of a network: a kind given (&point_k kind).
+   pure logical function point_in_network(self)
+      !> The point.
+      class(point_config), intent(in) :: self
+      point_in_network = len_trim(self%kind) > 0
+   end function point_in_network
+
+   !> Point k as an end: its kind ('fixed', 'free', 'motion'; '' for a body on the single line),
+   !> its position x, y, z (a free point's first guess) and a motion point's motion; for 'fixed'
+   !> and 'motion' what the end registry's builder takes (ends/registry.f90). The defaults of an
+   !> end where the case has no point_ends.
+   pure function point_end(self, k) result(e)
+      !> The case.
+      class(case_config), intent(in) :: self
+      !> Point, 1 .. point_count.
+      integer, intent(in) :: k
+      type(end_config) :: e
+      if (allocated(self%point_ends)) then
+         e = self%point_ends(k)
+      else
+         e = end_config()
+      end if
+      e%kind = self%points(k)%kind
+   end function point_end
+
+   !> Whether the case is a network of lines (&line_1 ... &line_n).
+   pure logical function is_network(self)
+      !> The case.
+      class(case_config), intent(in) :: self
+      is_network = self%line_count > 0
+   end function is_network
+
+   !> The line ends that meet at point p: ends(1, i) the line, ends(2, i) its side (1: end a,
+   !> 2: end b), by line and side; none for a point that joins no line.
+   pure function point_lines(self, p) result(ends)
+      !> The case (validated: the lines' end_point resolved).
+      class(case_config), intent(in) :: self
+      !> Point, 1 .. point_count.
+      integer, intent(in) :: p
+      integer, allocatable :: ends(:, :)
+      integer :: l, side, n
+      n = count(self%lines(1:self%line_count)%end_point(1) == p) + &
+          count(self%lines(1:self%line_count)%end_point(2) == p)
+      allocate (ends(2, n))
+      n = 0
+      do l = 1, self%line_count
+         do side = 1, 2
+            if (self%lines(l)%end_point(side) /= p) cycle
+            n = n + 1
+            ends(:, n) = [l, side]
+         end do
+      end do
+   end function point_lines
+
+   !> The case of line l of a network alone, as a single line that the code of one line runs:
+   !> its segments the &segment_k groups it lists, in order (none: &cable with the line's length
+   !> and &numerics nodes the line's nodes); &end_a and &end_b from its points (a fixed or motion
+   !> point's end; a free point held fixed at its x, y, z, the first guess the network starts
+   !> from); the body of a free point as &point_1 (and &point_2) at its end, on the lowest-numbered
+   !> line that ends at that point only; no &line groups, no network points, no &static tension,
+   !> no break, the 3-D model. is_given answers for the groups it makes as if the file had
+   !> written them: the segments' variables under their new numbers, the ends' kind and position
+   !> (and a motion point's variables given), the bodies' joint and variables given. (The body sits
+   !> on an end held here: the case is a start for the network's solve, not a case to validate.)
+   function line_case(self, l) result(c)
+      !> The case (validated).
+      class(case_config), intent(in) :: self
+      !> Line, 1 .. line_count.
+      integer, intent(in) :: l
+      type(case_config) :: c
+      character(len=16) :: side_group
+      character(:), allocatable :: given, names, all_given
+      integer :: k, j, side, p, pos
+      type(point_config) :: body
+      type(end_config) :: e
+      all_given = ''
+      if (allocated(self%given)) all_given = self%given
+      c = self
+      c%line_count = 0
+      c%point_count = 0
+      c%points = point_config()
+      if (allocated(c%point_ends)) deallocate (c%point_ends)
+      c%break_enabled = .false.
+      c%model = '3d'
+      given = ''
+      ! The groups the line case makes again are left out; the rest as given.
+      pos = 1
+      do
+         names = next_word(all_given, pos)
+         if (len(names) == 0) exit
+         if (made_here(names)) cycle
+         given = given//' '//names
+      end do
+      associate (line => self%lines(l))
+         c%segment_count = line%segment_count
+         c%segments = segment_config()
+         if (line%segment_count > 0) then
+            do k = 1, line%segment_count
+               j = line%segments(k)
+               c%segments(k) = self%segments(j)
+               given = given//renamed(group_name('segment_', j), group_name('segment_', k), '')
+            end do
+            c%length = sum(c%segments(1:line%segment_count)%length)
+            ! Nodes given in every segment: the line has their sum less the joints.
+            if (all(c%segments(1:line%segment_count)%nodes > 0)) &
+               c%nodes = sum(c%segments(1:line%segment_count)%nodes) - (line%segment_count - 1)
+         else
+            c%length = line%length
+            c%nodes = line%nodes
+            given = given//' cable%length numerics%nodes'
+         end if
+         do side = 1, 2
+            p = line%end_point(side)
+            side_group = merge('end_a', 'end_b', side == 1)
+            if (p < 1 .or. p > self%point_count) cycle
+            if (.not. self%points(p)%in_network()) cycle
+            associate (pt => self%points(p))
+               e = self%point_end(p)
+               if (trim(pt%kind) == 'free') e = end_config(kind='fixed', x=e%x, y=e%y, z=e%z)
+               if (side == 1) then
+                  c%end_a = e
+               else
+                  c%end_b = e
+               end if
+               given = given//' '//trim(side_group)//'%kind '//trim(side_group)//'%x '//trim(side_group)//'%y '// &
+                       trim(side_group)//'%z'
+               if (trim(pt%kind) == 'motion') &
+                  given = given//renamed(group_name('point_', p), side_group, point_end_variables)
+               ! The body of a free point, on the lowest-numbered line that ends there.
+               if (trim(pt%kind) == 'free' .and. first_line_at(p) == l .and. &
+                   first_side_at(p) == side .and. has_body(p)) then
+                  body = point_config(joint=merge(0, max(line%segment_count, 1), side == 1), mass=pt%mass, &
+                                      volume=pt%volume, ca=pt%ca, cd=pt%cd, area=pt%area)
+                  c%point_count = c%point_count + 1
+                  c%points(c%point_count) = body
+                  given = given//' '//group_name('point_', c%point_count)//'%joint'// &
+                          renamed(group_name('point_', p), group_name('point_', c%point_count), point_body_variables)
+               end if
+            end associate
+         end do
+      end associate
+      c%given = adjustl(given)
+
+   contains
+
+      !> Whether a 'group%variable' of the file is one of those the line case makes again.
+      logical function made_here(word)
+         character(*), intent(in) :: word
+         integer :: pct
+         pct = index(word, '%')
+         made_here = starts(word, 'segment_') .or. starts(word, 'point_') .or. starts(word, 'line_') .or. &
+                     starts(word, 'end_a%') .or. starts(word, 'end_b%') .or. starts(word, 'static%') .or. &
+                     starts(word, 'rupture%') .or. word == 'cable%length' .or. word == 'numerics%nodes'
+         if (pct == 0) made_here = .true.
+      end function made_here
+
+      logical function starts(word, prefix)
+         character(*), intent(in) :: word, prefix
+         starts = .false.
+         if (len(word) >= len(prefix)) starts = word(1:len(prefix)) == prefix
+      end function starts
+
+      !> The variables of group from given in the file, as ' to%variable ...' (only those in
+      !> the blank-separated list only, unless it is '').
+      function renamed(from, to, only) result(text)
+         character(*), intent(in) :: from, to, only
+         character(:), allocatable :: text, word, name
+         integer :: at
+         text = ''
+         at = 1
+         do
+            word = next_word(all_given, at)
+            if (len(word) == 0) exit
+            if (.not. starts(word, trim(from)//'%')) cycle
+            name = word(len_trim(from) + 2:)
+            if (len(only) > 0) then
+               if (index(' '//only//' ', ' '//name//' ') == 0) cycle
+            end if
+            text = text//' '//trim(to)//'%'//name
+         end do
+      end function renamed
+
+      !> The lowest-numbered line with an end at point q (0: none), and its first side there.
+      integer function first_line_at(q)
+         integer, intent(in) :: q
+         integer :: m
+         first_line_at = 0
+         do m = 1, self%line_count
+            if (any(self%lines(m)%end_point == q)) then
+               first_line_at = m
+               return
+            end if
+         end do
+      end function first_line_at
+
+      integer function first_side_at(q)
+         integer, intent(in) :: q
+         first_side_at = merge(1, 2, self%lines(first_line_at(q))%end_point(1) == q)
+      end function first_side_at
+
+      !> Whether a free point has a body: a variable of it given.
+      logical function has_body(q)
+         integer, intent(in) :: q
+         character(:), allocatable :: word
+         integer :: at
+         has_body = .false.
+         at = 1
+         do
+            word = next_word(point_body_variables, at)
+            if (len(word) == 0) exit
+            if (self%is_given(group_name('point_', q), word)) has_body = .true.
+         end do
+      end function has_body
+   end function line_case
+
+   !> A numbered group's name: prefix and k ('segment_3').
+   pure function group_name(prefix, k) result(name)
+      character(*), intent(in) :: prefix
+      integer, intent(in) :: k
+      character(:), allocatable :: name
+      character(len=12) :: buf
+      write (buf, '(i0)') k
+      name = prefix//trim(buf)
+   end function group_name
+
+   !> The next blank-separated word of text from pos ('' at the end); pos moves past it.
+   function next_word(text, pos) result(word)
+      character(*), intent(in) :: text
+      integer, intent(inout) :: pos
+      character(:), allocatable :: word
+      integer :: first
+      do while (pos <= len(text))
+         if (text(pos:pos) /= ' ') exit
+         pos = pos + 1
+      end do
+      first = pos
+      do while (pos <= len(text))
+         if (text(pos:pos) == ' ') exit
+         pos = pos + 1
+      end do
+      word = text(first:pos - 1)
+   end function next_word
 end module xcable_io_config

@@ -23,9 +23,11 @@
 module xcable_io_input
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
-   use xcable_io_config, only: case_config, end_config, segment_config, point_config, max_table_points
-   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, known_fields, segment_of, segment_group, &
-                               point_of, point_group
+   use xcable_io_config, only: case_config, end_config, segment_config, point_config, line_config, max_table_points, &
+                               max_segments, point_end_variables
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, find_entry, known_fields, segment_of, &
+                               segment_group, point_of, point_group, line_of, line_group
+   use xcable_core_strings, only: to_lower
    use xcable_io_input_scanner, only: count_table_rows, line_len, load_lines, lower_words, scan_groups
    use xcable_io_input_echo, only: config_text, value_text
    use xcable_io_input_checks, only: derive_defaults, max_time_steps, validate
@@ -100,17 +102,58 @@ contains
                           trim(point_group(i))//' or renumber', stat_input)
          return
       end do
+      ! The lines of a network, numbered alike.
+      do i = 1, size(groups)
+         if (present_group(i)) config%line_count = max(config%line_count, line_of(groups(i)))
+      end do
+      do i = 1, config%line_count
+         if (any(groups == line_group(i) .and. present_group)) cycle
+         call fatal_error(error, path//': &'//trim(line_group(config%line_count))//' given without &'// &
+                          trim(line_group(i))//': the lines are numbered 1, 2, ... without a gap; give &'// &
+                          trim(line_group(i))//' or renumber', stat_input)
+         return
+      end do
       call read_groups(path, config, groups, present_group, error)
       if (allocated(error)) return
+      ! The points' ends only where a variable of them is given (bodies on the single line have none).
+      if (allocated(config%point_ends)) then
+         if (.not. any([(any(counts(point_end_entries(point_group(i))) > 0), i=1, config%point_count)])) &
+            deallocate (config%point_ends)
+      end if
+      ! A line's segments: as many as the values given; its ends: the numbers of the points named.
+      do i = 1, config%line_count
+         config%lines(i)%segment_count = min(counts(find_entry(t, line_group(i), 'segments')), max_segments)
+         config%lines(i)%end_point(1) = named_point(config%lines(i)%point_names(1))
+         config%lines(i)%end_point(2) = named_point(config%lines(i)%point_names(2))
+      end do
       config%given = ''
       do i = 1, size(t)
          if (counts(i) > 0) config%given = config%given//' '//trim(t(i)%group)//'%'//trim(t(i)%name)
       end do
       config%given = adjustl(config%given)
+      ! (The words given: those not given are their defaults, in lower case.)
       do i = 1, size(t)
-         if (len_trim(t(i)%choices) > 0) call lower_words(config, t(i))
+         if (len_trim(t(i)%choices) > 0 .and. counts(i) > 0) call lower_words(config, t(i))
       end do
+      ! A network point's end has the point's kind.
+      if (allocated(config%point_ends)) config%point_ends(1:config%point_count)%kind = &
+         config%points(1:config%point_count)%kind
       call count_table_rows(config, t, counts, error)
+
+   contains
+
+      !> The entries of a point's end (its kind, position and motion) in the schema.
+      function point_end_entries(group) result(indices)
+         character(*), intent(in) :: group
+         integer, allocatable :: indices(:)
+         integer :: j
+         allocate (indices(0))
+         do j = 1, size(t)
+            if (t(j)%group /= group) cycle
+            if (t(j)%name == 'kind' .or. index(' '//point_end_variables//' ', ' '//trim(t(j)%name)//' ') > 0) &
+               indices = [indices, j]
+         end do
+      end function point_end_entries
    end subroutine read_values
 
    !> Read the groups that are present with the compiler's namelist input.
@@ -195,7 +238,12 @@ contains
             c%segments(segment_of(group_names(ig)))%p = p
             call read_segment(unit, segment_of(group_names(ig)), c%segments(segment_of(group_names(ig))), ios, msg)
          case ('point_1', 'point_2', 'point_3', 'point_4', 'point_5', 'point_6', 'point_7', 'point_8')
-            call read_point(unit, point_of(group_names(ig)), c%points(point_of(group_names(ig))), ios, msg)
+            ! The points' ends are read whole (read_values keeps them where a variable of them is given).
+            if (.not. allocated(c%point_ends)) allocate (c%point_ends(size(c%points)))
+            call read_point(unit, point_of(group_names(ig)), c%points(point_of(group_names(ig))), &
+                            c%point_ends(point_of(group_names(ig))), ios, msg)
+         case ('line_1', 'line_2', 'line_3', 'line_4', 'line_5', 'line_6', 'line_7', 'line_8')
+            call read_line(unit, line_of(group_names(ig)), c%lines(line_of(group_names(ig))), ios, msg)
          case default
             ios = 1
             msg = 'no namelist read for this group (a schema group missing in read_groups)'
@@ -334,29 +382,49 @@ contains
       seg%nodes = nodes; seg%mbl = mbl
    end subroutine read_segment
 
-   !> Read &point_k into one body (the groups &point_1 ... &point_8 have the same variables).
-   subroutine read_point(unit, k, pt, ios, msg)
+   !> Read &point_k into one body or network point (the groups &point_1 ... &point_8 have the same
+   !> variables).
+   subroutine read_point(unit, k, pt, e, ios, msg)
       !> Open namelist file, rewound.
       integer, intent(in) :: unit
       !> Point, 1 .. max_points.
       integer, intent(in) :: k
-      !> The body: defaults in, values given out.
+      !> The point: defaults in, values given out.
       type(point_config), intent(inout) :: pt
+      !> Its end (a network point's position and motion): defaults in, values given out.
+      type(end_config), intent(inout) :: e
       !> iostat of the read.
       integer, intent(out) :: ios
       !> iomsg of the read.
       character(len=*), intent(inout) :: msg
       real(dp) :: mass, volume, ca, cd, area
       integer :: joint
-      namelist /point_1/ joint, mass, volume, ca, cd, area
-      namelist /point_2/ joint, mass, volume, ca, cd, area
-      namelist /point_3/ joint, mass, volume, ca, cd, area
-      namelist /point_4/ joint, mass, volume, ca, cd, area
-      namelist /point_5/ joint, mass, volume, ca, cd, area
-      namelist /point_6/ joint, mass, volume, ca, cd, area
-      namelist /point_7/ joint, mass, volume, ca, cd, area
-      namelist /point_8/ joint, mass, volume, ca, cd, area
+      character(len=16) :: kind, motion
+      real(dp) :: x, y, z, amplitude, period, phase, direction_x, direction_y, direction_z, ramp_time
+      real(dp) :: table_time(max_table_points), table_x(max_table_points), table_y(max_table_points), &
+                  table_z(max_table_points)
+      character(len=512) :: table_file
+      namelist /point_1/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_2/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_3/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_4/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_5/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_6/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_7/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
+      namelist /point_8/ joint, mass, volume, ca, cd, area, kind, x, y, z, motion, amplitude, period, phase, &
+         direction_x, direction_y, direction_z, ramp_time, table_time, table_x, table_y, table_z, table_file
       joint = pt%joint; mass = pt%mass; volume = pt%volume; ca = pt%ca; cd = pt%cd; area = pt%area
+      kind = pt%kind; x = e%x; y = e%y; z = e%z; motion = e%motion; amplitude = e%amplitude; period = e%period
+      phase = e%phase; direction_x = e%direction_x; direction_y = e%direction_y; direction_z = e%direction_z
+      ramp_time = e%ramp_time; table_time = e%table_time; table_x = e%table_x; table_y = e%table_y
+      table_z = e%table_z; table_file = e%table_file
       select case (k)
       case (1); read (unit, nml=point_1, iostat=ios, iomsg=msg)
       case (2); read (unit, nml=point_2, iostat=ios, iomsg=msg)
@@ -372,7 +440,68 @@ contains
       end select
       if (ios /= 0) return
       pt%joint = joint; pt%mass = mass; pt%volume = volume; pt%ca = ca; pt%cd = cd; pt%area = area
+      pt%kind = kind
+      e%kind = kind; e%x = x; e%y = y; e%z = z; e%motion = motion; e%amplitude = amplitude; e%period = period
+      e%phase = phase; e%direction_x = direction_x; e%direction_y = direction_y; e%direction_z = direction_z
+      e%ramp_time = ramp_time; e%table_time = table_time; e%table_x = table_x; e%table_y = table_y
+      e%table_z = table_z; e%table_file = table_file
    end subroutine read_point
+
+   !> Read &line_k into one line of a network (the groups &line_1 ... &line_8 have the same
+   !> variables).
+   subroutine read_line(unit, k, ln, ios, msg)
+      !> Open namelist file, rewound.
+      integer, intent(in) :: unit
+      !> Line, 1 .. max_lines.
+      integer, intent(in) :: k
+      !> The line: defaults in, values given out.
+      type(line_config), intent(inout) :: ln
+      !> iostat of the read.
+      integer, intent(out) :: ios
+      !> iomsg of the read.
+      character(len=*), intent(inout) :: msg
+      character(len=16) :: end_a, end_b
+      integer :: segments(max_segments), nodes
+      real(dp) :: length
+      namelist /line_1/ end_a, end_b, segments, length, nodes
+      namelist /line_2/ end_a, end_b, segments, length, nodes
+      namelist /line_3/ end_a, end_b, segments, length, nodes
+      namelist /line_4/ end_a, end_b, segments, length, nodes
+      namelist /line_5/ end_a, end_b, segments, length, nodes
+      namelist /line_6/ end_a, end_b, segments, length, nodes
+      namelist /line_7/ end_a, end_b, segments, length, nodes
+      namelist /line_8/ end_a, end_b, segments, length, nodes
+      end_a = ln%point_names(1); end_b = ln%point_names(2); segments = ln%segments; length = ln%length
+      nodes = ln%nodes
+      select case (k)
+      case (1); read (unit, nml=line_1, iostat=ios, iomsg=msg)
+      case (2); read (unit, nml=line_2, iostat=ios, iomsg=msg)
+      case (3); read (unit, nml=line_3, iostat=ios, iomsg=msg)
+      case (4); read (unit, nml=line_4, iostat=ios, iomsg=msg)
+      case (5); read (unit, nml=line_5, iostat=ios, iomsg=msg)
+      case (6); read (unit, nml=line_6, iostat=ios, iomsg=msg)
+      case (7); read (unit, nml=line_7, iostat=ios, iomsg=msg)
+      case (8); read (unit, nml=line_8, iostat=ios, iomsg=msg)
+      case default
+         ios = 1
+         msg = 'no namelist read for this line (max_lines above 8 in io/config.f90)'
+      end select
+      if (ios /= 0) return
+      ln%point_names = [end_a, end_b]; ln%segments = segments; ln%length = length; ln%nodes = nodes
+   end subroutine read_line
+
+   !> The point a line end names: k for 'point_k' (any case, blanks and a leading '&' aside), 0
+   !> for anything else.
+   pure integer function named_point(name)
+      !> As written in &line_k end_a or end_b.
+      character(*), intent(in) :: name
+      character(:), allocatable :: word
+      word = to_lower(trim(adjustl(name)))
+      if (len(word) > 0) then
+         if (word(1:1) == '&') word = adjustl(word(2:))
+      end if
+      named_point = point_of(word)
+   end function named_point
 
    !> Read &fluid (its density has the name of &cable's, so it has its own scope).
    subroutine read_fluid(unit, c, ios, msg)

@@ -20,16 +20,20 @@
 !> line, with its twin group named): a variable added there for a segment to
 !> take needs its name in add_segments' list, a component of segment_config, a
 !> line of access_segment and of read_segment, and one in segment_case.
+!>
+!> The groups &point_1 ... &point_8 take, besides the body's variables, a kind and the variables
+!> of an end of kind 'motion' (copies of &end_a's entries, add_points); &line_1 ... &line_8 are
+!> the lines of a network between such points (add_lines).
 module xcable_io_schema
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: real_text
-   use xcable_io_config, only: max_table_points, max_segments, max_points
+   use xcable_io_config, only: max_table_points, max_segments, max_points, max_lines
    implicit none
    private
    public :: schema_entry, schema_table, schema_groups, find_entry, group_entries
    public :: schema_text, write_schema, allowed_text, bound_text, known_fields, is_table
-   public :: segment_of, segment_group, group_list, point_of, point_group
+   public :: segment_of, segment_group, group_list, point_of, point_group, line_of, line_group
 
    !> Snapshot fields that &output fields may name.
    character(len=*), parameter :: known_fields(8) = &
@@ -129,6 +133,21 @@ contains
       point_of = numbered(group, 'point_', max_points)
    end function point_of
 
+   !> The name of the group of line k of a network: 'line_k'.
+   pure function line_group(k) result(group)
+      !> Line, 1 .. max_lines.
+      integer, intent(in) :: k
+      character(len=16) :: group
+      group = 'line_'//number_text(k)
+   end function line_group
+
+   !> The line a group describes: k for 'line_k', 0 for any other group.
+   pure integer function line_of(group)
+      !> Group name, lower case.
+      character(*), intent(in) :: group
+      line_of = numbered(group, 'line_', max_lines)
+   end function line_of
+
    !> k for a group named prefix followed by k (1 .. most, no leading zero), else 0. (Parsed,
    !> not compared with the names written for each k: the reader and the echo ask it of every
    !> variable, and the written names took 6 % of a short run's instructions.)
@@ -160,8 +179,8 @@ contains
       end if
    end function number_text
 
-   !> Group names as '&a, &b, &segment_1 ... &segment_8' (a run of more than two numbered
-   !> groups as its first and last), each after a prefix, with a separator.
+   !> Group names as '&a, &b, &segment_1 ... &segment_8' (a run of more than two numbered groups
+   !> &segment_k, &point_k or &line_k as its first and last), each after a prefix, with a separator.
    function group_list(names, open, close, separator) result(s)
       !> Group names, blank-padded.
       character(len=*), intent(in) :: names(:)
@@ -183,6 +202,11 @@ contains
          else if (point_of(names(i)) == 1) then
             do while (j < size(names))
                if (point_of(names(j + 1)) /= point_of(names(j)) + 1) exit
+               j = j + 1
+            end do
+         else if (line_of(names(i)) == 1) then
+            do while (j < size(names))
+               if (line_of(names(j + 1)) /= line_of(names(j)) + 1) exit
                j = j + 1
             end do
          end if
@@ -388,7 +412,9 @@ contains
          write (buf, '(i0)') e%length
          type = type//'('//trim(buf)//')'
       end if
-      if (len_trim(e%default) == 0) then
+      if (len_trim(e%default) == 0 .and. .not. is_table(e)) then
+         default = 'none'
+      else if (len_trim(e%default) == 0) then
          default = 'no rows'
       else
          default = '`'//trim(e%default)//'`'

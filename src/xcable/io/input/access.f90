@@ -3,8 +3,9 @@
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_access
    use xcable_core_kinds, only: dp
-   use xcable_io_config, only: case_config, end_config, segment_config, point_config
-   use xcable_io_schema, only: schema_entry, segment_of, point_of
+   use xcable_io_config, only: case_config, end_config, segment_config, point_config, line_config, point_end_variables, &
+                               max_points
+   use xcable_io_schema, only: schema_entry, segment_of, point_of, line_of
    implicit none
    private
    public :: access, config_value, get_value
@@ -13,7 +14,8 @@ module xcable_io_input_access
    type :: config_value
       !> Whether the variable is known to `access`.
       logical :: found = .false.
-      !> A real or the elements of a real array (a table: its rows).
+      !> A real or the elements of a real array (a table: its rows); the elements of an integer
+      !> list (&line_k segments).
       real(dp), allocatable :: reals(:)
       !> An integer.
       integer :: int = 0
@@ -56,7 +58,15 @@ contains
          return
       end if
       if (point_of(e%group) > 0) then
-         call access_point(c%points(point_of(e%group)), e%name, v, store)
+         if (index(' '//point_end_variables//' ', ' '//trim(e%name)//' ') > 0) then
+            call access_point_end(c, point_of(e%group), e%name, v, store)
+         else
+            call access_point(c%points(point_of(e%group)), e%name, v, store)
+         end if
+         return
+      end if
+      if (line_of(e%group) > 0) then
+         call access_line(c%lines(line_of(e%group)), e%name, v, store)
          return
       end if
       select case (trim(e%group)//'%'//trim(e%name))
@@ -228,10 +238,74 @@ contains
       case ('ca'); call move(g%ca, v, store)
       case ('cd'); call move(g%cd, v, store)
       case ('area'); call move(g%area, v, store)
+      case ('kind'); call move(g%kind, v, store)
       case default
          v%found = .false.
       end select
    end subroutine access_point
+
+   !> `access` for a network point's position and motion (&point_k x, y, z, motion, ...):
+   !> case_config%point_ends(k); where the case has none, their defaults (a store allocates them).
+   subroutine access_point_end(c, k, name, v, store)
+      !> The case.
+      type(case_config), intent(inout) :: c
+      !> The point.
+      integer, intent(in) :: k
+      !> Variable name.
+      character(*), intent(in) :: name
+      !> Its value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      type(end_config) :: defaults
+      if (.not. allocated(c%point_ends)) then
+         if (.not. store) then
+            call access_end(defaults, name, v, store)
+            return
+         end if
+         allocate (c%point_ends(max_points))
+      end if
+      call access_end(c%point_ends(k), name, v, store)
+   end subroutine access_point_end
+
+   !> `access` for the variables of &line_1 ... &line_8.
+   subroutine access_line(g, name, v, store)
+      !> The line.
+      type(line_config), intent(inout) :: g
+      !> Variable name.
+      character(*), intent(in) :: name
+      !> Its value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set the component from v.
+      logical, intent(in) :: store
+      select case (name)
+      case ('end_a'); call move(g%point_names(1), v, store)
+      case ('end_b'); call move(g%point_names(2), v, store)
+      case ('segments'); call move_integer_rows(g%segments, g%segment_count, v, store)
+      case ('length'); call move(g%length, v, store)
+      case ('nodes'); call move(g%nodes, v, store)
+      case default
+         v%found = .false.
+      end select
+   end subroutine access_line
+
+   !> An integer list: its first rows elements, as reals in v%reals (a store sets the elements
+   !> given, not rows).
+   subroutine move_integer_rows(x, rows, v, store)
+      !> The list.
+      integer, intent(inout) :: x(:)
+      !> Elements in use.
+      integer, intent(in) :: rows
+      !> Value.
+      type(config_value), intent(inout) :: v
+      !> Whether to set x from v.
+      logical, intent(in) :: store
+      if (store) then
+         x(1:size(v%reals)) = nint(v%reals)
+      else
+         v%reals = real(x(1:rows), dp)
+      end if
+   end subroutine move_integer_rows
 
    !> A real scalar.
    subroutine move_real(x, v, store)

@@ -9,7 +9,7 @@ module xcable_io_input_checks
    use xcable_io_config, only: case_config, end_config
    use xcable_ends_registry, only: end_kind, find_end_kind, end_kind_names, kinds_using
    use xcable_io_schema, only: schema_entry, schema_table, find_entry, group_entries, allowed_text, group_list, &
-                               segment_group, segment_of, point_group, point_of
+                               segment_group, segment_of, point_group, point_of, line_group, line_of
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word, next_item, shown
    use xcable_io_input_bathymetry, only: load_bathymetry
@@ -44,6 +44,49 @@ module xcable_io_input_checks
          !> Error naming file, group, variable, value and what is allowed.
          type(error_type), allocatable, intent(out) :: error
       end subroutine check_points
+
+      !> What a case with &line groups may not have; a network point without lines
+      !> (io/input/checks/network.f90).
+      module subroutine check_network_groups(c, t, error)
+         !> The case.
+         type(case_config), intent(inout) :: c
+         !> The schema.
+         type(schema_entry), intent(in) :: t(:)
+         !> Error naming file, group, variable, value and what is allowed.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_network_groups
+
+      !> A network point (&point_k with a kind) (io/input/checks/network.f90).
+      module subroutine check_network_point(c, t, k, error)
+         !> The case.
+         type(case_config), intent(inout) :: c
+         !> The schema.
+         type(schema_entry), intent(in) :: t(:)
+         !> The point.
+         integer, intent(in) :: k
+         !> Error naming file, group, variable, value and what is allowed.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_network_point
+
+      !> A body on the single line in a network: refused (io/input/checks/network.f90).
+      module subroutine check_body_in_network(c, k, error)
+         !> The case.
+         type(case_config), intent(in) :: c
+         !> The point.
+         integer, intent(in) :: k
+         !> Error naming file, group, variable, value and what is allowed.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_body_in_network
+
+      !> The lines of a network (io/input/checks/network.f90).
+      module subroutine check_lines(c, t, error)
+         !> The case.
+         type(case_config), intent(inout) :: c
+         !> The schema.
+         type(schema_entry), intent(in) :: t(:)
+         !> Error naming file, group, variable, value and what is allowed.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_lines
    end interface
 
 contains
@@ -61,7 +104,8 @@ contains
       real(dp), parameter :: pi = acos(-1.0_dp)
       integer :: n
       n = c%segment_count
-      if (n > 0) then
+      ! (A network's segments are shared out among its lines: check_lines.)
+      if (n > 0 .and. c%line_count == 0) then
          if (.not. c%is_given('cable', 'length')) c%length = sum(c%segments(1:n)%length)
          if (all(c%segments(1:n)%nodes > 0) .and. .not. c%is_given('numerics', 'nodes')) &
             c%nodes = sum(c%segments(1:n)%nodes) - (n - 1)
@@ -104,12 +148,15 @@ contains
          call load_material_table(c, error)
          if (allocated(error)) return
       end if
+      ! A network (&line groups) first: the groups it may not have.
+      call check_network_groups(c, t, error)
+      if (allocated(error)) return
       ! The segments' lengths and nodes first: &cable length and &numerics nodes may follow from them.
       call check_segment_layout(c, t, error)
       if (allocated(error)) return
       do i = 1, size(t)
          ! (The segments' variables are checked with their segment, below.)
-         if (segment_of(t(i)%group) > 0 .or. point_of(t(i)%group) > 0) cycle
+         if (segment_of(t(i)%group) > 0 .or. point_of(t(i)%group) > 0 .or. line_of(t(i)%group) > 0) cycle
          call check_entry(c, t(i), error)
          if (allocated(error)) return
       end do
@@ -120,6 +167,8 @@ contains
       call check_segment_values(c, t, error)
       if (allocated(error)) return
       call check_points(c, t, error)
+      if (allocated(error)) return
+      call check_lines(c, t, error)
       if (allocated(error)) return
       call derive_defaults(c)
       ! (Fortran does not short-circuit .and.: the division only where the divisor is positive.)
@@ -250,6 +299,8 @@ contains
          end if
       end do
 
+      ! A network's lines have their own lengths and nodes (check_lines).
+      if (c%line_count > 0) return
       total = sum(c%segments(1:n)%length)
       if (c%is_given('cable', 'length')) then
          if (abs(total - c%length) > 1.0e-9_dp*c%length) then
@@ -412,7 +463,7 @@ contains
             bound = get_value(c, t(k))
             upper = bound%reals(1)
          end if
-         if (e%type == 'integer') v%reals = [real(v%int, dp)]
+         if (e%type == 'integer' .and. e%count == 1) v%reals = [real(v%int, dp)]
          do k = 1, size(v%reals)
             x = v%reals(k)
             if (len_trim(e%zero_means) > 0 .and. x == 0) cycle
@@ -425,7 +476,7 @@ contains
             name = trim(e%name)
             if (e%count > 1) name = name//'('//str(k)//')'
             if (e%type == 'integer') then
-               item = str(v%int)
+               item = str(nint(x))
             else
                item = real_text(x)
             end if
@@ -438,6 +489,8 @@ contains
          if (len_trim(e%choices) == 0) return
          if (.not. e%word_list) then
             if (is_word(v%text, e%choices)) return
+            ! ('' where it has a meaning: &point_k kind not given.)
+            if (len_trim(v%text) == 0 .and. len_trim(e%zero_means) > 0) return
             call fatal_error(error, prefix//trim(e%name)//" = '"//shown(v%text)//"': must be "//allowed_text(e), &
                              stat_input)
             return

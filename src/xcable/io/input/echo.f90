@@ -3,9 +3,10 @@
 !> (Split from io/input.f90, which reads a case through these modules.)
 module xcable_io_input_echo
    use xcable_core_strings, only: str, real_text
-   use xcable_io_config, only: case_config, end_config
+   use xcable_io_config, only: case_config, end_config, point_end_variables, point_body_variables
    use xcable_ends_registry, only: end_kind, find_end_kind
-   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries, segment_of, point_of
+   use xcable_io_schema, only: schema_entry, schema_table, schema_groups, group_entries, segment_of, point_of, &
+                               line_of
    use xcable_io_input_access, only: access, config_value, get_value
    use xcable_io_input_scanner, only: is_word
    implicit none
@@ -66,7 +67,9 @@ contains
                   cycle
                end if
                n = 1
-               if (e%type == 'real') n = size(v%reals)
+               if (is_list(e)) n = size(v%reals)
+               ! (An integer list without elements, &line_k segments not given, is not written.)
+               if (n == 0) cycle
                do k = 1, n
                   token = item_text(e, v, k)
                   if (k == 1) token = trim(e%name)//' = '//token
@@ -98,7 +101,7 @@ contains
       v = get_value(c, e)
       text = ''
       if (.not. v%found) return
-      if (e%type /= 'real') then
+      if (.not. is_list(e)) then
          text = item_text(e, v, 1)
          return
       end if
@@ -122,7 +125,11 @@ contains
       case ('real')
          text = real_text(v%reals(k))
       case ('integer')
-         text = str(v%int)
+         if (e%count > 1) then
+            text = str(nint(v%reals(k)))
+         else
+            text = str(v%int)
+         end if
       case ('logical')
          text = merge('.true. ', '.false.', v%flag)
          text = trim(text)
@@ -136,6 +143,13 @@ contains
          text = text//"'"
       end select
    end function item_text
+
+   !> Whether a value is a list of elements in v%reals: a real, or an integer list.
+   pure logical function is_list(e)
+      !> The variable.
+      type(schema_entry), intent(in) :: e
+      is_list = e%type == 'real' .or. (e%type == 'integer' .and. e%count > 1)
+   end function is_list
 
    !> Whether a position of end b was given (then the tension is not echoed).
    logical function given_position_b(c)
@@ -175,9 +189,43 @@ contains
          end associate
          return
       end if
-      ! &point_k: the points given, every variable.
+      ! &point_k: the points given; a body on the single line (no kind) with its joint and body
+      ! as before networks; a network point with its kind and position, a free one's body and a
+      ! motion point's motion (its table as an end's).
       if (point_of(e%group) > 0) then
          echoed = point_of(e%group) <= c%point_count
+         if (.not. echoed) return
+         associate (pt => c%points(point_of(e%group)))
+            if (.not. pt%in_network()) then
+               echoed = .not. (e%name == 'kind' .or. is_word(e%name, point_end_variables))
+            else if (e%name == 'joint') then
+               echoed = .false.
+            else if (is_word(e%name, point_body_variables)) then
+               echoed = trim(pt%kind) == 'free'
+            else if (e%name == 'kind' .or. is_word(e%name, 'x y z')) then
+               echoed = .true.
+            else
+               echoed = trim(pt%kind) == 'motion' .and. end_echoed(c%point_end(point_of(e%group)), e)
+            end if
+         end associate
+         return
+      end if
+      ! &line_k: the lines given; the segments of a line of segments, the nodes of a uniform one.
+      if (line_of(e%group) > 0) then
+         echoed = line_of(e%group) <= c%line_count
+         if (.not. echoed) return
+         select case (e%name)
+         case ('segments')
+            echoed = c%lines(line_of(e%group))%segment_count > 0
+         case ('nodes')
+            echoed = c%lines(line_of(e%group))%segment_count == 0
+         end select
+         return
+      end if
+      ! A network of lines: its ends are its points (no &end_a, &end_b, nor the tension of the
+      ! symmetric catenary).
+      if (c%line_count > 0 .and. (e%group == 'static' .or. e%group == 'end_a' .or. e%group == 'end_b')) then
+         echoed = .false.
          return
       end if
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &

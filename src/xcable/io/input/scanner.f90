@@ -7,7 +7,7 @@ module xcable_io_input_scanner
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: str, to_lower
    use xcable_io_config, only: case_config, max_segments
-   use xcable_io_schema, only: schema_entry, find_entry, group_entries, group_list, segment_group
+   use xcable_io_schema, only: schema_entry, find_entry, group_entries, group_list, segment_group, point_group
    use, intrinsic :: ieee_arithmetic, only: ieee_is_finite
    use xcable_io_input_access, only: access, config_value
    implicit none
@@ -29,8 +29,12 @@ contains
       !> A string variable with allowed words.
       type(schema_entry), intent(in) :: e
       type(config_value) :: v
+      character(:), allocatable :: lower
       call access(c, e, v, .false.)
-      v%text = to_lower(trim(adjustl(v%text)))
+      lower = to_lower(trim(adjustl(v%text)))
+      ! (Stored only when it changes: a store of a network point's variable allocates its end.)
+      if (lower == v%text) return
+      v%text = lower
       call access(c, e, v, .true.)
    end subroutine lower_words
 
@@ -38,7 +42,8 @@ contains
    !> its first column (an end's table_time, the material's table_strain),
    !> which the other columns must match (an end's table_y may be left out).
    subroutine count_table_rows(c, t, counts, error)
-      !> The case; table_rows of each end and material_table_rows (the line's and each segment's) set.
+      !> The case; table_rows of each end (and network point) and material_table_rows (the line's and each
+      !> segment's) set.
       type(case_config), intent(inout) :: c
       !> The schema.
       type(schema_entry), intent(in) :: t(:)
@@ -64,6 +69,15 @@ contains
                           c%segments(k)%material_table_rows, error)
          if (allocated(error)) return
       end do
+      ! A motion point's table (&point_k of a network; point_ends allocated where a variable of them is given).
+      if (allocated(c%point_ends)) then
+         do k = 1, c%point_count
+            call inline_rows(c, t, counts, trim(point_group(k)), end_columns, c%point_ends(k)%table_rows, error)
+            if (allocated(error)) return
+            call optional_column(trim(point_group(k)), c%point_ends(k)%table_rows)
+            if (allocated(error)) return
+         end do
+      end if
    contains
       !> An end's table_y (3-D model): left out, or one value a row.
       subroutine optional_column(group, rows)

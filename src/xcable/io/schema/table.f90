@@ -1,10 +1,12 @@
 !> The entries of the namelist schema: build_table, the one place that lists every group and
 !> variable of a case file with its type, unit, default, range, words and meaning (the groups
-!> &segment_1 ... &segment_8 copied from &cable, &material and &fluid), and its helpers.
+!> &segment_1 ... &segment_8 copied from &cable, &material and &fluid, the network point's
+!> variables of &point_1 ... &point_8 from &end_a), and its helpers.
 !> (A submodule of io/schema.f90: it fills the table once per process, schema_table keeps it.)
 submodule (xcable_io_schema) xcable_io_schema_table
    use xcable_material_factory, only: law_names
    use xcable_ends_registry, only: end_kind, end_kind_list, end_kind_names, kinds_using
+   use xcable_io_config, only: point_kinds, point_end_variables
    implicit none
 
    !> Entries of the table being built that hold an entry (build_table, add).
@@ -17,9 +19,6 @@ contains
       !> The table.
       type(schema_entry), allocatable, intent(out) :: t(:)
       character(len=5), parameter :: ends(2) = ['end_a', 'end_b']
-      type(end_kind), allocatable :: kinds(:)
-      character(:), allocatable :: kind_doc
-      integer :: k
       ! Room for the entries (add doubles it when they do not fit), cut to those added at the end:
       ! t = [t, e] per entry copied the table each time (3.1e6 instructions of a run's start).
       allocate (t(128))
@@ -128,90 +127,15 @@ contains
       call add_segments(t)
       ! &point_1 ... &point_8: bodies at the joints and free ends
       call add_points(t)
+      ! &line_1 ... &line_8: the lines of a network between points
+      call add_lines(t)
       ! &static
       call add(t, 'static', 'tension', 'real', 'N', '315000', &
                "end tension T_s of the paper's symmetric catenary (ends at one height, span from the tension); must "// &
                'exceed w0 L / 2 and need a strain below strain_max; not together with &end_b x or z', 0.0_dp, 1.0e9_dp, &
                lower_open=.true.)
       ! &end_a (s = 0) and &end_b (s = L): the same variables; the kinds from the registry.
-      kinds = end_kind_list()
-      kind_doc = ''
-      do k = 1, size(kinds)
-         if (k > 1 .and. k < size(kinds)) kind_doc = kind_doc//', '
-         if (k > 1 .and. k == size(kinds)) kind_doc = kind_doc//' or '
-         kind_doc = kind_doc//"'"//trim(kinds(k)%name)//"' ("//trim(kinds(k)%doc)//')'
-      end do
-      kind_doc = kind_doc//'; at least one end '//words_or(end_kind_names(held=.true.))
-      do k = 1, size(ends)
-         call add(t, ends(k), 'kind', 'string', '-', "'"//trim(kinds(1)%name)//"'", kind_doc, length=16, &
-                  choices=end_kind_names())
-         call add(t, ends(k), 'x', 'real', 'm', '0', &
-                  'horizontal position of a fixed end, mean position of a motion end, or anchor of a spring end (the '// &
-                  'position of the other kinds follows from the statics; &end_b: not together with &static tension)', &
-                  -1.0e5_dp, 1.0e5_dp)
-         call add(t, ends(k), 'y', 'real', 'm', '0', &
-                  'horizontal position across the x-z plane (3-D model), as x', -1.0e5_dp, 1.0e5_dp)
-         call add(t, ends(k), 'z', 'real', 'm', '0', 'vertical position (up), as x', -1.0e5_dp, 1.0e5_dp)
-         call add(t, ends(k), 'force_x', 'real', 'N', '0', &
-                  'horizontal force on a force end (the constant value, or the value a ramp starts from)', &
-                  -1.0e9_dp, 1.0e9_dp)
-         call add(t, ends(k), 'force_y', 'real', 'N', '0', &
-                  'force on a force end across the x-z plane (3-D model), as force_x', -1.0e9_dp, 1.0e9_dp)
-         call add(t, ends(k), 'force_z', 'real', 'N', '0', 'vertical force on a force end, as force_x', -1.0e9_dp, 1.0e9_dp)
-         call add(t, ends(k), 'torque', 'real', 'N m', '0', &
-                  'torque on a force end about its outward tangent (3-D model; ramped with the force)', &
-                  -1.0e9_dp, 1.0e9_dp)
-         call add(t, ends(k), 'history', 'string', '-', "'constant'", &
-                  "force history: 'constant', 'ramp' (cos^2 to zero over ramp_time) or 'table'", length=16, &
-                  choices='constant ramp table')
-         call add(t, ends(k), 'ramp_time', 'real', 's', '0', &
-                  'duration of the force ramp (> 0 for a ramp), or of the smooth start of a motion', 0.0_dp, 1.0e4_dp)
-         call add(t, ends(k), 'motion', 'string', '-', "'harmonic'", "motion of a motion end: 'harmonic' or 'table'", &
-                  length=16, choices='harmonic table')
-         call add(t, ends(k), 'amplitude', 'real', 'm', '0', 'amplitude of the harmonic motion', 0.0_dp, 1.0e5_dp)
-         call add(t, ends(k), 'period', 'real', 's', '1', 'period of the harmonic motion (> 0)', 0.0_dp, 1.0e4_dp)
-         call add(t, ends(k), 'phase', 'real', 'rad', '0', 'phase of the harmonic motion', -1.0e3_dp, 1.0e3_dp)
-         call add(t, ends(k), 'direction_x', 'real', '-', '0', &
-                  'direction of the harmonic motion, x component (the direction (x, y, z) is normalised; not all zero)', &
-                  -1.0e6_dp, 1.0e6_dp)
-         call add(t, ends(k), 'direction_y', 'real', '-', '0', &
-                  'direction of the harmonic motion, y component (3-D model)', -1.0e6_dp, 1.0e6_dp)
-         call add(t, ends(k), 'direction_z', 'real', '-', '1', 'direction of the harmonic motion, z component', &
-                  -1.0e6_dp, 1.0e6_dp)
-         call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0), or at a spring end', &
-                  0.0_dp, 1.0e9_dp)
-         call add(t, ends(k), 'stiffness', 'real', 'N/m', '0', &
-                  'stiffness k of a spring end (> 0): the spring pulls the end towards the anchor x, y, z with '// &
-                  'the force k (l - rest_length), l the distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
-                  own_kinds_only=.true.)
-         call add(t, ends(k), 'damping', 'real', 'N s/m', '0', &
-                  'damping c of the dashpot in line with a spring end: the force c dl/dt along the spring, l the '// &
-                  'distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
-                  own_kinds_only=.true.)
-         call add(t, ends(k), 'rest_length', 'real', 'm', '0', &
-                  'rest length of a spring end (the spring pushes when shorter; with a rest length the anchor must '// &
-                  "not be the point of a held other end: the spring's direction at rest would be undetermined)", &
-                  0.0_dp, 1.0e5_dp, &
-                  own_kinds_only=.true.)
-         call add(t, ends(k), 'table_time', 'real', 's', '', &
-                  "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; table_x and "// &
-                  'table_z have as many values, table_y as many or none', -1.0e7_dp, 1.0e7_dp, count=max_table_points)
-         call add(t, ends(k), 'table_x', 'real', 'N or m', '', &
-                  'table: x column (force in N of a force end, displacement in m of a motion end)', &
-                  -1.0e9_dp, 1.0e9_dp, count=max_table_points)
-         call add(t, ends(k), 'table_y', 'real', 'N or m', '', &
-                  'table: y column (3-D model; left out: 0)', -1.0e9_dp, 1.0e9_dp, count=max_table_points)
-         call add(t, ends(k), 'table_z', 'real', 'N or m', '', 'table: z column', -1.0e9_dp, 1.0e9_dp, &
-                  count=max_table_points)
-         call add(t, ends(k), 'table_file', 'string', '-', "''", &
-                  'the table from a text file instead: 2, 3 or 4 columns t, x; t, x, z; or t, x, y, z (absent '// &
-                  'columns 0), # starts a comment; the path is relative to the working directory', length=512)
-      end do
-      ! Each variable of an end names the kinds that use it (the registry's lines).
-      do k = 1, size(t)
-         if (.not. any(t(k)%group == ends) .or. t(k)%name == 'kind') cycle
-         t(k)%doc = trim(t(k)%doc)//' [kind '//words_or(kinds_using(t(k)%name))//']'
-      end do
+      call add_ends(t, ends)
       ! &rupture
       call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', &
                'whether the cable breaks; a case without the &rupture group does not break')
@@ -353,30 +277,191 @@ contains
    end subroutine add_segments
 
    !> The groups &point_1 ... &point_8, all alike: a body (clump weight, buoy) at a joint of two
-   !> segments or at an end that is not held.
+   !> segments or at an end that is not held; or, with a kind, a point of a network of lines: its
+   !> position and a motion point's motion (copies of &end_a's entries of kind 'motion'), and the
+   !> body of a free point. The entries of one point are made once, in a scratch part of the table
+   !> (with a scratch &end_a to copy from), and appended for each point.
    subroutine add_points(t)
       !> The table; the points appended.
       type(schema_entry), allocatable, intent(inout) :: t(:)
+      character(len=5), parameter :: scratch(1) = ['end_a']
+      type(schema_entry), allocatable :: proto(:)
       character(len=16) :: group
-      integer :: k
+      integer :: k, i, before, first
+      before = filled
+      call add_ends(t, scratch, kinds_named=.false.)
+      first = filled + 1
+      group = ''
+      call add(t, group, 'kind', 'string', '-', "''", "a point of a network of lines (&line_k end_a, end_b): "// &
+               "'fixed' (held at x, y, z), 'free' (a junction the lines place, with the body of mass, volume, "// &
+               "ca, cd and area there) or 'motion' (moved about x, y, z as an end of kind 'motion')", length=16, &
+               choices=point_kinds, zero_means='a body on the single line, at joint')
+      call add(t, group, 'joint', 'integer', '-', '-1', 'the node the body sits on: k > 0 the end of '// &
+               '&segment_k (where &segment_k+1 starts; the last one is end b, and a line without segments has '// &
+               'joints 0 and 1), 0 end a; an end only if it is not held (free, force, mass or spring); not for '// &
+               'a network point', 0.0_dp, real(max_segments, dp), default_means='must be given without kind')
+      call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
+               "down on the joint (or the free network point; not on a 'fixed' or 'motion' one)", 0.0_dp, 1.0e9_dp)
+      call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &
+               'density g volume up, less where the sphere of this volume rises through &fluid surface_z', &
+               0.0_dp, 1.0e6_dp)
+      call add(t, group, 'ca', 'real', '-', '0', 'added-mass coefficient: ca &fluid density volume more '// &
+               'inertia, in every direction', 0.0_dp, 100.0_dp)
+      call add(t, group, 'cd', 'real', '-', '0', 'drag coefficient on area: the force 1/2 &fluid density cd '// &
+               'area |w| w against the velocity w relative to the current, in every direction', 0.0_dp, 100.0_dp)
+      call add(t, group, 'area', 'real', 'm^2', '0', 'projected area of the body for its drag', 0.0_dp, 1.0e6_dp)
+      proto = t(first:filled)
+      do i = before + 1, first - 1
+         if (index(' '//point_end_variables//' ', ' '//trim(t(i)%name)//' ') == 0) cycle
+         proto = [proto, t(i)]
+         associate (e => proto(size(proto)))
+            e%own_kinds_only = .false.
+            select case (e%name)
+            case ('x', 'y', 'z')
+               e%doc = trim(e%name)//" of a network point: where a 'fixed' point is, the mean position of a "// &
+                       "'motion' point, the first guess of a 'free' point's position [kind 'fixed', 'free' or 'motion']"
+            case default
+               e%doc = 'as &end_a '//trim(e%name)//" of kind 'motion', for a network point of kind 'motion'"
+            end select
+         end associate
+      end do
+      filled = before
       do k = 1, max_points
-         group = point_group(k)
-         call add(t, group, 'joint', 'integer', '-', '-1', 'the node the body sits on: k > 0 the end of '// &
-                  '&segment_k (where &segment_k+1 starts; the last one is end b, and a line without segments has '// &
-                  'joints 0 and 1), 0 end a; an end only if it is not held (free, force, mass or spring)', 0.0_dp, &
-                  real(max_segments, dp), default_means='must be given')
-         call add(t, group, 'mass', 'real', 'kg', '0', 'mass of the body (a clump weight); its weight mass g acts '// &
-                  'down on the joint', 0.0_dp, 1.0e9_dp)
-         call add(t, group, 'volume', 'real', 'm^3', '0', 'volume the body displaces (a buoy): buoyancy &fluid '// &
-                  'density g volume up, less where the sphere of this volume rises through &fluid surface_z', &
-                  0.0_dp, 1.0e6_dp)
-         call add(t, group, 'ca', 'real', '-', '0', 'added-mass coefficient: ca &fluid density volume more '// &
-                  'inertia, in every direction', 0.0_dp, 100.0_dp)
-         call add(t, group, 'cd', 'real', '-', '0', 'drag coefficient on area: the force 1/2 &fluid density cd '// &
-                  'area |w| w against the velocity w relative to the current, in every direction', 0.0_dp, 100.0_dp)
-         call add(t, group, 'area', 'real', 'm^2', '0', 'projected area of the body for its drag', 0.0_dp, 1.0e6_dp)
+         do i = 1, size(proto)
+            proto(i)%group = point_group(k)
+            call append(t, proto(i))
+         end do
       end do
    end subroutine add_points
+
+   !> The groups &line_1 ... &line_8, all alike: the lines of a network between two network
+   !> points (&point_k with a kind), each of &segment_k groups or uniform. (Made once, appended
+   !> for each line, as the points.)
+   subroutine add_lines(t)
+      !> The table; the lines appended.
+      type(schema_entry), allocatable, intent(inout) :: t(:)
+      type(schema_entry), allocatable :: proto(:)
+      character(len=16) :: group
+      integer :: k, i, before
+      before = filled
+      group = ''
+      call add(t, group, 'end_a', 'string', '-', "''", "the network point at end a of the line, as its "// &
+               "group's name ('point_3': a &point_k with kind 'fixed', 'free' or 'motion')", length=16, &
+               default_means='must be given')
+      call add(t, group, 'end_b', 'string', '-', "''", "the network point at end b, as end_a; another point "// &
+               'than end_a', length=16, default_means='must be given')
+      call add(t, group, 'segments', 'integer', '-', '', 'the &segment_k groups the line is made of, from its '// &
+               'end a (a group may serve several lines: three like lines all say segments = 1, 2)', 1.0_dp, &
+               real(max_segments, dp), count=max_segments, default_means='a uniform line of &cable and &material')
+      call add(t, group, 'length', 'real', 'm', '0', "unstretched length of the line; with segments, their "// &
+               'sum (given, it must be it)', 1.0e-2_dp, 1.0e5_dp, default_means='&cable length if given')
+      call add(t, group, 'nodes', 'integer', '-', '0', 'nodes of a line without segments (with segments, each '// &
+               'has its nodes or a share of &numerics nodes)', 3.0_dp, 100001.0_dp, default_means='&numerics nodes')
+      proto = t(before + 1:filled)
+      filled = before
+      do k = 1, max_lines
+         do i = 1, size(proto)
+            proto(i)%group = line_group(k)
+            call append(t, proto(i))
+         end do
+      end do
+   end subroutine add_lines
+
+   !> The groups of the ends given (&end_a and &end_b; add_points takes a copy of &end_a's to
+   !> pick a network point's variables from): the same variables, the kinds from the registry.
+   subroutine add_ends(t, ends, kinds_named)
+      !> The table; the ends appended.
+      type(schema_entry), allocatable, intent(inout) :: t(:)
+      !> The groups.
+      character(len=*), intent(in) :: ends(:)
+      !> Whether each variable's meaning ends with the kinds that use it (default .true.; the
+      !> scratch copy add_points takes has meanings of its own).
+      logical, intent(in), optional :: kinds_named
+      type(end_kind), allocatable :: kinds(:)
+      character(:), allocatable :: kind_doc
+      integer :: k
+      kinds = end_kind_list()
+      kind_doc = ''
+      do k = 1, size(kinds)
+         if (k > 1 .and. k < size(kinds)) kind_doc = kind_doc//', '
+         if (k > 1 .and. k == size(kinds)) kind_doc = kind_doc//' or '
+         kind_doc = kind_doc//"'"//trim(kinds(k)%name)//"' ("//trim(kinds(k)%doc)//')'
+      end do
+      kind_doc = kind_doc//'; at least one end '//words_or(end_kind_names(held=.true.))
+      do k = 1, size(ends)
+         call add(t, ends(k), 'kind', 'string', '-', "'"//trim(kinds(1)%name)//"'", kind_doc, length=16, &
+                  choices=end_kind_names())
+         call add(t, ends(k), 'x', 'real', 'm', '0', &
+                  'horizontal position of a fixed end, mean position of a motion end, or anchor of a spring end (the '// &
+                  'position of the other kinds follows from the statics; &end_b: not together with &static tension)', &
+                  -1.0e5_dp, 1.0e5_dp)
+         call add(t, ends(k), 'y', 'real', 'm', '0', &
+                  'horizontal position across the x-z plane (3-D model), as x', -1.0e5_dp, 1.0e5_dp)
+         call add(t, ends(k), 'z', 'real', 'm', '0', 'vertical position (up), as x', -1.0e5_dp, 1.0e5_dp)
+         call add(t, ends(k), 'force_x', 'real', 'N', '0', &
+                  'horizontal force on a force end (the constant value, or the value a ramp starts from)', &
+                  -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'force_y', 'real', 'N', '0', &
+                  'force on a force end across the x-z plane (3-D model), as force_x', -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'force_z', 'real', 'N', '0', 'vertical force on a force end, as force_x', -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'torque', 'real', 'N m', '0', &
+                  'torque on a force end about its outward tangent (3-D model; ramped with the force)', &
+                  -1.0e9_dp, 1.0e9_dp)
+         call add(t, ends(k), 'history', 'string', '-', "'constant'", &
+                  "force history: 'constant', 'ramp' (cos^2 to zero over ramp_time) or 'table'", length=16, &
+                  choices='constant ramp table')
+         call add(t, ends(k), 'ramp_time', 'real', 's', '0', &
+                  'duration of the force ramp (> 0 for a ramp), or of the smooth start of a motion', 0.0_dp, 1.0e4_dp)
+         call add(t, ends(k), 'motion', 'string', '-', "'harmonic'", "motion of a motion end: 'harmonic' or 'table'", &
+                  length=16, choices='harmonic table')
+         call add(t, ends(k), 'amplitude', 'real', 'm', '0', 'amplitude of the harmonic motion', 0.0_dp, 1.0e5_dp)
+         call add(t, ends(k), 'period', 'real', 's', '1', 'period of the harmonic motion (> 0)', 0.0_dp, 1.0e4_dp)
+         call add(t, ends(k), 'phase', 'real', 'rad', '0', 'phase of the harmonic motion', -1.0e3_dp, 1.0e3_dp)
+         call add(t, ends(k), 'direction_x', 'real', '-', '0', &
+                  'direction of the harmonic motion, x component (the direction (x, y, z) is normalised; not all zero)', &
+                  -1.0e6_dp, 1.0e6_dp)
+         call add(t, ends(k), 'direction_y', 'real', '-', '0', &
+                  'direction of the harmonic motion, y component (3-D model)', -1.0e6_dp, 1.0e6_dp)
+         call add(t, ends(k), 'direction_z', 'real', '-', '1', 'direction of the harmonic motion, z component', &
+                  -1.0e6_dp, 1.0e6_dp)
+         call add(t, ends(k), 'mass', 'real', 'kg', '0', 'point mass of a mass end (> 0), or at a spring end', &
+                  0.0_dp, 1.0e9_dp)
+         call add(t, ends(k), 'stiffness', 'real', 'N/m', '0', &
+                  'stiffness k of a spring end (> 0): the spring pulls the end towards the anchor x, y, z with '// &
+                  'the force k (l - rest_length), l the distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
+                  own_kinds_only=.true.)
+         call add(t, ends(k), 'damping', 'real', 'N s/m', '0', &
+                  'damping c of the dashpot in line with a spring end: the force c dl/dt along the spring, l the '// &
+                  'distance from the anchor to the end', 0.0_dp, 1.0e12_dp, &
+                  own_kinds_only=.true.)
+         call add(t, ends(k), 'rest_length', 'real', 'm', '0', &
+                  'rest length of a spring end (the spring pushes when shorter; with a rest length the anchor must '// &
+                  "not be the point of a held other end: the spring's direction at rest would be undetermined)", &
+                  0.0_dp, 1.0e5_dp, &
+                  own_kinds_only=.true.)
+         call add(t, ends(k), 'table_time', 'real', 's', '', &
+                  "table of a 'table' history or motion: times, strictly increasing, at least 2 rows; table_x and "// &
+                  'table_z have as many values, table_y as many or none', -1.0e7_dp, 1.0e7_dp, count=max_table_points)
+         call add(t, ends(k), 'table_x', 'real', 'N or m', '', &
+                  'table: x column (force in N of a force end, displacement in m of a motion end)', &
+                  -1.0e9_dp, 1.0e9_dp, count=max_table_points)
+         call add(t, ends(k), 'table_y', 'real', 'N or m', '', &
+                  'table: y column (3-D model; left out: 0)', -1.0e9_dp, 1.0e9_dp, count=max_table_points)
+         call add(t, ends(k), 'table_z', 'real', 'N or m', '', 'table: z column', -1.0e9_dp, 1.0e9_dp, &
+                  count=max_table_points)
+         call add(t, ends(k), 'table_file', 'string', '-', "''", &
+                  'the table from a text file instead: 2, 3 or 4 columns t, x; t, x, z; or t, x, y, z (absent '// &
+                  'columns 0), # starts a comment; the path is relative to the working directory', length=512)
+      end do
+      ! Each variable of an end names the kinds that use it (the registry's lines).
+      if (present(kinds_named)) then
+         if (.not. kinds_named) return
+      end if
+      do k = 1, filled
+         if (.not. any(t(k)%group == ends) .or. t(k)%name == 'kind') cycle
+         t(k)%doc = trim(t(k)%doc)//' [kind '//words_or(kinds_using(t(k)%name))//']'
+      end do
+   end subroutine add_ends
 
    !> Append an entry. A number is bounded when lower and upper are given.
    subroutine add(t, group, name, type, unit, default, doc, lower, upper, count, length, choices, word_list, &

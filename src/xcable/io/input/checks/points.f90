@@ -1,6 +1,7 @@
 !> The checks of the bodies on the line (&point_1 ... &point_8). (A submodule of
 !> io/input/checks.f90.)
 submodule (xcable_io_input_checks) xcable_io_input_checks_points
+   use xcable_io_config, only: point_end_variables
    implicit none
 
 contains
@@ -22,6 +23,26 @@ contains
       do k = 1, c%point_count
          group = point_group(k)
          prefix = c%source//': &'//trim(group)//': '
+         ! A network point (a kind given), and a body in a network, have checks of their own.
+         if (c%points(k)%in_network()) then
+            call check_network_point(c, t, k, error)
+            if (allocated(error)) return
+            cycle
+         end if
+         if (c%line_count > 0) then
+            call check_body_in_network(c, k, error)
+            return
+         end if
+         ! A network point's variables without a kind.
+         do i = 1, size(t)
+            if (trim(t(i)%group) /= trim(group) .or. .not. is_word(t(i)%name, point_end_variables)) cycle
+            if (.not. c%is_given(trim(group), trim(t(i)%name))) cycle
+            call fatal_error(error, prefix//trim(t(i)%name)//' = '//value_text(c, t(i))//': given for a point '// &
+                             'without kind (a body on the single line, at joint): '//trim(t(i)%name)//' is a '// &
+                             "variable of a network point (kind 'fixed', 'free' or 'motion', the end of a &line_k); "// &
+                             'leave '//trim(t(i)%name)//' out', stat_input)
+            return
+         end do
          if (.not. c%is_given(trim(group), 'joint')) then
             call fatal_error(error, prefix//'joint not given: a point sits on a joint of two segments; give joint = '// &
                              'k for the end of &segment_k', stat_input)

@@ -95,6 +95,12 @@ program xcable_main
       ! The result file's folder must take a file: a probe next to it, removed at once.
       call probe_output(trim(config%file))
       info => sim%static()
+      if (sim%is_network) then
+         write (output_unit, '(a)') trim(path)//': ok (a network of '//str(config%line_count)//' lines, '// &
+            str(sim%output_nodes())//' nodes, dt '//quantity(dt, 's')//', '//str(steps)//' steps); statics: '// &
+            sim%network_statics_text()
+         stop
+      end if
       write (output_unit, '(a)') trim(path)//': ok ('//trim(config%scheme)//' scheme, '//sim%model//' model, '// &
          str(config%nodes)//' nodes, dt '//quantity(dt, 's')//', '//str(steps)//' steps); static end tensions: '// &
          'end a '//quantity(info%tension_a, 'N')//', end b '//quantity(info%tension_b, 'N')//', span '// &
@@ -149,7 +155,10 @@ program xcable_main
       call sim%enable_checkpoints(checkpoint, fingerprint, run_id, config%checkpoint_interval, &
                               on_termination=.true.)
       info => sim%static()
-      if (.not. config%quiet) write (error_unit, '(a)') 'xcable: statics solved (end tensions '// &
+      if (.not. config%quiet .and. sim%is_network) write (error_unit, '(a)') 'xcable: statics of the network '// &
+         'solved ('//sim%network_statics_text()//'); dynamics with the rod scheme, '//str(sim%output_nodes())// &
+         ' nodes, dt '//quantity(dt, 's')
+      if (.not. config%quiet .and. .not. sim%is_network) write (error_unit, '(a)') 'xcable: statics solved (end tensions '// &
          quantity(info%tension_a, 'N')//' and '//quantity(info%tension_b, 'N')//'); dynamics with the '// &
          trim(config%scheme)//' scheme, '//str(config%nodes)//' nodes, dt '//quantity(dt, 's')
    end if

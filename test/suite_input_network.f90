@@ -47,7 +47,7 @@ contains
       tests = [new_unittest('spread_read', test_read), &
                new_unittest('spread_line_cases', test_line_cases), &
                new_unittest('spread_echo_round_trip', test_echo), &
-               new_unittest('spread_run_refused', test_run_refused), &
+               new_unittest('spread_out_of_reach_refused', test_run_refused), &
                new_unittest('point_joins_no_line', test_joins_no_line), &
                new_unittest('line_end_no_such_point', test_no_such_point), &
                new_unittest('line_end_on_a_body', test_end_on_body), &
@@ -221,8 +221,10 @@ contains
       call sim%prepare(c, err)
       call check(error, allocated(err), 'a network was prepared')
       if (allocated(error)) return
+      ! The buoy's guess (0, 0, -20) is 215 m from the anchor of &point_2, out of reach of 150 m of line.
       call check(error, err%stat == stat_input .and. index(err%message, '&line_1') > 0 .and. &
-                 index(err%message, 'cannot be run yet') > 0 .and. index(err%message, nl) == 0, err%message)
+                 index(err%message, '&point_1 (its end b)') > 0 .and. index(err%message, 'within reach') > 0 .and. &
+                 index(err%message, nl) == 0, err%message)
    end subroutine test_run_refused
 
    subroutine test_joins_no_line(error)

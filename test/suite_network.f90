@@ -41,7 +41,8 @@ contains
       tests = [new_unittest('two_lines_at_a_buoy_equal_one_line_with_the_buoy', test_equal_one_line), &
                new_unittest('kept_rows_jacobian_fd', test_kept_rows), &
                new_unittest('point_stiffness_fd', test_point_stiffness), &
-               new_unittest('spread_at_a_buoy_symmetric_and_ledger', test_spread)]
+               new_unittest('spread_at_a_buoy_symmetric_and_ledger', test_spread), &
+               new_unittest('input_two_lines_equal_one_line', test_input_equal_one_line)]
    end subroutine collect_network
 
    !> Read and prepare a case given as namelist text.
@@ -97,10 +98,14 @@ contains
 
    !> The one line: 40 m of heavier rope (3000 kg/m^3) from the anchor, 50 m of rope to the fairlead,
    !> the buoy at the joint.
-   function one_line() result(text)
-      character(:), allocatable :: text
+   function one_line(numerics_end) result(text)
+      !> The end of the &numerics group (default ' /').
+      character(*), intent(in), optional :: numerics_end
+      character(:), allocatable :: text, tail
+      tail = " /"
+      if (present(numerics_end)) tail = numerics_end
       text = "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
-             numerics//" /"//nl//"&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
+             numerics//tail//nl//"&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
              "&segment_2 length = 50.0, nodes = 51 /"//nl// &
              xyz("&end_a kind = 'fixed'", anchor)//" /"//nl// &
              xyz("&end_b "//heave, fairlead)//" /"//nl
@@ -338,4 +343,65 @@ contains
       ! Measured 1.2e-16; with the kept rows of one line 0.1 % off, 2.9e-7.
       call check(error, drift < 1.0e-13_dp, 'the spread''s ledger does not close: '//str(drift))
    end subroutine test_spread
+   !> Through the input and the driver (&line_k, &point_k kind, driver/network_drive.f90): the
+   !> two lines at a free point with the buoy against the one line with the buoy at its joint, both
+   !> run for 1 s at dt = 0.025 s: the history of the anchor's and the fairlead's tension and the
+   !> ledger.
+   subroutine test_input_equal_one_line(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: one, net
+      type(case_config) :: c
+      character(:), allocatable :: run, guess
+      real(dp) :: worst, drift, top
+      integer :: i
+      run = ", dt = 0.025, t_end = 1.0 /"//nl//"&output energy = .true. /"
+      call write_text(path, common//one_line(run)// &
+                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call one%prepare(c, error)
+      if (allocated(error)) return
+      call one%run(error=error)
+      if (allocated(error)) return
+      guess = xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])
+      call write_text(path, common//numerics//run//nl// &
+                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
+                      "&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
+                      "&segment_2 length = 50.0, nodes = 51 /"//nl// &
+                      guess//", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
+                      xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
+                      xyz("&point_3 "//heave, fairlead)//" /"//nl// &
+                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
+                      "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call net%prepare(c, error)
+      if (allocated(error)) return
+      call net%run(error=error)
+      if (allocated(error)) return
+      associate (h1 => one%rod%history, h2 => net%rod%history)
+         call check(error, h1%n == h2%n .and. h2%n == 40, 'the runs took '//str(h1%n)//' and '//str(h2%n)//' steps')
+         if (allocated(error)) return
+         call check(error, size(h2%end_labels) == 4, 'the network''s history has '//str(size(h2%end_labels))//' ends')
+         if (allocated(error)) return
+         call check(error, h2%end_labels(4) == 'line_2_b', 'the network''s last end is '//h2%end_labels(4))
+         if (allocated(error)) return
+         top = maxval(abs(h1%ends(5, 2, 0:h1%n)))
+         worst = 0
+         do i = 0, h1%n
+            worst = max(worst, abs(h1%ends(5, 1, i) - h2%ends(5, 1, i)), abs(h1%ends(5, 2, i) - h2%ends(5, 4, i)))
+         end do
+         worst = worst/top
+         drift = maxval(abs(h2%energy(7, 0:h2%n) - h2%energy(7, 0)))/maxval(abs(h2%energy(1:4, 0:h2%n)))
+      end associate
+      write (output_unit, '(4x,a,es9.2,a,es9.2)') 'through the input: the ends'' tensions ', worst, &
+         ' of the largest off the one line''s; the network''s ledger ', drift
+      ! Measured 2.1e-12 and 2.7e-15.
+      call check(error, worst < 1.0e-11_dp, 'through the input, the network''s end tensions are '//str(worst)// &
+                 ' off the one line''s')
+      if (allocated(error)) return
+      call check(error, drift < 1.0e-13_dp, 'the network''s ledger drifts by '//str(drift))
+   end subroutine test_input_equal_one_line
 end module suite_network

@@ -48,6 +48,8 @@ module xcable_driver_network_drive
       type(line_place), allocatable :: lines(:)
       !> Extra fields of the static state (n_out, n_fields3).
       real(dp), allocatable :: static_extra(:, :)
+      !> The input's number (&point_k) of each free point.
+      integer, allocatable :: point_number(:)
    contains
       procedure :: begin => drive_begin
       procedure :: attempt => drive_attempt

@@ -164,6 +164,9 @@ module xcable_driver_records
       !> Fields of a 3-D run besides field_names (nodes, n_fields3), in the order of field3_names
       !> (absent in 2-D).
       real(dp), allocatable :: extra(:, :)
+      !> Whether it is one line between two ends (not a network of lines): span, sag, the end
+      !> angles and tensions and the lowest point are written only then.
+      logical :: one_line = .true.
    end type static_info
 
    !> Receives the static state and the snapshots of a run (the output file, or a test).

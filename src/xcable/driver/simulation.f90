@@ -28,9 +28,12 @@ module xcable_driver_simulation
    use xcable_driver_rod_run, only: rod_run, rod_run_options, cable_model, planar_model, pause_none, pause_termination, &
                                     tension_watch, rupture_tolerance
    use xcable_box_run, only: box_run
-   use xcable_driver_rod3d_drive, only: rod3d_drive
+   use xcable_driver_rod3d_drive, only: rod3d_drive, n_fields3
+   use xcable_driver_rod3d_run, only: rod3d_run
+   use xcable_driver_network, only: network_joint
+   use xcable_driver_network_drive, only: network_drive
    use xcable_driver_stepping, only: run_dynamics, start_dynamics, advance_dynamics, finish_dynamics
-   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer
+   use xcable_driver_records, only: run_history, run_summary, static_info, run_observer, n_fields
    use xcable_io_checkpoint, only: checkpoint_file
    use xcable_core_version, only: code_version
    implicit none
@@ -73,6 +76,9 @@ module xcable_driver_simulation
       !> records of rod). model_of gives the one in use.
       type(planar_model) :: planar
       type(rod3d_drive) :: rod3
+      !> A network of lines (&line_k; driver/network_drive.f90), and whether the case is one.
+      type(network_drive) :: network
+      logical :: is_network = .false.
       !> What the model computes, for the result file.
       character(:), allocatable :: terms
       !> Checkpoints (rod scheme).
@@ -105,6 +111,10 @@ module xcable_driver_simulation
       !> Whether the results have the 3-D layout (y fields and the ends' y components): a 3-D
       !> run, or a 2-D run of a scene in a vertical plane at an azimuth, turned back.
       procedure :: three_d_output => sim_three_d_output
+      !> Output nodes (all lines of a network).
+      procedure :: output_nodes => sim_output_nodes
+      !> A network's static state in words: its free points' positions, the largest tension.
+      procedure :: network_statics_text => sim_network_statics_text
    end type simulation
 
 contains
@@ -152,24 +162,23 @@ contains
       type(rod_run) :: fresh_rod
       type(box_run) :: fresh_box
       type(rod3d_drive) :: fresh_rod3
-      ! A network of lines (&line_k) is read and checked (io/input/checks/network.f90) but has no
-      ! run yet: one line, before anything is written.
-      if (config%line_count > 0) then
-         call fatal_error(error, config%source//': &line_1: networks of lines are read and checked but cannot '// &
-                          'be run yet (the input of '//str(config%line_count)//' line(s) is valid); run each '// &
-                          'line as a single line with &end_a and &end_b', stat_input)
-         return
-      end if
+      type(network_drive) :: fresh_network
       ! A simulation may be prepared again for another case (checkpoints are enabled after prepare).
       self%rod = fresh_rod
       self%box = fresh_box
       self%rod3 = fresh_rod3
+      self%network = fresh_network
+      self%is_network = .false.
       self%checkpoints = checkpoint_settings()
       self%checkpoints_written = 0
       self%resumed = .false.
       self%interrupted = .false.
       self%scheme = trim(config%scheme)
       self%model = config%model_to_run()
+      if (config%is_network()) then
+         call prepare_network(self, config, error)
+         return
+      end if
       select case (self%scheme)
       case ('box')
          call self%box%prepare(config, self%rod, error)
@@ -182,6 +191,120 @@ contains
          if (scene%by_tension) call find_break(self, config, scene, error, statics_only)
       end select
    end subroutine sim_prepare
+
+   !> A network of lines (&line_k, free &point_k): each line prepared as a single line (its case
+   !> config%line_case(l): its free points held where the input puts them, the body of a free
+   !> point on the lowest-numbered line there), then the statics of the whole network
+   !> (driver/network.f90), and the records of the run laid out line after line
+   !> (driver/network_drive.f90). The step is the shortest of the lines' steps.
+   subroutine prepare_network(self, config, error)
+      type(simulation), intent(inout) :: self
+      type(case_config), intent(in) :: config
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: line
+      type(rod3d_run), allocatable :: runs(:)
+      type(network_joint), allocatable :: joints(:)
+      integer, allocatable :: ends(:, :)
+      integer :: l, p, j, n, first, free, n_out
+      real(dp) :: dt, offset
+      real(dp), allocatable :: s_out(:), fields(:, :), extra(:, :)
+      self%is_network = .true.
+      self%model = '3d'
+      allocate (runs(config%line_count), self%network%lines(config%line_count))
+      first = 1
+      offset = 0
+      dt = huge(1.0_dp)
+      allocate (s_out(0))
+      do l = 1, config%line_count
+         call line%prepare(config%line_case(l), error)
+         if (allocated(error)) then
+            error%message = '&line_'//str(l)//': '//point_words(error%message, l)
+            return
+         end if
+         runs(l) = line%rod3%pieces(1)%run
+         associate (piece => runs(l)%problem%piece)
+            n = piece%n
+            self%network%lines(l)%first = first
+            first = first + n
+            s_out = [s_out, piece%s + offset]
+            offset = offset + piece%s(n)
+         end associate
+         dt = min(dt, line%rod%dt)
+         if (l == 1) then
+            self%rod = line%rod
+            self%terms = 'rod3d network: '//trim(line%terms(7:))
+         end if
+      end do
+      ! The lines' ends at free points.
+      allocate (joints(0), self%network%point_number(0))
+      free = 0
+      do p = 1, config%point_count
+         if (trim(config%points(p)%kind) /= 'free') cycle
+         free = free + 1
+         self%network%point_number = [self%network%point_number, p]
+         ends = config%point_lines(p)
+         do j = 1, size(ends, 2)
+            joints = [joints, network_joint(ends(1, j), ends(2, j), free)]
+         end do
+      end do
+      call self%network%net%init(runs, joints, free, error)
+      if (.not. allocated(error)) call self%network%net%statics(0.0_dp, error)
+      if (allocated(error)) then
+         error%message = config%source//': '//error%message
+         return
+      end if
+      ! The run's records: the lines one after another.
+      n_out = first - 1
+      self%rod%n_out = n_out
+      self%rod%s_out = s_out
+      self%rod%dt = dt
+      self%rod%break_node = 0
+      if (allocated(self%rod%pieces)) deallocate (self%rod%pieces)
+      allocate (fields(n_out, n_fields), extra(n_out, n_fields3))
+      call self%network%state_fields(fields, extra)
+      self%rod%info%s = s_out
+      self%rod%info%fields = fields
+      self%rod%info%extra = extra
+      self%network%static_extra = extra
+      associate (net => self%network%net, last => self%network%net%lines(config%line_count))
+         self%rod%info%tension_a = norm2(net%lines(1)%problem%piece%reaction(1, 0.0_dp))
+         self%rod%info%tension_b = norm2(last%problem%piece%reaction(last%problem%piece%n, 0.0_dp))
+      end associate
+      self%rod%info%max_tension = maxval(fields(:, 1))
+      self%rod%info%one_line = .false.
+      ! The static resolution check on the network's state (the lines' ends, joints included, turn no cells).
+      self%rod%static_max_turn = 0
+      do l = 1, config%line_count
+         associate (piece => self%network%net%lines(l)%problem%piece, x => self%network%net%lines(l)%x)
+            n = piece%n
+            call piece%geometry(reshape(x(1:3*n), [3, n]), piece%e1, piece%l1, piece%th1)
+            self%rod%static_max_turn = max(self%rod%static_max_turn, maxval(piece%th1))
+         end associate
+      end do
+   contains
+
+      !> A message of a line's own case in the network's words: its &end_a / &end_b are its points.
+      function point_words(message, l) result(text)
+         character(*), intent(in) :: message
+         integer, intent(in) :: l
+         character(:), allocatable :: text
+         character(len=6), parameter :: groups(2) = ['&end_a', '&end_b']
+         integer :: side, k, p
+         logical :: free_end
+         text = message
+         free_end = .false.
+         do side = 1, 2
+            p = config%lines(l)%end_point(side)
+            k = index(text, groups(side))
+            if (k == 0 .or. p < 1) cycle
+            text = text(1:k - 1)//'&point_'//str(p)//' (its end '//merge('a', 'b', side == 1)//')'// &
+                   text(k + len(groups(side)):)
+            free_end = free_end .or. trim(config%points(p)%kind) == 'free'
+         end do
+         if (free_end) text = text//' (a free point''s x, y, z are the first guess of where it settles: put it '// &
+                              'within reach of its lines)'
+      end function point_words
+   end subroutine prepare_network
 
    !> The rod run of a scene (either model): its grid, statics and time step, from fresh runs.
    subroutine prepare_rod(self, config, scene, error)
@@ -578,6 +701,8 @@ contains
       class(cable_model), pointer :: model
       if (self%scheme == 'box') then
          model => self%box%stepper
+      else if (self%is_network) then
+         model => self%network
       else if (self%model == '3d') then
          model => self%rod3
       else
@@ -602,6 +727,8 @@ contains
       logical, intent(in) :: on_termination
       !> Accepted steps between checkpoints (0: none).
       integer, intent(in), optional :: every_steps
+      ! A network of lines has no checkpoints yet (driver/network_drive.f90): it runs without.
+      if (self%is_network) return
       self%checkpoints%path = path
       self%checkpoints%fingerprint = fingerprint
       self%checkpoints%run_id = run_id
@@ -736,10 +863,39 @@ contains
       class(simulation), intent(in) :: self
       integer, allocatable :: starts(:)
       allocate (starts(0))
+      if (self%is_network) then
+         ! Each line after the first starts a piece of the output.
+         starts = self%network%lines(2:)%first
+         return
+      end if
       if (self%scheme /= 'box') then
          if (self%rod%break_node > 0) starts = [self%rod%break_node + 1]
       end if
    end function sim_piece_starts
+
+   integer function sim_output_nodes(self)
+      class(simulation), intent(in) :: self
+      sim_output_nodes = self%rod%n_out
+   end function sim_output_nodes
+
+   function sim_network_statics_text(self) result(text)
+      class(simulation), intent(in) :: self
+      character(:), allocatable :: text
+      integer :: p
+      character(len=16) :: at(3)
+      integer :: j
+      text = ''
+      do p = 1, self%network%net%points
+         do j = 1, 3
+            write (at(j), '(f16.3)') self%network%net%xp(j, p)
+            ! (-0.000 is 0.000)
+            if (abs(self%network%net%xp(j, p)) < 5.0e-4_dp) at(j) = '0.000'
+         end do
+         text = text//'&point_'//str(self%network%point_number(p))//' at ('//trim(adjustl(at(1)))//', '// &
+                trim(adjustl(at(2)))//', '//trim(adjustl(at(3)))//') m; '
+      end do
+      text = text//'largest tension '//quantity(self%rod%info%max_tension, 'N')
+   end function sim_network_statics_text
 
    subroutine sim_time_step(self, dt, steps)
       class(simulation), intent(in) :: self

@@ -329,14 +329,17 @@ contains
                call put_reals(self, group, '/static', trim(field3_names(i)), info%extra(:, i), ok)
             end do
          end if
-         call put_real_attr(group, 'span', info%span, ok)
-         call put_real_attr(group, 'sag', info%sag, ok)
-         call put_real_attr(group, 'end_angle', info%end_angle, ok)
-         call put_real_attr(group, 'tension_a', info%tension_a, ok)
-         call put_real_attr(group, 'tension_b', info%tension_b, ok)
-         call put_real_attr(group, 'end_angle_b', info%end_angle_b, ok)
-         call put_real_attr(group, 'lowest_z', info%lowest_z, ok)
-         call put_real_attr(group, 'lowest_s', info%lowest_s, ok)
+         ! The figures of one line between two ends (not of a network: its lines' ends are in /history).
+         if (info%one_line) then
+            call put_real_attr(group, 'span', info%span, ok)
+            call put_real_attr(group, 'sag', info%sag, ok)
+            call put_real_attr(group, 'end_angle', info%end_angle, ok)
+            call put_real_attr(group, 'tension_a', info%tension_a, ok)
+            call put_real_attr(group, 'tension_b', info%tension_b, ok)
+            call put_real_attr(group, 'end_angle_b', info%end_angle_b, ok)
+            call put_real_attr(group, 'lowest_z', info%lowest_z, ok)
+            call put_real_attr(group, 'lowest_s', info%lowest_s, ok)
+         end if
          call put_real_attr(group, 'max_tension', info%max_tension, ok)
          call put_int_attr(group, 'newton_iterations', info%newton_iterations, ok)
          call check_attributes(self, group, '/static', ok)

@@ -45,7 +45,11 @@ module xcable_io_output_registry
 
    !> The names '<end>' stands for: the ends of the cable (s = 0, s = L) and the two new ends of a
    !> break inside it (driver/rod_run.f90).
-   character(len=*), parameter :: end_names(4) = [character(len=7) :: 'end_a', 'end_b', 'break_a', 'break_b']
+   !> (A network of lines, driver/network_drive.f90: two ends per line, line_1_a ... line_8_b.)
+   character(len=*), parameter :: end_names(20) = [character(len=8) :: 'end_a', 'end_b', 'break_a', 'break_b', &
+                                                   'line_1_a', 'line_1_b', 'line_2_a', 'line_2_b', 'line_3_a', &
+                                                   'line_3_b', 'line_4_a', 'line_4_b', 'line_5_a', 'line_5_b', &
+                                                   'line_6_a', 'line_6_b', 'line_7_a', 'line_7_b', 'line_8_a', 'line_8_b']
    !> Descriptions and units of the snapshot fields, in the order of field_names.
    character(len=*), parameter :: field_units(n_fields) = [character(len=4) :: 'N', 'N', '-', 'm/s', 'm/s', 'm', &
                                                             'm', '1/m']
@@ -144,7 +148,8 @@ contains
       call add('/history/newton_iterations', 'dataset', 'record', '1', '', 'Newton iterations of the accepted step')
       call add('/history/rejected', 'dataset', 'record', '1', '', 'attempts of the step rejected before the accepted one')
       call add('/history/<end>', 'group', '', '', '', &
-               'one end: end_a (s = 0), end_b (s = L), and break_a, break_b, the new ends of a break inside the cable')
+               'one end: end_a (s = 0), end_b (s = L), and break_a, break_b, the new ends of a break inside the cable; '// &
+               'in a network of lines line_1_a, line_1_b, ... (each line''s end a and end b)')
       call add('/history/<end>/x', 'dataset', 'record', 'm', '', 'position of the end along the global x axis')
       call add('/history/<end>/z', 'dataset', 'record', 'm', '', 'position of the end along the global z axis (up)')
       call add('/history/<end>/vx', 'dataset', 'record', 'm/s', '', 'velocity of the end along the global x axis')
@@ -361,7 +366,9 @@ contains
              'to end b, `n` the paper''s normal (`t` turned by -90 degrees in the x-z plane; down for a cable '// &
              'along +x), `b` = t x n.'//nl//nl// &
              'Paths: `/group/name` is a dataset or group, `/group@name` an attribute; `<end>` is `end_a`, '// &
-             '`end_b`, and `break_a`, `break_b` after a break inside the cable. The attributes of `/static` '// &
+             '`end_b`, and `break_a`, `break_b` after a break inside the cable; in a network of lines (`&line_k`) '// &
+             'the ends of each line, `line_1_a`, `line_1_b`, `line_2_a`, ..., and the lines are laid out one '// &
+             'after another along `s` (each line a piece of the output). The attributes of `/static` '// &
              'and `/summary` are plain numbers: their units are in this table.'//nl//nl// &
              '| path | kind | dimensions | units | written | description |'//nl// &
              '|---|---|---|---|---|---|'//nl

@@ -192,13 +192,15 @@ contains
          call describe_group(self, group, '/summary', ok)
          ! A figure that does not apply to the scene is absent (no -1, no 0 for "none").
          if (present(info)) then
-            call put_real_attr(group, 'static_tension_a', info%tension_a, ok)
-            call put_real_attr(group, 'static_tension_b', info%tension_b, ok)
-            call put_real_attr(group, 'static_angle_a', info%end_angle, ok)
-            call put_real_attr(group, 'static_angle_b', info%end_angle_b, ok)
-            call put_real_attr(group, 'static_span', info%span, ok)
-            call put_real_attr(group, 'static_lowest_z', info%lowest_z, ok)
-            call put_real_attr(group, 'static_lowest_s', info%lowest_s, ok)
+            if (info%one_line) then
+               call put_real_attr(group, 'static_tension_a', info%tension_a, ok)
+               call put_real_attr(group, 'static_tension_b', info%tension_b, ok)
+               call put_real_attr(group, 'static_angle_a', info%end_angle, ok)
+               call put_real_attr(group, 'static_angle_b', info%end_angle_b, ok)
+               call put_real_attr(group, 'static_span', info%span, ok)
+               call put_real_attr(group, 'static_lowest_z', info%lowest_z, ok)
+               call put_real_attr(group, 'static_lowest_s', info%lowest_s, ok)
+            end if
             call put_real_attr(group, 'static_max_tension', info%max_tension, ok)
          end if
          if (allocated(summary%static_measures)) then

@@ -17,6 +17,7 @@ module suite_input_network
 
    character(len=*), parameter :: path = 'build/test_input_network.nml'
    character(len=*), parameter :: echo_path = 'build/test_input_network_echo.nml'
+   character(len=*), parameter :: table_path = 'build/test_input_network_motion.dat'
    character(len=*), parameter :: nl = new_line('a')
 
    !> The line and water of the spread (no &cable length: each line has its own).
@@ -76,7 +77,8 @@ contains
                new_unittest('line_nodes_in_some_segments', test_nodes_some), &
                new_unittest('line_nodes_too_few', test_nodes_too_few), &
                new_unittest('network_buoy_without_water', test_buoy_dry), &
-               new_unittest('network_anchor_below_seabed', test_below_seabed)]
+               new_unittest('network_anchor_below_seabed', test_below_seabed), &
+               new_unittest('motion_point_tables', test_motion_tables)]
    end subroutine collect_input_network
 
    !> The whole spread.
@@ -428,6 +430,47 @@ contains
       call expect_refusal(error, spread()//'&seabed depth = 90 /'//nl, &
                           [character(len=50) :: '&point_2: z = -100', 'below the seabed (z = -90'])
    end subroutine test_below_seabed
+
+   !> Motion points moved by tables, one from a file (t, x, y, z) and one inline, with the
+   !> words in capitals and a point named '&point_2': the tables read as an end's, the line cases'
+   !> ends carry them, and the echo (the file's table written inline) reads back to itself.
+   subroutine test_motion_tables(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c, back, l2
+      character(:), allocatable :: text
+      call write_text(table_path, '# t x y z'//nl//'0 0 0 0'//nl//'1 0.5 0.2 0.1'//nl//'2 1 0 0'//nl)
+      call write_text(path, scene//"&point_1 kind = 'FREE', z = -20, volume = 10, mass = 1000 /"//nl//anchor_2// &
+                      "&point_3 kind = 'motion', x = -100, y = 173.2, z = -100, motion = 'table', table_file = '"// &
+                      table_path//"' /"//nl// &
+                      "&point_4 kind = 'motion', x = -100, y = -173.2, z = -100, motion = 'Table', "// &
+                      'table_time = 0, 1, 2, table_x = 0, 1, 0, table_z = 0, 0.5, 0 /'//nl// &
+                      "&line_1 end_a = '&point_2', end_b = 'point_1', segments = 1, 2 /"//nl//line_2//line_3)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      call check(error, c%points(1)%kind == 'free' .and. c%lines(1)%end_point(1) == 2 .and. &
+                 c%point_ends(3)%table_rows == 3 .and. c%point_ends(3)%table_y(2) == 0.2_dp .and. &
+                 c%point_ends(3)%table_z(2) == 0.1_dp .and. c%point_ends(4)%table_rows == 3 .and. &
+                 c%point_ends(4)%motion == 'table' .and. c%point_ends(4)%table_z(2) == 0.5_dp, &
+                 'the tables of points 3 (file) and 4 (inline), the words in lower case')
+      if (allocated(error)) return
+      l2 = c%line_case(2)
+      call check(error, trim(l2%end_a%kind) == 'motion' .and. l2%end_a%table_rows == 3 .and. &
+                 l2%end_a%table_x(3) == 1 .and. l2%is_given('end_a', 'table_file'), 'line 2: end a moved by the table')
+      if (allocated(error)) return
+      text = config_text(c)
+      call write_text(echo_path, text)
+      call read_config(echo_path, back, error)
+      if (allocated(error)) return
+      back%source = c%source
+      back%file = c%file
+      ! (The echo read back has the table inline, without the comment naming its file.)
+      call check(error, index(text, "! &point_3: the table was read from table_file = '"//table_path//"'"//nl) == 1 + &
+                 index(text, nl//'! &point_3'), 'the comment naming the table file: '//text)
+      if (allocated(error)) return
+      call check(error, config_text(back) == replaced(text, "! &point_3: the table was read from table_file = '"// &
+                                                      table_path//"'"//nl, ''), &
+                 'the echo read back differs: '//config_text(back))
+   end subroutine test_motion_tables
 
    !> text with its first old replaced by new.
    function replaced(text, old, new) result(s)

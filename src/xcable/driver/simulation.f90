@@ -682,7 +682,8 @@ contains
          do
             call advance_dynamics(self%rod, model, observer, error, pause)
             if (allocated(error) .or. pause == pause_none) exit
-            call write_checkpoint(self, error)
+            ! A network of lines has no checkpoints yet (driver/network_drive.f90): SIGTERM only stops it.
+            if (.not. self%is_network) call write_checkpoint(self, error)
             if (allocated(error)) exit
             if (pause == pause_termination) then
                self%interrupted = .true.
@@ -727,16 +728,16 @@ contains
       logical, intent(in) :: on_termination
       !> Accepted steps between checkpoints (0: none).
       integer, intent(in), optional :: every_steps
-      ! A network of lines has no checkpoints yet (driver/network_drive.f90): it runs without.
-      if (self%is_network) return
       self%checkpoints%path = path
       self%checkpoints%fingerprint = fingerprint
       self%checkpoints%run_id = run_id
       self%checkpoints%interval = interval
+      if (self%is_network) self%checkpoints%interval = 0
       self%checkpoints%on_termination = on_termination
       self%checkpoints%every_steps = 0
       if (present(every_steps)) self%checkpoints%every_steps = every_steps
-      self%rod%options%checkpoint_interval = interval
+      self%rod%options%checkpoint_interval = self%checkpoints%interval
+      if (self%is_network) self%checkpoints%every_steps = 0
       self%rod%options%checkpoint_steps = self%checkpoints%every_steps
       self%rod%options%stop_on_termination = on_termination
    end subroutine sim_enable_checkpoints

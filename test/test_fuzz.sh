@@ -667,9 +667,9 @@ network() {
 &numerics t_end = 1 /
 EOF
 }
-begin 'a network (not run yet)' '&line_1' 'networks of lines are read and checked but cannot be run yet'
+begin 'a network whose free point is out of reach' '&line_1' '&point_1 (its end b)' 'within reach of its lines'
 network; check
-begin 'a network with --check (not run yet)' '&line_1' 'cannot be run yet'
+begin 'a network out of reach, with --check' '&line_1' '&point_1 (its end b)' 'within reach of its lines'
 network; args=(--check case.nml); check
 begin 'a network point that joins no line' '&point_5' "kind 'fixed' joins no line"
 network; add "&point_5 kind = 'fixed', x = 1 /"; check

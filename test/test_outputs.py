@@ -2,7 +2,7 @@
 """test/test_outputs.py [EXE]: the result files explain themselves (make test runs this).
 
 Runs a planar case (input/slow_180kN), a 3-D one (input/sway3d) and a cable broken inside
-(input/inclined_break_middle, two pieces) with EXE (default bin/xcable) and reads each file
+(input/inclined_break_middle, two pieces) and a network of lines (input/buoy_spread) with EXE (default bin/xcable) and reads each file
 with h5py:
   - every dataset has a `units` and a one-line `description` attribute, both str (UTF-8
     text), the units one of the SI words of the output registry;
@@ -25,7 +25,7 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CASES = ['slow_180kN', 'sway3d', 'inclined_break_middle']
+CASES = ['slow_180kN', 'sway3d', 'inclined_break_middle', 'buoy_spread']
 UNITS = {'N', 'm', 'm/s', '1/m', 's', 'J', 'rad', '-', '1'}
 SCALE_ATTRS = {'CLASS', 'NAME', 'REFERENCE_LIST', 'DIMENSION_LIST'}
 
@@ -36,7 +36,7 @@ def registry(exe):
     patterns = []
     for line in text.splitlines()[1:]:
         path = line.split('\t')[0]
-        patterns.append(re.compile('^' + re.escape(path).replace(re.escape('<end>'), '(end_a|end_b|break_a|break_b)') + '$'))
+        patterns.append(re.compile('^' + re.escape(path).replace(re.escape('<end>'), '(end_a|end_b|break_a|break_b|line_[1-8]_[ab])') + '$'))
     return patterns
 
 
@@ -114,6 +114,14 @@ def main():
                 with h5py.File(path, 'r') as f:
                     if 'break_a' not in f['history']:
                         bad.append('no break inside the cable (no /history/break_a)')
+            if case == 'buoy_spread':
+                with h5py.File(path, 'r') as f:
+                    ends = sorted(k for k in f['history'] if k.startswith('line_'))
+                    want = ['line_%d_%s' % (l, s) for l in (1, 2, 3) for s in 'ab']
+                    if ends != want:
+                        bad.append('the network\'s history has the ends %s, not %s' % (ends, want))
+                    if 'span' in f['static'].attrs or 'tension_a' in f['static'].attrs:
+                        bad.append('/static has the figures of one line (span, tension_a) for a network')
             for line in bad[:20]:
                 print('test_outputs: %s: %s' % (case, line))
             failed += bool(bad)

@@ -19,10 +19,10 @@ module xcable_driver_network_drive
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: str
-   use xcable_driver_rod_run, only: rod_run, cable_model, end_value, check_range, check_folds
+   use xcable_driver_rod_run, only: rod_run, cable_model
+   use xcable_driver_rod3d_drive, only: check_state3, end_tension, state_between
    use xcable_driver_network, only: network_run
    use xcable_driver_records, only: run_observer, note_min_strain
-   use xcable_driver_history, only: hermite_levels
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
    use xcable_io_archive, only: state_archive
    use xcable_model_rod3d, only: rod3d_piece
@@ -121,27 +121,12 @@ contains
       do l = 1, size(self%lines)
          associate (piece => self%net%lines(l)%problem%piece, x => self%net%lines(l)%x)
             n = piece%n
-            call check_line(piece, x, l, h, error)
+            call check_state3(piece, x, l, h, error)
             if (allocated(error)) return
          end associate
       end do
    end subroutine drive_attempt
 
-   !> The checks of a line's new state: its strain range, the fold check.
-   subroutine check_line(piece, x, l, h, error)
-      type(rod3d_piece), intent(in) :: piece
-      real(dp), intent(in) :: x(:)
-      integer, intent(in) :: l
-      real(dp), intent(in) :: h
-      type(error_type), allocatable, intent(out) :: error
-      real(dp) :: r(3, piece%n), e(3, piece%n - 1), len1(piece%n - 1), th(piece%n), fold(piece%n)
-      r = reshape(x(1:3*piece%n), [3, piece%n])
-      call piece%geometry(r, e, len1, th)
-      call check_range(x, len1, piece%law, l, error)
-      if (allocated(error)) return
-      call piece%turning_folds(r, fold)
-      call check_folds(fold, l, h, error)
-   end subroutine check_line
 
    subroutine drive_reject(self, run)
       class(network_drive), intent(inout) :: self
@@ -179,8 +164,7 @@ contains
       logical, intent(in) :: static
       real(dp), intent(out) :: fields(:, :), extra(:, :)
       logical, intent(out) :: with_extra
-      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), r(:, :), v(:, :), f(:, :), e(:, :)
-      real(dp) :: u, h
+      real(dp), allocatable :: x(:), v(:, :), f(:, :), e(:, :)
       integer :: l, n
       with_extra = .true.
       if (static) then
@@ -188,19 +172,10 @@ contains
          extra = self%static_extra
          return
       end if
-      h = t_new - run%t
-      u = min(max((ts - run%t)/h, 0.0_dp), 1.0_dp)
       do l = 1, size(self%lines)
          associate (line => self%lines(l), now => self%net%lines(l))
             n = now%problem%piece%n
-            r0 = reshape(line%x_prev(1:3*n), [3, n])
-            r1 = reshape(now%x(1:3*n), [3, n])
-            r = r0
-            v = r0
-            call hermite_levels((ts - run%t)/h, h, r0, line%v_prev, r1, now%v, r, v)
-            x = now%x
-            x(1:3*n) = reshape(r, [3*n])
-            x(3*n + 1:) = (1 - u)*line%x_prev(3*n + 1:) + u*now%x(3*n + 1:)
+            call state_between(n, line%x_prev, line%v_prev, now%x, now%v, run%t, t_new - run%t, ts, x, v)
             allocate (f(n, size(fields, 2)), e(n, size(extra, 2)))
             call fields3(now%problem%piece, x, v, f, e)
             fields(line%first:line%first + n - 1, :) = f
@@ -270,19 +245,6 @@ contains
       end if
    end subroutine drive_record
 
-   !> A line's tension at an end node, extrapolated from its end cells (as the 3-D run's).
-   real(dp) function end_tension(piece, side)
-      type(rod3d_piece), intent(in) :: piece
-      integer, intent(in) :: side
-      real(dp) :: cells(3)
-      integer :: j, c, m
-      m = min(3, piece%n - 1)
-      do j = 1, m
-         c = merge(j, piece%n - j, side == 1)
-         cells(j) = piece%cell_tension(c, piece%l1(c) - 1)
-      end do
-      end_tension = max(end_value(cells(1:m), 1), piece%cell_tension(merge(1, piece%n - 1, side == 1), -0.99_dp))
-   end function end_tension
 
    !> A network does not part (the input refuses &rupture for it).
    subroutine drive_split(self, run, error)

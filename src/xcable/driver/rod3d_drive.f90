@@ -58,6 +58,9 @@ module xcable_driver_rod3d_drive
    implicit none
    private
    public :: rod3d_drive, n_fields3, field3_names
+   ! A 3-D piece's checks of a new state and its end tension, also for the lines of a network
+   ! (driver/network_drive.f90).
+   public :: check_state3, end_tension, state_between
    ! For the submodules driver/rod3d_drive/ (gfortran 12 makes a module's private procedures
    ! local symbols that its submodules cannot link to).
    public :: state_fields, piece_sections3, set_time
@@ -519,26 +522,42 @@ contains
       type(rod_run), intent(in) :: rod
       real(dp), intent(in) :: t0, h, ts
       real(dp), intent(out) :: fields(:, :), extra(:, :)
-      real(dp), allocatable :: x(:), r0(:, :), r1(:, :), r(:, :), v(:, :)
-      real(dp) :: u
-      integer :: n, p
-      u = min(max((ts - t0)/h, 0.0_dp), 1.0_dp)
+      real(dp), allocatable :: x(:), v(:, :)
+      integer :: p
       do p = 1, size(self%pieces)
          associate (piece => self%pieces(p))
-            n = piece%run%problem%piece%n
-            r0 = reshape(piece%x_prev(1:3*n), [3, n])
-            r1 = reshape(piece%run%x(1:3*n), [3, n])
-            r = r0
-            v = r0
-            call hermite_levels((ts - t0)/h, h, r0, piece%v_prev, r1, piece%run%v, r, v)
-            x = piece%run%x
-            x(1:3*n) = reshape(r, [3*n])
-            x(3*n + 1:) = (1 - u)*piece%x_prev(3*n + 1:) + u*piece%run%x(3*n + 1:)
+            call state_between(piece%run%problem%piece%n, piece%x_prev, piece%v_prev, piece%run%x, piece%run%v, &
+                               t0, h, ts, x, v)
             call piece_fields(piece, x, v, fields, extra)
          end associate
       end do
       call double_break_node(rod, size(self%pieces), fields, extra)
    end subroutine interpolated
+
+   !> The state of a 3-D piece at time ts inside the step from t0 to t0 + h: positions and
+   !> velocities by cubic Hermite interpolation of the two levels (hermite_levels), the twist
+   !> angles linearly.
+   subroutine state_between(n, x_prev, v_prev, x1, v1, t0, h, ts, x, v)
+      !> Nodes.
+      integer, intent(in) :: n
+      !> The two levels: unknowns (4 n) and velocities (3, n).
+      real(dp), intent(in) :: x_prev(:), v_prev(:, :), x1(:), v1(:, :)
+      !> Start and length of the step, and the time wanted, s.
+      real(dp), intent(in) :: t0, h, ts
+      !> The state at ts.
+      real(dp), allocatable, intent(out) :: x(:), v(:, :)
+      real(dp), allocatable :: r0(:, :), r1(:, :), r(:, :)
+      real(dp) :: u
+      u = min(max((ts - t0)/h, 0.0_dp), 1.0_dp)
+      r0 = reshape(x_prev(1:3*n), [3, n])
+      r1 = reshape(x1(1:3*n), [3, n])
+      r = r0
+      v = r0
+      call hermite_levels((ts - t0)/h, h, r0, v_prev, r1, v1, r, v)
+      x = x1
+      x(1:3*n) = reshape(r, [3*n])
+      x(3*n + 1:) = (1 - u)*x_prev(3*n + 1:) + u*x1(3*n + 1:)
+   end subroutine state_between
 
    !> Fields on the output nodes of the pieces' current state.
    subroutine state_fields(self, rod, fields, extra)

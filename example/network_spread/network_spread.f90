@@ -1,0 +1,238 @@
+!> A three-line spread meeting at a subsurface buoy (driver/network.f90, issue 31 "Moorings"):
+!> the statics and a horizontal heave of one anchor, printed as plain columns for
+!> bench/peer/network.py (MoorDyn's same scene) and for convergence studies.
+!>
+!>   fpm run --example network_spread --profile release -- [nodes=41] [dt=0.01] [t_end=60]
+!>       [sample=0.1] [mass=lumped|averaged] [tol=1e-10]
+!>
+!> The scene. Sea water (1025 kg/m^3, g = 9.81 m/s^2, surface z = 0), a flat bottom at
+!> z = -100 m which no line reaches (there is no seabed in xcable's scene: the buoy holds the
+!> lines up, and each rises from its anchor). Three lines of 160 mm polyester (16.6 kg/m,
+!> EA 2.79e7 N, volume-equivalent diameter 0.1376 m, linear and unable to push, EI 1e-3 N m^2),
+!> each 106 m long, from anchors at radius 80 m on the bottom at azimuths 0, 120 and 240
+!> degrees (end a) to a buoy (end b) of 2000 kg displacing 8 m^3, Ca 0.5, Cd 0.6 on 4 m^2, on
+!> line 1's end node. Line drag and added mass: Cd 1.2 normal, 0.008 tangential (on pi d, as
+!> MoorDyn's CdAx), Ca 1 normal. Still water.
+!>
+!> The motion: line 1's anchor moves along its line (x), X(t) = X0 + A w(t) sin(2 pi t / T),
+!> A = 2 m, T = 10 s, w = sin^2(pi t / (2 T)) for t < T, then 1 (a start from rest).
+!>
+!> How the network is built (there is no namelist input for networks yet): each line is a
+!> one-line case read from namelist text with its buoy end 'fixed' at the guess (0, 0, -30) m,
+!> prepared (its own statics), its 3-D run taken; network_run%init joins the three end b's at
+!> one free point; network_run%statics, then fixed steps of dt (implicit midpoint, theta 1/2).
+!>
+!> Output (stdout): comment lines start with '#'. The first other line is the static state:
+!>   buoy x y z, then the tension at the buoy of lines 1 2 3, then at the anchors of lines 1 2 3;
+!> every other line is a sample (every `sample` s, from t = 0):
+!>   t, buoy x y z, then per line its tension at the buoy (top) and at the anchor (bottom).
+!> End tensions: the tension vectors T_c e_c / |e_c| of the two end cells carried linearly to the
+!> end node, |1.5 T_1 - 0.5 T_2| (the same estimate bench/peer/network.py takes of MoorDyn's
+!> nodes). The last comment lines give the CPU and wall time of the statics and of the steps,
+!> and Newton's iterations.
+program network_spread
+   use xcable_core_kinds, only: dp
+   use xcable_core_error, only: error_type
+   use xcable_io_config, only: case_config, point_config
+   use xcable_io_input, only: read_config
+   use xcable_driver_simulation, only: simulation
+   use xcable_driver_rod3d_run, only: rod3d_run
+   use xcable_driver_network, only: network_run, network_joint
+   use, intrinsic :: iso_fortran_env, only: output_unit, error_unit, int64
+   implicit none
+   character(len=*), parameter :: nl = new_line('a')
+   real(dp), parameter :: pi = acos(-1.0_dp)
+   real(dp), parameter :: length = 106, radius = 80, depth = 100, guess(3) = [0.0_dp, 0.0_dp, -30.0_dp]
+   real(dp), parameter :: mass = 16.6_dp, ea = 2.79e7_dp, diameter = 0.1376_dp
+   type(simulation) :: sims(3)
+   type(rod3d_run), allocatable :: lines(:)
+   type(network_run) :: net
+   type(error_type), allocatable :: error
+   type(point_config) :: buoy
+   character(len=64) :: arg
+   character(len=16) :: mass_matrix
+   real(dp) :: dt, t_end, sample, tol, anchor(3), top(3), bottom(3), c0, c1, c2
+   integer :: nodes, i, l, steps, every, iterations
+   integer(int64) :: w0, w1, w2, rate
+
+   nodes = 41
+   dt = 0.01_dp
+   t_end = 60
+   sample = 0.1_dp
+   tol = 1.0e-10_dp
+   mass_matrix = 'lumped'
+   do i = 1, command_argument_count()
+      call get_command_argument(i, arg)
+      if (index(arg, 'nodes=') == 1) read (arg(7:), *) nodes
+      if (index(arg, 'dt=') == 1) read (arg(4:), *) dt
+      if (index(arg, 't_end=') == 1) read (arg(7:), *) t_end
+      if (index(arg, 'sample=') == 1) read (arg(8:), *) sample
+      if (index(arg, 'mass=') == 1) mass_matrix = arg(6:)
+      if (index(arg, 'tol=') == 1) read (arg(5:), *) tol
+   end do
+   every = nint(sample/dt)
+   if (every < 1 .or. abs(every*dt - sample) > 1.0e-9_dp*sample) then
+      write (error_unit, '(a)') 'network_spread: sample must be a multiple of dt'
+      stop 1
+   end if
+   steps = nint(t_end/dt)
+
+   buoy%joint = 1
+   buoy%mass = 2000
+   buoy%volume = 8
+   buoy%ca = 0.5_dp
+   buoy%cd = 0.6_dp
+   buoy%area = 4
+
+   call cpu_time(c0)
+   call system_clock(w0, rate)
+   allocate (lines(3))
+   do l = 1, 3
+      anchor = [radius*cos(2*pi/3*(l - 1)), radius*sin(2*pi/3*(l - 1)), -depth]
+      call prepare_line(l, anchor, sims(l), error)
+      call stop_on(error)
+      lines(l) = sims(l)%rod3%pieces(1)%run
+   end do
+   call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 2, 1), network_joint(3, 2, 1)], 1, error)
+   call stop_on(error)
+   call net%statics(0.0_dp, error)
+   call stop_on(error)
+   call cpu_time(c1)
+   call system_clock(w1)
+
+   write (output_unit, '(a,i0,a,es10.3,a,a,a,es8.1,a,i0,a)') '# network_spread: nodes ', nodes, ', dt ', dt, &
+      ' s, mass matrix ', trim(mass_matrix), ', newton_tol ', tol, '; statics in ', net%last_iterations, ' iterations'
+   write (output_unit, '(a)') '# static: buoy_x buoy_y buoy_z T_top_1 T_top_2 T_top_3 T_bottom_1 T_bottom_2 T_bottom_3'
+   do l = 1, 3
+      call end_tensions(net%lines(l), top(l), bottom(l))
+   end do
+   write (output_unit, '(3f16.9,6f16.6)') net%xp(:, 1), top, bottom
+   write (output_unit, '(a)') '# t buoy_x buoy_y buoy_z T_top_1 T_bottom_1 T_top_2 T_bottom_2 T_top_3 T_bottom_3'
+   call sample_row()
+   iterations = net%iterations
+   do i = 1, steps
+      call net%attempt(dt, 0.5_dp, error)
+      call stop_on(error)
+      call net%accept(dt, 0.5_dp)
+      if (mod(i, every) == 0) call sample_row()
+   end do
+   call cpu_time(c2)
+   call system_clock(w2)
+   write (output_unit, '(a,2f10.4,a,2f10.4,a,i0,a,f6.3,a)') '# time s (cpu, wall): statics ', c1 - c0, &
+      real(w1 - w0, dp)/rate, '; steps ', c2 - c1, real(w2 - w1, dp)/rate, '; ', steps, ' steps, ', &
+      real(net%iterations - iterations, dp)/max(steps, 1), ' Newton iterations per step'
+
+contains
+
+   !> One line as a one-line case: end a the anchor (line 1's moves), end b 'fixed' at the guess
+   !> (the buoy on line 1's end b).
+   subroutine prepare_line(l, anchor, sim, error)
+      integer, intent(in) :: l
+      real(dp), intent(in) :: anchor(3)
+      type(simulation), intent(inout) :: sim
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      character(len=512) :: path
+      character(len=:), allocatable :: text
+      integer :: unit
+      text = "&cable length = "//r(length)//", diameter = "//r(diameter)//", density = "// &
+             r(mass/(pi*diameter**2/4))//", bending_stiffness = 1e-3 /"//nl// &
+             "&material law = 'linear', ea = "//r(ea)//", compression = 'none' /"//nl// &
+             "&fluid density = 1025.0, surface_z = 0.0, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0 /"//nl// &
+             "&numerics model = '3d', mass_matrix = '"//trim(mass_matrix)//"', newton_tol = "//r(tol)// &
+             ", nodes = "//i2s(nodes)//" /"//nl
+      if (l == 1) then
+         text = text//"&end_a kind = 'motion', motion = 'harmonic', amplitude = 2.0, period = 10.0, "// &
+                "ramp_time = 10.0, direction_x = 1.0, direction_y = 0.0, direction_z = 0.0, "//xyz(anchor)//" /"//nl
+      else
+         text = text//"&end_a kind = 'fixed', "//xyz(anchor)//" /"//nl
+      end if
+      text = text//"&end_b kind = 'fixed', "//xyz(guess)//" /"//nl
+      call get_environment_variable('TMPDIR', path)
+      if (len_trim(path) == 0) path = '/tmp'
+      path = trim(path)//'/network_spread_'//i2s(getpid_safe())//'_'//i2s(l)//'.nml'
+      open (newunit=unit, file=trim(path), status='replace', action='write', access='stream', form='unformatted')
+      write (unit) text
+      close (unit)
+      call read_config(trim(path), c, error)
+      open (newunit=unit, file=trim(path), status='old')
+      close (unit, status='delete')
+      if (allocated(error)) return
+      c%quiet = .true.
+      if (l == 1) then
+         ! The buoy on the joint end (the input would refuse a body on a held end).
+         c%point_count = 1
+         c%points(1) = buoy
+      end if
+      call sim%prepare(c, error)
+   end subroutine prepare_line
+
+   !> A number for the process's files (the clock: two runs at once get different names).
+   integer function getpid_safe()
+      integer(int64) :: count
+      call system_clock(count)
+      getpid_safe = int(mod(count, 100000000_int64))
+   end function getpid_safe
+
+   !> The tensions at end b (the buoy) and end a (the anchor) of a line.
+   subroutine end_tensions(run, t_top, t_bottom)
+      type(rod3d_run), intent(in) :: run
+      real(dp), intent(out) :: t_top, t_bottom
+      t_bottom = end_tension(run, 1)
+      t_top = end_tension(run, 2)
+   end subroutine end_tensions
+
+   !> |1.5 T_1 - 0.5 T_2| of the two end cells' tension vectors at side 1 (node 1) or 2 (node n), N.
+   real(dp) function end_tension(run, side) result(t)
+      type(rod3d_run), intent(in) :: run
+      integer, intent(in) :: side
+      real(dp) :: tv(3, 2), e(3)
+      integer :: n, j, c
+      n = run%problem%piece%n
+      do j = 1, 2
+         c = merge(j, n - j, side == 1)
+         e = run%x(3*c + 1:3*c + 3) - run%x(3*c - 2:3*c)
+         tv(:, j) = run%problem%piece%cell_tension(c, norm2(e)/run%problem%piece%ds(c) - 1)*e/norm2(e)
+      end do
+      t = norm2(1.5_dp*tv(:, 1) - 0.5_dp*tv(:, 2))
+   end function end_tension
+
+   subroutine sample_row()
+      real(dp) :: tt(2, 3)
+      integer :: k
+      do k = 1, 3
+         call end_tensions(net%lines(k), tt(1, k), tt(2, k))
+      end do
+      write (output_unit, '(f10.4,3f16.9,6f16.6)') net%t, net%xp(:, 1), tt
+   end subroutine sample_row
+
+   subroutine stop_on(error)
+      type(error_type), allocatable, intent(in) :: error
+      if (allocated(error)) then
+         write (error_unit, '(a)') 'network_spread: '//error%message
+         stop 1
+      end if
+   end subroutine stop_on
+
+   function r(x) result(text)
+      real(dp), intent(in) :: x
+      character(len=:), allocatable :: text
+      character(len=32) :: buffer
+      write (buffer, '(es24.16e3)') x
+      text = trim(adjustl(buffer))
+   end function r
+
+   function i2s(k) result(text)
+      integer, intent(in) :: k
+      character(len=:), allocatable :: text
+      character(len=16) :: buffer
+      write (buffer, '(i0)') k
+      text = trim(buffer)
+   end function i2s
+
+   function xyz(p) result(text)
+      real(dp), intent(in) :: p(3)
+      character(len=:), allocatable :: text
+      text = "x = "//r(p(1))//", y = "//r(p(2))//", z = "//r(p(3))
+   end function xyz
+end program network_spread

@@ -3,7 +3,8 @@
 !> bench/peer/network.py (MoorDyn's same scene) and for convergence studies.
 !>
 !>   fpm run --example network_spread --profile release -- [nodes=41] [dt=0.01] [t_end=60]
-!>       [sample=0.1] [mass=lumped|averaged] [tol=1e-10]
+!>       [sample=0.1] [mass=lumped|averaged] [tol=1e-10] [nodes_file=PATH]
+!>       [buoy_line=1]
 !>
 !> The scene. Sea water (1025 kg/m^3, g = 9.81 m/s^2, surface z = 0), a flat bottom at
 !> z = -100 m which no line reaches (there is no seabed in xcable's scene: the buoy holds the
@@ -11,8 +12,8 @@
 !> EA 2.79e7 N, volume-equivalent diameter 0.1376 m, linear and unable to push, EI 1e-3 N m^2),
 !> each 106 m long, from anchors at radius 80 m on the bottom at azimuths 0, 120 and 240
 !> degrees (end a) to a buoy (end b) of 2000 kg displacing 8 m^3, Ca 0.5, Cd 0.6 on 4 m^2, on
-!> line 1's end node. Line drag and added mass: Cd 1.2 normal, 0.008 tangential (on pi d, as
-!> MoorDyn's CdAx), Ca 1 normal. Still water.
+!> line 1's end node (with buoy_line = k on line k's). Line drag and added mass: Cd 1.2
+!> normal, 0.008 tangential (on pi d, as MoorDyn's CdAx), Ca 1 normal. Still water.
 !>
 !> The motion: line 1's anchor moves along its line (x), X(t) = X0 + A w(t) sin(2 pi t / T),
 !> A = 2 m, T = 10 s, w = sin^2(pi t / (2 T)) for t < T, then 1 (a start from rest).
@@ -29,7 +30,8 @@
 !> End tensions: the tension vectors T_c e_c / |e_c| of the two end cells carried linearly to the
 !> end node, |1.5 T_1 - 0.5 T_2| (the same estimate bench/peer/network.py takes of MoorDyn's
 !> nodes). The last comment lines give the CPU and wall time of the statics and of the steps,
-!> and Newton's iterations.
+!> and Newton's iterations. With nodes_file, the static nodes of lines 1, 2, 3 (x y z, from the
+!> anchor to the buoy, one node a line) are written to that file.
 program network_spread
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type
@@ -51,6 +53,8 @@ program network_spread
    type(point_config) :: buoy
    character(len=64) :: arg
    character(len=16) :: mass_matrix
+   character(len=512) :: nodes_file
+   integer :: unit, k, buoy_line
    real(dp) :: dt, t_end, sample, tol, anchor(3), top(3), bottom(3), c0, c1, c2
    integer :: nodes, i, l, steps, every, iterations
    integer(int64) :: w0, w1, w2, rate
@@ -61,6 +65,8 @@ program network_spread
    sample = 0.1_dp
    tol = 1.0e-10_dp
    mass_matrix = 'lumped'
+   nodes_file = ''
+   buoy_line = 1
    do i = 1, command_argument_count()
       call get_command_argument(i, arg)
       if (index(arg, 'nodes=') == 1) read (arg(7:), *) nodes
@@ -69,6 +75,8 @@ program network_spread
       if (index(arg, 'sample=') == 1) read (arg(8:), *) sample
       if (index(arg, 'mass=') == 1) mass_matrix = arg(6:)
       if (index(arg, 'tol=') == 1) read (arg(5:), *) tol
+      if (index(arg, 'buoy_line=') == 1) read (arg(11:), *) buoy_line
+      if (index(arg, 'nodes_file=') == 1) call get_command_argument(i, nodes_file)
    end do
    every = nint(sample/dt)
    if (every < 1 .or. abs(every*dt - sample) > 1.0e-9_dp*sample) then
@@ -99,6 +107,15 @@ program network_spread
    call stop_on(error)
    call cpu_time(c1)
    call system_clock(w1)
+   if (len_trim(nodes_file) > 0) then
+      open (newunit=unit, file=trim(nodes_file(12:)), status='replace', action='write')
+      do l = 1, 3
+         do k = 1, net%lines(l)%problem%piece%n
+            write (unit, '(3es25.16e3)') net%lines(l)%x(3*k - 2:3*k)
+         end do
+      end do
+      close (unit)
+   end if
 
    write (output_unit, '(a,i0,a,es10.3,a,a,a,es8.1,a,i0,a)') '# network_spread: nodes ', nodes, ', dt ', dt, &
       ' s, mass matrix ', trim(mass_matrix), ', newton_tol ', tol, '; statics in ', net%last_iterations, ' iterations'
@@ -125,7 +142,7 @@ program network_spread
 contains
 
    !> One line as a one-line case: end a the anchor (line 1's moves), end b 'fixed' at the guess
-   !> (the buoy on line 1's end b).
+   !> (the buoy on line buoy_line's end b).
    subroutine prepare_line(l, anchor, sim, error)
       integer, intent(in) :: l
       real(dp), intent(in) :: anchor(3)
@@ -159,7 +176,7 @@ contains
       close (unit, status='delete')
       if (allocated(error)) return
       c%quiet = .true.
-      if (l == 1) then
+      if (l == buoy_line) then
          ! The buoy on the joint end (the input would refuse a body on a held end).
          c%point_count = 1
          c%points(1) = buoy

@@ -29,7 +29,12 @@ End tensions of both codes alike: each end cell's tension vector (EA strain alon
 carried linearly to the end node, |1.5 T_1 - 0.5 T_2| (the example does the same on xcable's
 nodes).
 
-Usage (from bench/peer):
+--fairlead: the anchors stay fixed and a fourth line of the same rope, FAIR_LEN = 25.2 m, runs from
+the buoy (its end a, MoorDyn's AttachA) up to a fairlead at FAIR_POS = (0.5, 0, -5) m (MoorDyn's
+Coupled point 5), which surges along x by the same motion. Every line has the same number of
+nodes, so MoorDyn's dtM is set by the short line's segments.
+
+Usage (from bench/peer; --fairlead with any command):
   python3 network.py statics [--nodes 21 41 81]
   python3 network.py heave   [--nodes 21 41 81] [--xdt 0.01 0.005] [--courant 0.5] [--tsv DIR]
   python3 network.py timing  [--repeat 3] [--xruns 21:0.01 41:0.01 ...] [--mruns 21 41 81]
@@ -64,11 +69,28 @@ CDN, CDT, CAN = 1.2, 0.008, 1.0
 BUOY = dict(mass=2000.0, volume=8.0, ca=0.5, cda=0.6 * 4.0)
 AMP, PERIOD, T_END, SAMPLE = 2.0, 10.0, 60.0, 0.1
 GUESS = (0.5, 0.3, -29.6)
+# --fairlead: the anchors fixed, a fourth line from the buoy (AttachA) up to a fairlead that surges
+FAIR, FAIR_POS, FAIR_LEN = False, (0.5, 0.0, -5.0), 25.2
 SETTLE, SETTLE_GUESS, SETTLE_CD = 20.0, 200.0, 10.0
 NAMES = ("buoy_x", "buoy_y", "buoy_z", "Ttop1", "Tbot1", "Ttop2", "Tbot2", "Ttop3", "Tbot3")
 
 
+def nlines():
+    return 4 if FAIR else 3
+
+
+def lengths():
+    return [LENGTH] * 3 + ([FAIR_LEN] if FAIR else [])
+
+
+def coupled():
+    """The coupled point's rest position: anchor 1, or the fairlead."""
+    return np.array(FAIR_POS) if FAIR else anchor(0)
+
+
 def anchor(k):
+    if k == 3:
+        return np.array(FAIR_POS)
     a = 2 * math.pi / 3 * k
     return np.array([RADIUS * math.cos(a), RADIUS * math.sin(a), -DEPTH])
 
@@ -92,7 +114,8 @@ def xcable_run(exe, nodes, dt, t_end=T_END):
     times: wall and CPU of the process, and the program's own (statics, steps)."""
     r0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     w0 = time.perf_counter()
-    run = subprocess.run([exe, f"nodes={nodes}", f"dt={dt!r}", f"t_end={t_end!r}", f"sample={SAMPLE!r}"],
+    run = subprocess.run([exe, f"nodes={nodes}", f"dt={dt!r}", f"t_end={t_end!r}", f"sample={SAMPLE!r}",
+                          f"fairlead={int(FAIR)}", f"fairlead_length={FAIR_LEN!r}"],
                          capture_output=True, text=True)
     wall = time.perf_counter() - w0
     r1 = resource.getrusage(resource.RUSAGE_CHILDREN)
@@ -108,8 +131,11 @@ def xcable_run(exe, nodes, dt, t_end=T_END):
 
 # ------------------------------------------------------------------ MoorDyn
 def md_input(path, nodes, dtm, ba=0.0, cdf=1.0):
-    a = [[float(v) for v in anchor(k)] for k in range(3)]
+    a = [[float(v) for v in anchor(k)] for k in range(4)]
     b = BUOY
+    kinds = ("Fixed", "Fixed", "Fixed") if FAIR else ("Coupled", "Fixed", "Fixed")
+    fair = (f"5     Coupled   {a[3][0]!r}  {a[3][1]!r}  {a[3][2]!r}  0.0  0.0  0.0  0.0\n" if FAIR else "")
+    line4 = f"4    poly     4        5       {FAIR_LEN!r}      {nodes - 1}      -\n" if FAIR else ""
     txt = f"""MoorDyn v2 input: three lines meeting at a buoy (bench/peer/network.py)
 ---------------------- LINE TYPES -----------------------------------
 TypeName   Diam    Mass/m     EA      BA/-zeta     EI    Cd     Ca    CdAx    CaAx
@@ -118,17 +144,17 @@ poly  {DIAM!r}  {MASS!r}  {EA!r}  {ba!r}  0.0  {CDN * cdf!r}  {CAN}  {CDT * cdf!
 ---------------------------- POINTS -------------------------------------------
 ID  Attachment  X       Y     Z      Mass   Volume  CdA    CA
 (#)   (-)       (m)     (m)   (m)    (kg)   (m^3)   (m^2)  (-)
-1     Coupled   {a[0][0]!r}  {a[0][1]!r}  {a[0][2]!r}  0.0  0.0  0.0  0.0
-2     Fixed     {a[1][0]!r}  {a[1][1]!r}  {a[1][2]!r}  0.0  0.0  0.0  0.0
-3     Fixed     {a[2][0]!r}  {a[2][1]!r}  {a[2][2]!r}  0.0  0.0  0.0  0.0
+1     {kinds[0]}   {a[0][0]!r}  {a[0][1]!r}  {a[0][2]!r}  0.0  0.0  0.0  0.0
+2     {kinds[1]}     {a[1][0]!r}  {a[1][1]!r}  {a[1][2]!r}  0.0  0.0  0.0  0.0
+3     {kinds[2]}     {a[2][0]!r}  {a[2][1]!r}  {a[2][2]!r}  0.0  0.0  0.0  0.0
 4     Free      {GUESS[0]!r}  {GUESS[1]!r}  {GUESS[2]!r}  {b['mass']!r}  {b['volume']!r}  {b['cda'] * cdf!r}  {b['ca']!r}
----------------------- LINES ----------------------------------------
+{fair}---------------------- LINES ----------------------------------------
 ID   LineType AttachA  AttachB  UnstrLen  NumSegs  LineOutputs
 (#)  (name)   (#)      (#)      (m)       (-)      (-)
 1    poly     1        4       {LENGTH!r}      {nodes - 1}      -
 2    poly     2        4       {LENGTH!r}      {nodes - 1}      -
 3    poly     3        4       {LENGTH!r}      {nodes - 1}      -
----------------------- OPTIONS -----------------------------------------
+{line4}---------------------- OPTIONS -----------------------------------------
 0        writeLog
 {dtm!r}   dtM
 RK4      tScheme
@@ -152,45 +178,48 @@ def md_start_state(path, nodes, start=None):
     if start is None:
         buoy = np.array(GUESS)
         lines = [[anchor(k) + (buoy - anchor(k)) * i / (nodes - 1) for i in range(nodes)] for k in range(3)]
+        if FAIR:
+            lines.append([buoy + (anchor(3) - buoy) * i / (nodes - 1) for i in range(nodes)])
     else:
         buoy = start[nodes - 1]
-        lines = [start[k * nodes:(k + 1) * nodes] for k in range(3)]
-    pts = [(0.0,) * 6, (0.0,) * 6, (0.0,) * 6, tuple(buoy) + (0.0, 0.0, 0.0)]
+        lines = [start[k * nodes:(k + 1) * nodes] for k in range(nlines())]
+    pts = [(0.0,) * 6, (0.0,) * 6, (0.0,) * 6, tuple(buoy) + (0.0, 0.0, 0.0)] + ([(0.0,) * 6] if FAIR else [])
     data = b""
     for ps in pts:
         data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *ps)
-    for k in range(3):
+    for k in range(nlines()):
         inner = lines[k][1:nodes - 1]
         data += struct.pack("<QQ", len(inner), 6)
         for p in inner:
             data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
     with open(path, "wb") as f:
         f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, 7))
+        f.write(struct.pack("<QQ", len(data) // 8 + 1, len(pts) + nlines()))
         f.write(data)
 
 
 def md_nodes(sysm, nodes):
     return np.vstack([np.array([moordyn.GetLineNodePos(moordyn.GetLine(sysm, k), i) for i in range(nodes)])
-                      for k in range(1, 4)])
+                      for k in range(1, nlines() + 1)])
 
 
 def md_measure(sysm, nodes):
     """buoy xyz, then per line (T_top, T_bottom): the end cells' EA strain vectors carried to the end."""
-    ds = LENGTH / (nodes - 1)
     out = list(moordyn.GetPointPos(moordyn.GetPoint(sysm, 4)))
-    for k in range(1, 4):
+    for k in range(1, nlines() + 1):
+        ds = lengths()[k - 1] / (nodes - 1)
         line = moordyn.GetLine(sysm, k)
         p = np.array([moordyn.GetLineNodePos(line, i) for i in (0, 1, 2, nodes - 3, nodes - 2, nodes - 1)])
         d = np.diff(p, axis=0)[[0, 1, 3, 4]]
         ln = np.linalg.norm(d, axis=1)
         tv = (EA * np.maximum(ln / ds - 1, 0.0) / ln)[:, None] * d
-        out += [np.linalg.norm(1.5 * tv[3] - 0.5 * tv[2]), np.linalg.norm(1.5 * tv[0] - 0.5 * tv[1])]
+        ends = [np.linalg.norm(1.5 * tv[3] - 0.5 * tv[2]), np.linalg.norm(1.5 * tv[0] - 0.5 * tv[1])]
+        out += ends[::-1] if k == 4 else ends   # line 4: the buoy is its end A
     return np.array(out)
 
 
 def md_dtm(nodes, courant):
-    k = int(math.ceil(SAMPLE / (courant * LENGTH / (nodes - 1) / math.sqrt(EA / MASS)) - 1e-9))
+    k = int(math.ceil(SAMPLE / (courant * min(lengths()) / (nodes - 1) / math.sqrt(EA / MASS)) - 1e-9))
     return SAMPLE / k, k
 
 
@@ -203,7 +232,7 @@ def md_statics(nodes, courant, work, settle=SETTLE, start=None):
     inp = os.path.join(work, "md_ic.txt")
     md_input(inp, nodes, dtm, ba=-1.0, cdf=SETTLE_CD)
     md_start_state(os.path.join(work, "start.state"), nodes, start)
-    xa = [float(v) for v in anchor(0)]
+    xa = [float(v) for v in coupled()]
     c0 = time.process_time()
     sysm = pc.moordyn_from_state(inp, xa, os.path.join(work, "start.state"))
     hist = []
@@ -224,7 +253,8 @@ def md_statics(nodes, courant, work, settle=SETTLE, start=None):
 
 def xcable_nodes(exe, nodes, work):
     path = os.path.join(work, "nodes.txt")
-    run = subprocess.run([exe, f"nodes={nodes}", "t_end=0", f"nodes_file={path}"], capture_output=True, text=True)
+    run = subprocess.run([exe, f"nodes={nodes}", "t_end=0", f"nodes_file={path}", f"fairlead={int(FAIR)}",
+                          f"fairlead_length={FAIR_LEN!r}"], capture_output=True, text=True)
     if run.returncode != 0:
         sys.exit("xcable failed: " + run.stderr.strip())
     return np.loadtxt(path)
@@ -235,8 +265,8 @@ def md_heave(nodes, courant, work, state, t_end=T_END):
     dtm, k = md_dtm(nodes, courant)
     inp = os.path.join(work, "md.txt")
     md_input(inp, nodes, dtm)
-    xa = anchor(0)
-    sysm = pc.moordyn_from_state(inp, list(xa), state)
+    xa = [float(v) for v in coupled()]
+    sysm = pc.moordyn_from_state(inp, xa, state)
     # (a loaded state shows in the nodes only after a step: row 0 is the static measure)
     rows = []
     c0, w0 = time.process_time(), time.perf_counter()
@@ -252,8 +282,15 @@ def md_heave(nodes, courant, work, state, t_end=T_END):
 
 
 def static_cols(s):
-    """xcable's static row (xyz, top 1..3, bottom 1..3) in the history's order (xyz, top/bottom per line)."""
-    return np.array([s[0], s[1], s[2], s[3], s[6], s[4], s[7], s[5], s[8]])
+    """xcable's static row (xyz, top of each line, bottom of each line) in the history's order (xyz,
+    top and bottom per line)."""
+    m = nlines()
+    return np.concatenate((s[:3], np.ravel(np.column_stack((s[3:3 + m], s[3 + m:3 + 2 * m])))))
+
+
+def by_end(s):
+    """A row in the history's order (xyz, top and bottom per line) as xyz, the tops, the bottoms."""
+    return np.concatenate((s[:3], s[3::2], s[4::2]))
 
 
 # ------------------------------------------------------------------ commands
@@ -280,18 +317,22 @@ def closed_form():
 
 def cmd_statics(args):
     print(f"MoorDyn {metadata.version('moordyn')}; nodes per line n (MoorDyn n - 1 segments)")
-    zc, tt, ta, res = closed_form()
-    print(f"closed form (continuum): buoy z {zc:.7f} m, tension at the buoy {tt:.3f} N, at the anchor {ta:.3f} N "
-          f"(span missed by {res:.1e} m)")
-    print("\n| code | nodes | buoy x m | buoy y m | buoy z m | T top 1 N | T top 2 N | T top 3 N | "
-          "T anchor 1 N | T anchor 2 N | T anchor 3 N | notes |")
-    print("|---|---|---|---|---|---|---|---|---|---|---|---|")
+    if not FAIR:
+        zc, tt, ta, res = closed_form()
+        print(f"closed form (continuum): buoy z {zc:.7f} m, tension at the buoy {tt:.3f} N, at the anchor {ta:.3f} N "
+              f"(span missed by {res:.1e} m)")
+    m = nlines()
+    print("\n| code | nodes | buoy x m | buoy y m | buoy z m | " + " | ".join(f"T top {k} N" for k in range(1, m + 1))
+          + " | " + " | ".join(f"T bottom {k} N" for k in range(1, m + 1)) + " | notes |")
+    print("|---" * (2 * m + 6) + "|")
     res = {}
     with tempfile.TemporaryDirectory() as work:
         for n in args.nodes:
             s, _, info = xcable_run(args.exe, n, 0.01, 0.0)
             res[("xcable", n)] = static_cols(s)
-            print(f"| xcable - closed form | {n} | | | {s[2] - zc:.2e} | {s[3] - tt:.4f} | | | {s[6] - ta:.4f} | | | |")
+            if not FAIR:
+                print(f"| xcable - closed form | {n} | | | {s[2] - zc:.2e} | {s[3] - tt:.4f} | | | {s[6] - ta:.4f} "
+                      "| | | |")
             print(f"| xcable | {n} | {s[0]:.2e} | {s[1]:.2e} | {s[2]:.7f} | " + " | ".join(f"{v:.3f}" for v in s[3:])
                   + f" | {info['own'].split(';')[0][2:]} |", flush=True)
         for n in args.nodes:
@@ -305,7 +346,7 @@ def cmd_statics(args):
                     _, s, drift, moved, cpu = md_statics(n, args.courant, work, args.settle_guess)
                     note = f"from straight lines, the buoy at {GUESS}, settled {args.settle_guess:g} s"
                     res[("MoorDyn own", n)] = s
-                sx = [s[0], s[1], s[2], s[3], s[5], s[7], s[4], s[6], s[8]]
+                sx = by_end(s)
                 print(f"| MoorDyn | {n} | {sx[0]:.2e} | {sx[1]:.2e} | {sx[2]:.7f} | "
                       + " | ".join(f"{v:.3f}" for v in sx[3:])
                       + f" | {note}; over the last 20 %: buoy moves {drift[0]:.1e} m, tensions {drift[1]:.1e} N; "
@@ -337,7 +378,8 @@ def label(k):
 
 
 def cmd_heave(args):
-    print(f"MoorDyn {metadata.version('moordyn')} RK4 at Courant {args.courant}; anchor 1 moves {AMP} m along x, "
+    print(f"MoorDyn {metadata.version('moordyn')} RK4 at Courant {args.courant}; "
+          f"{'the fairlead of line 4' if FAIR else 'anchor 1'} moves {AMP} m along x, "
           f"period {PERIOD} s (ramp {PERIOD} s), {T_END} s, sampled every {SAMPLE} s")
     runs = {}
     with tempfile.TemporaryDirectory() as work:
@@ -454,6 +496,7 @@ def main():
     ap.add_argument("--md-nodes", type=int, nargs="+", default=None)
     ap.add_argument("--xdt", type=float, nargs="+", default=[0.01, 0.005])
     ap.add_argument("--courant", type=float, default=0.5)
+    ap.add_argument("--fairlead", action="store_true", help="the fourth line to a surging fairlead")
     ap.add_argument("--settle", type=float, default=SETTLE, help="MoorDyn's settling from xcable's nodes, s")
     ap.add_argument("--settle-guess", type=float, default=SETTLE_GUESS, help="MoorDyn's own settling, s")
     ap.add_argument("--tsv", default="")
@@ -462,6 +505,7 @@ def main():
     ap.add_argument("--mruns", nargs="+", default=["21", "41", "81"])
     args = ap.parse_args()
     args.exe = os.path.abspath(args.exe)
+    globals()["FAIR"] = args.fairlead
     return {"statics": cmd_statics, "heave": cmd_heave, "timing": cmd_timing}[args.what](args)
 
 

@@ -4,7 +4,7 @@
 !>
 !>   fpm run --example network_spread --profile release -- [nodes=41] [dt=0.01] [t_end=60]
 !>       [sample=0.1] [mass=lumped|averaged] [tol=1e-10] [nodes_file=PATH]
-!>       [buoy_line=1]
+!>       [buoy_line=1] [fairlead=0] [fairlead_length=25.2]
 !>
 !> The scene. Sea water (1025 kg/m^3, g = 9.81 m/s^2, surface z = 0), a flat bottom at
 !> z = -100 m which no line reaches (there is no seabed in xcable's scene: the buoy holds the
@@ -18,20 +18,26 @@
 !> The motion: line 1's anchor moves along its line (x), X(t) = X0 + A w(t) sin(2 pi t / T),
 !> A = 2 m, T = 10 s, w = sin^2(pi t / (2 T)) for t < T, then 1 (a start from rest).
 !>
+!> With fairlead=1 the anchors stay fixed and a fourth line of the same rope, fairlead_length
+!> long, runs from the buoy (its end a) up to a fairlead at (0.5, 0, -5) m (end b), which surges
+!> along x by the same motion: a taut, nearly vertical line tilting either way, its tension rising
+!> at both ends of the stroke.
+!>
 !> How the network is built (there is no namelist input for networks yet): each line is a
 !> one-line case read from namelist text with its buoy end 'fixed' at the guess (0, 0, -30) m,
 !> prepared (its own statics), its 3-D run taken; network_run%init joins the three end b's at
 !> one free point; network_run%statics, then fixed steps of dt (implicit midpoint, theta 1/2).
 !>
 !> Output (stdout): comment lines start with '#'. The first other line is the static state:
-!>   buoy x y z, then the tension at the buoy of lines 1 2 3, then at the anchors of lines 1 2 3;
+!>   buoy x y z, then the tension at the buoy of lines 1 2 3 (4), then at their other ends;
 !> every other line is a sample (every `sample` s, from t = 0):
-!>   t, buoy x y z, then per line its tension at the buoy (top) and at the anchor (bottom).
+!>   t, buoy x y z, then per line its tension at the buoy ('top') and at its other end ('bottom':
+!>   the anchor, line 4's fairlead).
 !> End tensions: the tension vectors T_c e_c / |e_c| of the two end cells carried linearly to the
 !> end node, |1.5 T_1 - 0.5 T_2| (the same estimate bench/peer/network.py takes of MoorDyn's
 !> nodes). The last comment lines give the CPU and wall time of the statics and of the steps,
-!> and Newton's iterations. With nodes_file, the static nodes of lines 1, 2, 3 (x y z, from the
-!> anchor to the buoy, one node a line) are written to that file.
+!> and Newton's iterations. With nodes_file, the static nodes of lines 1, 2, 3 (4) (x y z, from end
+!> a to end b, one node a line) are written to that file.
 program network_spread
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type
@@ -46,7 +52,7 @@ program network_spread
    real(dp), parameter :: pi = acos(-1.0_dp)
    real(dp), parameter :: length = 106, radius = 80, depth = 100, guess(3) = [0.0_dp, 0.0_dp, -30.0_dp]
    real(dp), parameter :: mass = 16.6_dp, ea = 2.79e7_dp, diameter = 0.1376_dp
-   type(simulation) :: sims(3)
+   type(simulation) :: sims(4)
    type(rod3d_run), allocatable :: lines(:)
    type(network_run) :: net
    type(error_type), allocatable :: error
@@ -54,8 +60,9 @@ program network_spread
    character(len=64) :: arg
    character(len=16) :: mass_matrix
    character(len=512) :: nodes_file
-   integer :: unit, k, buoy_line
-   real(dp) :: dt, t_end, sample, tol, anchor(3), top(3), bottom(3), c0, c1, c2
+   integer :: unit, k, buoy_line, fairlead, nl4
+   real(dp) :: fairlead_length
+   real(dp) :: dt, t_end, sample, tol, anchor(3), top(4), bottom(4), c0, c1, c2
    integer :: nodes, i, l, steps, every, iterations
    integer(int64) :: w0, w1, w2, rate
 
@@ -67,6 +74,8 @@ program network_spread
    mass_matrix = 'lumped'
    nodes_file = ''
    buoy_line = 1
+   fairlead = 0
+   fairlead_length = 25.2_dp
    do i = 1, command_argument_count()
       call get_command_argument(i, arg)
       if (index(arg, 'nodes=') == 1) read (arg(7:), *) nodes
@@ -76,6 +85,8 @@ program network_spread
       if (index(arg, 'mass=') == 1) mass_matrix = arg(6:)
       if (index(arg, 'tol=') == 1) read (arg(5:), *) tol
       if (index(arg, 'buoy_line=') == 1) read (arg(11:), *) buoy_line
+      if (index(arg, 'fairlead=') == 1) read (arg(10:), *) fairlead
+      if (index(arg, 'fairlead_length=') == 1) read (arg(17:), *) fairlead_length
       if (index(arg, 'nodes_file=') == 1) call get_command_argument(i, nodes_file)
    end do
    every = nint(sample/dt)
@@ -94,14 +105,21 @@ program network_spread
 
    call cpu_time(c0)
    call system_clock(w0, rate)
-   allocate (lines(3))
-   do l = 1, 3
+   nl4 = merge(4, 3, fairlead == 1)
+   allocate (lines(nl4))
+   do l = 1, nl4
       anchor = [radius*cos(2*pi/3*(l - 1)), radius*sin(2*pi/3*(l - 1)), -depth]
+      if (l == 4) anchor = [0.5_dp, 0.0_dp, -5.0_dp]
       call prepare_line(l, anchor, sims(l), error)
       call stop_on(error)
       lines(l) = sims(l)%rod3%pieces(1)%run
    end do
-   call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 2, 1), network_joint(3, 2, 1)], 1, error)
+   if (nl4 == 4) then
+      call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 2, 1), network_joint(3, 2, 1), &
+                            network_joint(4, 1, 1)], 1, error)
+   else
+      call net%init(lines, [network_joint(1, 2, 1), network_joint(2, 2, 1), network_joint(3, 2, 1)], 1, error)
+   end if
    call stop_on(error)
    call net%statics(0.0_dp, error)
    call stop_on(error)
@@ -109,7 +127,7 @@ program network_spread
    call system_clock(w1)
    if (len_trim(nodes_file) > 0) then
       open (newunit=unit, file=trim(nodes_file(12:)), status='replace', action='write')
-      do l = 1, 3
+      do l = 1, nl4
          do k = 1, net%lines(l)%problem%piece%n
             write (unit, '(3es25.16e3)') net%lines(l)%x(3*k - 2:3*k)
          end do
@@ -117,14 +135,15 @@ program network_spread
       close (unit)
    end if
 
-   write (output_unit, '(a,i0,a,es10.3,a,a,a,es8.1,a,i0,a)') '# network_spread: nodes ', nodes, ', dt ', dt, &
-      ' s, mass matrix ', trim(mass_matrix), ', newton_tol ', tol, '; statics in ', net%last_iterations, ' iterations'
-   write (output_unit, '(a)') '# static: buoy_x buoy_y buoy_z T_top_1 T_top_2 T_top_3 T_bottom_1 T_bottom_2 T_bottom_3'
-   do l = 1, 3
-      call end_tensions(net%lines(l), top(l), bottom(l))
+   write (output_unit, '(a,i0,a,i0,a,es10.3,a,a,a,es8.1,a,i0,a)') '# network_spread: ', nl4, ' lines, nodes ', &
+      nodes, ', dt ', dt, ' s, mass matrix ', trim(mass_matrix), ', newton_tol ', tol, '; statics in ', &
+      net%last_iterations, ' iterations'
+   write (output_unit, '(a)') '# static: buoy_x buoy_y buoy_z, T_top of each line, T_bottom of each line'
+   do l = 1, nl4
+      call end_tensions(l, net%lines(l), top(l), bottom(l))
    end do
-   write (output_unit, '(3f16.9,6f16.6)') net%xp(:, 1), top, bottom
-   write (output_unit, '(a)') '# t buoy_x buoy_y buoy_z T_top_1 T_bottom_1 T_top_2 T_bottom_2 T_top_3 T_bottom_3'
+   write (output_unit, '(3f16.9,8f16.6)') net%xp(:, 1), top(1:nl4), bottom(1:nl4)
+   write (output_unit, '(a)') '# t buoy_x buoy_y buoy_z, then T_top T_bottom of each line'
    call sample_row()
    iterations = net%iterations
    do i = 1, steps
@@ -158,13 +177,21 @@ contains
              "&fluid density = 1025.0, surface_z = 0.0, cd_normal = 1.2, cd_tangential = 0.008, ca_normal = 1.0 /"//nl// &
              "&numerics model = '3d', mass_matrix = '"//trim(mass_matrix)//"', newton_tol = "//r(tol)// &
              ", nodes = "//i2s(nodes)//" /"//nl
-      if (l == 1) then
-         text = text//"&end_a kind = 'motion', motion = 'harmonic', amplitude = 2.0, period = 10.0, "// &
+      if (l == 4) then
+         ! The fairlead line: end a at the buoy, end b the surging fairlead.
+         text = replace_length(text, fairlead_length)
+         text = text//"&end_a kind = 'fixed', "//xyz(guess)//" /"//nl// &
+                "&end_b kind = 'motion', motion = 'harmonic', amplitude = 2.0, period = 10.0, "// &
                 "ramp_time = 10.0, direction_x = 1.0, direction_y = 0.0, direction_z = 0.0, "//xyz(anchor)//" /"//nl
       else
-         text = text//"&end_a kind = 'fixed', "//xyz(anchor)//" /"//nl
+         if (l == 1 .and. fairlead /= 1) then
+            text = text//"&end_a kind = 'motion', motion = 'harmonic', amplitude = 2.0, period = 10.0, "// &
+                   "ramp_time = 10.0, direction_x = 1.0, direction_y = 0.0, direction_z = 0.0, "//xyz(anchor)//" /"//nl
+         else
+            text = text//"&end_a kind = 'fixed', "//xyz(anchor)//" /"//nl
+         end if
+         text = text//"&end_b kind = 'fixed', "//xyz(guess)//" /"//nl
       end if
-      text = text//"&end_b kind = 'fixed', "//xyz(guess)//" /"//nl
       call get_environment_variable('TMPDIR', path)
       if (len_trim(path) == 0) path = '/tmp'
       path = trim(path)//'/network_spread_'//i2s(getpid_safe())//'_'//i2s(l)//'.nml'
@@ -191,13 +218,25 @@ contains
       getpid_safe = int(mod(count, 100000000_int64))
    end function getpid_safe
 
-   !> The tensions at end b (the buoy) and end a (the anchor) of a line.
-   subroutine end_tensions(run, t_top, t_bottom)
+   !> The tensions of line l at the buoy (end b of lines 1 to 3, end a of line 4) and at its other end.
+   subroutine end_tensions(l, run, t_top, t_bottom)
+      integer, intent(in) :: l
       type(rod3d_run), intent(in) :: run
       real(dp), intent(out) :: t_top, t_bottom
-      t_bottom = end_tension(run, 1)
-      t_top = end_tension(run, 2)
+      t_bottom = end_tension(run, merge(2, 1, l == 4))
+      t_top = end_tension(run, merge(1, 2, l == 4))
    end subroutine end_tensions
+
+   !> The case text with the cable's length replaced (the first 'length = ' of &cable).
+   function replace_length(text, value) result(out)
+      character(*), intent(in) :: text
+      real(dp), intent(in) :: value
+      character(len=:), allocatable :: out
+      integer :: i, j
+      i = index(text, 'length = ') + len('length = ')
+      j = i + index(text(i:), ',') - 1
+      out = text(:i - 1)//r(value)//text(j:)
+   end function replace_length
 
    !> |1.5 T_1 - 0.5 T_2| of the two end cells' tension vectors at side 1 (node 1) or 2 (node n), N.
    real(dp) function end_tension(run, side) result(t)
@@ -215,12 +254,12 @@ contains
    end function end_tension
 
    subroutine sample_row()
-      real(dp) :: tt(2, 3)
+      real(dp) :: tt(2, 4)
       integer :: k
-      do k = 1, 3
-         call end_tensions(net%lines(k), tt(1, k), tt(2, k))
+      do k = 1, nl4
+         call end_tensions(k, net%lines(k), tt(1, k), tt(2, k))
       end do
-      write (output_unit, '(f10.4,3f16.9,6f16.6)') net%t, net%xp(:, 1), tt
+      write (output_unit, '(f10.4,3f16.9,8f16.6)') net%t, net%xp(:, 1), tt(:, 1:nl4)
    end subroutine sample_row
 
    subroutine stop_on(error)

@@ -293,11 +293,6 @@ contains
             ' s, checkpoint '//checkpoint//' written, but: '//write_error%message
          stop 1, quiet=.true.
       end if
-      if (sim%is_network) then
-         write (error_unit, '(a)') 'xcable: interrupted (SIGTERM) at t = '//str(summary%time_reached)//' s; a '// &
-            'network of lines has no checkpoint yet: run it again from the start'
-         stop 3, quiet=.true.
-      end if
       write (error_unit, '(a)') 'xcable: interrupted (SIGTERM) at t = '//str(summary%time_reached)//' s; checkpoint '// &
          checkpoint//'; continue with: xcable --resume '//trim(path)
       stop 3, quiet=.true.

@@ -35,6 +35,8 @@
 # The box scheme the same two ways (the paper's rupture at 180 kN, 961 nodes, 2366 steps, about
 # 1 s): killed after its first checkpoint and resumed, and stopped by SIGTERM and resumed; both
 # equal their reference bit for bit.
+# A network of lines (input/buoy_spread.nml, 20 s) stopped by SIGTERM and resumed equals its
+# reference bit for bit.
 # Then 24 SIGKILLs placed inside the 3-D run's file writes (a preloaded
 # library counts write calls; needs a C compiler): each resume equals the
 # reference or is refused with exit 2; none completes with other numbers.
@@ -46,6 +48,7 @@ set -u
 exe=${1:-bin/xcable}
 [[ -x $exe ]] || { echo "test_checkpoint: no executable $exe (make build first)" >&2; exit 1; }
 exe=$(cd "$(dirname "$exe")" && pwd)/$(basename "$exe")
+root=$(cd "$(dirname "$0")/.." && pwd)
 for tool in h5diff h5dump md5sum; do
    command -v "$tool" >/dev/null || { echo "test_checkpoint: $tool not found (hdf5-tools, coreutils)" >&2; exit 1; }
 done
@@ -431,6 +434,30 @@ EOF
    check "24 kills inside file writes ($total writes in the run): $equal resumed bit for bit, $refused refused, $early before a checkpoint, $wrong wrong" \
       test "$wrong" -eq 0 -a "$equal" -ge 12
 fi
+
+echo "test_checkpoint: a network of lines, SIGTERM, then --resume"
+# input/buoy_spread.nml shortened: three lines at a free buoy, 4912 steps.
+sed -e "s#results/buoy_spread.h5#refnet.h5#" -e "s/t_end = 40.0/t_end = 20.0/" -e "s/energy = .true. \//energy = .true., gnuplot = .true. \//" "$root/input/buoy_spread.nml" >refnet.nml
+sed -e "s#refnet.h5#stopnet.h5#" refnet.nml >stopnet.nml
+"$exe" refnet.nml 2>refnet.err
+check "the network's reference run completes" test "$(status_of refnet.h5)" = complete
+"$exe" stopnet.nml 2>stopnet.err &
+pid=$!
+wait_for 120 running stopnet.h5
+sleep 0.3
+kill -TERM "$pid" 2>/dev/null
+wait "$pid"
+code=$?
+pid=""
+check "network, SIGTERM: exit 3, 'interrupted', a checkpoint" \
+   test "$code" -eq 3 -a "$(status_of stopnet.h5)" = interrupted -a -s stopnet.h5.ckpt
+not_same_net() { ! same_as_reference stopnet refnet >/dev/null; }
+check "control: the comparison tells the interrupted network from its reference" not_same_net
+"$exe" --resume stopnet.nml >stopnet.out 2>stopnet.rerr
+code=$?
+check "network, --resume: exit $code, 'complete', no checkpoint left" \
+   test "$code" -eq 0 -a "$(status_of stopnet.h5)" = complete -a ! -e stopnet.h5.ckpt
+check "network: the resumed run equals its reference bit for bit" same_as_reference stopnet refnet
 
 echo "test_checkpoint: $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s, $passes passed, $failures failed"
 ((failures == 0))

@@ -23,19 +23,27 @@ contains
    !> labels (end_a, end_b; break_a, break_b with a break inside the cable), room for capacity
    !> records, the ledger when it is kept, the ends' y components (with_y: a 3-D model) and the
    !> loads' measures.
-   subroutine open_history(run, capacity, with_y)
+   subroutine open_history(run, capacity, with_y, end_labels)
       !> Run.
       type(rod_run), intent(inout) :: run
       !> Records to make room for.
       integer, intent(in) :: capacity
       !> Keep the ends' y components.
       logical, intent(in) :: with_y
+      !> The ends' labels (default: end_a, end_b, and break_a, break_b with a break inside the
+      !> cable; a network of lines gives its own).
+      character(len=8), intent(in), optional :: end_labels(:)
       integer :: n_ends
-      n_ends = merge(4, 2, run%break_node > 0)
       if (allocated(run%history%end_labels)) deallocate (run%history%end_labels)
-      allocate (run%history%end_labels(n_ends))
-      run%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
-      if (n_ends == 4) run%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      if (present(end_labels)) then
+         n_ends = size(end_labels)
+         run%history%end_labels = end_labels
+      else
+         n_ends = merge(4, 2, run%break_node > 0)
+         allocate (run%history%end_labels(n_ends))
+         run%history%end_labels(1:2) = [character(len=8) :: 'end_a', 'end_b']
+         if (n_ends == 4) run%history%end_labels(3:4) = [character(len=8) :: 'break_a', 'break_b']
+      end if
       call run%history%reserve(capacity, n_ends, run%options%energy, with_y=with_y)
       ! (The box scheme's run has no scene loads.)
       if (allocated(run%scene%loads)) call run%history%keep_measures(measure_names(run%scene%loads))
@@ -122,7 +130,7 @@ contains
    !> rod_run's exchange_state, rod3d_drive's exchange3): every history record (with the y
    !> components, ends_y, of a 3-D run) and the summary's counters and extremes; loading opens
    !> the history (open_history) with room for the rest of the run.
-   subroutine exchange_records(self, a, saving, error, with_y)
+   subroutine exchange_records(self, a, saving, error, with_y, end_labels)
       !> Run.
       type(rod_run), intent(inout) :: self
       !> Archive.
@@ -133,6 +141,8 @@ contains
       type(error_type), allocatable, intent(inout) :: error
       !> The y components too (a 3-D run; default .false.).
       logical, intent(in), optional :: with_y
+      !> The ends' labels, when not the cable's own (a network of lines).
+      character(len=8), intent(in), optional :: end_labels(:)
       integer :: n_records
       logical :: y_kept
       y_kept = .false.
@@ -147,7 +157,8 @@ contains
                              str(a%stored_size('history/time'))//' times', stat_input)
             return
          end if
-         call open_history(self, max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, y_kept)
+         call open_history(self, max(n_records, int(min(self%options%t_end/self%dt, real(max_steps, dp)))) + 16, y_kept, &
+                           end_labels)
          self%history%n = n_records
       end if
       associate (h => self%history, m => n_records)

@@ -12,9 +12,9 @@
 !> The step is the one step loop's, from the shortest of the lines' steps (each line's
 !> Courant number at its static state); a step the network's Newton does not take is taken
 !> again shorter, as any model's. The checks of a new state are each line's (its strain
-!> range, the fold check). What a network does not have yet: a break (the input refuses
-!> &rupture), checkpoints (a run is not paused for one: it says so and goes on), the loads'
-!> measures in the history.
+!> range, the fold check). Checkpoints as the 3-D run's: each line's state where that run keeps
+!> a piece's, the free points and their work besides. What a network does not have yet: a
+!> break (the input refuses &rupture), the loads' measures in the history.
 module xcable_driver_network_drive
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
@@ -24,7 +24,9 @@ module xcable_driver_network_drive
    use xcable_driver_network, only: network_run
    use xcable_driver_records, only: run_observer, note_min_strain
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
-   use xcable_io_archive, only: state_archive
+   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints
+   use xcable_driver_rod_run, only: exchange_progress
+   use xcable_driver_history, only: exchange_records, open_history
    use xcable_model_rod3d, only: rod3d_piece
    implicit none
    private
@@ -63,6 +65,8 @@ module xcable_driver_network_drive
       procedure :: conclude => drive_conclude
       procedure :: save_state => drive_save_state
       procedure :: load_state => drive_load_state
+      !> The history's ends, two per line.
+      procedure :: open_history => drive_open_history
       !> The output's fields of the current state (n_out, n_fields) and (n_out, n_fields3).
       procedure :: state_fields => drive_state_fields
    end type network_drive
@@ -87,10 +91,7 @@ contains
       class(run_observer), intent(inout), optional :: observer
       type(error_type), allocatable, intent(out) :: error
       integer :: l
-      if (allocated(run%history%end_labels)) deallocate (run%history%end_labels)
-      allocate (run%history%end_labels(2*size(self%lines)))
-      run%history%end_labels = network_end_labels(size(self%lines))
-      call run%history%reserve(16, size(run%history%end_labels), run%options%energy, with_y=.true.)
+      call self%open_history(run)
       do l = 1, size(self%lines)
          self%lines(l)%x_prev = self%net%lines(l)%x
          self%lines(l)%v_prev = self%net%lines(l)%v
@@ -100,6 +101,14 @@ contains
       if (.not. allocated(error)) call observer%snapshot(0.0_dp, run%info%fields, error)
       if (.not. allocated(error)) call observer%snapshot_extra(0.0_dp, field3_names, self%static_extra, error)
    end subroutine drive_begin
+
+   !> The history's ends: two per line (line_1_a, line_1_b, ...), with room for a few records
+   !> (at the preparation: a resumed run reads its records into it).
+   subroutine drive_open_history(self, run)
+      class(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: run
+      call open_history(run, 16, .true., network_end_labels(size(self%lines)))
+   end subroutine drive_open_history
 
    subroutine drive_attempt(self, run, h, iterations, retry_same, error)
       class(network_drive), intent(inout) :: self
@@ -285,19 +294,102 @@ contains
       end if
    end subroutine drive_conclude
 
-   !> No checkpoints of a network yet: archive%ok stays false (the run goes on).
+   !> Save the state between two steps: the run's progress and records, each line's state and
+   !> ledger (as the 3-D run's pieces: rod3d/ for line 1, rod3d/<l>/ for line l), the free
+   !> points and the points' work.
    subroutine drive_save_state(self, run, archive)
       class(network_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       class(state_archive), intent(inout) :: archive
-      archive%ok = .false.
+      type(error_type), allocatable :: error
+      call exchange(self, run, archive, .true., error)
    end subroutine drive_save_state
 
+   !> Load a state saved by save_state into a network prepared from the same case.
    subroutine drive_load_state(self, run, archive, error)
       class(network_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       class(state_archive), intent(inout) :: archive
       type(error_type), allocatable, intent(out) :: error
-      call fatal_error(error, 'a network of lines has no checkpoints yet: run it again without --resume', stat_input)
+      integer :: l
+      call exchange(self, run, archive, .false., error)
+      if (allocated(error)) return
+      if (.not. archive%ok) then
+         call fatal_error(error, archive%message, stat_input)
+         return
+      end if
+      self%net%t = run%t
+      self%net%xp_old = self%net%xp
+      do l = 1, size(self%lines)
+         self%net%lines(l)%t = run%t
+         self%net%lines(l)%work%usable = .false.
+      end do
+      call system_clock(run%clock%start, run%clock%rate)
+      run%clock%last_report = 0
+      run%clock%last_checkpoint = 0
+      run%clock%records_at_checkpoint = run%history%n
    end subroutine drive_load_state
+
+   subroutine exchange(self, rod, a, saving, error)
+      type(network_drive), intent(inout) :: self
+      type(rod_run), intent(inout) :: rod
+      class(state_archive), intent(inout) :: a
+      logical, intent(in) :: saving
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n, iterations(2), n_lines, l, points
+      real(dp) :: ledger(4), work(1)
+      character(:), allocatable :: prefix
+      call sync_real(a, 'run/t', rod%t, saving)
+      call sync_real(a, 'run/dt', rod%dt, saving)
+      call exchange_progress(rod, a, saving)
+      n_lines = size(self%lines)
+      points = self%net%points
+      call sync_int(a, 'network/lines', n_lines, saving)
+      call sync_int(a, 'network/points', points, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (n_lines /= size(self%lines) .or. points /= self%net%points) then
+            call fatal_error(error, 'the checkpoint holds a network of '//str(n_lines)//' lines and '//str(points)// &
+                             ' free points, this case '//str(size(self%lines))//' and '//str(self%net%points), stat_input)
+            return
+         end if
+      end if
+      call sync_matrix(a, 'network/xp', self%net%xp, saving)
+      work = self%net%joint_work
+      call sync_reals(a, 'network/joint_work', work, saving)
+      iterations = [self%net%iterations, 0]
+      call sync_ints(a, 'network/newton_iterations', iterations, saving)
+      if (.not. saving) then
+         self%net%joint_work = work(1)
+         self%net%iterations = iterations(1)
+      end if
+      do l = 1, n_lines
+         prefix = 'rod3d/'
+         if (l > 1) prefix = 'rod3d/'//str(l)//'/'
+         associate (run => self%net%lines(l))
+            n = run%problem%piece%n
+            call sync_int(a, prefix//'nodes', n, saving)
+            if (.not. saving) then
+               if (.not. a%ok) return
+               if (n /= run%problem%piece%n) then
+                  call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in line '//str(l)// &
+                                   ', this case '//str(run%problem%piece%n), stat_input)
+                  return
+               end if
+            end if
+            call sync_reals(a, prefix//'x', run%x, saving)
+            call sync_matrix(a, prefix//'v', run%v, saving)
+            ledger = [run%energy0, run%end_work, run%load_work, run%dissipated]
+            call sync_reals(a, prefix//'ledger', ledger, saving)
+            call sync_matrix(a, prefix//'reaction', self%lines(l)%reaction, saving)
+            if (.not. saving) then
+               run%energy0 = ledger(1)
+               run%end_work = ledger(2)
+               run%load_work = ledger(3)
+               run%dissipated = ledger(4)
+            end if
+         end associate
+      end do
+      call exchange_records(rod, a, saving, error, with_y=.true., end_labels=network_end_labels(n_lines))
+   end subroutine exchange
 end module xcable_driver_network_drive

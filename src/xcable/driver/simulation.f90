@@ -272,6 +272,7 @@ contains
       end associate
       self%rod%info%max_tension = maxval(fields(:, 1))
       self%rod%info%one_line = .false.
+      call self%network%open_history(self%rod)
       ! The static resolution check on the network's state (the lines' ends, joints included, turn no cells).
       self%rod%static_max_turn = 0
       do l = 1, config%line_count
@@ -682,8 +683,7 @@ contains
          do
             call advance_dynamics(self%rod, model, observer, error, pause)
             if (allocated(error) .or. pause == pause_none) exit
-            ! A network of lines has no checkpoints yet (driver/network_drive.f90): SIGTERM only stops it.
-            if (.not. self%is_network) call write_checkpoint(self, error)
+            call write_checkpoint(self, error)
             if (allocated(error)) exit
             if (pause == pause_termination) then
                self%interrupted = .true.
@@ -732,12 +732,10 @@ contains
       self%checkpoints%fingerprint = fingerprint
       self%checkpoints%run_id = run_id
       self%checkpoints%interval = interval
-      if (self%is_network) self%checkpoints%interval = 0
       self%checkpoints%on_termination = on_termination
       self%checkpoints%every_steps = 0
       if (present(every_steps)) self%checkpoints%every_steps = every_steps
-      self%rod%options%checkpoint_interval = self%checkpoints%interval
-      if (self%is_network) self%checkpoints%every_steps = 0
+      self%rod%options%checkpoint_interval = interval
       self%rod%options%checkpoint_steps = self%checkpoints%every_steps
       self%rod%options%stop_on_termination = on_termination
    end subroutine sim_enable_checkpoints

@@ -13,8 +13,9 @@
 !> Courant number at its static state); a step the network's Newton does not take is taken
 !> again shorter, as any model's. The checks of a new state are each line's (its strain
 !> range, the fold check). Checkpoints as the 3-D run's: each line's state where that run keeps
-!> a piece's, the free points and their work besides. What a network does not have yet: a
-!> break (the input refuses &rupture), the loads' measures in the history.
+!> a piece's, the free points and their work besides. The loads' measures (wetted and grounded
+!> length) are the sums over the lines. What a network does not have yet: a break (the input
+!> refuses &rupture).
 module xcable_driver_network_drive
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
@@ -28,6 +29,7 @@ module xcable_driver_network_drive
    use xcable_driver_rod_run, only: exchange_progress
    use xcable_driver_history, only: exchange_records, open_history
    use xcable_model_rod3d, only: rod3d_piece
+   use xcable_loads_load, only: load_measures
    implicit none
    private
    public :: network_drive, network_end_labels
@@ -222,10 +224,15 @@ contains
       integer :: l, side, k, n, slot
       integer, allocatable :: columns(:)
       en = 0
+      measures = 0
       do l = 1, size(self%lines)
          associate (run3 => self%net%lines(l), piece => self%net%lines(l)%problem%piece, x => self%net%lines(l)%x)
             n = piece%n
             call piece%geometry(reshape(x(1:3*n), [3, n]), piece%e1, piece%l1, piece%th1)
+            ! The loads' measures (the wetted and grounded lengths) of the whole network: each line's
+            ! own loads (the same kinds in every line: &fluid and &seabed are the network's).
+            if (size(measures) > 0 .and. allocated(piece%loads)) &
+               call load_measures(piece%loads, reshape(x(1:3*n), [3, n]), piece%ds, measures, piece%s)
             do side = 1, 2
                slot = 2*(l - 1) + side
                k = merge(1, n, side == 1)

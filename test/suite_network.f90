@@ -352,7 +352,7 @@ contains
       type(simulation) :: one, net
       type(case_config) :: c
       character(:), allocatable :: run, guess
-      real(dp) :: worst, drift, top
+      real(dp) :: worst, drift, top, wet
       integer :: i
       run = ", dt = 0.025, t_end = 1.0 /"//nl//"&output energy = .true. /"
       call write_text(path, common//one_line(run)// &
@@ -395,6 +395,13 @@ contains
          end do
          worst = worst/top
          drift = maxval(abs(h2%energy(7, 0:h2%n) - h2%energy(7, 0)))/maxval(abs(h2%energy(1:4, 0:h2%n)))
+         ! The wetted length (the fluid's measure) of the two lines is that of the one line.
+         call check(error, allocated(h2%measures), 'the network''s history has no load measures')
+         if (allocated(error)) return
+         wet = maxval(abs(h1%measures(1, 0:h1%n) - h2%measures(1, 0:h2%n)))
+         call check(error, wet < 1.0e-9_dp .and. minval(h2%measures(1, 0:h2%n)) > 89, 'the network''s wetted '// &
+                    'length is off the one line''s by '//str(wet)//' m')
+         if (allocated(error)) return
       end associate
       write (output_unit, '(4x,a,es9.2,a,es9.2)') 'through the input: the ends'' tensions ', worst, &
          ' of the largest off the one line''s; the network''s ledger ', drift

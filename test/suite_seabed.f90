@@ -46,6 +46,7 @@ contains
                new_unittest('line_too_long_to_be_taut_explained', test_too_long), &
                new_unittest('nearly_slack_line_paid_in_closed_form', test_paid_in), &
                new_unittest('slack_rope_on_the_bottom_refused', test_slack_refused), &
+               new_unittest('end_resting_on_the_bottom_laid_closed_form', test_laid), &
                new_unittest('bathymetry_of_a_plane_is_the_plane', test_bathymetry_plane), &
                new_unittest('bathymetry_across_the_line_3d', test_bathymetry_3d), &
                new_unittest('bathymetry_with_a_bend_ledger_and_derivatives', test_bathymetry_bend), &
@@ -789,6 +790,60 @@ contains
       write (output_unit, '(4x,a,2f12.3,a)') 'end held on the bottom 21 m out: tensions', keep%tension, ' N'
       call check(error, keep%tension(2) > 0, 'the end held on the bottom: the line is not taut')
    end subroutine test_slack_refused
+
+   !> A loose end resting on the bottom under a pull along it (lay_down of model/rod_statics.f90):
+   !> the 60 m line of test_slack_refused (rope that cannot push, EI 1e-3 N m^2) hanging from a
+   !> point 40 m over a flat, stiff bottom (1e10 Pa), its end b pulled along the bottom by 50 N,
+   !> 481 nodes; before, no statics. The grounded part carries the 50 N; the top's tension against
+   !> the elastic catenary whose tangent is horizontal at the bottom, H = 50 N: Z = (H/w)(sqrt(1 +
+   !> (w L_s/H)^2) - 1) + w L_s^2/(2 EA), T = sqrt(H^2 + (w L_s)^2) = 3054.808 N. Measured 2.0e-6
+   !> (4.9e-5 at 241 nodes). And the free end on a bottom rising 10 % along x: the line lies
+   !> downhill (towards -x), taut from its free end, found (before, no statics).
+   subroutine test_laid(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(static_keeper) :: keep
+      character(len=*), parameter :: nl = new_line('a')
+      character(len=*), parameter :: line = &
+         "&cable length = 60, diameter = 0.1, density = 2000, bending_stiffness = 1e-3 /"//nl// &
+         "&material law = 'linear', ea = 1e8, compression = 'none' /"//nl// &
+         "&fluid density = 1025, surface_z = 10 /"//nl// &
+         "&end_a kind = 'fixed', x = 0, z = 0 /"//nl//"&rupture enabled = .false. /"//nl// &
+         "&output interval = 0, quiet = .true. /"//nl
+      real(dp), parameter :: hh = 50, drop = 40, ea = 1.0e8_dp
+      real(dp) :: w, ls, lo, hi, top, err
+      integer :: it
+      w = (2000 - 1025)*0.25_dp*pi*0.1_dp**2*g
+      ! The suspended length by bisection on the height.
+      lo = drop
+      hi = 2*drop
+      do it = 1, 200
+         ls = 0.5_dp*(lo + hi)
+         if ((hh/w)*(sqrt(1 + (w*ls/hh)**2) - 1) + w*ls**2/(2*ea) > drop) then
+            hi = ls
+         else
+            lo = ls
+         end if
+      end do
+      top = hypot(hh, w*ls)
+      call run_text(path, line//"&seabed depth = 40, stiffness = 1e10 /"//nl// &
+                    "&end_b kind = 'force', force_x = 50 /"//nl// &
+                    "&numerics nodes = 481, dt = 1e-3, t_end = 1e-3 /", sim, keep, error)
+      if (allocated(error)) return
+      err = abs(keep%tension(1) - top)/top
+      write (output_unit, '(4x,a,2f12.4,a,f12.4,a,es9.2)') 'end pulled along the bottom by 50 N: tensions', &
+         keep%tension, ' N; closed form at the top', top, ' N; relative error', err
+      call check(error, err < 1.0e-5_dp .and. abs(keep%tension(2) - hh) < 1.0e-6_dp*hh, 'the line laid on the '// &
+                 'bottom is off its closed form: top '//str(err)//', end '//str(keep%tension(2)))
+      if (allocated(error)) return
+      call run_text(path, line//"&seabed depth = 40, slope_x = 0.1 /"//nl//"&end_b kind = 'free' /"//nl// &
+                    "&numerics nodes = 61, dt = 1e-3, t_end = 1e-3 /", sim, keep, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,2f12.4,a,f9.3,a)') 'free end on a bottom rising 10 %: tensions', keep%tension, &
+         ' N, the free end at x =', keep%x(size(keep%x)), ' m'
+      call check(error, keep%x(size(keep%x)) < -10 .and. keep%tension(1) > 0, 'the free end does not lie downhill: '// &
+                 str(keep%x(size(keep%x))))
+   end subroutine test_laid
 
    !> The chain of input/chain_mooring_heave.nml (its seabed 60 m down rising 2 % along x,
    !> friction) heaved for 6 s, with the plane given as &seabed depth and slope_x, and as a

@@ -34,6 +34,7 @@ module xcable_model_rod_statics
    use xcable_loads_load, only: load_slot, loads_in_statics, any_static_form
    use xcable_model_rod, only: rod_problem, rod_piece, rod_section, rod_kl, rod_ku, collapsed_length
    use xcable_ends_fixed, only: fixed_end
+   use xcable_ends_force, only: force_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
    use xcable_solver_banded, only: band_matrix
@@ -65,6 +66,9 @@ module xcable_model_rod_statics
    !> The step of the pay-in (a share of the offset) from which a failed Newton solve is followed by
    !> the relaxation from the last state.
    real(dp), parameter :: payout_relax_share = 1.0_dp/64
+   !> The pull with which the statics lay a loose end on a seabed (lay_down) before letting it go
+   !> to its own load: the touchdown bend's radius H / w over this many cells.
+   real(dp), parameter :: lay_pull_cells = 5
    !> The sideways offset of the folded first guess of a slack line between ends one above the
    !> other (folded_guess), a share of the line's length.
    real(dp), parameter :: fold_offset = 0.1_dp
@@ -380,6 +384,136 @@ contains
          deallocate (err)
       end subroutine pay_in
 
+      !> One end held, the other loose (not state-dependent) and resting on a seabed under a pull
+      !> along it, the direct solve failed: Newton from the line laid on the bottom. The horizontal
+      !> tension H of the grounded part is the loose end's horizontal force (or, with none, its
+      !> weight down the bottom's slope, w (L - drop) |slope|: a free end on a slope lies downhill);
+      !> the guess is the catenary from the held end whose tangent is horizontal where it reaches
+      !> the floor (suspended length sqrt(drop^2 + 2 drop H / w)), then straight along the floor,
+      !> away from the held end in the direction of that pull. Solved with the laws' compressive
+      !> branch first (uncut_laws), then with the laws themselves. err in: the direct path's
+      !> error; out: unchanged (with why this failed) or none.
+      subroutine lay_down(err)
+         type(error_type), allocatable, intent(inout) :: err
+         type(error_type), allocatable :: sub
+         class(end_condition), allocatable :: own_loose
+         real(dp) :: top(2), load(2), drop, hh, hh0, ls, slope, sgn, d, ss(n), rr(2, n), eps(n), ten(n), xs
+         real(dp) :: done, step, try
+         real(dp), allocatable :: r_good(:, :)
+         logical :: held_a, cut
+         integer :: k, j
+         held_a = problem%piece%end_a%held()
+         if (held_a .eqv. problem%piece%end_b%held()) return
+         if (held_a) then
+            if (problem%piece%end_b%state_dependent() .or. problem%piece%end_b%point_mass() /= 0) return
+            load = problem%piece%end_b%applied_force(0.0_dp)
+            top = problem%piece%end_a%position(0.0_dp)
+         else
+            if (problem%piece%end_a%state_dependent() .or. problem%piece%end_a%point_mass() /= 0) return
+            load = problem%piece%end_a%applied_force(0.0_dp)
+            top = problem%piece%end_b%position(0.0_dp)
+         end if
+         if (floor_at(top(1)) <= -huge(1.0_dp) .or. .not. scene%weight > 0) return
+         drop = top(2) - floor_at(top(1))
+         d = 0.5_dp*scene%length
+         slope = (floor_at(top(1) + d) - floor_at(top(1) - d))/(2*d)
+         if (load(1) /= 0) then
+            hh = abs(load(1))
+            sgn = sign(1.0_dp, load(1))
+         else if (slope /= 0) then
+            hh = scene%weight*max(scene%length - drop, 0.0_dp)*abs(slope)
+            sgn = -sign(1.0_dp, slope)
+         else
+            return
+         end if
+         if (.not. (hh > 0 .and. drop > 0)) return
+         ! The pull the line is laid with: its touchdown bend (radius H / w) over lay_pull_cells cells.
+         hh0 = max(hh, lay_pull_cells*scene%weight*maxval(problem%piece%ds))
+         ls = sqrt(drop**2 + 2*drop*hh0/scene%weight)
+         if (ls >= scene%length) return
+         ! The arc lengths from the held end.
+         if (held_a) then
+            ss = problem%piece%s - problem%piece%s(1)
+         else
+            ss = problem%piece%s(n) - problem%piece%s(n:1:-1)
+         end if
+         call catenary_from_force(scene%law, scene%weight, [sgn*hh0, -scene%weight*ls], top, ss, rr, eps, ten, &
+                                  guess_panels)
+         j = count(ss <= ls)
+         xs = rr(1, j) + sgn*(ls - ss(j))
+         do k = j + 1, n
+            rr(1, k) = xs + sgn*(ss(k) - ls)
+            rr(2, k) = floor_at(rr(1, k))
+         end do
+         if (held_a) then
+            state%r = rr
+         else
+            state%r = rr(:, n:1:-1)
+         end if
+         ! The loose end pulled by hh0 - hh more along the bottom, then let go in shares of that.
+         if (held_a) then
+            call move_alloc(problem%piece%end_b, own_loose)
+         else
+            call move_alloc(problem%piece%end_a, own_loose)
+         end if
+         call uncut_laws(cut)
+         call pull_loose(held_a, load + [sgn*(hh0 - hh), 0.0_dp])
+         call solve_with_loads(sub)
+         done = 0
+         step = 0.25_dp
+         if (.not. allocated(sub)) then
+            r_good = state%r
+            do while (done < 1)
+               try = min(1.0_dp, done + step)
+               call pull_loose(held_a, load + [(1 - try)*sgn*(hh0 - hh), 0.0_dp])
+               call solve_now(sub)
+               if (allocated(sub)) then
+                  state%r = r_good
+                  step = step/2
+                  if (step < payout_min_share) exit
+                  deallocate (sub)
+               else
+                  done = try
+                  r_good = state%r
+                  step = 2*step
+               end if
+            end do
+         end if
+         if (held_a) then
+            deallocate (problem%piece%end_b)
+            call move_alloc(own_loose, problem%piece%end_b)
+         else
+            deallocate (problem%piece%end_a)
+            call move_alloc(own_loose, problem%piece%end_a)
+         end if
+         if (.not. allocated(sub)) call solve_now(sub)
+         call own_laws_back()
+         if (.not. allocated(sub) .and. cut) call solve_now(sub)
+         if (allocated(sub)) then
+            err%message = err%message//'; from the line laid on the bottom, pulled by '//str(hh0)// &
+                          ' N and let go to '//str(nint(100*done))//' %: '//sub%message
+            return
+         end if
+         deallocate (err)
+      end subroutine lay_down
+
+      !> The loose end (end b with end a held, or end a) a force end with the force f (lay_down).
+      subroutine pull_loose(held_a, f)
+         logical, intent(in) :: held_a
+         real(dp), intent(in) :: f(2)
+         type(force_end) :: pulled
+         pulled%force0 = f
+         if (held_a) then
+            if (allocated(problem%piece%end_b)) deallocate (problem%piece%end_b)
+            allocate (problem%piece%end_b, source=pulled)
+            problem%piece%end_b%label = 'end_b'
+         else
+            if (allocated(problem%piece%end_a)) deallocate (problem%piece%end_a)
+            allocate (problem%piece%end_a, source=pulled)
+            problem%piece%end_a%label = 'end_a'
+         end if
+      end subroutine pull_loose
+
       !> End b replaced by a fixed end at the point p (pay_in).
       subroutine move_b(p)
          real(dp), intent(in) :: p(2)
@@ -544,6 +678,10 @@ contains
          ! A line nearly slack on a seabed: paid in from a taut state (or refused, with why).
          call pay_in(err)
          if (.not. allocated(err) .or. refused) return
+         state%r = guess
+         ! A loose end resting on a seabed under a pull along it: from the line laid on the bottom.
+         call lay_down(err)
+         if (.not. allocated(err)) return
          state%r = guess
          call loaded_guess(loaded)
          if (loaded) then

@@ -742,7 +742,8 @@ contains
    !> 60 m line hanging from a point 40 m over a flat, frictionless bottom with its end b free,
    !> with either compression: nothing pulls it sideways, 20 m lie on the bottom with no tension
    !> (the rope that can push gave a column standing 10 m into the bottom, at -17 MN). (3) The
-   !> same with end b held on the bottom 21 m out (way 61 m): found (it failed before), taut.
+   !> same with end b held on the bottom 21 m out (way 61 m): found (it failed before), taut. A line
+   !> of two segments with its end b free is refused as (2).
    subroutine test_slack_refused(error)
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: sim
@@ -783,6 +784,15 @@ contains
                     'the error does not say the free end lies slack: '//failed%message)
          if (allocated(error)) return
       end do
+      ! The same with a line of two segments (a heavier first 20 m).
+      call run_text(path, line//"&material law = 'linear', ea = 1e8, compression = 'none' /"//nl// &
+                    "&segment_1 length = 20, diameter = 0.12, density = 7800 /"//nl//"&segment_2 length = 40 /"//nl// &
+                    "&end_b kind = 'free' /", sim, keep, failed)
+      call check(error, allocated(failed), 'a free end of segments on a frictionless bottom: statics found')
+      if (allocated(error)) return
+      call check(error, index(failed%message, 'end b is free of horizontal force') > 0, &
+                 'the error does not say the free end of segments lies slack: '//failed%message)
+      if (allocated(error)) return
       call run_text(path, line//"&material law = 'linear', ea = 1e8, compression = 'none' /"//nl// &
                     "&end_b kind = 'fixed', x = 21, z = -40 /", sim, keep, failed)
       call check(error, .not. allocated(failed), 'the end held on the bottom: no statics')
@@ -798,7 +808,8 @@ contains
    !> the elastic catenary whose tangent is horizontal at the bottom, H = 50 N: Z = (H/w)(sqrt(1 +
    !> (w L_s/H)^2) - 1) + w L_s^2/(2 EA), T = sqrt(H^2 + (w L_s)^2) = 3054.808 N. Measured 2.0e-6
    !> (4.9e-5 at 241 nodes). And the free end on a bottom rising 10 % along x: the line lies
-   !> downhill (towards -x), taut from its free end, found (before, no statics).
+   !> downhill (towards -x), taut from its free end, found (before, no statics), and so does a
+   !> line of two segments.
    subroutine test_laid(error)
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: sim
@@ -843,6 +854,16 @@ contains
          ' N, the free end at x =', keep%x(size(keep%x)), ' m'
       call check(error, keep%x(size(keep%x)) < -10 .and. keep%tension(1) > 0, 'the free end does not lie downhill: '// &
                  str(keep%x(size(keep%x))))
+      if (allocated(error)) return
+      ! The same with a line of two segments (a heavier first 20 m).
+      call run_text(path, line//"&segment_1 length = 20, diameter = 0.12, density = 7800 /"//nl// &
+                    "&segment_2 length = 40 /"//nl//"&seabed depth = 40, slope_x = 0.1 /"//nl// &
+                    "&end_b kind = 'free' /"//nl//"&numerics nodes = 61, dt = 1e-3, t_end = 1e-3 /", sim, keep, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,2f12.4,a,f9.3,a)') 'the same, two segments: tensions', keep%tension, &
+         ' N, the free end at x =', keep%x(size(keep%x)), ' m'
+      call check(error, keep%x(size(keep%x)) < -10 .and. keep%tension(1) > 0, 'the free end of segments does not '// &
+                 'lie downhill: '//str(keep%x(size(keep%x))))
    end subroutine test_laid
 
    !> The chain of input/chain_mooring_heave.nml (its seabed 60 m down rising 2 % along x,

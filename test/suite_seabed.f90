@@ -809,7 +809,8 @@ contains
    !> (w L_s/H)^2) - 1) + w L_s^2/(2 EA), T = sqrt(H^2 + (w L_s)^2) = 3054.808 N. Measured 2.0e-6
    !> (4.9e-5 at 241 nodes). And the free end on a bottom rising 10 % along x: the line lies
    !> downhill (towards -x), taut from its free end, found (before, no statics), and so does a
-   !> line of two segments.
+   !> line of two segments, and the rope that can push on a bottom rising 2 % (before, a column in
+   !> the bottom).
    subroutine test_laid(error)
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: sim
@@ -864,6 +865,18 @@ contains
          ' N, the free end at x =', keep%x(size(keep%x)), ' m'
       call check(error, keep%x(size(keep%x)) < -10 .and. keep%tension(1) > 0, 'the free end of segments does not '// &
                  'lie downhill: '//str(keep%x(size(keep%x))))
+      if (allocated(error)) return
+      ! The rope that can push on a bottom rising 2 %: before, a column standing 10 m deep in the
+      ! bottom at -17 MN (the direct solve's state, now refused by the statics' depth check).
+      call run_text(path, line(:index(line, '&material') - 1)//"&material law = 'linear', ea = 1e8, compression = 'law' /"//nl// &
+                    line(index(line, '&fluid'):)//"&seabed depth = 40, slope_x = 0.02 /"//nl// &
+                    "&end_b kind = 'free' /"//nl//"&numerics nodes = 61, dt = 1e-3, t_end = 1e-3 /", sim, keep, error)
+      if (allocated(error)) return
+      write (output_unit, '(4x,a,2f12.4,a,f9.3,a)') 'the rope that can push on a 2 % slope: tensions', keep%tension, &
+         ' N, the free end at x =', keep%x(size(keep%x)), ' m'
+      call check(error, keep%x(size(keep%x)) < -10 .and. keep%tension(1) > 0 .and. keep%tension(1) < 3100, &
+                 'the rope that can push does not lie downhill: '//str(keep%x(size(keep%x)))//' m, '// &
+                 str(keep%tension(1))//' N')
    end subroutine test_laid
 
    !> The chain of input/chain_mooring_heave.nml (its seabed 60 m down rising 2 % along x,

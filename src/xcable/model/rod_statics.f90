@@ -849,7 +849,8 @@ contains
       end subroutine solve_now
 
       !> A solution is refused when it is folded: at some interior node the two
-      !> cells turn back on themselves (turning angle above pi/2), or when a cell has
+      !> cells turn back on themselves (turning angle above pi/2), when under the full loads a
+      !> node lies deeper in a floor (a seabed) than a cell length, or when a cell has
       !> collapsed (shorter than collapsed_length of its unstretched length, as the step
       !> control refuses it). Such a state is
       !> an equilibrium of compressed, zigzagging cells (compression = 'law') or a
@@ -875,6 +876,19 @@ contains
                                                            str(at)//' turn back on themselves, by '//str(worst)// &
                                                            ' rad, more than pi/2)', stat_numerics)
          if (allocated(err)) return
+         ! Under the full loads, a node pushed into a floor (a seabed) by more than a cell: a line
+         ! standing on the bottom as a column (a rope that can push, hanging straight down onto
+         ! it), not the state sought.
+         if (problem%piece%load_factor >= 1) then
+            do k = 1, size(r, 2)
+               if (floor_at(r(1, k)) - r(2, k) > problem%piece%ds(min(k, size(r, 2) - 1))) then
+                  call fatal_error(err, 'statics: a state with node '//str(k)//' '// &
+                                   str(floor_at(r(1, k)) - r(2, k))//' m into the seabed (more than a cell)', &
+                                   stat_numerics)
+                  return
+               end if
+            end do
+         end if
          ! A collapsed cell (a slack rope heaped into one point): the dynamics would refuse it.
          do k = 1, size(r, 2) - 1
             if (norm2(r(:, k + 1) - r(:, k)) < collapsed_length*problem%piece%ds(k)) then

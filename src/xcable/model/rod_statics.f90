@@ -127,8 +127,10 @@ contains
       type(rod_section), allocatable :: own_laws(:)
       !> Whether a solve reached a state with a collapsed cell (refused by check_fold).
       logical :: saw_collapse
-      !> Whether the statics refused the scene as having no single static state (pay_in).
+      !> Whether the pay-in found the line slack on the bottom (no single static state), and why:
+      !> the error when the relaxation finds no equilibrium either.
       logical :: refused
+      character(:), allocatable :: slack_why
       n = problem%piece%n
       saw_collapse = .false.
       refused = .false.
@@ -171,7 +173,11 @@ contains
          call refuse_slack_tail(error)
          if (allocated(error)) return
          call solve_or_relax(error)
-         if (refused) return
+         ! No equilibrium, and the pay-in saw why (a rope slack on the bottom): that is the error.
+         if (allocated(error) .and. refused) then
+            error%message = slack_why
+            return
+         end if
          if (allocated(error)) then
             error%message = error%message//slack_on_floor_note()//folded_note()
             if (saw_collapse) error%message = error%message//'; on the way Newton reached an equilibrium with '// &
@@ -279,7 +285,8 @@ contains
       !> last state, the step halved after a failure (down to payout_min_share; from
       !> payout_relax_share down a failed Newton solve is retried by the relaxation) and doubled
       !> after a success. A rope that cannot push is paid in as one that can, then solved as itself;
-      !> if it would push somewhere, it is slack there and the scene is refused (refused). On a
+      !> if it would push somewhere, it is slack there (refused, slack_why: the error if the
+      !> relaxation finds no state either; it may find one of the heaps, returned as before). On a
       !> frictionless bottom the static state of a line with any tension is unique (its grounded
       !> part straight and taut), so the path only finds it. err in: the direct path's error; out:
       !> unchanged (with why the pay-in failed), the refusal, or none.
@@ -358,9 +365,8 @@ contains
                call own_laws_back()
                deallocate (problem%piece%end_b)
                call move_alloc(own_b, problem%piece%end_b)
-               deallocate (err)
                refused = .true.
-               call fatal_error(err, 'statics: the line lies on the seabed with too little tension to be '// &
+               slack_why = ('statics: the line lies on the seabed with too little tension to be '// &
                                 'taut: with its law continued below zero strain it would push '// &
                                 str(-ten(k))//' N at s = '//str(problem%piece%s(k) - problem%piece%s(1) + &
                                 0.5_dp*problem%piece%ds(k))//' m (on a bottom that rises towards the '// &
@@ -368,7 +374,7 @@ contains
                                 'tension), so a rope that cannot push (compression = ''none'') lies slack '// &
                                 'there, heaped on the frictionless bottom in any shape, with no single static '// &
                                 'state; move the ends apart, shorten the line, or give the law its compressive '// &
-                                'branch (compression = ''law'')', stat_numerics)
+                                'branch (compression = ''law'')')
                return
             end if
          end if
@@ -677,7 +683,7 @@ contains
          problem%piece%load_factor = 1
          ! A line nearly slack on a seabed: paid in from a taut state (or refused, with why).
          call pay_in(err)
-         if (.not. allocated(err) .or. refused) return
+         if (.not. allocated(err)) return
          state%r = guess
          ! A loose end resting on a seabed under a pull along it: from the line laid on the bottom.
          call lay_down(err)

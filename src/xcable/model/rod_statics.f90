@@ -16,6 +16,12 @@
 !> counts as a failed solve: with distributed loads the continuation in
 !> them is tried, and a folded state is never returned (issue 15).
 !>
+!> A line nearly slack on a seabed between held ends, when Newton fails, is paid in from a
+!> taut state (pay_in: end b moved out, then back in steps) before the relaxation; a rope that
+!> cannot push that would be slack on the bottom, and a free end hanging onto a flat,
+!> frictionless bottom (refuse_slack_tail), have no single static state and are refused with why
+!> (docs/theory/seabed.md).
+!>
 !> When all that fails (both ends held or one), the statics relaxes: a
 !> sequence of anchored equilibria (anchored_problem), an overdamped path to
 !> the state, then Newton with the fold check from there (docs/theory/numerics.md,
@@ -28,6 +34,7 @@ module xcable_model_rod_statics
    use xcable_loads_load, only: load_slot, loads_in_statics, any_static_form
    use xcable_model_rod, only: rod_problem, rod_piece, rod_section, rod_kl, rod_ku, collapsed_length
    use xcable_ends_fixed, only: fixed_end
+   use xcable_ends_force, only: force_end
    use xcable_ends_end_condition, only: end_condition
    use xcable_solver_newton, only: newton_problem, newton_workspace, newton_options, newton_report, newton_solve
    use xcable_solver_banded, only: band_matrix
@@ -52,6 +59,16 @@ module xcable_model_rod_statics
    !> the statics' Newton iteration takes the guess to the same state to round-off
    !> (docs/measurements/data/speed_rounds.md, "The statics' first guess").
    integer, parameter :: guess_panels = 1
+   !> The chords (shares of the line's length) tried in turn as the taut start from which the
+   !> statics pay in a line nearly slack on the seabed (pay_in), and the smallest step of the
+   !> pay-in, a share of the offset.
+   real(dp), parameter :: payout_chord(3) = [0.9_dp, 0.95_dp, 0.98_dp], payout_min_share = 1.0_dp/1024
+   !> The step of the pay-in (a share of the offset) from which a failed Newton solve is followed by
+   !> the relaxation from the last state.
+   real(dp), parameter :: payout_relax_share = 1.0_dp/64
+   !> The pull with which the statics lay a loose end on a seabed (lay_down) before letting it go
+   !> to its own load: the touchdown bend's radius H / w over this many cells.
+   real(dp), parameter :: lay_pull_cells = 5
    !> The sideways offset of the folded first guess of a slack line between ends one above the
    !> other (folded_guess), a share of the line's length.
    real(dp), parameter :: fold_offset = 0.1_dp
@@ -110,8 +127,13 @@ contains
       type(rod_section), allocatable :: own_laws(:)
       !> Whether a solve reached a state with a collapsed cell (refused by check_fold).
       logical :: saw_collapse
+      !> Whether the pay-in found the line slack on the bottom (no single static state), and why:
+      !> the error when the relaxation finds no equilibrium either.
+      logical :: refused
+      character(:), allocatable :: slack_why
       n = problem%piece%n
       saw_collapse = .false.
+      refused = .false.
       allocate (state%r(2, n))
       problem%dt = 0
       problem%t0 = 0
@@ -148,7 +170,14 @@ contains
       else
          call first_guess(error)
          if (allocated(error)) return
+         call refuse_slack_tail(error)
+         if (allocated(error)) return
          call solve_or_relax(error)
+         ! No equilibrium, and the pay-in saw why (a rope slack on the bottom): that is the error.
+         if (allocated(error) .and. refused) then
+            error%message = slack_why
+            return
+         end if
          if (allocated(error)) then
             error%message = error%message//slack_on_floor_note()//folded_note()
             if (saw_collapse) error%message = error%message//'; on the way Newton reached an equilibrium with '// &
@@ -248,6 +277,306 @@ contains
          end do
       end subroutine friction_continuation
 
+      !> Both ends held over a floor (a seabed), the direct solve failed, and the line is shorter
+      !> than slack_on_floor_note's way (a line nearly slack on the bottom): the line paid in,
+      !> before the relaxation. End b is moved away from end a horizontally until the chord is
+      !> payout_chord of the line's length (tried in turn: a line taut enough for Newton from the
+      !> catenary guess), and brought back in steps of a share of that offset, each solve from the
+      !> last state, the step halved after a failure (down to payout_min_share; from
+      !> payout_relax_share down a failed Newton solve is retried by the relaxation) and doubled
+      !> after a success. A rope that cannot push is paid in as one that can, then solved as itself;
+      !> if it would push somewhere, it is slack there (refused, slack_why: the error if the
+      !> relaxation finds no state either; it may find one of the heaps, returned as before). On a
+      !> frictionless bottom the static state of a line with any tension is unique (its grounded
+      !> part straight and taut), so the path only finds it. err in: the direct path's error; out:
+      !> unchanged (with why the pay-in failed), the refusal, or none.
+      subroutine pay_in(err)
+         type(error_type), allocatable, intent(inout) :: err
+         class(end_condition), allocatable :: own_b
+         type(error_type), allocatable :: sub
+         real(dp), allocatable :: r_good(:, :)
+         real(dp) :: pa(2), pb(2), far, done, step, try, chord, ten(n - 1)
+         integer :: k
+         logical :: cut
+         if (.not. (problem%piece%end_a%held() .and. problem%piece%end_b%held())) return
+         if (len(slack_on_floor_note()) > 0) return
+         pa = problem%piece%end_a%position(0.0_dp)
+         pb = problem%piece%end_b%position(0.0_dp)
+         if (floor_at(pa(1)) <= -huge(1.0_dp) .or. floor_at(pb(1)) <= -huge(1.0_dp)) return
+         if (.not. abs(pb(1) - pa(1)) > 0) return
+         call move_alloc(problem%piece%end_b, own_b)
+         ! A rope that cannot push is paid in as one that can (uncut_laws: an iterate that squeezes
+         ! a grounded cell meets no stiffness otherwise); where the line is taut the two agree.
+         call uncut_laws(cut)
+         ! The taut start: the first chord of payout_chord whose direct solve succeeds.
+         far = 0
+         do k = 1, size(payout_chord)
+            chord = payout_chord(k)*scene%length
+            if (abs(pb(2) - pa(2)) >= chord .or. hypot(pb(1) - pa(1), pb(2) - pa(2)) >= chord) cycle
+            far = sign(sqrt(chord**2 - (pb(2) - pa(2))**2), pb(1) - pa(1)) - (pb(1) - pa(1))
+            call move_b(pb + [far, 0.0_dp])
+            call first_guess(sub)
+            if (allocated(sub)) exit
+            call solve_with_loads(sub)
+            if (.not. allocated(sub)) exit
+            deallocate (sub)
+         end do
+         if (far == 0 .or. allocated(sub)) then
+            call own_laws_back()
+            if (allocated(problem%piece%end_b)) deallocate (problem%piece%end_b)
+            call move_alloc(own_b, problem%piece%end_b)
+            err%message = err%message//'; paying the line in: no taut start found'
+            return
+         end if
+         r_good = state%r
+         done = 0
+         step = 0.25_dp
+         do while (done < 1)
+            try = min(1.0_dp, done + step)
+            call move_b(pb + [(1 - try)*far, 0.0_dp])
+            call solve_now(sub)
+            ! Newton may cycle where the nodes touch down one by one on a stiff bottom: on a small
+            ! step, the overdamped path from the last state (relax).
+            if (allocated(sub) .and. step <= payout_relax_share) then
+               state%r = r_good
+               call relax(sub)
+            end if
+            if (allocated(sub)) then
+               state%r = r_good
+               call move_b(pb + [(1 - done)*far, 0.0_dp])
+               step = step/2
+               if (step < payout_min_share) exit
+               deallocate (sub)
+            else
+               done = try
+               r_good = state%r
+               step = 2*step
+            end if
+         end do
+         ! Paid in, a rope that cannot push where the one that can pushes (a grounded part rising
+         ! towards the touchdown, whose weight up the slope exceeds the tension there): it is
+         ! slack there, heaped on the frictionless bottom in any shape.
+         if (.not. allocated(sub) .and. cut) then
+            do k = 1, n - 1
+               ten(k) = problem%piece%cell_tension(k, norm2(state%r(:, k + 1) - state%r(:, k))/problem%piece%ds(k) - 1)
+            end do
+            k = minloc(ten, 1)
+            if (ten(k) < 0) then
+               call own_laws_back()
+               deallocate (problem%piece%end_b)
+               call move_alloc(own_b, problem%piece%end_b)
+               refused = .true.
+               slack_why = ('statics: the line lies on the seabed with too little tension to be '// &
+                                'taut: with its law continued below zero strain it would push '// &
+                                str(-ten(k))//' N at s = '//str(problem%piece%s(k) - problem%piece%s(1) + &
+                                0.5_dp*problem%piece%ds(k))//' m (on a bottom that rises towards the '// &
+                                'touchdown, where the grounded line''s weight up the slope exceeds the '// &
+                                'tension), so a rope that cannot push (compression = ''none'') lies slack '// &
+                                'there, heaped on the frictionless bottom in any shape, with no single static '// &
+                                'state; move the ends apart, shorten the line, or give the law its compressive '// &
+                                'branch (compression = ''law'')')
+               return
+            end if
+         end if
+         call own_laws_back()
+         deallocate (problem%piece%end_b)
+         call move_alloc(own_b, problem%piece%end_b)
+         if (.not. allocated(sub)) call solve_now(sub)
+         if (allocated(sub)) then
+            err%message = err%message//'; paying the line in from '//str(abs(far))//' m further out: '// &
+                          sub%message//' (with end b '//str(abs(1 - done)*abs(far))//' m from its place)'
+            return
+         end if
+         deallocate (err)
+      end subroutine pay_in
+
+      !> One end held, the other loose (not state-dependent) and resting on a seabed under a pull
+      !> along it, the direct solve failed: Newton from the line laid on the bottom. The horizontal
+      !> tension H of the grounded part is the loose end's horizontal force (or, with none, its
+      !> weight down the bottom's slope, w (L - drop) |slope|: a free end on a slope lies downhill);
+      !> the guess is the catenary from the held end whose tangent is horizontal where it reaches
+      !> the floor (suspended length sqrt(drop^2 + 2 drop H / w)), then straight along the floor,
+      !> away from the held end in the direction of that pull. Solved with the laws' compressive
+      !> branch first (uncut_laws), then with the laws themselves. err in: the direct path's
+      !> error; out: unchanged (with why this failed) or none.
+      subroutine lay_down(err)
+         type(error_type), allocatable, intent(inout) :: err
+         type(error_type), allocatable :: sub
+         class(end_condition), allocatable :: own_loose
+         real(dp) :: top(2), load(2), drop, hh, hh0, ls, slope, sgn, d, ss(n), rr(2, n), eps(n), ten(n), xs
+         real(dp) :: done, step, try
+         real(dp), allocatable :: r_good(:, :)
+         logical :: held_a, cut
+         integer :: k, j
+         held_a = problem%piece%end_a%held()
+         if (held_a .eqv. problem%piece%end_b%held()) return
+         if (held_a) then
+            if (problem%piece%end_b%state_dependent() .or. problem%piece%end_b%point_mass() /= 0) return
+            load = problem%piece%end_b%applied_force(0.0_dp)
+            top = problem%piece%end_a%position(0.0_dp)
+         else
+            if (problem%piece%end_a%state_dependent() .or. problem%piece%end_a%point_mass() /= 0) return
+            load = problem%piece%end_a%applied_force(0.0_dp)
+            top = problem%piece%end_b%position(0.0_dp)
+         end if
+         if (floor_at(top(1)) <= -huge(1.0_dp) .or. .not. scene%weight > 0) return
+         drop = top(2) - floor_at(top(1))
+         d = 0.5_dp*scene%length
+         slope = (floor_at(top(1) + d) - floor_at(top(1) - d))/(2*d)
+         if (load(1) /= 0) then
+            hh = abs(load(1))
+            sgn = sign(1.0_dp, load(1))
+         else if (slope /= 0) then
+            hh = scene%weight*max(scene%length - drop, 0.0_dp)*abs(slope)
+            sgn = -sign(1.0_dp, slope)
+         else
+            return
+         end if
+         if (.not. (hh > 0 .and. drop > 0)) return
+         ! The pull the line is laid with: its touchdown bend (radius H / w) over lay_pull_cells cells.
+         hh0 = max(hh, lay_pull_cells*scene%weight*maxval(problem%piece%ds))
+         ls = sqrt(drop**2 + 2*drop*hh0/scene%weight)
+         if (ls >= scene%length) return
+         ! The arc lengths from the held end.
+         if (held_a) then
+            ss = problem%piece%s - problem%piece%s(1)
+         else
+            ss = problem%piece%s(n) - problem%piece%s(n:1:-1)
+         end if
+         call catenary_from_force(scene%law, scene%weight, [sgn*hh0, -scene%weight*ls], top, ss, rr, eps, ten, &
+                                  guess_panels)
+         j = count(ss <= ls)
+         xs = rr(1, j) + sgn*(ls - ss(j))
+         do k = j + 1, n
+            rr(1, k) = xs + sgn*(ss(k) - ls)
+            rr(2, k) = floor_at(rr(1, k))
+         end do
+         if (held_a) then
+            state%r = rr
+         else
+            state%r = rr(:, n:1:-1)
+         end if
+         ! The loose end pulled by hh0 - hh more along the bottom, then let go in shares of that.
+         if (held_a) then
+            call move_alloc(problem%piece%end_b, own_loose)
+         else
+            call move_alloc(problem%piece%end_a, own_loose)
+         end if
+         call uncut_laws(cut)
+         call pull_loose(held_a, load + [sgn*(hh0 - hh), 0.0_dp])
+         call solve_with_loads(sub)
+         done = 0
+         step = 0.25_dp
+         if (.not. allocated(sub)) then
+            r_good = state%r
+            do while (done < 1)
+               try = min(1.0_dp, done + step)
+               call pull_loose(held_a, load + [(1 - try)*sgn*(hh0 - hh), 0.0_dp])
+               call solve_now(sub)
+               if (allocated(sub)) then
+                  state%r = r_good
+                  step = step/2
+                  if (step < payout_min_share) exit
+                  deallocate (sub)
+               else
+                  done = try
+                  r_good = state%r
+                  step = 2*step
+               end if
+            end do
+         end if
+         if (held_a) then
+            deallocate (problem%piece%end_b)
+            call move_alloc(own_loose, problem%piece%end_b)
+         else
+            deallocate (problem%piece%end_a)
+            call move_alloc(own_loose, problem%piece%end_a)
+         end if
+         if (.not. allocated(sub)) call solve_now(sub)
+         call own_laws_back()
+         if (.not. allocated(sub) .and. cut) call solve_now(sub)
+         if (allocated(sub)) then
+            err%message = err%message//'; from the line laid on the bottom, pulled by '//str(hh0)// &
+                          ' N and let go to '//str(nint(100*done))//' %: '//sub%message
+            return
+         end if
+         deallocate (err)
+      end subroutine lay_down
+
+      !> The loose end (end b with end a held, or end a) a force end with the force f (lay_down).
+      subroutine pull_loose(held_a, f)
+         logical, intent(in) :: held_a
+         real(dp), intent(in) :: f(2)
+         type(force_end) :: pulled
+         pulled%force0 = f
+         if (held_a) then
+            if (allocated(problem%piece%end_b)) deallocate (problem%piece%end_b)
+            allocate (problem%piece%end_b, source=pulled)
+            problem%piece%end_b%label = 'end_b'
+         else
+            if (allocated(problem%piece%end_a)) deallocate (problem%piece%end_a)
+            allocate (problem%piece%end_a, source=pulled)
+            problem%piece%end_a%label = 'end_a'
+         end if
+      end subroutine pull_loose
+
+      !> End b replaced by a fixed end at the point p (pay_in).
+      subroutine move_b(p)
+         real(dp), intent(in) :: p(2)
+         if (allocated(problem%piece%end_b)) deallocate (problem%piece%end_b)
+         allocate (problem%piece%end_b, source=fixed_end(point=p))
+         problem%piece%end_b%label = 'end_b'
+      end subroutine move_b
+
+      !> One end held, the other free of horizontal force (free, a point mass, a vertical force),
+      !> over a flat, frictionless floor with no current: the horizontal force is zero all along
+      !> the line, which hangs straight down from the held end, and a line longer than that drop
+      !> lies on the bottom with no tension, in any shape (straight either way, heaped): there is
+      !> no single static state (Newton meets the singular Jacobian of the slack part). Refused
+      !> with why, from the first guess (state%r: the vertical catenary) when it reaches below the
+      !> floor and the loads on it have no horizontal part.
+      subroutine refuse_slack_tail(err)
+         type(error_type), allocatable, intent(out) :: err
+         type(band_matrix) :: unused
+         real(dp) :: x(2*n), res(2*n), top(2), drop, load(2)
+         logical :: held_a
+         character(:), allocatable :: loose
+         integer :: k
+         held_a = problem%piece%end_a%held()
+         if (held_a .eqv. problem%piece%end_b%held()) return
+         if (any_static_form(problem%piece%loads)) return
+         if (held_a) then
+            if (problem%piece%end_b%state_dependent()) return
+            load = problem%piece%end_b%applied_force(0.0_dp)
+            top = problem%piece%end_a%position(0.0_dp)
+            loose = 'end b'
+         else
+            if (problem%piece%end_a%state_dependent()) return
+            load = problem%piece%end_a%applied_force(0.0_dp)
+            top = problem%piece%end_b%position(0.0_dp)
+            loose = 'end a'
+         end if
+         if (load(1) /= 0) return
+         if (floor_at(top(1)) <= -huge(1.0_dp)) return
+         ! The guess hangs straight down and reaches below the floor.
+         if (maxval(abs(state%r(1, :) - top(1))) > 1.0e-9_dp*scene%length) return
+         if (.not. any([(state%r(2, k) < floor_at(state%r(1, k)), k = 1, n)])) return
+         ! No load along the floor on the guess (a slope, a current).
+         x = reshape(state%r, [2*n])
+         call unused%init(2*n, rod_kl, rod_ku)
+         call problem%evaluate(x, res, unused, .false.)
+         if (sum(abs(problem%piece%load_node(1, :))) > 1.0e-9_dp*sum(abs(problem%piece%load_node(2, :)))) return
+         drop = top(2) - floor_at(top(1))
+         call fatal_error(err, scene%source//': statics: '//loose//' is free of horizontal force and the line ('// &
+                          str(scene%length)//' m) is longer than the drop from the held end to the seabed ('// &
+                          str(drop)//' m), which is flat and frictionless (no current, no static_friction): '// &
+                          'nothing pulls the line sideways, it hangs straight down and about '// &
+                          str(scene%length - drop)//' m of it lies on the bottom with no tension, in any shape '// &
+                          '(straight either way or heaped), so it has no single static state; hold '//loose// &
+                          ' where it should lie on the bottom (kind = ''fixed'', its x and z on the bottom), '// &
+                          'or shorten the line below the drop', stat_input)
+      end subroutine refuse_slack_tail
+
       !> Replace end b by a fixed end at the height of end a, span to its right.
       subroutine set_end_b(span)
          real(dp), intent(in) :: span
@@ -336,7 +665,8 @@ contains
       end subroutine solve_with_loads
 
       !> The direct solve (with its continuation in the loads); only when that
-      !> fails, the relaxation under the full loads: with distributed loads
+      !> fails, the pay-in of a line nearly slack on a seabed (pay_in), then the
+      !> relaxation under the full loads: with distributed loads
       !> first from the catenary under their mean on the straight chord (a
       !> strong current can bow the line to the other side of the chord than
       !> its weight, and the bending energy, unbounded as cells fold, keeps the
@@ -351,6 +681,14 @@ contains
          call solve_with_loads(err)
          if (.not. allocated(err)) return
          problem%piece%load_factor = 1
+         ! A line nearly slack on a seabed: paid in from a taut state (or refused, with why).
+         call pay_in(err)
+         if (.not. allocated(err)) return
+         state%r = guess
+         ! A loose end resting on a seabed under a pull along it: from the line laid on the bottom.
+         call lay_down(err)
+         if (.not. allocated(err)) return
+         state%r = guess
          call loaded_guess(loaded)
          if (loaded) then
             call relax_rope(err2)
@@ -517,7 +855,8 @@ contains
       end subroutine solve_now
 
       !> A solution is refused when it is folded: at some interior node the two
-      !> cells turn back on themselves (turning angle above pi/2), or when a cell has
+      !> cells turn back on themselves (turning angle above pi/2), when under the full loads a
+      !> node lies deeper in a floor (a seabed) than a cell length, or when a cell has
       !> collapsed (shorter than collapsed_length of its unstretched length, as the step
       !> control refuses it). Such a state is
       !> an equilibrium of compressed, zigzagging cells (compression = 'law') or a
@@ -543,6 +882,19 @@ contains
                                                            str(at)//' turn back on themselves, by '//str(worst)// &
                                                            ' rad, more than pi/2)', stat_numerics)
          if (allocated(err)) return
+         ! Under the full loads, a node pushed into a floor (a seabed) by more than a cell: a line
+         ! standing on the bottom as a column (a rope that can push, hanging straight down onto
+         ! it), not the state sought.
+         if (problem%piece%load_factor >= 1) then
+            do k = 1, size(r, 2)
+               if (floor_at(r(1, k)) - r(2, k) > problem%piece%ds(min(k, size(r, 2) - 1))) then
+                  call fatal_error(err, 'statics: a state with node '//str(k)//' '// &
+                                   str(floor_at(r(1, k)) - r(2, k))//' m into the seabed (more than a cell)', &
+                                   stat_numerics)
+                  return
+               end if
+            end do
+         end if
          ! A collapsed cell (a slack rope heaped into one point): the dynamics would refuse it.
          do k = 1, size(r, 2) - 1
             if (norm2(r(:, k + 1) - r(:, k)) < collapsed_length*problem%piece%ds(k)) then

@@ -42,7 +42,8 @@ contains
                new_unittest('kept_rows_jacobian_fd', test_kept_rows), &
                new_unittest('point_stiffness_fd', test_point_stiffness), &
                new_unittest('spread_at_a_buoy_symmetric_and_ledger', test_spread), &
-               new_unittest('input_two_lines_equal_one_line', test_input_equal_one_line)]
+               new_unittest('input_two_lines_equal_one_line', test_input_equal_one_line), &
+               new_unittest('buoy_on_legs_lying_on_the_seabed_ledger', test_seabed_ledger)]
    end subroutine collect_network
 
    !> Read and prepare a case given as namelist text.
@@ -411,4 +412,52 @@ contains
       if (allocated(error)) return
       call check(error, drift < 1.0e-13_dp, 'the network''s ledger drifts by '//str(drift))
    end subroutine test_input_equal_one_line
+   !> The buoy of input/buoy_spread.nml on two legs of 80 m of chain and 120 m of polyester whose
+   !> chains lie on a seabed 100 m deep with Coulomb friction, the hawser to the surging vessel:
+   !> 2 s through the input and the driver. The ledger of the network closes with the contact and
+   !> the friction (the loads' work), and the chains lie on the bottom (the grounded length).
+   subroutine test_seabed_ledger(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: sim
+      type(case_config) :: c
+      real(dp) :: drift, grounded, loads
+      call write_text(path, &
+                      "&cable diameter = 0.1376, density = 1115.0 /"//nl// &
+                      "&material law = 'linear', ea = 1.0e8 /"//nl// &
+                      "&seabed depth = 100.0, mu_axial = 0.5, mu_lateral = 0.8 /"//nl// &
+                      "&fluid density = 1025.0, cd_normal = 1.2, cd_tangential = 0.1, ca_normal = 1.0, surface_z = 0.0 /"// &
+                      nl//"&segment_1 length = 80.0, diameter = 0.1368, density = 7860.0, ea = 4.945e8, cd_normal = 2.4, "// &
+                      "nodes = 17 /"//nl// &
+                      "&segment_2 length = 120.0, nodes = 25 /"//nl// &
+                      "&segment_3 length = 110.0, nodes = 23 /"//nl// &
+                      "&point_1 kind = 'free', z = -30.0, mass = 2000.0, volume = 20.0, ca = 0.5, cd = 0.6, area = 8.0 /"//nl// &
+                      "&point_2 kind = 'fixed', x = 160.0, y = 30.0, z = -100.0 /"//nl// &
+                      "&point_3 kind = 'fixed', x = 160.0, y = -30.0, z = -100.0 /"//nl// &
+                      "&point_4 kind = 'motion', x = -100.0, z = -5.0, amplitude = 2.0, period = 10.0, direction_x = 1.0, "// &
+                      "direction_z = 0.0, ramp_time = 10.0 /"//nl// &
+                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1, 2 /"//nl// &
+                      "&line_2 end_a = 'point_3', end_b = 'point_1', segments = 1, 2 /"//nl// &
+                      "&line_3 end_a = 'point_1', end_b = 'point_4', segments = 3 /"//nl// &
+                      "&numerics t_end = 2.0, courant = 2.0, newton_tol = 1e-10 /"//nl// &
+                      "&output energy = .true. /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call sim%prepare(c, error)
+      if (allocated(error)) return
+      call sim%run(error=error)
+      if (allocated(error)) return
+      associate (h => sim%rod%history)
+         drift = maxval(abs(h%energy(7, 0:h%n) - h%energy(7, 0)))/maxval(abs(h%energy(1:4, 0:h%n)))
+         grounded = h%measures(2, h%n)
+         loads = maxval(abs(h%energy(8, 0:h%n)))
+      end associate
+      write (output_unit, '(4x,a,es9.2,a,f8.3,a,es9.2,a)') 'legs on the seabed: ledger ', drift, ', grounded ', &
+         grounded, ' m, loads'' work up to ', loads, ' J'
+      call check(error, grounded > 100 .and. loads > 0, 'the chains do not lie on the bottom (grounded '// &
+                 str(grounded)//' m) or nothing works on them')
+      if (allocated(error)) return
+      ! Measured 7.1e-16.
+      call check(error, drift < 1.0e-14_dp, 'the network''s ledger on the seabed drifts by '//str(drift))
+   end subroutine test_seabed_ledger
 end module suite_network

@@ -21,7 +21,7 @@ module xcable_driver_network_drive
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: str
    use xcable_driver_rod_run, only: rod_run, cable_model
-   use xcable_driver_rod3d_drive, only: check_state3, end_tension, state_between
+   use xcable_driver_rod3d_drive, only: check_state3, end_tension, state_between, exchange_run3
    use xcable_driver_network, only: network_run
    use xcable_driver_records, only: run_observer, note_min_strain
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
@@ -343,8 +343,8 @@ contains
       class(state_archive), intent(inout) :: a
       logical, intent(in) :: saving
       type(error_type), allocatable, intent(out) :: error
-      integer :: n, iterations(2), n_lines, l, points
-      real(dp) :: ledger(4), work(1)
+      integer :: iterations(2), n_lines, l, points
+      real(dp) :: work(1)
       character(:), allocatable :: prefix
       call sync_real(a, 'run/t', rod%t, saving)
       call sync_real(a, 'run/dt', rod%dt, saving)
@@ -373,29 +373,9 @@ contains
       do l = 1, n_lines
          prefix = 'rod3d/'
          if (l > 1) prefix = 'rod3d/'//str(l)//'/'
-         associate (run => self%net%lines(l))
-            n = run%problem%piece%n
-            call sync_int(a, prefix//'nodes', n, saving)
-            if (.not. saving) then
-               if (.not. a%ok) return
-               if (n /= run%problem%piece%n) then
-                  call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in line '//str(l)// &
-                                   ', this case '//str(run%problem%piece%n), stat_input)
-                  return
-               end if
-            end if
-            call sync_reals(a, prefix//'x', run%x, saving)
-            call sync_matrix(a, prefix//'v', run%v, saving)
-            ledger = [run%energy0, run%end_work, run%load_work, run%dissipated]
-            call sync_reals(a, prefix//'ledger', ledger, saving)
-            call sync_matrix(a, prefix//'reaction', self%lines(l)%reaction, saving)
-            if (.not. saving) then
-               run%energy0 = ledger(1)
-               run%end_work = ledger(2)
-               run%load_work = ledger(3)
-               run%dissipated = ledger(4)
-            end if
-         end associate
+         call exchange_run3(a, prefix, self%net%lines(l), 'line '//str(l), saving, error)
+         if (allocated(error) .or. .not. a%ok) return
+         call sync_matrix(a, prefix//'reaction', self%lines(l)%reaction, saving)
       end do
       call exchange_records(rod, a, saving, error, with_y=.true., end_labels=network_end_labels(n_lines))
    end subroutine exchange

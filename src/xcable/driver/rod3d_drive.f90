@@ -44,7 +44,7 @@ module xcable_driver_rod3d_drive
    use xcable_driver_rod_run, only: rod_run, cable_model, end_value, jacobian_kept, check_range, &
                                     check_folds, watch_step, max_steps
    use xcable_theory_closed_forms, only: wave_speed
-   use xcable_io_archive, only: state_archive
+   use xcable_io_archive, only: state_archive, sync_int, sync_reals, sync_matrix
    use xcable_driver_rod3d_run, only: rod3d_run
    use xcable_model_rod3d, only: rod3d_piece, rod3d_section
    use xcable_scene_scene, only: scene_type, section_cells, sections_on, section_at
@@ -60,7 +60,7 @@ module xcable_driver_rod3d_drive
    public :: rod3d_drive, n_fields3, field3_names
    ! A 3-D piece's checks of a new state and its end tension, also for the lines of a network
    ! (driver/network_drive.f90).
-   public :: check_state3, end_tension, state_between
+   public :: check_state3, end_tension, state_between, exchange_run3
    ! For the submodules driver/rod3d_drive/ (gfortran 12 makes a module's private procedures
    ! local symbols that its submodules cannot link to).
    public :: state_fields, piece_sections3, set_time
@@ -558,6 +558,44 @@ contains
       x(1:3*n) = reshape(r, [3*n])
       x(3*n + 1:) = (1 - u)*x_prev(3*n + 1:) + u*x1(3*n + 1:)
    end subroutine state_between
+
+   !> A 3-D run's state in a checkpoint, under prefix: its nodes (checked on loading), unknowns,
+   !> velocities and ledger (a piece of a 3-D run, a line of a network). Error (stat_input) when
+   !> the checkpoint's nodes are not the run's.
+   subroutine exchange_run3(a, prefix, run, name, saving, error)
+      !> Archive.
+      class(state_archive), intent(inout) :: a
+      !> Prefix of its datasets, and what the run is, for the message ('piece 2', 'line 3').
+      character(*), intent(in) :: prefix, name
+      !> The run.
+      type(rod3d_run), intent(inout) :: run
+      !> Save (.true.) or load.
+      logical, intent(in) :: saving
+      !> Error.
+      type(error_type), allocatable, intent(out) :: error
+      integer :: n
+      real(dp) :: ledger(4)
+      n = run%problem%piece%n
+      call sync_int(a, prefix//'nodes', n, saving)
+      if (.not. saving) then
+         if (.not. a%ok) return
+         if (n /= run%problem%piece%n) then
+            call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in '//name//', this case '// &
+                             str(run%problem%piece%n), stat_input)
+            return
+         end if
+      end if
+      call sync_reals(a, prefix//'x', run%x, saving)
+      call sync_matrix(a, prefix//'v', run%v, saving)
+      ledger = [run%energy0, run%end_work, run%load_work, run%dissipated]
+      call sync_reals(a, prefix//'ledger', ledger, saving)
+      if (.not. saving) then
+         run%energy0 = ledger(1)
+         run%end_work = ledger(2)
+         run%load_work = ledger(3)
+         run%dissipated = ledger(4)
+      end if
+   end subroutine exchange_run3
 
    !> Fields on the output nodes of the pieces' current state.
    subroutine state_fields(self, rod, fields, extra)

@@ -79,7 +79,6 @@ contains
       logical, intent(in) :: saving
       type(error_type), allocatable, intent(out) :: error
       integer :: n, iterations(1), n_pieces, p, expected
-      real(dp) :: ledger(4)
       character(:), allocatable :: prefix
       call sync_real(a, 'run/t', rod%t, saving)
       call sync_real(a, 'run/dt', rod%dt, saving)
@@ -113,29 +112,14 @@ contains
          prefix = 'rod3d/'
          if (p > 1) prefix = 'rod3d/'//str(p)//'/'
          associate (run => self%pieces(p)%run)
+            call exchange_run3(a, prefix, run, 'piece '//str(p), saving, error)
+            if (allocated(error) .or. .not. a%ok) return
             n = run%problem%piece%n
-            call sync_int(a, prefix//'nodes', n, saving)
-            if (.not. saving) then
-               if (.not. a%ok) return
-               if (n /= run%problem%piece%n) then
-                  call fatal_error(error, 'the checkpoint holds '//str(n)//' nodes in piece '//str(p)// &
-                                   ', this case '//str(run%problem%piece%n), stat_input)
-                  return
-               end if
-            end if
-            call sync_reals(a, prefix//'x', run%x, saving)
-            call sync_matrix(a, prefix//'v', run%v, saving)
-            ledger = [run%energy0, run%end_work, run%load_work, run%dissipated]
-            call sync_reals(a, prefix//'ledger', ledger, saving)
             iterations = run%iterations
             call sync_ints(a, prefix//'newton_iterations', iterations, saving)
             if (.not. saving) then
                ! The cut piece's anchored twist angle: its first node's, pinned there since the cut.
                if (n_pieces == 2) run%problem%piece%psi_anchor = run%x(3*n + 1)
-               run%energy0 = ledger(1)
-               run%end_work = ledger(2)
-               run%load_work = ledger(3)
-               run%dissipated = ledger(4)
                run%iterations = iterations(1)
             end if
          end associate

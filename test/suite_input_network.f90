@@ -67,6 +67,7 @@ contains
                new_unittest('network_box_scheme', test_box), &
                new_unittest('network_2d_model', test_2d), &
                new_unittest('network_rupture', test_rupture), &
+               new_unittest('network_static_friction', test_static_friction), &
                new_unittest('network_body_on_joint', test_body_joint), &
                new_unittest('network_point_without_lines', test_without_lines), &
                new_unittest('network_point_with_joint', test_point_joint), &
@@ -347,6 +348,12 @@ contains
       call expect_refusal(error, replaced(spread(), '&numerics t_end = 1 /', "&numerics model = '2d', t_end = 1 /"), &
                           [character(len=40) :: "&numerics: model = '2d'", "allowed: model = '3d' or 'auto'"])
    end subroutine test_2d
+
+   subroutine test_static_friction(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, spread()//"&seabed depth = 100.0, static_friction = 'end_a' /"//nl, &
+                          [character(len=40) :: "&seabed: static_friction = 'end_a'", "allowed: static_friction = 'none'"])
+   end subroutine test_static_friction
 
    subroutine test_rupture(error)
       type(error_type), allocatable, intent(out) :: error

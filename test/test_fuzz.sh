@@ -708,6 +708,8 @@ begin 'a network with the 2-D model' '&numerics' "model = '2d'" "allowed: model 
 network; edit "s/^&numerics /\&numerics model = '2d', /"; check
 begin 'a network that breaks' '&rupture' "criterion = 'time'" 'does not break'
 network; add '&rupture t_break = 0.01 /'; check
+begin "a network's statics with friction" '&seabed' "static_friction = 'end_a'" "allowed: static_friction = 'none'"
+network; add "&seabed depth = 100.0, static_friction = 'end_a' /"; check
 begin 'a body on a line of a network' '&point_5' 'joint = 1' 'split the line at a free point'
 network; add '&point_5 joint = 1, mass = 50 /'; check
 begin 'a network point without lines' '&point_1' "kind = 'fixed'" 'without any &line group'

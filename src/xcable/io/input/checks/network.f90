@@ -68,6 +68,12 @@ contains
                           "solved in 3-D; allowed: model = '3d' or 'auto' (3-D for a network)", stat_input)
          return
       end if
+      if (trim(c%static_friction) /= 'none') then
+         call fatal_error(error, c%source//": &seabed: static_friction = '"//trim(c%static_friction)//"' with "// &
+                          lines//": a network's statics has no friction on the bottom (not yet; the dynamics have "// &
+                          "it); allowed: static_friction = 'none'", stat_input)
+         return
+      end if
       if (c%break_enabled) then
          call fatal_error(error, c%source//": &rupture: criterion = '"//trim(c%break_criterion)//"' with "//lines// &
                           ': a network of lines does not break (not yet); leave &rupture out, or give enabled = '// &

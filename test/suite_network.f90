@@ -143,7 +143,7 @@ contains
 
    !> Two lines meeting at a free point with the buoy on it are the one line of two segments with
    !> the buoy at its joint: the same unknowns and equations (lumped mass; the joint's bending,
-   !> EI 1e-6 N m^2, is the only term the one line has more). Statics from a guess 2.9 m off, then
+   !> EI 1e-6 N m^2, is the only term the one line has more). Statics from a guess 2.7 m off, then
    !> 40 steps of 0.025 s of the heave in the current, against the one line on the same steps.
    subroutine test_equal_one_line(error)
       type(error_type), allocatable, intent(out) :: error

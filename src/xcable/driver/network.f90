@@ -471,16 +471,20 @@ contains
    end subroutine border
 
    !> Z = A^-1 E / L of one joint of a line (its factorised Jacobian): the line's response to a
-   !> unit move of the point, (unknowns, 3).
+   !> unit move of the point, (unknowns, 3). The columns' storage is kept from one iteration to
+   !> the next (allocated once per joint).
    subroutine joint_columns(run, side, zcol, error)
       type(rod3d_run), intent(inout) :: run
       integer, intent(in) :: side
-      real(dp), allocatable, intent(out) :: zcol(:, :)
+      real(dp), allocatable, intent(inout) :: zcol(:, :)
       type(error_type), allocatable, intent(out) :: error
       integer :: m, k, a
       m = size(run%x)
       k = merge(1, run%problem%piece%n, side == 1)
-      allocate (zcol(m, 3))
+      if (allocated(zcol)) then
+         if (size(zcol, 1) /= m) deallocate (zcol)
+      end if
+      if (.not. allocated(zcol)) allocate (zcol(m, 3))
       zcol = 0
       do a = 1, 3
          zcol(3*(k - 1) + a, a) = 1/run%problem%piece%length_ref

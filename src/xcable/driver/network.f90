@@ -131,6 +131,10 @@ module xcable_driver_network
       !> The derivative of the points' force with respect to their positions, the lines in
       !> balance (the Schur complement of the last Newton matrix), N/m (3 points, 3 points).
       procedure :: point_stiffness => network_point_stiffness
+      !> A line parted (driver/network_drive.f90): line l replaced by the piece on its end a's
+      !> side, and the piece on its end b's side (if the break is inside the line) added as a
+      !> new last line, taking over the joint at l's end b.
+      procedure :: part_line => network_part_line
    end type network_run
 
 contains
@@ -357,6 +361,50 @@ contains
       type(error_type), allocatable :: error
       call border(self, s, rhs, error)
    end function network_point_stiffness
+
+   !> Line l parted: replaced by first (its end a's side), and second (the end b's side of a
+   !> break inside the line; its end b the old line's) added as line size(lines) + 1. The
+   !> joint ends are the pieces' own (the break copies the line's ends); here the pieces keep
+   !> the rows of their ends at points, and a joint at l's end b moves to the new line.
+   subroutine network_part_line(self, l, first, second)
+      !> Network.
+      class(network_run), intent(inout) :: self
+      !> The line that parted.
+      integer, intent(in) :: l
+      !> The pieces after the break (moved in).
+      type(rod3d_run), intent(inout) :: first
+      type(rod3d_run), intent(inout), optional :: second
+      type(rod3d_run), allocatable :: lines(:)
+      logical :: kept(2)
+      integer :: j, n_lines
+      kept = self%lines(l)%problem%piece%keep_rows
+      n_lines = size(self%lines)
+      if (present(second)) then
+         allocate (lines(n_lines + 1))
+         do j = 1, n_lines
+            if (j /= l) call move_line(self%lines(j), lines(j))
+         end do
+         call move_line(first, lines(l))
+         call move_line(second, lines(n_lines + 1))
+         call move_alloc(lines, self%lines)
+         self%lines(l)%problem%piece%keep_rows = [kept(1), .false.]
+         self%lines(n_lines + 1)%problem%piece%keep_rows = [.false., kept(2)]
+         do j = 1, size(self%joints)
+            if (self%joints(j)%line == l .and. self%joints(j)%side == 2) self%joints(j)%line = n_lines + 1
+         end do
+      else
+         call move_line(first, self%lines(l))
+         ! A released end was held by a support, not a point: the rows at points stay.
+         self%lines(l)%problem%piece%keep_rows = kept
+      end if
+      call place_points(self)
+   end subroutine network_part_line
+
+   !> A line's run moved from one place to another (its state, piece and workspace).
+   subroutine move_line(from, to)
+      type(rod3d_run), intent(inout) :: from, to
+      to = from
+   end subroutine move_line
 
    ! ---- the solve ----
 

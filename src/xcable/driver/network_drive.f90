@@ -14,18 +14,28 @@
 !> again shorter, as any model's. The checks of a new state are each line's (its strain
 !> range, the fold check). Checkpoints as the 3-D run's: each line's state where that run keeps
 !> a piece's, the free points and their work besides. The loads' measures (wetted and grounded
-!> length) are the sums over the lines. What a network does not have yet: a break (the input
-!> refuses &rupture).
+!> length) are the sums over the lines.
+!>
+!> A break (&rupture line = k, or the break by tension over every line): the line is cut as
+!> the 3-D run cuts a single line (driver/rod3d_drive/break.f90), from that line's own planar
+!> run (its grid, break node, bodies and ramp): released at a held end, or cut in two at a
+!> node inside, the piece on the end b side becoming a new last line of the network. The output
+!> then has that node twice (the line's columns, then the new line's), and the history two
+!> more ends, break_a and break_b (before the break: the break node with the pull of the cable
+!> on either side). The break by tension watches every line's cells against their segments' MBL
+!> (watch); the arc lengths it reports are the output's (the lines laid out one after another).
 module xcable_driver_network_drive
    use xcable_core_kinds, only: dp
    use xcable_core_error, only: error_type, fatal_error, stat_input
    use xcable_core_strings, only: str
    use xcable_driver_rod_run, only: rod_run, cable_model
-   use xcable_driver_rod3d_drive, only: check_state3, end_tension, state_between, exchange_run3
+   use xcable_driver_rod3d_drive, only: check_state3, end_tension, state_between, exchange_run3, rod3d_drive, &
+                                        release, break_node_ends
+   use xcable_driver_rod_run, only: watch_step
    use xcable_driver_network, only: network_run
    use xcable_driver_records, only: run_observer, note_min_strain
    use xcable_driver_rod3d_fields, only: fields3, n_fields3, field3_names
-   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints
+   use xcable_io_archive, only: state_archive, sync_real, sync_reals, sync_matrix, sync_int, sync_ints, sync_logical
    use xcable_driver_rod_run, only: exchange_progress
    use xcable_driver_history, only: exchange_records, open_history
    use xcable_model_rod3d, only: rod3d_piece
@@ -36,8 +46,11 @@ module xcable_driver_network_drive
 
    !> One line's place in the output and its previous level.
    type :: line_place
-      !> First output column of the line (its n nodes follow).
-      integer :: first = 0
+      !> Output columns of the line's nodes, and history slots of its two ends.
+      integer, allocatable :: column(:)
+      integer :: end_slot(2) = 0
+      !> Before the break, the break node of this line (0: none) and its second output column.
+      integer :: dup_node = 0, dup_column = 0
       !> The previous time level (snapshots inside a step).
       real(dp), allocatable :: x_prev(:), v_prev(:, :)
       !> Force of the supports (held ends; the points at joints) on the end nodes, N.
@@ -54,6 +67,24 @@ module xcable_driver_network_drive
       real(dp), allocatable :: static_extra(:, :)
       !> The input's number (&point_k) of each free point.
       integer, allocatable :: point_number(:)
+      !> The lines of the input (the network may have one more after a break inside a line).
+      integer :: input_lines = 0
+      !> The line that parts (0: none), its own planar run (its scene's break and ramp, grid,
+      !> break node and bodies: what cuts it), the cut (its new ends' forces), and whether the
+      !> break has happened.
+      integer :: break_line = 0
+      type(rod_run) :: break_rod
+      type(rod3d_drive) :: cutter
+      logical :: broken = .false.
+      !> The break's place on the results' arc length (the lines one after another), m.
+      real(dp) :: break_s = 0
+      !> The break by tension's first pass: per output cell (between output columns c and c + 1),
+      !> the factor watch mbl / (its segment's MBL) (0 between two lines), and the output's arc
+      !> lengths the watch reports in.
+      real(dp), allocatable :: cell_factor(:), s_watch(:)
+      !> Per output cell of the input's lines, its segment's MBL (N; 0 between two lines and
+      !> where nothing parts).
+      real(dp), allocatable :: cell_mbl(:)
    contains
       procedure :: begin => drive_begin
       procedure :: attempt => drive_attempt
@@ -71,6 +102,11 @@ module xcable_driver_network_drive
       procedure :: open_history => drive_open_history
       !> The output's fields of the current state (n_out, n_fields) and (n_out, n_fields3).
       procedure :: state_fields => drive_state_fields
+      !> The line and its cell of an output cell (the break by tension's first pass).
+      procedure :: line_cell
+      !> The output columns that start a piece of the output (each line's first but the first
+      !> line's, and the second column of a break node inside a line), increasing.
+      procedure :: piece_starts
    end type network_drive
 
 contains
@@ -109,8 +145,19 @@ contains
    subroutine drive_open_history(self, run)
       class(network_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
-      call open_history(run, 16, .true., network_end_labels(size(self%lines)))
+      call open_history(run, 16, .true., history_labels(self))
    end subroutine drive_open_history
+
+   !> The history's end labels: two per line of the input, and break_a, break_b with a break
+   !> inside a line.
+   function history_labels(self) result(labels)
+      type(network_drive), intent(in) :: self
+      character(len=8), allocatable :: labels(:)
+      labels = network_end_labels(self%input_lines)
+      if (self%break_line > 0) then
+         if (self%break_rod%break_node > 0) labels = [character(len=8) :: labels, 'break_a', 'break_b']
+      end if
+   end function history_labels
 
    subroutine drive_attempt(self, run, h, iterations, retry_same, error)
       class(network_drive), intent(inout) :: self
@@ -145,14 +192,78 @@ contains
       call self%net%reject()
    end subroutine drive_reject
 
-   !> No watch of the tensions (a network has no break by tension yet).
+   !> The search for a break by tension on the attempt of h (the first pass, the network without
+   !> its break): every line's cells against their segments' MBL, as one chain of the output's
+   !> cells (a cell between two lines has the factor 0: it does not part).
    subroutine drive_watch(self, run, h, retry)
       class(network_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       real(dp), intent(in) :: h
       logical, intent(out) :: retry
+      real(dp), allocatable :: tensions(:, :), r0(:, :), r1(:, :), ds(:)
+      integer :: l, c, n, m
       retry = .false.
+      if (.not. allocated(self%cell_factor)) return
+      m = size(self%cell_factor)
+      allocate (tensions(m, 3), r0(3, m + 1), r1(3, m + 1), ds(m))
+      tensions = 0
+      tensions(:, 3) = self%cell_factor
+      ds = 1
+      do l = 1, size(self%lines)
+         associate (line => self%net%lines(l), piece => self%net%lines(l)%problem%piece, col => self%lines(l)%column)
+            n = piece%n
+            r0(:, col) = reshape(line%x_old(1:3*n), [3, n])
+            r1(:, col) = reshape(line%x(1:3*n), [3, n])
+            do c = 1, n - 1
+               tensions(col(c), 1) = piece%cell_tension(c, norm2(r0(:, col(c + 1)) - r0(:, col(c)))/piece%ds(c) - 1)
+               tensions(col(c), 2) = piece%cell_tension(c, norm2(r1(:, col(c + 1)) - r1(:, col(c)))/piece%ds(c) - 1)
+               ds(col(c)) = piece%ds(c)
+            end do
+         end associate
+      end do
+      call watch_step(run, h, r0, r1, ds, self%net%lines(1)%problem%piece%law, retry, tensions, self%s_watch)
+      if (retry) call self%net%reject()
    end subroutine drive_watch
+
+   !> The output columns that start a piece of the output, increasing.
+   function piece_starts(self) result(starts)
+      class(network_drive), intent(in) :: self
+      integer, allocatable :: starts(:)
+      integer :: l, i, k
+      allocate (starts(0))
+      do l = 1, size(self%lines)
+         if (self%lines(l)%column(1) > 1) starts = [starts, self%lines(l)%column(1)]
+         if (self%lines(l)%dup_column > 0) starts = [starts, self%lines(l)%dup_column]
+      end do
+      ! (A few lines: insertion sort.)
+      do i = 2, size(starts)
+         k = starts(i)
+         do l = i - 1, 1, -1
+            if (starts(l) <= k) exit
+            starts(l + 1) = starts(l)
+         end do
+         starts(l + 1) = k
+      end do
+   end function piece_starts
+
+   !> The line and its cell of the output's cell c (cell c between output columns c and c + 1);
+   !> line 0 for a cell between two lines.
+   subroutine line_cell(self, c, l, cell)
+      !> Network run (not broken).
+      class(network_drive), intent(in) :: self
+      integer, intent(in) :: c
+      integer, intent(out) :: l, cell
+      do l = 1, size(self%lines)
+         associate (col => self%lines(l)%column)
+            if (c >= col(1) .and. c < col(size(col))) then
+               cell = c - col(1) + 1
+               return
+            end if
+         end associate
+      end do
+      l = 0
+      cell = 0
+   end subroutine line_cell
 
    subroutine drive_accept(self, run, h)
       class(network_drive), intent(inout) :: self
@@ -189,8 +300,7 @@ contains
             call state_between(n, line%x_prev, line%v_prev, now%x, now%v, run%t, t_new - run%t, ts, x, v)
             allocate (f(n, size(fields, 2)), e(n, size(extra, 2)))
             call fields3(now%problem%piece, x, v, f, e)
-            fields(line%first:line%first + n - 1, :) = f
-            extra(line%first:line%first + n - 1, :) = e
+            call place_fields(line, f, e, fields, extra)
             deallocate (f, e)
          end associate
       end do
@@ -207,12 +317,25 @@ contains
             n = now%problem%piece%n
             allocate (f(n, size(fields, 2)), e(n, size(extra, 2)))
             call fields3(now%problem%piece, now%x, now%v, f, e)
-            fields(self%lines(l)%first:self%lines(l)%first + n - 1, :) = f
-            extra(self%lines(l)%first:self%lines(l)%first + n - 1, :) = e
+            call place_fields(self%lines(l), f, e, fields, extra)
             deallocate (f, e)
          end associate
       end do
    end subroutine drive_state_fields
+
+   !> A line's fields (its nodes, f and e) in their output columns (the break node in both of
+   !> its columns before the break).
+   pure subroutine place_fields(place, f, e, fields, extra)
+      type(line_place), intent(in) :: place
+      real(dp), intent(in) :: f(:, :), e(:, :)
+      real(dp), intent(inout) :: fields(:, :), extra(:, :)
+      fields(place%column, :) = f
+      extra(place%column, :) = e
+      if (place%dup_column > 0) then
+         fields(place%dup_column, :) = f(place%dup_node, :)
+         extra(place%dup_column, :) = e(place%dup_node, :)
+      end if
+   end subroutine place_fields
 
    subroutine drive_record(self, run, i, ends, ends_y, measures, energies, stored, work)
       class(network_drive), intent(inout) :: self
@@ -222,7 +345,6 @@ contains
       real(dp), intent(inout) :: energies(4), stored, work(3)
       real(dp) :: en(5), ledger(4), f(3)
       integer :: l, side, k, n, slot
-      integer, allocatable :: columns(:)
       en = 0
       measures = 0
       do l = 1, size(self%lines)
@@ -234,7 +356,7 @@ contains
             if (size(measures) > 0 .and. allocated(piece%loads)) &
                call load_measures(piece%loads, reshape(x(1:3*n), [3, n]), piece%ds, measures, piece%s)
             do side = 1, 2
-               slot = 2*(l - 1) + side
+               slot = self%lines(l)%end_slot(side)
                k = merge(1, n, side == 1)
                if (side == 1) then
                   f = self%lines(l)%reaction(:, 1)
@@ -247,8 +369,11 @@ contains
                ends_y(:, slot) = [x(3*k - 1), run3%v(2, k), f(2)]
             end do
             run%summary%max_turning_angle = max(run%summary%max_turning_angle, maxval(piece%th1))
-            columns = [(self%lines(l)%first - 1 + k, k=1, n)]
-            call note_min_strain(run%summary, piece%l1, columns, run%s_out, run%t)
+            call note_min_strain(run%summary, piece%l1, self%lines(l)%column, run%s_out, run%t)
+            ! Before a break inside the line, its two ends break_a and break_b are the break node.
+            if (self%lines(l)%dup_node > 0) &
+               call break_node_ends(piece, x, run3%v, self%lines(l)%dup_node, ends(:, 2*self%input_lines + 1:), &
+                                    ends_y(:, 2*self%input_lines + 1:))
             run%summary%max_strain = max(run%summary%max_strain, maxval(piece%l1) - 1)
             if (run%options%energy) en = en + run3%energies()
          end associate
@@ -262,13 +387,79 @@ contains
    end subroutine drive_record
 
 
-   !> A network does not part (the input refuses &rupture for it).
+   !> The break of line break_line at the time the step loop reached: the line cut as a single
+   !> 3-D line is (rod3d_drive's split, from the line's own planar run), and the pieces put in
+   !> the network in its place (network_run's part_line).
    subroutine drive_split(self, run, error)
       class(network_drive), intent(inout) :: self
       type(rod_run), intent(inout) :: run
       type(error_type), allocatable, intent(out) :: error
-      call fatal_error(error, 'a network of lines cannot part (no &rupture for networks yet)', stat_input)
+      integer :: lb
+      lb = self%break_line
+      if (lb == 0) then
+         call fatal_error(error, 'the network has no line that parts', stat_input)
+         return
+      end if
+      call load_cutter(self, lb)
+      self%break_rod%t = run%t
+      call self%cutter%split(self%break_rod, error)
+      if (allocated(error)) then
+         error%message = 'the break of line '//str(lb)//': '//error%message
+         return
+      end if
+      call install_pieces(self)
+      self%broken = .true.
+      run%broken = .true.
    end subroutine drive_split
+
+   !> The cutter holds line lb as the one piece of a 3-D run (before split or release).
+   subroutine load_cutter(self, lb)
+      type(network_drive), intent(inout) :: self
+      integer, intent(in) :: lb
+      integer :: k
+      if (allocated(self%cutter%pieces)) deallocate (self%cutter%pieces)
+      allocate (self%cutter%pieces(1))
+      self%cutter%pieces(1)%run = self%net%lines(lb)
+      self%cutter%pieces(1)%column = [(k, k=1, self%net%lines(lb)%problem%piece%n)]
+      self%cutter%pieces(1)%reaction = self%lines(lb)%reaction
+   end subroutine load_cutter
+
+   !> The cutter's pieces into the network in place of the line that parted: its first piece in
+   !> the line's place, the second (a break inside) as a new last line, with the output columns
+   !> and history slots of their nodes and ends.
+   subroutine install_pieces(self)
+      type(network_drive), intent(inout) :: self
+      type(line_place), allocatable :: places(:)
+      integer :: lb, kb, n, last
+      lb = self%break_line
+      if (size(self%cutter%pieces) == 1) then
+         call self%net%part_line(lb, self%cutter%pieces(1)%run)
+      else
+         call self%net%part_line(lb, self%cutter%pieces(1)%run, self%cutter%pieces(2)%run)
+         kb = self%break_rod%break_node
+         last = size(self%lines) + 1
+         allocate (places(last))
+         places(1:last - 1) = self%lines
+         associate (old => self%lines(lb), new => places(last))
+            n = size(old%column)
+            new%column = [old%dup_column, old%column(kb + 1:n)]
+            new%end_slot = [2*self%input_lines + 2, old%end_slot(2)]
+            new%reaction(:, 2) = old%reaction(:, 2)
+            new%reaction(:, 1) = 0
+            places(lb)%column = old%column(1:kb)
+            places(lb)%end_slot = [old%end_slot(1), 2*self%input_lines + 1]
+            places(lb)%reaction(:, 2) = 0
+            places(lb)%dup_node = 0
+            places(lb)%dup_column = 0
+         end associate
+         call move_alloc(places, self%lines)
+         self%lines(last)%x_prev = self%net%lines(last)%x
+         self%lines(last)%v_prev = self%net%lines(last)%v
+      end if
+      self%lines(lb)%x_prev = self%net%lines(lb)%x
+      self%lines(lb)%v_prev = self%net%lines(lb)%v
+      deallocate (self%cutter%pieces)
+   end subroutine install_pieces
 
    subroutine drive_end_info(self, run, j, kind, held)
       class(network_drive), intent(in) :: self
@@ -277,16 +468,20 @@ contains
       character(:), allocatable, intent(out) :: kind
       logical, intent(out) :: held
       integer :: l
-      l = (j + 1)/2
-      associate (piece => self%net%lines(l)%problem%piece)
-         if (mod(j, 2) == 1) then
-            kind = piece%end_a%kind()
-            held = piece%end_a%held()
-         else
-            kind = piece%end_b%kind()
-            held = piece%end_b%held()
-         end if
-      end associate
+      kind = ''
+      held = .false.
+      do l = 1, size(self%lines)
+         associate (piece => self%net%lines(l)%problem%piece)
+            if (self%lines(l)%end_slot(1) == j) then
+               kind = piece%end_a%kind()
+               held = piece%end_a%held()
+            end if
+            if (self%lines(l)%end_slot(2) == j) then
+               kind = piece%end_b%kind()
+               held = piece%end_b%held()
+            end if
+         end associate
+      end do
    end subroutine drive_end_info
 
    subroutine drive_conclude(self, run)
@@ -295,6 +490,11 @@ contains
       real(dp) :: ledger(4)
       run%summary%newton_iterations = self%net%iterations
       run%summary%factorisations = self%net%iterations*size(self%lines)
+      ! The break: which line, and where on the results' arc length (the lines one after another).
+      if (self%broken) then
+         run%summary%break_line = self%break_line
+         run%summary%break_s = self%break_s
+      end if
       if (run%options%energy) then
          ledger = self%net%ledger()
          run%summary%dissipated = ledger(4)
@@ -343,7 +543,7 @@ contains
       class(state_archive), intent(inout) :: a
       logical, intent(in) :: saving
       type(error_type), allocatable, intent(out) :: error
-      integer :: iterations(2), n_lines, l, points
+      integer :: iterations(2), n_lines, l, points, expected, n
       real(dp) :: work(1)
       character(:), allocatable :: prefix
       call sync_real(a, 'run/t', rod%t, saving)
@@ -353,12 +553,34 @@ contains
       points = self%net%points
       call sync_int(a, 'network/lines', n_lines, saving)
       call sync_int(a, 'network/points', points, saving)
+      if (self%break_line > 0) then
+         call sync_logical(a, 'network/broken', self%broken, saving)
+         call sync_matrix(a, 'network/cut_force', self%cutter%cut_force, saving)
+         if (self%break_rod%break_node > 0) then
+            call sync_reals(a, 'network/cut_couple', self%cutter%cut_couple, saving)
+            call sync_matrix(a, 'network/cut_axis', self%cutter%cut_axis, saving)
+            call sync_reals(a, 'network/cut_torque', self%cutter%cut_torque, saving)
+         end if
+      end if
       if (.not. saving) then
          if (.not. a%ok) return
-         if (n_lines /= size(self%lines) .or. points /= self%net%points) then
+         expected = self%input_lines
+         if (self%broken .and. self%break_rod%break_node > 0) expected = expected + 1
+         if (n_lines /= expected .or. points /= self%net%points) then
             call fatal_error(error, 'the checkpoint holds a network of '//str(n_lines)//' lines and '//str(points)// &
-                             ' free points, this case '//str(size(self%lines))//' and '//str(self%net%points), stat_input)
+                             ' free points, this case '//str(expected)//' and '//str(self%net%points)// &
+                             ' at that stage', stat_input)
             return
+         end if
+         ! A broken network: its pieces as the break made them, their states loaded below.
+         if (self%broken) then
+            call load_cutter(self, self%break_line)
+            self%cutter%broken = .true.
+            self%break_rod%broken = .true.
+            call release(self%cutter, self%break_rod, error)
+            if (allocated(error)) return
+            call install_pieces(self)
+            rod%broken = .true.
          end if
       end if
       call sync_matrix(a, 'network/xp', self%net%xp, saving)
@@ -377,6 +599,14 @@ contains
          if (allocated(error) .or. .not. a%ok) return
          call sync_matrix(a, prefix//'reaction', self%lines(l)%reaction, saving)
       end do
-      call exchange_records(rod, a, saving, error, with_y=.true., end_labels=network_end_labels(n_lines))
+      ! The cut pieces' anchored twist angles: their first nodes', pinned there since the cut.
+      if (.not. saving .and. self%broken .and. self%break_rod%break_node > 0) then
+         do l = 1, n_lines
+            if (l /= self%break_line .and. l /= n_lines) cycle
+            n = self%net%lines(l)%problem%piece%n
+            self%net%lines(l)%problem%piece%psi_anchor = self%net%lines(l)%x(3*n + 1)
+         end do
+      end if
+      call exchange_records(rod, a, saving, error, with_y=.true., end_labels=history_labels(self))
    end subroutine exchange
 end module xcable_driver_network_drive

@@ -110,6 +110,9 @@ module xcable_driver_records
       !> duration of its force ramp (s).
       logical :: broke = .false.
       real(dp) :: break_time = 0, break_s = 0, break_ramp = 0
+      !> A network: the line that parted (&line_k; 0: a single line). Its break_s, break_cell_s and
+      !> largest_tension_s are on the results' arc length (the lines laid out one after another).
+      integer :: break_line = 0
       !> The break by tension (&rupture criterion = 'tension'): whether it was asked for, the
       !> minimum breaking load (N); of a break, the tension the first cell reached (N) and the
       !> middle of that cell (m); without one, the largest cell tension reached (N), where (the
@@ -386,6 +389,7 @@ contains
       if (summary%broke) then
          text = text//new_line('a')//'break at s = '//quantity(summary%break_s, 'm')//', t = '// &
                 quantity(summary%break_time, 's')
+         if (summary%break_line > 0) text = text//' (line '//str(summary%break_line)//' of the network)'
          if (summary%break_ramp > 0) then
             text = text//', its force ramped down over '//quantity(summary%break_ramp, 's')
          else

@@ -61,6 +61,10 @@ module xcable_driver_rod3d_drive
    ! A 3-D piece's checks of a new state and its end tension, also for the lines of a network
    ! (driver/network_drive.f90).
    public :: check_state3, end_tension, state_between, exchange_run3
+   ! A network's line that parts is cut as a single line is (driver/network_drive.f90): the
+   ! pieces after the break (release, also for a broken network loaded from a checkpoint) and
+   ! the break node's two history ends before it.
+   public :: release, break_node_ends
    ! For the submodules driver/rod3d_drive/ (gfortran 12 makes a module's private procedures
    ! local symbols that its submodules cannot link to).
    public :: state_fields, piece_sections3, set_time
@@ -391,7 +395,7 @@ contains
       real(dp), intent(inout) :: ends(:, :), ends_y(:, :), measures(:)
       real(dp), intent(inout) :: energies(4), stored, work(3)
       integer :: side, k, n, p, slot
-      real(dp) :: f(3), en(5), ledger(3), e(3), ten
+      real(dp) :: f(3), en(5), ledger(3)
       call set_time(self, run%t)
       associate (rod => run)
          en = 0
@@ -432,21 +436,9 @@ contains
             end associate
          end do
          ! Before a break inside the cable, its two ends are the break node.
-         if (size(self%pieces) == 1 .and. rod%break_node > 0) then
-            associate (piece => self%pieces(1)%run%problem%piece, x => self%pieces(1)%run%x, &
-                       v => self%pieces(1)%run%v, k => rod%break_node)
-               e = x(3*k + 1:3*k + 3) - x(3*k - 2:3*k)
-               f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
-               ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)) &
-                                                                  /piece%ds(k - 1) - 1))
-               ends(:, 3) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
-               ends_y(:, 3) = [x(3*k - 1), v(2, k), f(2)]
-               e = x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)
-               f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
-               ends(:, 4) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
-               ends_y(:, 4) = [x(3*k - 1), v(2, k), f(2)]
-            end associate
-         end if
+         if (size(self%pieces) == 1 .and. rod%break_node > 0) &
+            call break_node_ends(self%pieces(1)%run%problem%piece, self%pieces(1)%run%x, self%pieces(1)%run%v, &
+                                 rod%break_node, ends(:, 3:4), ends_y(:, 3:4))
          if (rod%options%energy) then
             energies = [en(1) + en(5), en(2:4)]
             stored = sum(en)
@@ -454,6 +446,30 @@ contains
          end if
       end associate
    end subroutine drive_record
+
+   !> The history's two ends of a break node k inside the cable before the break (the records
+   !> break_a, break_b): the node, with the pull of the cable on either side (the cell after it
+   !> on break_a, the cell before it on break_b, as the planar run), and the node's tension.
+   subroutine break_node_ends(piece, x, v, k, ends, ends_y)
+      !> The piece, its unknowns and velocities (3, n).
+      type(rod3d_piece), intent(in) :: piece
+      real(dp), intent(in) :: x(:), v(:, :)
+      !> The break node.
+      integer, intent(in) :: k
+      !> The two records: x, z, vx, vz, tension, fx, fz (7, 2) and y, vy, fy (3, 2).
+      real(dp), intent(inout) :: ends(:, :), ends_y(:, :)
+      real(dp) :: e(3), f(3), ten
+      e = x(3*k + 1:3*k + 3) - x(3*k - 2:3*k)
+      f = piece%cell_tension(k, norm2(e)/piece%ds(k) - 1)*e/norm2(e)
+      ten = 0.5_dp*(norm2(f) + piece%cell_tension(k - 1, norm2(x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)) &
+                                                         /piece%ds(k - 1) - 1))
+      ends(:, 1) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+      ends_y(:, 1) = [x(3*k - 1), v(2, k), f(2)]
+      e = x(3*k - 2:3*k) - x(3*k - 5:3*k - 3)
+      f = -piece%cell_tension(k - 1, norm2(e)/piece%ds(k - 1) - 1)*e/norm2(e)
+      ends(:, 2) = [x(3*k - 2), x(3*k), v(1, k), v(3, k), ten, f(1), f(3)]
+      ends_y(:, 2) = [x(3*k - 1), v(2, k), f(2)]
+   end subroutine break_node_ends
 
    !> The force of a state-dependent end's own state at position x with velocity v, N.
    function state_force(end, t, x, v) result(f)

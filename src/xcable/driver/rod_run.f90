@@ -117,6 +117,9 @@ module xcable_driver_rod_run
       real(dp) :: work = 0, load_work = 0, dissipation = 0
       !> Whether the break has happened.
       logical :: broken = .false.
+      !> Whether ends other than the scene's change in time (a network's points and its other
+      !> lines' ends): ends_change is then true.
+      logical :: other_ends_change = .false.
       !> The search for a break by tension (watch%mbl > 0: this run is the search), and what the
       !> search of a run's first pass found (its summary reports it).
       type(tension_watch) :: watch, rupture
@@ -459,7 +462,7 @@ module xcable_driver_rod_run
       !> within the bracket of the steps tried, until F is within rupture_tolerance mbl of mbl
       !> (or max_rupture_aims steps were tried): watch%found, its time, cell and tension. A step
       !> that does not pass mbl is kept, and the largest tension so far updated.
-      module subroutine watch_step(self, h, r_old, r_new, ds, law, retry, tensions)
+      module subroutine watch_step(self, h, r_old, r_new, ds, law, retry, tensions, s_nodes)
          !> Run (its watch).
          type(rod_run), intent(inout) :: self
          !> The step, s.
@@ -475,6 +478,8 @@ module xcable_driver_rod_run
          !> A line of segments: the cells' tensions at the old and new level (N) and the factor
          !> mbl / (the cell's segment's MBL) (columns 1 to 3, n - 1 rows).
          real(dp), intent(in), optional :: tensions(:, :)
+         !> The nodes' arc lengths the watch reports its places in (m; default: the run's s).
+         real(dp), intent(in), optional :: s_nodes(:)
       end subroutine watch_step
 
       !> Step control after an accepted step of h_try: the time moves on (onto

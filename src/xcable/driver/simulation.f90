@@ -39,6 +39,9 @@ module xcable_driver_simulation
    implicit none
    private
    public :: simulation, run_options_from_config, checkpoint_settings
+   ! For the submodule driver/simulation/network.f90 (gfortran 12 makes a module's private
+   ! procedures local symbols that its submodules cannot link to).
+   public :: break_node_of
 
    !> Inertia kept by the shortest wave (two cells) with the averaged mass
    !> matrix, as a fraction of the lumped one (model/rod.f90, docs/theory/numerics.md).
@@ -129,6 +132,19 @@ module xcable_driver_simulation
          !> Error: a line's preparation, or the network's statics.
          type(error_type), allocatable, intent(out) :: error
       end subroutine prepare_network
+      !> The break by tension of a network: a first pass watching every line's cells against their
+      !> segments' MBL, then the network prepared again with the break found (a break by time
+      !> of that line), as find_break does for a single line.
+      module subroutine find_network_break(self, config, error, statics_only)
+         !> Simulation, its network prepared without the break.
+         type(simulation), intent(inout), target :: self
+         !> Validated case of a network with &rupture criterion = 'tension'.
+         type(case_config), intent(in) :: config
+         !> Error: stat_input when a static tension reaches its MBL; the first pass's errors.
+         type(error_type), allocatable, intent(out) :: error
+         !> Stop after the check against the static tensions.
+         logical, intent(in), optional :: statics_only
+      end subroutine find_network_break
    end interface
 
 contains
@@ -191,6 +207,9 @@ contains
       self%model = config%model_to_run()
       if (config%is_network()) then
          call prepare_network(self, config, error)
+         if (allocated(error)) return
+         if (config%break_enabled .and. trim(config%break_criterion) == 'tension') &
+            call find_network_break(self, config, error, statics_only)
          return
       end if
       select case (self%scheme)
@@ -763,8 +782,8 @@ contains
       integer, allocatable :: starts(:)
       allocate (starts(0))
       if (self%is_network) then
-         ! Each line after the first starts a piece of the output.
-         starts = self%network%lines(2:)%first
+         ! Each line after the first starts a piece of the output, and a break inside a line too.
+         starts = self%network%piece_starts()
          return
       end if
       if (self%scheme /= 'box') then

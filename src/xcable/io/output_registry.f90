@@ -209,7 +209,9 @@ contains
       call add('/summary@front_arrival_time', 'attribute', '', 's', 'a front arrived', &
                'when the tension at a held end first fell 1 % below its static value after a break')
       call add('/summary@break_time', 'attribute', '', 's', 'a break', 'when the break started')
-      call add('/summary@break_s', 'attribute', '', 'm', 'a break', 'arc length of the break from end a')
+      call add('/summary@break_s', 'attribute', '', 'm', 'a break', 'arc length of the break from end a '// &
+               '(a network: on the results'' s, the lines laid out one after another)')
+      call add('/summary@break_line', 'attribute', '', '', 'a break in a network', 'the line that parted (&line_k)')
       call add('/summary@break_ramp', 'attribute', '', 's', 'a break', 'duration of the break''s force ramp')
       call add('/summary@mbl', 'attribute', '', 'N', '&rupture criterion = ''tension''', 'minimum breaking load')
       call add('/summary@break_tension', 'attribute', '', 'N', 'a break by tension', &

@@ -94,7 +94,7 @@ contains
    !> within the bracket of the steps tried, until F is within rupture_tolerance mbl of mbl
    !> (or max_rupture_aims steps were tried): watch%found, its time, cell and tension. A step
    !> that does not pass mbl is kept, and the largest tension so far updated.
-   module subroutine watch_step(self, h, r_old, r_new, ds, law, retry, tensions)
+   module subroutine watch_step(self, h, r_old, r_new, ds, law, retry, tensions, s_nodes)
       !> Run (its watch).
       type(rod_run), intent(inout) :: self
       !> The step, s.
@@ -111,6 +111,8 @@ contains
       !> place of the law's, and the factor mbl / (the cell's segment's MBL) on each (n - 1; 0:
       !> a segment that does not part), in column 3.
       real(dp), intent(in), optional :: tensions(:, :)
+      !> The nodes' arc lengths the watch reports its places in (m; default: the run's s).
+      real(dp), intent(in), optional :: s_nodes(:)
       real(dp) :: t_old(size(ds)), t_new(size(ds)), frac, f
       integer :: c, m
       m = size(ds)
@@ -168,7 +170,7 @@ contains
          w%h_aim = 0
          if (f > w%max_tension) then
             w%max_tension = f
-            w%max_s = 0.5_dp*(self%s(c) + self%s(c + 1))
+            w%max_s = cell_middle(c)
             w%max_time = self%t + h
          end if
          if (f >= w%mbl*(1 - rupture_tolerance)) then
@@ -177,10 +179,22 @@ contains
             w%cell = c
             w%tension = f
             if (present(tensions)) w%tension = tensions(c, 2)
-            w%s = 0.5_dp*(self%s(c) + self%s(c + 1))
+            w%s = cell_middle(c)
             w%cells = t_new
          end if
       end associate
+
+   contains
+
+      !> The arc length of the middle of cell c, m.
+      real(dp) function cell_middle(c)
+         integer, intent(in) :: c
+         if (present(s_nodes)) then
+            cell_middle = 0.5_dp*(s_nodes(c) + s_nodes(c + 1))
+         else
+            cell_middle = 0.5_dp*(self%s(c) + self%s(c + 1))
+         end if
+      end function cell_middle
    end subroutine watch_step
 
    !> Step control after an accepted step of h_try: the time moves on (onto

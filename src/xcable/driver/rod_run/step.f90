@@ -17,7 +17,8 @@ contains
    !> Whether an end moves or changes its load in time.
    logical module function ends_change(self)
       type(rod_run), intent(in) :: self
-      ends_change = self%scene%end_a%time_dependent() .or. self%scene%end_b%time_dependent()
+      ends_change = self%scene%end_a%time_dependent() .or. self%scene%end_b%time_dependent() .or. &
+                    self%other_ends_change
    end function ends_change
 
    !> Newton controls of a time step (see the module header).

@@ -225,6 +225,7 @@ contains
             call put_real_attr(group, 'break_time', summary%break_time, ok)
             call put_real_attr(group, 'break_s', summary%break_s, ok)
             call put_real_attr(group, 'break_ramp', summary%break_ramp, ok)
+            if (summary%break_line > 0) call put_int_attr(group, 'break_line', summary%break_line, ok)
          end if
          if (summary%by_tension) then
             call put_real_attr(group, 'mbl', summary%mbl, ok)

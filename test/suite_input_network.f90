@@ -9,6 +9,7 @@ module suite_input_network
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_core_error, only: fatal_error, stat_input
    use xcable_io_input, only: case_config, read_config, config_text
+   use xcable_io_input_checks, only: validate
    use xcable_driver_simulation, only: simulation
    use xcable_fixtures, only: write_text
    implicit none
@@ -66,7 +67,20 @@ contains
                new_unittest('network_with_static_tension', test_static), &
                new_unittest('network_box_scheme', test_box), &
                new_unittest('network_2d_model', test_2d), &
-               new_unittest('network_rupture', test_rupture), &
+               new_unittest('network_break_line_not_given', test_break_line_missing), &
+               new_unittest('network_break_no_such_line', test_break_no_such_line), &
+               new_unittest('network_break_beyond_the_line', test_break_beyond_line), &
+               new_unittest('network_break_at_a_free_end_b', test_break_free_b), &
+               new_unittest('network_break_at_a_free_end_a', test_break_free_a), &
+               new_unittest('network_tension_break_with_line', test_tension_with_line), &
+               new_unittest('network_tension_uniform_line_without_mbl', test_tension_uniform), &
+               new_unittest('network_tension_segment_without_mbl', test_tension_segment), &
+               new_unittest('rupture_line_without_network', test_line_single), &
+               new_unittest('network_break_by_time', test_break_by_time), &
+               new_unittest('network_break_at_held_ends', test_break_held_ends), &
+               new_unittest('network_break_disabled', test_break_disabled), &
+               new_unittest('network_break_by_tension_line_cases', test_break_by_tension), &
+               new_unittest('network_break_echo_round_trip', test_break_echo), &
                new_unittest('network_static_friction', test_static_friction), &
                new_unittest('network_body_on_joint', test_body_joint), &
                new_unittest('network_point_without_lines', test_without_lines), &
@@ -355,11 +369,208 @@ contains
                           [character(len=40) :: "&seabed: static_friction = 'end_a'", "allowed: static_friction = 'none'"])
    end subroutine test_static_friction
 
-   subroutine test_rupture(error)
+   !> A break by time without the line that parts.
+   subroutine test_break_line_missing(error)
       type(error_type), allocatable, intent(out) :: error
-      call expect_refusal(error, spread()//"&rupture criterion = 'tension', mbl = 1e6 /"//nl, &
-                          [character(len=40) :: "&rupture: criterion = 'tension'", 'does not break'])
-   end subroutine test_rupture
+      call expect_refusal(error, spread()//'&rupture t_break = 0.01 /'//nl, &
+                          [character(len=50) :: '&rupture: line not given', "criterion = 'time'", &
+                          'give line = 1 .. 3'])
+   end subroutine test_break_line_missing
+
+   subroutine test_break_no_such_line(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, spread()//'&rupture line = 5 /'//nl, &
+                          [character(len=50) :: '&rupture: line = 5', 'no such line', 'allowed: 1 .. 3'])
+   end subroutine test_break_no_such_line
+
+   !> s_break beyond the length of its line (150 m).
+   subroutine test_break_beyond_line(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, spread()//'&rupture line = 2, s_break = 150.5 /'//nl, &
+                          [character(len=50) :: '&rupture: s_break = 150.5', 'must be from 0 to 150', &
+                          'the length of &line_2'])
+   end subroutine test_break_beyond_line
+
+   !> s_break not given: the end b of line 2, at the free buoy.
+   subroutine test_break_free_b(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, spread()//'&rupture line = 2, time = 0.5 /'//nl, &
+                          [character(len=60) :: '&rupture: s_break = 150 (not given: the end b of &line_2)', &
+                          "&point_1 of kind 'free'", 'a break at a free point', &
+                          'give s_break inside the line, 0 < s_break < 150'])
+   end subroutine test_break_free_b
+
+   !> s_break = 0 on line 3 turned round: its end a at the free buoy.
+   subroutine test_break_free_a(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, replaced(spread(), "end_a = 'point_4', end_b = 'point_1'", &
+                                          "end_a = 'point_1', end_b = 'point_4'")//'&rupture line = 3, s_break = 0 /'//nl, &
+                          [character(len=60) :: '&rupture: s_break = 0, at end a of &line_3', &
+                          "&point_1 of kind 'free'", 'a break at a free point'])
+   end subroutine test_break_free_a
+
+   !> A break by tension with line, s_break and time: all three named.
+   subroutine test_tension_with_line(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, spread()//"&rupture criterion = 'tension', mbl = 1e6, line = 2, s_break = 3, "// &
+                          'time = 1 /'//nl, &
+                          [character(len=70) :: "&rupture: criterion = 'tension', line = 2, s_break = 3, time = 1", &
+                          'not used'])
+   end subroutine test_tension_with_line
+
+   !> A break by tension without &rupture mbl: the uniform line 3 has no breaking load.
+   subroutine test_tension_uniform(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, replaced(replaced(spread(), '&segment_1 length = 50, nodes = 11 /', &
+                                                   '&segment_1 length = 50, nodes = 11, mbl = 1e6 /'), &
+                                          '&segment_2 length = 100, nodes = 21 /', &
+                                          '&segment_2 length = 100, nodes = 21, mbl = 1e6 /')// &
+                          "&rupture criterion = 'tension' /"//nl, &
+                          [character(len=60) :: '&line_3: a uniform line', '&rupture mbl = not given', &
+                          'breaking load of every line'])
+   end subroutine test_tension_uniform
+
+   !> A break by tension with every line of segments, &segment_2 without its breaking load.
+   subroutine test_tension_segment(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, replaced(replaced(spread(), '&segment_1 length = 50, nodes = 11 /', &
+                                                   '&segment_1 length = 50, nodes = 11, mbl = 1e6 /'), &
+                                          'length = 160, nodes = 31 /', 'segments = 1, 2 /')// &
+                          "&rupture criterion = 'tension' /"//nl, &
+                          [character(len=60) :: '&segment_2: mbl = 0 and &rupture mbl = not given', &
+                          'every segment'])
+   end subroutine test_tension_segment
+
+   !> &rupture line on the single line.
+   subroutine test_line_single(error)
+      type(error_type), allocatable, intent(out) :: error
+      call expect_refusal(error, '&cable length = 60 /'//nl//'&rupture line = 1, s_break = 30 /'//nl, &
+                          [character(len=50) :: '&rupture: line = 1', 'only with &line groups'])
+   end subroutine test_line_single
+
+   !> A break by time 70 m along line 2 (beyond &cable length's default, 60 m): the case keeps it;
+   !> line 2's case breaks there, with the &rupture variables given but line; line 1's does not.
+   subroutine test_break_by_time(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c, l1, l2, l3
+      call write_text(path, spread()//'&rupture line = 2, s_break = 70, time = 0.5, t_break = 0.01 /'//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      call check(error, c%break_enabled .and. c%break_line == 2 .and. c%s_break == 70 .and. c%break_time == 0.5_dp &
+                 .and. trim(c%break_criterion) == 'time', 'the break read')
+      if (allocated(error)) return
+      l2 = c%line_case(2)
+      call check(error, l2%break_enabled .and. trim(l2%break_criterion) == 'time' .and. l2%s_break == 70 .and. &
+                 l2%break_time == 0.5_dp .and. l2%t_break == 0.01_dp .and. l2%break_line == 0 .and. &
+                 l2%length == 150, 'line 2 breaks 70 m from its end a at 0.5 s')
+      if (allocated(error)) return
+      call check(error, l2%is_given('rupture', 's_break') .and. l2%is_given('rupture', 'time') .and. &
+                 l2%is_given('rupture', 't_break') .and. .not. l2%is_given('rupture', 'line'), &
+                 "line 2's case: the &rupture variables given, but line: "//l2%given)
+      if (allocated(error)) return
+      l1 = c%line_case(1)
+      l3 = c%line_case(3)
+      call check(error, .not. l1%break_enabled .and. .not. l1%is_given('rupture', 's_break') .and. &
+                 .not. l3%break_enabled, 'lines 1 and 3 do not break')
+   end subroutine test_break_by_time
+
+   !> Breaks at held ends: line 2 turned round (from the buoy to the anchor &point_3), s_break not
+   !> given, at its end b (150 m); line 3 at its end a (the motion point). Each line case passes
+   !> the single line's checks (its end there held). (Not line 1: the buoy's body is on its case,
+   !> at an end held there, which the single line refuses.)
+   subroutine test_break_held_ends(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c, l
+      character(:), allocatable :: turned
+      turned = replaced(spread(), "&line_2 end_a = 'Point_3', end_b = 'point_1', segments = 1, 2 /", &
+                        "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2, 1 /")
+      call write_text(path, turned//'&rupture line = 2, time = 0.2 /'//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      call check(error, c%s_break == 150, 's_break not given: the end b of line 2, 150 m')
+      if (allocated(error)) return
+      l = c%line_case(2)
+      call check(error, l%break_enabled .and. l%s_break == 150 .and. trim(l%end_b%kind) == 'fixed' .and. &
+                 l%end_b%y == 173.2_dp .and. l%segments(1)%length == 100 .and. l%point_count == 0, &
+                 "line 2's case: the break at its fixed end b")
+      if (allocated(error)) return
+      call validate(l, error)
+      if (allocated(error)) return
+      call write_text(path, spread()//'&rupture line = 3, s_break = 0 /'//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      l = c%line_case(3)
+      call check(error, l%break_enabled .and. l%s_break == 0 .and. trim(l%end_a%kind) == 'motion', &
+                 "line 3's case: the break at its motion end a")
+      if (allocated(error)) return
+      call validate(l, error)
+   end subroutine test_break_held_ends
+
+   !> &rupture enabled = .false. with a line: read, no line breaks.
+   subroutine test_break_disabled(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c, l
+      call write_text(path, spread()//'&rupture enabled = .false., line = 2 /'//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      l = c%line_case(2)
+      call check(error, .not. c%break_enabled .and. .not. l%break_enabled, 'no break')
+   end subroutine test_break_disabled
+
+   !> A break by tension: no line's case breaks, each keeps the MBLs (the segments' own, &rupture
+   !> mbl for the uniform line 3 and as each case's mbl).
+   subroutine test_break_by_tension(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c, l, s1, s2
+      integer :: k
+      call write_text(path, replaced(replaced(spread(), '&segment_1 length = 50, nodes = 11 /', &
+                                              '&segment_1 length = 50, nodes = 11, mbl = 2e6 /'), &
+                                     '&segment_2 length = 100, nodes = 21 /', &
+                                     '&segment_2 length = 100, nodes = 21, mbl = 1e6 /')// &
+                      "&rupture criterion = 'tension', mbl = 5e5 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      do k = 1, 3
+         l = c%line_case(k)
+         call check(error, .not. l%break_enabled .and. l%mbl == 5.0e5_dp, 'line case without a break, its mbl')
+         if (allocated(error)) return
+      end do
+      l = c%line_case(1)
+      s1 = l%segment_case(1)
+      s2 = l%segment_case(2)
+      call check(error, l%segments(1)%mbl == 2.0e6_dp .and. l%segments(2)%mbl == 1.0e6_dp .and. &
+                 s1%mbl == 2.0e6_dp .and. s2%mbl == 1.0e6_dp, "line 1's segments keep their MBLs")
+      if (allocated(error)) return
+      l = c%line_case(3)
+      s1 = l%segment_case(1)
+      call check(error, l%segment_count == 0 .and. s1%mbl == 5.0e5_dp, 'the uniform line 3: &rupture mbl')
+   end subroutine test_break_by_tension
+
+   !> The echo of a network's break by time names its line and reads back to itself; without a
+   !> break the echo names no line.
+   subroutine test_break_echo(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c, back
+      character(:), allocatable :: text
+      call write_text(path, spread()//'&rupture line = 2, s_break = 70, time = 0.5 /'//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      text = config_text(c)
+      call check(error, index(text, 's_break = 70') > 0 .and. index(text, 'line = 2 /') > 0, &
+                 'the echo of the break: '//text)
+      if (allocated(error)) return
+      call write_text(echo_path, text)
+      call read_config(echo_path, back, error)
+      if (allocated(error)) return
+      back%source = c%source
+      back%file = c%file
+      call check(error, config_text(back) == text, 'the echo read back differs: '//config_text(back))
+      if (allocated(error)) return
+      call write_text(path, spread())
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      call check(error, index(config_text(c), 'line = ') == 0, 'a line named without a break')
+   end subroutine test_break_echo
 
    subroutine test_body_joint(error)
       type(error_type), allocatable, intent(out) :: error

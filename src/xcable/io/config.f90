@@ -234,6 +234,9 @@ module xcable_io_config
       !> Minimum breaking load, N (&rupture mbl; criterion 'tension'; 0: not given). One value for
       !> the line: a per-segment value comes with the segments.
       real(dp) :: mbl = 0
+      !> The line of a network that parts (&rupture line: &line_k, criterion 'time'; 0: not given).
+      !> s_break is then measured along that line from its end a.
+      integer :: break_line = 0
       ! &numerics
       !> Discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme).
       character(len=16) :: scheme = 'rod'
@@ -517,10 +520,15 @@ contains
    !> point's end; a free point held fixed at its x, y, z, the first guess the network starts
    !> from); the body of a free point as &point_1 (and &point_2) at its end, on the lowest-numbered
    !> line that ends at that point only; no &line groups, no network points, no &static tension,
-   !> no break, the 3-D model. is_given answers for the groups it makes as if the file had
-   !> written them: the segments' variables under their new numbers, the ends' kind and position
-   !> (and a motion point's variables given), the bodies' joint and variables given. (The body sits
-   !> on an end held here: the case is a start for the network's solve, not a case to validate.)
+   !> the 3-D model. The break: the line of a break by time (&rupture line = l, enabled) keeps it,
+   !> criterion 'time', its time, t_break and s_break (along the line from its end a, as the
+   !> network's: -1 its end b), and the &rupture variables given (but line); every other line, and
+   !> every line of a break by tension, does not break (break_enabled .false.) but keeps the MBLs
+   !> (mbl and its segments'), which the network's break by tension reads. is_given answers for
+   !> the groups it makes as if the file had written them: the segments' variables under their
+   !> new numbers, the ends' kind and position (and a motion point's variables given), the bodies'
+   !> joint and variables given. (The body sits on an end held here: the case is a start for the
+   !> network's solve, not a case to validate.)
    function line_case(self, l) result(c)
       !> The case (validated).
       class(case_config), intent(in) :: self
@@ -532,6 +540,9 @@ contains
       integer :: k, j, side, p, pos
       type(point_config) :: body
       type(end_config) :: e
+      logical :: parts
+      ! Whether this line is the one that parts at a time (its break is the single line's).
+      parts = self%break_enabled .and. trim(self%break_criterion) == 'time' .and. l == self%break_line
       all_given = ''
       if (allocated(self%given)) all_given = self%given
       c = self
@@ -539,7 +550,8 @@ contains
       c%point_count = 0
       c%points = point_config()
       if (allocated(c%point_ends)) deallocate (c%point_ends)
-      c%break_enabled = .false.
+      c%break_enabled = parts
+      c%break_line = 0
       c%model = '3d'
       given = ''
       ! The groups the line case makes again are left out; the rest as given.
@@ -609,7 +621,10 @@ contains
          pct = index(word, '%')
          made_here = starts(word, 'segment_') .or. starts(word, 'point_') .or. starts(word, 'line_') .or. &
                      starts(word, 'end_a%') .or. starts(word, 'end_b%') .or. starts(word, 'static%') .or. &
-                     starts(word, 'rupture%') .or. word == 'cable%length' .or. word == 'numerics%nodes'
+                     word == 'cable%length' .or. word == 'numerics%nodes'
+         ! &rupture: the line that parts keeps what was given of it (its s_break, time, t_break,
+         ! criterion), but not which line (a single line has no &rupture line); the others none.
+         if (starts(word, 'rupture%')) made_here = .not. parts .or. word == 'rupture%line'
          if (pct == 0) made_here = .true.
       end function made_here
 

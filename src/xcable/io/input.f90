@@ -175,14 +175,14 @@ contains
       real(dp) :: p(5), ea, strain_max, tension, s_break, t_break, time, dt, courant, t_end, theta, newton_tol
       real(dp) :: min_step_fraction, max_wall_time, interval, damping, checkpoint_interval, mbl
       real(dp) :: table_strain(max_table_points), table_tension(max_table_points)
-      integer :: nodes, newton_max_iter
+      integer :: nodes, newton_max_iter, line
       logical :: enabled, reuse_jacobian, extrapolate, skip_quiescent, quiet, energy, gnuplot, xdmf
       character(len=512) :: file, table_file
       character(len=256) :: fields
       namelist /cable/ length, diameter, density, young, gravity, area, bending_stiffness, gip
       namelist /material/ law, p, ea, table_strain, table_tension, table_file, strain_max, compression, damping
       namelist /static/ tension
-      namelist /rupture/ enabled, s_break, t_break, time, criterion, mbl
+      namelist /rupture/ enabled, s_break, t_break, time, criterion, mbl, line
       namelist /numerics/ scheme, model, nodes, dt, courant, t_end, theta, mass_matrix, newton_tol, newton_max_iter, &
          reuse_jacobian, extrapolate, min_step_fraction, max_wall_time, skip_quiescent
       namelist /output/ file, interval, fields, quiet, energy, gnuplot, xdmf, checkpoint_interval
@@ -196,7 +196,7 @@ contains
       table_file = c%material_table_file; damping = c%damping
       tension = c%tension
       enabled = c%break_enabled; s_break = c%s_break; t_break = c%t_break; time = c%break_time
-      criterion = c%break_criterion; mbl = c%mbl
+      criterion = c%break_criterion; mbl = c%mbl; line = c%break_line
       scheme = c%scheme; model = c%model; nodes = c%nodes; dt = c%dt; courant = c%courant; t_end = c%t_end; theta = c%theta
       mass_matrix = c%mass_matrix; newton_tol = c%newton_tol; newton_max_iter = c%newton_max_iter
       reuse_jacobian = c%reuse_jacobian; extrapolate = c%extrapolate; min_step_fraction = c%min_step_fraction
@@ -263,7 +263,7 @@ contains
       c%material_table_file = table_file; c%damping = damping
       c%tension = tension
       c%break_enabled = enabled; c%s_break = s_break; c%t_break = t_break; c%break_time = time
-      c%break_criterion = criterion; c%mbl = mbl
+      c%break_criterion = criterion; c%mbl = mbl; c%break_line = line
       c%scheme = scheme; c%model = model; c%nodes = nodes; c%dt = dt; c%courant = courant; c%t_end = t_end; c%theta = theta
       c%mass_matrix = mass_matrix; c%newton_tol = newton_tol; c%newton_max_iter = newton_max_iter
       c%reuse_jacobian = reuse_jacobian; c%extrapolate = extrapolate; c%min_step_fraction = min_step_fraction

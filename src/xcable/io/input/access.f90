@@ -114,6 +114,7 @@ contains
       case ('rupture%time'); call move(c%break_time, v, store)
       case ('rupture%criterion'); call move(c%break_criterion, v, store)
       case ('rupture%mbl'); call move(c%mbl, v, store)
+      case ('rupture%line'); call move(c%break_line, v, store)
       case ('numerics%scheme'); call move(c%scheme, v, store)
       case ('numerics%model'); call move(c%model, v, store)
       case ('numerics%nodes'); call move(c%nodes, v, store)

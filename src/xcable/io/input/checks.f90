@@ -21,7 +21,7 @@ module xcable_io_input_checks
    public :: derive_defaults, max_time_steps, validate
    ! For the submodule io/input/checks/points.f90 (gfortran gives a module's private procedures
    ! no symbol a submodule can link to).
-   public :: check_entry, quoted_words
+   public :: check_entry, quoted_words, check_segment_loads
 
    !> Most snapshots a run may ask for (t_end / interval).
    real(dp), parameter :: max_snapshots = 1.0e5_dp
@@ -87,13 +87,22 @@ module xcable_io_input_checks
          !> Error naming file, group, variable, value and what is allowed.
          type(error_type), allocatable, intent(out) :: error
       end subroutine check_lines
+
+      !> The break of a network (io/input/checks/network.f90).
+      module subroutine check_network_rupture(c, error)
+         !> The case.
+         type(case_config), intent(in) :: c
+         !> Error naming file, group, variable, value and what is allowed.
+         type(error_type), allocatable, intent(out) :: error
+      end subroutine check_network_rupture
    end interface
 
 contains
 
    !> The values whose 0 means "derived from others": the area from the
    !> diameter, EI from young and the diameter, EA of the linear law from young
-   !> and the area; and a negative s_break, the end b (s = L). On a line of
+   !> and the area; and a negative s_break, the end b (s = L; in a network, the
+   !> length of its &rupture line, when that is one of its lines). On a line of
    !> segments, &cable length not given is the sum of their lengths, and
    !> &numerics nodes not given, when every segment gives its nodes, their sum
    !> less the joints. Called by validate and by setup_case, so that a case
@@ -114,7 +123,16 @@ contains
       if (c%bending_stiffness == 0) c%bending_stiffness = c%young*pi*c%diameter**4/64
       if (c%gip == 0) c%gip = c%bending_stiffness/(1 + default_poisson)
       if (c%law == 'linear' .and. c%ea == 0) c%ea = c%young*c%area
-      if (c%s_break < 0) c%s_break = c%length
+      if (c%s_break < 0) then
+         ! A network's break by time: the end b of its &rupture line (its length, after check_lines).
+         if (c%line_count > 0 .and. c%break_line >= 1 .and. c%break_line <= c%line_count) then
+            if (c%lines(max(c%break_line, 1))%length > 0) then
+               c%s_break = c%lines(max(c%break_line, 1))%length
+               return
+            end if
+         end if
+         c%s_break = c%length
+      end if
    end subroutine derive_defaults
 
    !> The checks of a case read: the tables from files, every variable
@@ -157,6 +175,8 @@ contains
       do i = 1, size(t)
          ! (The segments' variables are checked with their segment, below.)
          if (segment_of(t(i)%group) > 0 .or. point_of(t(i)%group) > 0 .or. line_of(t(i)%group) > 0) cycle
+         ! (A network's s_break is along its &rupture line, not &cable length: check_network_rupture.)
+         if (c%line_count > 0 .and. t(i)%group == 'rupture' .and. t(i)%name == 's_break') cycle
          call check_entry(c, t(i), error)
          if (allocated(error)) return
       end do
@@ -169,6 +189,8 @@ contains
       call check_points(c, t, error)
       if (allocated(error)) return
       call check_lines(c, t, error)
+      if (allocated(error)) return
+      call check_network_rupture(c, error)
       if (allocated(error)) return
       call derive_defaults(c)
       ! (Fortran does not short-circuit .and.: the division only where the divisor is positive.)
@@ -533,7 +555,6 @@ contains
       character(:), allocatable :: position, broken, held
       type(end_config) :: e
       logical :: held_a, held_b
-      integer :: k
 
       e = c%end_a
       call check_end(c, 'end_a', e, c%end_b, error)
@@ -624,6 +645,9 @@ contains
          return
       end if
 
+      ! A network's break: its lines and points (check_network_rupture); not these ends'.
+      if (c%line_count > 0) return
+
       ! A break by tension: where and when follow from mbl, not from s_break and time.
       if (c%break_enabled .and. trim(c%break_criterion) == 'tension') then
          if (trim(c%scheme) == 'box') then
@@ -641,18 +665,10 @@ contains
                              "time are not used; leave them out, or give criterion = 'time'", stat_input)
             return
          end if
-         if (c%segment_count > 0 .and. .not. (c%is_given('rupture', 'mbl') .and. c%mbl > 0)) then
+         if (c%segment_count > 0) then
             ! On a line of segments: a breaking load for every segment, its own or the line's.
-            position = 'not given'
-            if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
-            do k = 1, c%segment_count
-               if (c%segments(k)%mbl > 0) cycle
-               call fatal_error(error, c%source//': &'//trim(segment_group(k))//": mbl = 0 and &rupture mbl = "// &
-                                position//": criterion = 'tension' needs the minimum breaking load of every segment, a "// &
-                                'tension above 0 N: give mbl in &'//trim(segment_group(k))//' or &rupture mbl', &
-                                stat_input)
-               return
-            end do
+            call check_segment_loads(c, error)
+            return
          else if (.not. c%is_given('rupture', 'mbl') .or. c%mbl <= 0) then
             position = 'not given'
             if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
@@ -708,6 +724,29 @@ contains
          end if
       end subroutine above_seabed
    end subroutine check_scene
+
+   !> A break by tension on a line of segments (or the segments of a network's lines, all of
+   !> which serve a line): the minimum breaking load of every segment, its own (&segment_k mbl)
+   !> or &rupture mbl.
+   subroutine check_segment_loads(c, error)
+      !> The case.
+      type(case_config), intent(in) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: position
+      integer :: k
+      if (c%is_given('rupture', 'mbl') .and. c%mbl > 0) return
+      position = 'not given'
+      if (c%is_given('rupture', 'mbl')) position = real_text(c%mbl)
+      do k = 1, c%segment_count
+         if (c%segments(k)%mbl > 0) cycle
+         call fatal_error(error, c%source//': &'//trim(segment_group(k))//": mbl = 0 and &rupture mbl = "// &
+                          position//": criterion = 'tension' needs the minimum breaking load of every segment, a "// &
+                          'tension above 0 N: give mbl in &'//trim(segment_group(k))//' or &rupture mbl', &
+                          stat_input)
+         return
+      end do
+   end subroutine check_segment_loads
 
    !> The model against the scene: 3-D data under model = '2d', and what the
    !> 3-D model does not do (the box scheme).

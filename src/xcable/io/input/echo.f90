@@ -231,13 +231,17 @@ contains
       if (e%group == 'static' .and. e%name == 'tension') echoed = .not. position_b .and. &
          is_word(c%end_a%kind, 'fixed') .and. is_word(c%end_b%kind, 'fixed')
       ! &rupture: criterion and mbl for a break by tension, s_break and time for one by time
-      ! (the echo of a case by time is that of the cases before the criterion).
+      ! (the echo of a case by time is that of the cases before the criterion), and a network's
+      ! line that parts.
       if (e%group == 'rupture') then
          select case (e%name)
          case ('criterion', 'mbl')
             echoed = trim(c%break_criterion) == 'tension'
          case ('s_break', 'time')
             echoed = trim(c%break_criterion) /= 'tension'
+         case ('line')
+            ! (Only a network's break by time names a line: the echo of other cases as before.)
+            echoed = c%line_count > 0 .and. c%break_line > 0 .and. trim(c%break_criterion) /= 'tension'
          end select
          return
       end if

@@ -153,6 +153,9 @@ contains
       call add(t, 'rupture', 'mbl', 'real', 'N', '0', &
                "minimum breaking load of the line (criterion 'tension'): the line parts where and when a cell's "// &
                'tension first reaches it', 0.0_dp, 1.0e12_dp, lower_open=.true., zero_means='not given')
+      call add(t, 'rupture', 'line', 'integer', '-', '0', &
+               "the line of a network that parts (&line_k, criterion 'time'); only with &line groups; s_break is "// &
+               'then measured along that line from its end a', 0.0_dp, real(max_lines, dp), zero_means='not given')
       ! &numerics
       call add(t, 'numerics', 'scheme', 'string', '-', "'rod'", &
                "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &

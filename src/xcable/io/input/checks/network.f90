@@ -16,7 +16,8 @@ contains
 
    !> What a case with &line groups may not have, before the segments and points are checked:
    !> &end_a or &end_b (the lines end at points), &static tension, the box scheme, the 2-D model,
-   !> a break. Without &line groups: no network point (a kind without a line to end).
+   !> friction in the statics. Without &line groups: no network point (a kind without a line to
+   !> end), no &rupture line.
    module subroutine check_network_groups(c, t, error)
       !> The case.
       type(case_config), intent(inout) :: c
@@ -31,6 +32,12 @@ contains
          if (allocated(error)) return
       end do
       if (c%line_count == 0) then
+         if (c%is_given('rupture', 'line')) then
+            call fatal_error(error, c%source//': &rupture: line = '//str(c%break_line)//': only with &line groups '// &
+                             '(the line of a network that parts); the single line breaks at s_break from its end a: '// &
+                             'leave line out', stat_input)
+            return
+         end if
          do k = 1, c%point_count
             if (.not. c%points(k)%in_network()) cycle
             call fatal_error(error, c%source//': &'//trim(point_group(k))//": kind = '"//trim(c%points(k)%kind)// &
@@ -72,12 +79,6 @@ contains
          call fatal_error(error, c%source//": &seabed: static_friction = '"//trim(c%static_friction)//"' with "// &
                           lines//": a network's statics has no friction on the bottom (not yet; the dynamics have "// &
                           "it); allowed: static_friction = 'none'", stat_input)
-         return
-      end if
-      if (c%break_enabled) then
-         call fatal_error(error, c%source//": &rupture: criterion = '"//trim(c%break_criterion)//"' with "//lines// &
-                          ': a network of lines does not break (not yet); leave &rupture out, or give enabled = '// &
-                          '.false.', stat_input)
          return
       end if
 
@@ -435,6 +436,96 @@ contains
          if (ra /= rb) root(max(ra, rb)) = min(ra, rb)
       end subroutine join
    end subroutine check_lines
+
+   !> The break of a network (&rupture, after check_lines: the lines' ends and lengths known).
+   !> Criterion 'time': the line that parts (&rupture line, 1 .. line_count; required when the
+   !> break is enabled) and s_break along it from its end a, in [0, its length] (not given: its
+   !> end b); a break at an end of the line only where that end's point is held ('fixed' or
+   !> 'motion': a line lets go of it), not at a free point. Criterion 'tension' (enabled): no line,
+   !> s_break nor time (where and when follow from the MBLs), and a breaking load for every line:
+   !> &rupture mbl, or on a line of segments each segment's (check_segment_loads, as for the
+   !> single line; every segment serves a line).
+   module subroutine check_network_rupture(c, error)
+      !> The case (validated lines).
+      type(case_config), intent(in) :: c
+      !> Error naming file, group, variable, value and what is allowed.
+      type(error_type), allocatable, intent(out) :: error
+      character(:), allocatable :: prefix, lines, what, at, default
+      real(dp) :: s, length
+      integer :: l, side, p
+      if (c%line_count == 0) return
+      prefix = c%source//': &rupture: '
+      lines = group_list([(line_group(l), l=1, c%line_count)], '&', '', ', ')
+      if (c%break_enabled .and. trim(c%break_criterion) == 'tension') then
+         what = ''
+         if (c%is_given('rupture', 'line')) what = what//', line = '//str(c%break_line)
+         if (c%is_given('rupture', 's_break')) what = what//', s_break = '//real_text(c%s_break)
+         if (c%is_given('rupture', 'time')) what = what//', time = '//real_text(c%break_time)
+         if (len(what) > 0) then
+            call fatal_error(error, prefix//"criterion = 'tension'"//what//' with '//lines//': a line of the '// &
+                             'network parts where and when its tension first reaches the MBL, so line, s_break and '// &
+                             "time are not used; leave them out, or give criterion = 'time'", stat_input)
+            return
+         end if
+         if (c%is_given('rupture', 'mbl') .and. c%mbl > 0) return
+         what = 'not given'
+         if (c%is_given('rupture', 'mbl')) what = real_text(c%mbl)
+         do l = 1, c%line_count
+            if (c%lines(l)%segment_count > 0) cycle
+            call fatal_error(error, c%source//': &'//trim(line_group(l))//': a uniform line (no segments) and '// &
+                             '&rupture mbl = '//what//": criterion = 'tension' needs the minimum breaking load of "// &
+                             'every line, a tension above 0 N: give &rupture mbl (or make the line of &segment_k '// &
+                             'groups, each with its mbl)', stat_input)
+            return
+         end do
+         ! Every segment serves a line (check_lines): the single line's check over all of them.
+         call check_segment_loads(c, error)
+         return
+      end if
+      ! Criterion 'time' (or no break): the line that parts, and s_break along it.
+      l = c%break_line
+      if (l < 1 .or. l > c%line_count) then
+         if (c%is_given('rupture', 'line')) then
+            call fatal_error(error, prefix//'line = '//str(l)//': no such line; allowed: 1 .. '//str(c%line_count)// &
+                             ' (the &line_k groups given: '//lines//')', stat_input)
+            return
+         end if
+         if (.not. c%break_enabled) return
+         call fatal_error(error, prefix//"line not given with criterion = 'time' and "//lines//': the break of a '// &
+                          'network is on one of its lines; give line = 1 .. '//str(c%line_count)//' (s_break is '// &
+                          "then measured along it from its end a), or criterion = 'tension'", stat_input)
+         return
+      end if
+      length = c%lines(l)%length
+      if (c%is_given('rupture', 's_break') .and. (c%s_break < 0 .or. c%s_break > length)) then
+         call fatal_error(error, prefix//'s_break = '//real_text(c%s_break)//': must be from 0 to '// &
+                          real_text(length)//', the length of &'//trim(line_group(l))//' (line = '//str(l)// &
+                          '): s_break is measured along it from its end a', stat_input)
+         return
+      end if
+      if (.not. c%break_enabled) return
+      ! A break at an end of the line (within the scene's tolerance, scene/scene.f90 set_break).
+      s = c%s_break
+      default = ''
+      if (s < 0) then
+         s = length
+         default = ' (not given: the end b of &'//trim(line_group(l))//')'
+      end if
+      if (s/length <= 1.0e-12_dp) then
+         side = 1
+      else if (s/length >= 1 - 1.0e-12_dp) then
+         side = 2
+      else
+         return
+      end if
+      p = c%lines(l)%end_point(side)
+      if (is_word(c%points(p)%kind, 'fixed motion')) return
+      at = ', at end '//merge('a', 'b', side == 1)//' of &'//trim(line_group(l))//" (line = "//str(l)//'), &'// &
+           trim(point_group(p))//" of kind '"//trim(c%points(p)%kind)//"'"
+      call fatal_error(error, prefix//'s_break = '//real_text(s)//default//at//': a break at a free point: give '// &
+                       's_break inside the line, 0 < s_break < '//real_text(length)//' (a line cannot let go of a '// &
+                       "free point; a break at an end is for a 'fixed' or 'motion' point)", stat_input)
+   end subroutine check_network_rupture
 
    !> The variables of &point_k a network point of a kind uses: the position; a free point's
    !> body; a motion point's, those of an end of kind 'motion' (the end registry's).

@@ -43,7 +43,10 @@ contains
                new_unittest('point_stiffness_fd', test_point_stiffness), &
                new_unittest('spread_at_a_buoy_symmetric_and_ledger', test_spread), &
                new_unittest('input_two_lines_equal_one_line', test_input_equal_one_line), &
-               new_unittest('buoy_on_legs_lying_on_the_seabed_ledger', test_seabed_ledger)]
+               new_unittest('buoy_on_legs_lying_on_the_seabed_ledger', test_seabed_ledger), &
+               new_unittest('break_by_time_inside_equals_one_line', test_break_time), &
+               new_unittest('break_by_tension_inside_equals_one_line', test_break_tension_inside), &
+               new_unittest('break_by_tension_at_the_fairlead_equals_one_line', test_break_tension_end)]
    end subroutine collect_network
 
    !> Read and prepare a case given as namelist text.
@@ -412,6 +415,120 @@ contains
       if (allocated(error)) return
       call check(error, drift < 1.0e-13_dp, 'the network''s ledger drifts by '//str(drift))
    end subroutine test_input_equal_one_line
+   !> A break by time in the second line of the network of test_input_equal_one_line, 30 m
+   !> from the buoy, against the one line's break at the same place (70 m from the anchor).
+   subroutine test_break_time(error)
+      type(error_type), allocatable, intent(out) :: error
+      call break_equal_one_line("&rupture time = 0.5, s_break = 70.0, t_break = 0.05 /", &
+                                "&rupture line = 2, time = 0.5, s_break = 30.0, t_break = 0.05 /", &
+                                70.0_dp, 1.0e-13_dp, 5.0e-11_dp, error)
+      ! Measured: the ends 4.0e-14 of L, their tensions 1.7e-11 of the largest.
+   end subroutine test_break_time
+
+   !> A break by tension (mbl 33 kN), found by each code's first pass near the fairlead (a node
+   !> inside the line), against the one line's.
+   subroutine test_break_tension_inside(error)
+      type(error_type), allocatable, intent(out) :: error
+      call break_equal_one_line("&rupture criterion = 'tension', mbl = 33000.0, t_break = 0.05 /", &
+                                "&rupture criterion = 'tension', mbl = 33000.0, t_break = 0.05 /", &
+                                87.0_dp, 1.0e-11_dp, 2.0e-10_dp, error)
+      ! Measured: the two first passes' breaks 1.9e-13 s apart (their searches' round-off); the
+      ! ends then 2.6e-12 of L, their tensions 6.5e-11 of the largest.
+   end subroutine test_break_tension_inside
+
+   !> A break by tension (mbl 31 kN) at the fairlead, a held end that lets go, against the one line's.
+   subroutine test_break_tension_end(error)
+      type(error_type), allocatable, intent(out) :: error
+      call break_equal_one_line("&rupture criterion = 'tension', mbl = 31000.0, t_break = 0.05 /", &
+                                "&rupture criterion = 'tension', mbl = 31000.0, t_break = 0.05 /", &
+                                90.0_dp, 3.0e-12_dp, 1.0e-8_dp, error)
+      ! Measured: the breaks 1.1e-14 s apart; the ends 6.3e-13 of L; the tensions 3.1e-9 of the
+      ! largest, at 0.95 s where the anchor's slack end pulls taut again (a tension of EA times a
+      ! strain from positions 5e-11 m apart).
+   end subroutine test_break_tension_end
+
+   !> The network of test_input_equal_one_line (two lines at a free point with the buoy) with a
+   !> break, against the one line with the buoy at its joint and the same break, both run for 1 s
+   !> at dt = 0.025 s (later, the slack and buckled line makes round-off grow: by 2 s to 3e-6 of
+   !> the largest tension): the break's time and place (s_expected on the results' arc length, the
+   !> same for both), every end's position and tension in the history (the network's line_1_a,
+   !> line_2_b, break_a, break_b against the one line's end_a, end_b, break_a, break_b) to tol of
+   !> the largest, and the network's ledger across the break.
+   subroutine break_equal_one_line(rupture_one, rupture_net, s_expected, tol_x, tol, error)
+      character(*), intent(in) :: rupture_one, rupture_net
+      real(dp), intent(in) :: s_expected, tol_x, tol
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: one, net
+      type(case_config) :: c
+      character(:), allocatable :: run
+      real(dp) :: worst, worst_x, drift, top, span
+      integer :: i, j, n_slots, slots(4)
+      run = ", dt = 0.025, t_end = 1.0 /"//nl//"&output energy = .true. /"
+      call write_text(path, common//one_line(run)//rupture_one//nl// &
+                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call one%prepare(c, error)
+      if (allocated(error)) return
+      call one%run(error=error)
+      if (allocated(error)) return
+      call write_text(path, common//numerics//run//nl//rupture_net//nl// &
+                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
+                      "&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
+                      "&segment_2 length = 50.0, nodes = 51 /"//nl// &
+                      xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])// &
+                      ", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
+                      xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
+                      xyz("&point_3 "//heave, fairlead)//" /"//nl// &
+                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
+                      "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call net%prepare(c, error)
+      if (allocated(error)) return
+      call net%run(error=error)
+      if (allocated(error)) return
+      associate (h1 => one%rod%history, h2 => net%rod%history, s1 => one%rod%summary, s2 => net%rod%summary)
+         call check(error, s1%broke .and. s2%broke, 'a run did not break (the one line: '// &
+                    merge('broke   ', 'no break', s1%broke)//', the network: '//merge('broke   ', 'no break', s2%broke)//')')
+         if (allocated(error)) return
+         call check(error, abs(s1%break_time - s2%break_time) <= 1.0e-12_dp .and. s2%break_line == 2 .and. &
+                    abs(s2%break_s - s_expected) < 1.0e-9_dp .and. abs(s1%break_s - s_expected) < 1.0e-9_dp, &
+                    'the breaks: the one line''s at t = '//str(s1%break_time)//' s, s = '//str(s1%break_s)// &
+                    ' m, the network''s at t = '//str(s2%break_time)//' s, s = '//str(s2%break_s)//' m of line '// &
+                    str(s2%break_line)//' (s = '//str(s_expected)//' m expected)')
+         if (allocated(error)) return
+         n_slots = size(h1%end_labels)
+         call check(error, h1%n == h2%n .and. size(h2%end_labels) == n_slots + 2, 'the runs took '//str(h1%n)//' and '// &
+                    str(h2%n)//' steps, with '//str(n_slots)//' and '//str(size(h2%end_labels))//' ends')
+         if (allocated(error)) return
+         ! The one line's ends (end_a, end_b and, of a break inside, break_a, break_b) in the network.
+         slots = [1, 4, 5, 6]
+         top = maxval(abs(h1%ends(5, 1:n_slots, 0:h1%n)))
+         span = 90
+         worst = 0
+         worst_x = 0
+         do i = 0, h1%n
+            do j = 1, n_slots
+               worst = max(worst, abs(h1%ends(5, j, i) - h2%ends(5, slots(j), i))/top)
+               worst_x = max(worst_x, maxval(abs(h1%ends(1:2, j, i) - h2%ends(1:2, slots(j), i)))/span, &
+                             abs(h1%ends_y(1, j, i) - h2%ends_y(1, slots(j), i))/span)
+            end do
+         end do
+         drift = maxval(abs(h2%energy(7, 0:h2%n) - h2%energy(7, 0)))/maxval(abs(h2%energy(1:4, 0:h2%n)))
+         write (output_unit, '(4x,a,es9.2,a,es9.2,a,es9.2,a,f8.5,a,es9.2,a)') 'the network''s break: its ends ', &
+            worst_x, ' of L and ', worst, ' of the largest tension off the one line''s; the ledger ', drift, &
+            '; at t = ', s2%break_time, ' s (', s2%break_time - s1%break_time, ' s after the one line''s)'
+         call check(error, worst_x < tol_x, 'the network''s ends are '//str(worst_x)//' of L off the one line''s')
+         if (allocated(error)) return
+         call check(error, worst < tol, 'the network''s end tensions are '//str(worst)//' off the one line''s')
+         if (allocated(error)) return
+         call check(error, drift < 1.0e-13_dp, 'the broken network''s ledger drifts by '//str(drift))
+      end associate
+   end subroutine break_equal_one_line
+
    !> The buoy of input/buoy_spread.nml on two legs of 80 m of chain and 120 m of polyester whose
    !> chains lie on a seabed 100 m deep with Coulomb friction, the hawser to the surging vessel:
    !> 2 s through the input and the driver. The ledger of the network closes with the contact and

@@ -364,9 +364,14 @@ contains
       real(dp), parameter :: degree = 180/acos(-1.0_dp)
       integer :: j, k
       character(:), allocatable :: line
-      text = 'static state: end a '//quantity(info%tension_a, 'N')//angle_text(info%end_angle)//', end b '// &
-             quantity(info%tension_b, 'N')//angle_text(info%end_angle_b)//'; span '//quantity(info%span, 'm')// &
-             ', lowest point z = '//quantity(info%lowest_z, 'm')//' at s = '//quantity(info%lowest_s, 'm')
+      if (info%one_line) then
+         text = 'static state: end a '//quantity(info%tension_a, 'N')//angle_text(info%end_angle)//', end b '// &
+                quantity(info%tension_b, 'N')//angle_text(info%end_angle_b)//'; span '//quantity(info%span, 'm')// &
+                ', lowest point z = '//quantity(info%lowest_z, 'm')//' at s = '//quantity(info%lowest_s, 'm')
+      else
+         ! A network: no one line's ends, span or lowest point (its points are in the statics' message).
+         text = 'static state: largest tension '//quantity(info%max_tension, 'N')
+      end if
       if (allocated(summary%notes)) then
          if (len(summary%notes) > 0) text = text//new_line('a')//summary%notes
       end if

@@ -54,7 +54,15 @@ _hi(a, b) = ceil(b / _step(b - a)) * _step(b - a)
 # Names of the ends in the history header (end_a, end_b, break_a, break_b), colours and symbols.
 end_name(n) = n eq "end_a" ? label_a : (n eq "end_b" ? label_b : \
               (n eq "break_a" ? "break, side of end a" : (n eq "break_b" ? "break, side of end b" : n)))
-end_colour(n) = n eq "end_a" ? 0x1f78b4 : (n eq "end_b" ? 0xd7301f : (n eq "break_a" ? 0x33a02c : 0xe08a00))
+# A network's ends line_k_a and line_k_b: a colour per line (ColorBrewer's Paired, dark for
+# end a, light for end b; lines 7 and 8 grey and black).
+_line_dark(k) = k == 1 ? 0x1f78b4 : k == 2 ? 0xe31a1c : k == 3 ? 0x33a02c : k == 4 ? 0xff7f00 : \
+                k == 5 ? 0x6a3d9a : k == 6 ? 0xb15928 : k == 7 ? 0x505050 : 0x000000
+_line_light(k) = k == 1 ? 0x7fb2d9 : k == 2 ? 0xf08a8b : k == 3 ? 0x8acd72 : k == 4 ? 0xfdb462 : \
+                 k == 5 ? 0xb39bd0 : k == 6 ? 0xd9a066 : k == 7 ? 0xa0a0a0 : 0x808080
+_is_line_end(n) = strlen(n) == 8 && n[1:5] eq "line_"
+end_colour(n) = n eq "end_a" ? 0x1f78b4 : (n eq "end_b" ? 0xd7301f : (n eq "break_a" ? 0x33a02c : \
+                (_is_line_end(n) ? (n[8:8] eq "a" ? _line_dark(int(n[6:6])) : _line_light(int(n[6:6]))) : 0xe08a00)))
 
 # One palette for the snapshot time, from dark blue (t = 0, the static state) through green and
 # orange to dark red (the last snapshot); every colour dark enough to show on white.

@@ -36,7 +36,9 @@
 # 1 s): killed after its first checkpoint and resumed, and stopped by SIGTERM and resumed; both
 # equal their reference bit for bit.
 # A network of lines (input/buoy_spread.nml, 20 s) stopped by SIGTERM and resumed equals its
-# reference bit for bit.
+# reference bit for bit. The network of input/buoy_spread_break.nml parted inside its hawser
+# (line 3, s = 55 m, at 0.5 s: a fourth line, the break's ends in the history) killed after its
+# first checkpoint (after the break) and resumed equals its reference bit for bit.
 # Then 24 SIGKILLs placed inside the 3-D run's file writes (a preloaded
 # library counts write calls; needs a C compiler): each resume equals the
 # reference or is refused with exit 2; none completes with other numbers.
@@ -458,6 +460,23 @@ code=$?
 check "network, --resume: exit $code, 'complete', no checkpoint left" \
    test "$code" -eq 0 -a "$(status_of stopnet.h5)" = complete -a ! -e stopnet.h5.ckpt
 check "network: the resumed run equals its reference bit for bit" same_as_reference stopnet refnet
+
+echo "test_checkpoint: a network parted inside a line, SIGKILL after the first checkpoint, then --resume"
+# input/buoy_spread_break.nml with a break by time in the hawser, 10 s.
+netbreak() {
+   sed -e "s#results/buoy_spread_break.h5#$1.h5#" -e "s/t_end = 40.0/t_end = 10.0/" \
+      -e "s/&rupture   criterion = 'tension', t_break = 0.01 \//\&rupture line = 3, s_break = 55.0, time = 0.5, t_break = 0.05 \//" \
+      -e "s/energy = .true. \//energy = .true.$2 \//" -e "s#input/buoy_spread_drift.dat#$root/input/buoy_spread_drift.dat#" \
+      -e "s/mbl = [0-9.e]*/mbl = 0.0/" "$root/input/buoy_spread_break.nml" >"$1.nml"
+}
+netbreak refnb ''
+"$exe" refnb.nml 2>refnb.err
+check "the network's reference run parted inside completes, with four lines' ends and the break's in the history" \
+   test "$(status_of refnb.h5)" = complete -a "$(int_attr refnb.h5 /summary/break_line)" = 3
+h5dump -H -d /history/break_b/y refnb.h5 >/dev/null 2>&1 ||
+   { failures=$((failures + 1)); echo "  FAIL the network's break inside has no /history/break_b/y"; }
+netbreak killednb ', checkpoint_interval = 0.2'
+killed_and_resumed killednb refnb "$(int_attr refnb.h5 /summary/steps)"
 
 echo "test_checkpoint: $(awk -v a="$t0" -v b="$(date +%s.%N)" 'BEGIN { printf "%.1f", b - a }') s, $passes passed, $failures failed"
 ((failures == 0))

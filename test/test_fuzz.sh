@@ -706,8 +706,23 @@ begin 'a network with the box scheme' '&numerics' "scheme = 'box'" "scheme = 'ro
 network; edit "s/^&numerics /\&numerics scheme = 'box', /"; check
 begin 'a network with the 2-D model' '&numerics' "model = '2d'" "allowed: model = '3d' or 'auto'"
 network; edit "s/^&numerics /\&numerics model = '2d', /"; check
-begin 'a network that breaks' '&rupture' "criterion = 'time'" 'does not break'
+begin "a network's break without its line" '&rupture' 'line not given' 'give line = 1 .. 3'
 network; add '&rupture t_break = 0.01 /'; check
+begin "a network's break on no such line" '&rupture' 'line = 5' 'no such line' 'allowed: 1 .. 3'
+network; add '&rupture line = 5 /'; check
+begin "a network's break beyond its line" '&rupture' 's_break = 150.5' 'must be from 0 to 150' '&line_2'
+network; add '&rupture line = 2, s_break = 150.5 /'; check
+begin "a network's break at a free point" '&rupture' 's_break = 150' "&point_1 of kind 'free'" 'a break at a free point'
+network; add '&rupture line = 2 /'; check
+begin "a network's break by tension with a line" '&rupture' "criterion = 'tension', line = 2" 'not used'
+network; add "&rupture criterion = 'tension', mbl = 1e6, line = 2 /"; check
+begin "a network's break by tension: a uniform line without mbl" '&line_3' 'a uniform line' '&rupture mbl = not given'
+network; add "&rupture criterion = 'tension' /"; check
+begin "a network's break by tension: a segment without mbl" '&segment_2' 'mbl = 0 and &rupture mbl = not given'
+network; edit 's/^&segment_1 length = 50, nodes = 11/\&segment_1 length = 50, nodes = 11, mbl = 1e6/'
+edit 's/length = 160, nodes = 31/segments = 1, 2/'; add "&rupture criterion = 'tension' /"; check
+begin '&rupture line on the single line' '&rupture' 'line = 1' 'only with &line groups'
+from slow_315kN; set_in rupture 'line = 1'; check
 begin "a network's statics with friction" '&seabed' "static_friction = 'end_a'" "allowed: static_friction = 'none'"
 network; add "&seabed depth = 100.0, static_friction = 'end_a' /"; check
 begin 'a body on a line of a network' '&point_5' 'joint = 1' 'split the line at a free point'

@@ -140,7 +140,8 @@ contains
       call add(t, 'rupture', 'enabled', 'logical', '-', '.true.', &
                'whether the cable breaks; a case without the &rupture group does not break')
       call add(t, 'rupture', 's_break', 'real', 'm', '-1', &
-               'unstretched arc length of the break from end a; a break at an end needs that end fixed or moving', &
+               'unstretched arc length of the break from end a (in a network, along its &rupture line from that '// &
+               "line's end a, at most its length); a break at an end needs that end fixed or moving", &
                0.0_dp, 0.0_dp, upper_from='cable%length', default_means='L, the end b')
       call add(t, 'rupture', 't_break', 'real', 's', '0.05', &
                'breaking time: the force across the break goes as cos^2(pi t / (2 t_break)) to zero (0: instantaneous)', &
@@ -155,7 +156,7 @@ contains
                'tension first reaches it', 0.0_dp, 1.0e12_dp, lower_open=.true., zero_means='not given')
       call add(t, 'rupture', 'line', 'integer', '-', '0', &
                "the line of a network that parts (&line_k, criterion 'time'); only with &line groups; s_break is "// &
-               'then measured along that line from its end a', 0.0_dp, real(max_lines, dp), zero_means='not given')
+               'then measured along that line from its end a', 1.0_dp, real(max_lines, dp), zero_means='not given')
       ! &numerics
       call add(t, 'numerics', 'scheme', 'string', '-', "'rod'", &
                "discretisation: 'rod' (energy-conserving discrete rod) or 'box' (the paper's box scheme)", length=16, &

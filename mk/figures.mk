@@ -12,7 +12,7 @@ FORMAT ?= png
 FIGDIR ?= results/figures
 PAPER_CASES := fast_180kN fast_315kN slow_180kN slow_315kN
 SCENES := inclined_break_middle slack_swing hanging_mass_heave koh_swinging_cable polyester_break \
-          chain_mooring_heave polyester_mooring_break
+          chain_mooring_heave polyester_mooring_break buoy_spread_break
 
 .PHONY: figures figures-scenes figures-case test-figures
 

@@ -49,7 +49,8 @@ contains
                new_unittest('break_by_time_inside_equals_one_line', test_break_time), &
                new_unittest('break_by_time_below_the_buoy_equals_one_line', test_break_time_below), &
                new_unittest('break_by_tension_inside_equals_one_line', test_break_tension_inside), &
-               new_unittest('break_by_tension_at_the_fairlead_equals_one_line', test_break_tension_end)]
+               new_unittest('break_by_tension_at_the_fairlead_equals_one_line', test_break_tension_end), &
+               new_unittest('break_by_tension_not_reached_equals_one_line', test_break_not_reached)]
    end subroutine collect_network
 
    !> Read and prepare a case given as namelist text.
@@ -460,6 +461,55 @@ contains
       ! largest, at 0.95 s where the anchor's slack end pulls taut again (a tension of EA times a
       ! strain from positions 5e-11 m apart); the output 4.8e-11 of L.
    end subroutine test_break_tension_end
+
+   !> A break by tension that does not happen, with an MBL per segment (10 MN for the heavy rope,
+   !> 60 kN for the other): the network's summary names the cell that came closest to its MBL,
+   !> with its own tension and its segment's MBL, as the one line's does.
+   subroutine test_break_not_reached(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: one, net
+      type(case_config) :: c
+      character(:), allocatable :: run, segments
+      run = ", dt = 0.025, t_end = 1.0 /"//nl//"&rupture criterion = 'tension', t_break = 0.05 /"
+      segments = "&segment_1 length = 40.0, nodes = 41, density = 3000.0, mbl = 1.0e7 /"//nl// &
+                 "&segment_2 length = 50.0, nodes = 51, mbl = 6.0e4 /"//nl
+      call write_text(path, common//numerics//run//nl//segments// &
+                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
+                      xyz("&end_a kind = 'fixed'", anchor)//" /"//nl//xyz("&end_b "//heave, fairlead)//" /"//nl// &
+                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call one%prepare(c, error)
+      if (.not. allocated(error)) call one%run(error=error)
+      if (allocated(error)) return
+      call write_text(path, common//numerics//run//nl//segments// &
+                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
+                      xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])// &
+                      ", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
+                      xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
+                      xyz("&point_3 "//heave, fairlead)//" /"//nl// &
+                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
+                      "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call net%prepare(c, error)
+      if (.not. allocated(error)) call net%run(error=error)
+      if (allocated(error)) return
+      associate (s1 => one%rod%summary, s2 => net%rod%summary)
+         write (output_unit, '(4x,a,2f10.2,a,2f8.3,a,2f9.1,a)') 'no break: largest tensions', s1%largest_tension, &
+            s2%largest_tension, ' N at s =', s1%largest_tension_s, s2%largest_tension_s, ' m, MBLs', s1%mbl, s2%mbl, ' N'
+         call check(error, .not. (s1%broke .or. s2%broke) .and. s2%mbl == 6.0e4_dp .and. s1%mbl == s2%mbl .and. &
+                    abs(s1%largest_tension - s2%largest_tension) < 1.0e-9_dp*s1%mbl .and. &
+                    abs(s1%largest_tension_s - s2%largest_tension_s) < 1.0e-9_dp .and. &
+                    s2%largest_tension > 2.8e4_dp .and. s2%largest_tension < s2%mbl .and. s2%largest_tension_s > 40, &
+                    'the summaries of the break that did not happen: the one line''s largest tension '// &
+                    str(s1%largest_tension)//' N at s = '//str(s1%largest_tension_s)//' m (MBL '//str(s1%mbl)// &
+                    ' N), the network''s '//str(s2%largest_tension)//' N at s = '//str(s2%largest_tension_s)// &
+                    ' m (MBL '//str(s2%mbl)//' N)')
+      end associate
+   end subroutine test_break_not_reached
 
    !> The network of test_input_equal_one_line (two lines at a free point with the buoy) with a
    !> break, against the one line with the buoy at its joint and the same break, both run for 1 s

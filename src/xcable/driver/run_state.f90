@@ -43,8 +43,11 @@ module xcable_driver_run_state
       !> tensions (N); which end moved last (-1: below, 1: past, 0: none yet).
       real(dp) :: h_lo = 0, f_lo = 0, h_hi = 0, f_hi = 0
       integer :: side = 0
-      !> Largest cell tension of the accepted steps (N), the middle of its cell (m) and its time (s).
-      real(dp) :: max_tension = 0, max_s = 0, max_time = 0
+      !> The MBL of the cell that reached it (N; a line of segments: its segment's).
+      real(dp) :: cell_mbl = 0
+      !> Of the accepted steps, the cell closest to its MBL: its share of it (in units of mbl),
+      !> its tension (N), its MBL (N), the middle of the cell (m) and the time (s).
+      real(dp) :: max_share = 0, max_tension = 0, max_mbl = 0, max_s = 0, max_time = 0
    end type tension_watch
 
    !> Controls of a rod run.

@@ -95,7 +95,11 @@ contains
       ! The break by tension: what the first pass found (driver/simulation.f90).
       self%summary%by_tension = self%scene%by_tension
       if (self%scene%by_tension) then
+         ! The MBL of the cell that reached it, or that came closest (a line of segments: its
+         ! segment's; a network: its line's segment's).
          self%summary%mbl = self%scene%mbl
+         if (self%broken .and. self%rupture%cell_mbl > 0) self%summary%mbl = self%rupture%cell_mbl
+         if (.not. self%broken .and. self%rupture%max_mbl > 0) self%summary%mbl = self%rupture%max_mbl
          self%summary%break_tension = self%rupture%tension
          self%summary%break_cell_s = self%rupture%s
          self%summary%largest_tension = self%rupture%max_tension

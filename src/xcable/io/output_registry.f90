@@ -213,13 +213,15 @@ contains
                '(a network: on the results'' s, the lines laid out one after another)')
       call add('/summary@break_line', 'attribute', '', '', 'a break in a network', 'the line that parted (&line_k)')
       call add('/summary@break_ramp', 'attribute', '', 's', 'a break', 'duration of the break''s force ramp')
-      call add('/summary@mbl', 'attribute', '', 'N', '&rupture criterion = ''tension''', 'minimum breaking load')
+      call add('/summary@mbl', 'attribute', '', 'N', '&rupture criterion = ''tension''', 'minimum breaking load '// &
+               '(a line of segments: that of the cell that reached it, or came closest)')
       call add('/summary@break_tension', 'attribute', '', 'N', 'a break by tension', &
                'tension of the first cell to reach the MBL, at break_time (within the rupture tolerance of mbl)')
       call add('/summary@break_cell_s', 'attribute', '', 'm', 'a break by tension', &
                'arc length from end a of the middle of the first cell to reach the MBL (break_s: its break node)')
       call add('/summary@largest_tension', 'attribute', '', 'N', 'a break by tension that did not happen', &
-               'largest cell tension reached (below the MBL)')
+               'tension of the cell that came closest to its MBL (below it; a line of segments: the largest '// &
+               'share of its segment''s MBL)')
       call add('/summary@largest_tension_s', 'attribute', '', 'm', 'a break by tension that did not happen', &
                'arc length from end a of the middle of that cell')
       call add('/summary@largest_tension_time', 'attribute', '', 's', 'a break by tension that did not happen', &

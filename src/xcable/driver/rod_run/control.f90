@@ -168,8 +168,14 @@ contains
             return
          end if
          w%h_aim = 0
-         if (f > w%max_tension) then
+         if (f > w%max_share) then
+            w%max_share = f
             w%max_tension = f
+            w%max_mbl = w%mbl
+            if (present(tensions)) then
+               w%max_tension = tensions(c, 2)
+               w%max_mbl = w%mbl/tensions(c, 3)
+            end if
             w%max_s = cell_middle(c)
             w%max_time = self%t + h
          end if
@@ -178,7 +184,11 @@ contains
             w%time = self%t + h
             w%cell = c
             w%tension = f
-            if (present(tensions)) w%tension = tensions(c, 2)
+            w%cell_mbl = w%mbl
+            if (present(tensions)) then
+               w%tension = tensions(c, 2)
+               w%cell_mbl = w%mbl/tensions(c, 3)
+            end if
             w%s = cell_middle(c)
             w%cells = t_new
          end if

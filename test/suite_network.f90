@@ -140,6 +140,26 @@ contains
       lines(2) = sim2%rod3%pieces(1)%run
    end subroutine two_lines
 
+   !> The two segments of one_line, without an MBL.
+   function plain_segments() result(text)
+      character(:), allocatable :: text
+      text = "&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl//"&segment_2 length = 50.0, nodes = 51 /"//nl
+   end function plain_segments
+
+   !> The network of one_line (input): the segment groups given, line 1 (segment 1) from the anchor
+   !> to the free point with the buoy, first guessed 2.7 m off, line 2 (segment 2) on to the fairlead.
+   function two_lines_text(segments) result(text)
+      character(*), intent(in) :: segments
+      character(:), allocatable :: text
+      text = "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl//segments// &
+             xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])// &
+             ", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
+             xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
+             xyz("&point_3 "//heave, fairlead)//" /"//nl// &
+             "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
+             "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl
+   end function two_lines_text
+
    !> Positions of a run's nodes first .. last (3, :).
    function nodes_of(run, first, last) result(r)
       type(rod3d_run), intent(in) :: run
@@ -359,7 +379,7 @@ contains
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: one, net
       type(case_config) :: c
-      character(:), allocatable :: run, guess
+      character(:), allocatable :: run
       real(dp) :: worst, drift, top, wet
       integer :: i
       run = ", dt = 0.025, t_end = 1.0 /"//nl//"&output energy = .true. /"
@@ -372,16 +392,7 @@ contains
       if (allocated(error)) return
       call one%run(error=error)
       if (allocated(error)) return
-      guess = xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])
-      call write_text(path, common//numerics//run//nl// &
-                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
-                      "&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
-                      "&segment_2 length = 50.0, nodes = 51 /"//nl// &
-                      guess//", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
-                      xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
-                      xyz("&point_3 "//heave, fairlead)//" /"//nl// &
-                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
-                      "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl)
+      call write_text(path, common//numerics//run//nl//two_lines_text(plain_segments()))
       call read_config(path, c, error)
       if (allocated(error)) return
       c%quiet = .true.
@@ -483,14 +494,7 @@ contains
       call one%prepare(c, error)
       if (.not. allocated(error)) call one%run(error=error)
       if (allocated(error)) return
-      call write_text(path, common//numerics//run//nl//segments// &
-                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
-                      xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])// &
-                      ", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
-                      xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
-                      xyz("&point_3 "//heave, fairlead)//" /"//nl// &
-                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
-                      "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl)
+      call write_text(path, common//numerics//run//nl//two_lines_text(segments))
       call read_config(path, c, error)
       if (allocated(error)) return
       c%quiet = .true.
@@ -542,16 +546,7 @@ contains
       if (allocated(error)) return
       call one%run(error=error)
       if (allocated(error)) return
-      call write_text(path, common//numerics//run//nl//rupture_net//nl// &
-                      "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
-                      "&segment_1 length = 40.0, nodes = 41, density = 3000.0 /"//nl// &
-                      "&segment_2 length = 50.0, nodes = 51 /"//nl// &
-                      xyz("&point_1 kind = 'free'", [15.0_dp, 6.0_dp, -40.0_dp])// &
-                      ", mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl// &
-                      xyz("&point_2 kind = 'fixed'", anchor)//" /"//nl// &
-                      xyz("&point_3 "//heave, fairlead)//" /"//nl// &
-                      "&line_1 end_a = 'point_2', end_b = 'point_1', segments = 1 /"//nl// &
-                      "&line_2 end_a = 'point_1', end_b = 'point_3', segments = 2 /"//nl)
+      call write_text(path, common//numerics//run//nl//rupture_net//nl//two_lines_text(plain_segments()))
       call read_config(path, c, error)
       if (allocated(error)) return
       c%quiet = .true.

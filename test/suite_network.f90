@@ -66,6 +66,20 @@ contains
       call sim%prepare(c, error)
    end subroutine prepared
 
+   !> Read, prepare and run a case given as namelist text.
+   subroutine ran(text, sim, error)
+      character(*), intent(in) :: text
+      type(simulation), intent(inout) :: sim
+      type(error_type), allocatable, intent(out) :: error
+      type(case_config) :: c
+      call write_text(path, text)
+      call read_config(path, c, error)
+      if (allocated(error)) return
+      c%quiet = .true.
+      call sim%prepare(c, error)
+      if (.not. allocated(error)) call sim%run(error=error)
+   end subroutine ran
+
    !> Read and prepare a case, with a body put on end b (a joint end's body, which the input
    !> would refuse on the held end the line is prepared with).
    subroutine prepared_with_body(text, body, sim, error)
@@ -378,27 +392,14 @@ contains
    subroutine test_input_equal_one_line(error)
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: one, net
-      type(case_config) :: c
       character(:), allocatable :: run
       real(dp) :: worst, drift, top, wet
       integer :: i
       run = ", dt = 0.025, t_end = 1.0 /"//nl//"&output energy = .true. /"
-      call write_text(path, common//one_line(run)// &
-                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl)
-      call read_config(path, c, error)
+      call ran(common//one_line(run)// &
+                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl, one, error)
       if (allocated(error)) return
-      c%quiet = .true.
-      call one%prepare(c, error)
-      if (allocated(error)) return
-      call one%run(error=error)
-      if (allocated(error)) return
-      call write_text(path, common//numerics//run//nl//two_lines_text(plain_segments()))
-      call read_config(path, c, error)
-      if (allocated(error)) return
-      c%quiet = .true.
-      call net%prepare(c, error)
-      if (allocated(error)) return
-      call net%run(error=error)
+      call ran(common//numerics//run//nl//two_lines_text(plain_segments()), net, error)
       if (allocated(error)) return
       associate (h1 => one%rod%history, h2 => net%rod%history)
          call check(error, h1%n == h2%n .and. h2%n == 40, 'the runs took '//str(h1%n)//' and '//str(h2%n)//' steps')
@@ -479,27 +480,16 @@ contains
    subroutine test_break_not_reached(error)
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: one, net
-      type(case_config) :: c
       character(:), allocatable :: run, segments
       run = ", dt = 0.025, t_end = 1.0 /"//nl//"&rupture criterion = 'tension', t_break = 0.05 /"
       segments = "&segment_1 length = 40.0, nodes = 41, density = 3000.0, mbl = 1.0e7 /"//nl// &
                  "&segment_2 length = 50.0, nodes = 51, mbl = 6.0e4 /"//nl
-      call write_text(path, common//numerics//run//nl//segments// &
+      call ran(common//numerics//run//nl//segments// &
                       "&cable length = 90.0, diameter = 0.05, density = 1500.0, bending_stiffness = 1e-6 /"//nl// &
                       xyz("&end_a kind = 'fixed'", anchor)//" /"//nl//xyz("&end_b "//heave, fairlead)//" /"//nl// &
-                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl)
-      call read_config(path, c, error)
+                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl, one, error)
       if (allocated(error)) return
-      c%quiet = .true.
-      call one%prepare(c, error)
-      if (.not. allocated(error)) call one%run(error=error)
-      if (allocated(error)) return
-      call write_text(path, common//numerics//run//nl//two_lines_text(segments))
-      call read_config(path, c, error)
-      if (allocated(error)) return
-      c%quiet = .true.
-      call net%prepare(c, error)
-      if (.not. allocated(error)) call net%run(error=error)
+      call ran(common//numerics//run//nl//two_lines_text(segments), net, error)
       if (allocated(error)) return
       associate (s1 => one%rod%summary, s2 => net%rod%summary)
          write (output_unit, '(4x,a,2f10.2,a,2f8.3,a,2f9.1,a)') 'no break: largest tensions', s1%largest_tension, &
@@ -529,7 +519,6 @@ contains
       real(dp), intent(in) :: s_expected, tol_x, tol, tol_out
       type(error_type), allocatable, intent(out) :: error
       type(simulation) :: one, net
-      type(case_config) :: c
       character(:), allocatable :: run
       real(dp) :: worst, worst_x, drift, top, span
       real(dp), allocatable :: f1(:, :), e1(:, :), f2(:, :), e2(:, :), so1(:), so2(:)
@@ -537,22 +526,10 @@ contains
       integer :: i, j, n_slots, slots(4), junction, m, k
       logical :: same_s
       run = ", dt = 0.025, t_end = 1.0 /"//nl//"&output energy = .true. /"
-      call write_text(path, common//one_line(run)//rupture_one//nl// &
-                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl)
-      call read_config(path, c, error)
+      call ran(common//one_line(run)//rupture_one//nl// &
+                      "&point_1 joint = 1, mass = 50.0, volume = 0.3, ca = 0.5, cd = 0.8, area = 0.5 /"//nl, one, error)
       if (allocated(error)) return
-      c%quiet = .true.
-      call one%prepare(c, error)
-      if (allocated(error)) return
-      call one%run(error=error)
-      if (allocated(error)) return
-      call write_text(path, common//numerics//run//nl//rupture_net//nl//two_lines_text(plain_segments()))
-      call read_config(path, c, error)
-      if (allocated(error)) return
-      c%quiet = .true.
-      call net%prepare(c, error)
-      if (allocated(error)) return
-      call net%run(error=error)
+      call ran(common//numerics//run//nl//rupture_net//nl//two_lines_text(plain_segments()), net, error)
       if (allocated(error)) return
       associate (h1 => one%rod%history, h2 => net%rod%history, s1 => one%rod%summary, s2 => net%rod%summary)
          call check(error, s1%broke .and. s2%broke, 'a run did not break (the one line: '// &

@@ -2,7 +2,8 @@
 """test/test_outputs.py [EXE]: the result files explain themselves (make test runs this).
 
 Runs a planar case (input/slow_180kN), a 3-D one (input/sway3d) and a cable broken inside
-(input/inclined_break_middle, two pieces) and a network of lines (input/buoy_spread) with EXE (default bin/xcable) and reads each file
+(input/inclined_break_middle, two pieces), a network of lines (input/buoy_spread) and one whose
+hawser parts (input/buoy_spread_break, /summary@break_line) with EXE (default bin/xcable) and reads each file
 with h5py:
   - every dataset has a `units` and a one-line `description` attribute, both str (UTF-8
     text), the units one of the SI words of the output registry;
@@ -25,7 +26,7 @@ import h5py
 import numpy as np
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-CASES = ['slow_180kN', 'sway3d', 'inclined_break_middle', 'buoy_spread']
+CASES = ['slow_180kN', 'sway3d', 'inclined_break_middle', 'buoy_spread', 'buoy_spread_break']
 UNITS = {'N', 'm', 'm/s', '1/m', 's', 'J', 'rad', '-', '1'}
 SCALE_ATTRS = {'CLASS', 'NAME', 'REFERENCE_LIST', 'DIMENSION_LIST'}
 
@@ -122,6 +123,10 @@ def main():
                         bad.append('the network\'s history has the ends %s, not %s' % (ends, want))
                     if 'span' in f['static'].attrs or 'tension_a' in f['static'].attrs:
                         bad.append('/static has the figures of one line (span, tension_a) for a network')
+            if case == 'buoy_spread_break':
+                with h5py.File(path, 'r') as f:
+                    if f['summary'].attrs.get('break_line') != 3:
+                        bad.append('the network\'s /summary@break_line is %s, not 3' % f['summary'].attrs.get('break_line'))
             for line in bad[:20]:
                 print('test_outputs: %s: %s' % (case, line))
             failed += bool(bad)

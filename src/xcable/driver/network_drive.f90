@@ -30,7 +30,7 @@ module xcable_driver_network_drive
    use xcable_core_strings, only: str
    use xcable_driver_rod_run, only: rod_run, cable_model
    use xcable_driver_rod3d_drive, only: check_state3, end_tension, state_between, exchange_run3, rod3d_drive, &
-                                        release, break_node_ends
+                                        release, break_node_ends, slot_end
    use xcable_driver_rod_run, only: watch_step
    use xcable_driver_network, only: network_run
    use xcable_driver_records, only: run_observer, note_min_strain
@@ -471,16 +471,7 @@ contains
       kind = ''
       held = .false.
       do l = 1, size(self%lines)
-         associate (piece => self%net%lines(l)%problem%piece)
-            if (self%lines(l)%end_slot(1) == j) then
-               kind = piece%end_a%kind()
-               held = piece%end_a%held()
-            end if
-            if (self%lines(l)%end_slot(2) == j) then
-               kind = piece%end_b%kind()
-               held = piece%end_b%held()
-            end if
-         end associate
+         call slot_end(self%net%lines(l)%problem%piece, self%lines(l)%end_slot, j, kind, held)
       end do
    end subroutine drive_end_info
 

@@ -64,7 +64,7 @@ module xcable_driver_rod3d_drive
    ! A network's line that parts is cut as a single line is (driver/network_drive.f90): the
    ! pieces after the break (release, also for a broken network loaded from a checkpoint) and
    ! the break node's two history ends before it.
-   public :: release, break_node_ends
+   public :: release, break_node_ends, slot_end
    ! For the submodules driver/rod3d_drive/ (gfortran 12 makes a module's private procedures
    ! local symbols that its submodules cannot link to).
    public :: state_fields, piece_sections3, set_time
@@ -319,18 +319,27 @@ contains
       kind = ''
       held = .false.
       do p = 1, size(self%pieces)
-         associate (piece => self%pieces(p)%run%problem%piece)
-            if (self%pieces(p)%end_slot(1) == j) then
-               kind = piece%end_a%kind()
-               held = piece%end_a%held()
-            end if
-            if (self%pieces(p)%end_slot(2) == j) then
-               kind = piece%end_b%kind()
-               held = piece%end_b%held()
-            end if
-         end associate
+         call slot_end(self%pieces(p)%run%problem%piece, self%pieces(p)%end_slot, j, kind, held)
       end do
    end subroutine drive_end_info
+
+   !> The kind of a piece's end in history slot j and whether it is held (kind and held are left
+   !> as they are when neither of the piece's end slots is j).
+   subroutine slot_end(piece, end_slot, j, kind, held)
+      !> The piece and the history slots of its two ends.
+      type(rod3d_piece), intent(in) :: piece
+      integer, intent(in) :: end_slot(2), j
+      character(:), allocatable, intent(inout) :: kind
+      logical, intent(inout) :: held
+      if (end_slot(1) == j) then
+         kind = piece%end_a%kind()
+         held = piece%end_a%held()
+      end if
+      if (end_slot(2) == j) then
+         kind = piece%end_b%kind()
+         held = piece%end_b%held()
+      end if
+   end subroutine slot_end
 
    !> The summary's Newton figures from the pieces (full Newton: one factorisation per
    !> iteration) and, with the ledger on, the dissipation booked by the pieces (the first

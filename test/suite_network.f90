@@ -9,6 +9,7 @@ module suite_network
    use xcable_core_kinds, only: dp
    use xcable_testing, only: error_type, unittest_type, new_unittest, check
    use xcable_core_strings, only: str
+   use xcable_core_error, only: stat_input
    use xcable_io_config, only: case_config
    use xcable_io_input, only: read_config
    use xcable_driver_simulation, only: simulation
@@ -50,7 +51,8 @@ contains
                new_unittest('break_by_time_below_the_buoy_equals_one_line', test_break_time_below), &
                new_unittest('break_by_tension_inside_equals_one_line', test_break_tension_inside), &
                new_unittest('break_by_tension_at_the_fairlead_equals_one_line', test_break_tension_end), &
-               new_unittest('break_by_tension_not_reached_equals_one_line', test_break_not_reached)]
+               new_unittest('break_by_tension_not_reached_equals_one_line', test_break_not_reached), &
+               new_unittest('mbl_below_the_static_tension_refused', test_mbl_below_static)]
    end subroutine collect_network
 
    !> Read and prepare a case given as namelist text.
@@ -504,6 +506,22 @@ contains
                     ' m (MBL '//str(s2%mbl)//' N)')
       end associate
    end subroutine test_break_not_reached
+
+   !> An MBL at or below a static tension of the network (29 kN, where line 1 carries 29.02 kN next
+   !> to the buoy) is refused after the statics (stat_input), naming the group, the line and where.
+   subroutine test_mbl_below_static(error)
+      type(error_type), allocatable, intent(out) :: error
+      type(simulation) :: net
+      type(error_type), allocatable :: refused
+      call prepared(numerics//", dt = 0.025, t_end = 1.0 /"//nl// &
+                    "&rupture criterion = 'tension', mbl = 29000.0 /"//nl//two_lines_text(plain_segments()), net, refused)
+      call check(error, allocated(refused), 'an mbl below the static tension was not refused')
+      if (allocated(error)) return
+      write (output_unit, '(4x,a)') refused%message
+      call check(error, refused%stat == stat_input .and. index(refused%message, '&rupture: mbl = 29000') > 0 .and. &
+                 index(refused%message, '&line_1') > 0 .and. index(refused%message, 'would part in statics') > 0, &
+                 'the refusal says: '//refused%message)
+   end subroutine test_mbl_below_static
 
    !> The network of test_input_equal_one_line (two lines at a free point with the buoy) with a
    !> break, against the one line with the buoy at its joint and the same break, both run for 1 s

@@ -44,7 +44,6 @@ import json
 import math
 import os
 import resource
-import struct
 import subprocess
 import sys
 import tempfile
@@ -226,18 +225,7 @@ def md_state(path, level, static):
     lines = [static[:nl], static[nl:2 * nl], static[2 * nl:2 * nl + nh]]
     buoy = lines[0][-1]
     pts = [(0.0,) * 6, (0.0,) * 6, (0.0,) * 6, tuple(buoy) + (0.0, 0.0, 0.0)]
-    data = b""
-    for ps in pts:
-        data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *ps)
-    for ln in lines:
-        inner = ln[1:-1]
-        data += struct.pack("<QQ", len(inner), 6)
-        for p in inner:
-            data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
-    with open(path, "wb") as f:
-        f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, len(pts) + 3))
-        f.write(data)
+    pc.moordyn_state_lines(path, [ln[1:-1] for ln in lines], pts)
 
 
 def end_tension(line, idx, ds):

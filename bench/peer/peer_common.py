@@ -282,15 +282,22 @@ def read_tsv(path):
 def moordyn_state(path, inner, points):
     """A MoorDyn v2 state file (the layout of its SaveState) of one line at rest: the points'
     states first (each x, y, z, vx, vy, vz), then the line's inner nodes (x, y, z each)."""
+    moordyn_state_lines(path, [inner], points)
+
+
+def moordyn_state_lines(path, lines, points):
+    """A MoorDyn v2 state file of several lines at rest: the points' states first (each x, y, z,
+    vx, vy, vz), then each line's inner nodes (x, y, z each), in MoorDyn's order of the lines."""
     data = b""
     for ps in points:
         data += struct.pack("<QQ", 1, 6) + struct.pack("<6d", *ps)
-    data += struct.pack("<QQ", len(inner), 6)
-    for p in inner:
-        data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
+    for inner in lines:
+        data += struct.pack("<QQ", len(inner), 6)
+        for p in inner:
+            data += struct.pack("<6d", *p, 0.0, 0.0, 0.0)
     with open(path, "wb") as f:
         f.write(b"MoorDyn" + struct.pack("<BB", 2, 7))
-        f.write(struct.pack("<QQ", len(data) // 8 + 1, len(points) + 1))
+        f.write(struct.pack("<QQ", len(data) // 8 + 1, len(points) + len(lines)))
         f.write(data)
 
 
